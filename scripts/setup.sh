@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs everything projsurf needs on a fresh Debian 12 machine (run as root), then
+# configures and builds it once, in Release, into ./build.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+PACKAGES=(
+  cmake make g++ ccache pkg-config
+  libeigen3-dev libopencv-dev libpcl-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
+  libgtest-dev libbenchmark-dev
+)
+# ROS 1 (Debian's packages) for the node in ros/; see ros/README.md.
+ROS_PACKAGES=()
+
+missing=()
+for p in "${PACKAGES[@]}" "${ROS_PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+export CCACHE_DIR="${CCACHE_DIR:-$PWD/.cache/ccache}"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$(nproc)"

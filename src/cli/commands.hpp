@@ -1,0 +1,16 @@
+#pragma once
+// Each subcommand lives in its own file and registers itself on the app. A command reports
+// bad input by throwing projsurf::InputError (main prints it and exits 2).
+#include <CLI/CLI.hpp>
+
+namespace projsurf::cli {
+
+void addDetectCommand(CLI::App &app);     // cmd_detect.cpp
+void addCalibrateCommand(CLI::App &app);  // cmd_calibrate.cpp
+void addCorrectCommand(CLI::App &app);    // cmd_correct.cpp
+void addShowCommand(CLI::App &app);       // cmd_show.cpp
+void addSimulateCommand(CLI::App &app);   // cmd_simulate.cpp
+void addDemoCommand(CLI::App &app);       // cmd_demo.cpp
+void addEvalCommand(CLI::App &app);       // cmd_eval.cpp
+
+}  // namespace projsurf::cli

@@ -1,0 +1,66 @@
+// projsurf: find where a robot's projector can show a picture on a wall, and warp the
+// picture so it appears undistorted there. See README.md and the contract (INTERFACE.md).
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "projsurf/io/errors.hpp"
+
+namespace {
+
+/// "--gravity -0.2,0.9,0.3": glue a value that starts with a minus sign to its option so
+/// that it is not mistaken for an option of its own.
+std::vector<std::string> glueNegativeValues(int argc, char **argv) {
+    std::vector<std::string> out;
+    for (int i = 0; i < argc; ++i) {
+        std::string a = argv[i];
+        const bool is_long_without_value = a.rfind("--", 0) == 0 && a.find('=') == std::string::npos && a.size() > 2;
+        if (is_long_without_value && i + 1 < argc) {
+            const char *next = argv[i + 1];
+            if (next[0] == '-' && (std::isdigit(static_cast<unsigned char>(next[1])) || next[1] == '.')) {
+                out.push_back(a + "=" + next);
+                ++i;
+                continue;
+            }
+        }
+        out.push_back(a);
+    }
+    return out;
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+    CLI::App app{"projsurf: projection surface detection and keystone correction for mobile robots"};
+    app.require_subcommand(1);
+    projsurf::cli::addDetectCommand(app);
+    projsurf::cli::addCalibrateCommand(app);
+    projsurf::cli::addCorrectCommand(app);
+    projsurf::cli::addShowCommand(app);
+    projsurf::cli::addSimulateCommand(app);
+    projsurf::cli::addDemoCommand(app);
+    projsurf::cli::addEvalCommand(app);
+
+    std::vector<std::string> args = glueNegativeValues(argc, argv);
+    std::vector<char *> cargs;
+    for (auto &a : args) cargs.push_back(a.data());
+    try {
+        app.parse(static_cast<int>(cargs.size()), cargs.data());
+    } catch (const CLI::CallForHelp &e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp &e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError &e) {
+        std::cerr << "projsurf: " << e.what() << " (see projsurf --help)\n";
+        return 2;
+    } catch (const projsurf::InputError &e) {
+        std::cerr << "projsurf: error: " << e.what() << "\n";
+        return 2;
+    } catch (const std::exception &e) {
+        std::cerr << "projsurf: error: " << e.what() << "\n";
+        return 2;
+    }
+    return 0;
+}

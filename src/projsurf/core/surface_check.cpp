@@ -1,0 +1,1 @@
+#include "projsurf/core/surface_check.hpp"

@@ -1,0 +1,106 @@
+#include "projsurf/io/detection_json.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "projsurf/io/errors.hpp"
+#include "projsurf/io/files.hpp"
+
+namespace projsurf {
+namespace {
+
+nlohmann::json vec(const Eigen::Vector3d &v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
+
+double round6(double v) { return std::round(v * 1e6) / 1e6; }
+
+}  // namespace
+
+nlohmann::json detectionToJson(const Detection &det, const DetectorConfig &config) {
+    nlohmann::json j;
+    j["found"] = det.found;
+    j["reason"] = det.found ? nlohmann::json(nullptr) : nlohmann::json(det.reason);
+    j["method"] = config.method == Method::Paper ? "paper" : "default";
+    if (det.inliers > 0) {
+        const auto c = det.plane.coefficients();
+        j["plane"] = {{"coefficients", {c[0], c[1], c[2], c[3]}},
+                      {"orientation_deg", round6(det.orientation_deg)},
+                      {"inliers", det.inliers}};
+    } else {
+        j["plane"] = nullptr;
+    }
+    if (det.rectangle.area() > 0.0) {
+        nlohmann::json corners = nlohmann::json::array();
+        for (const auto &c : det.rectangle.corners) corners.push_back(vec(c));
+        j["rectangle"] = {{"corners", corners},
+                          {"width_m", round6(det.rectangle.width)},
+                          {"height_m", round6(det.rectangle.height)},
+                          {"area_m2", round6(det.rectangle.area())}};
+    } else {
+        j["rectangle"] = nullptr;
+    }
+    j["surface_check"] = {{"points", det.surface_check.points},
+                          {"outliers", det.surface_check.outliers},
+                          {"accepted", det.surface_check.accepted}};
+    nlohmann::json timing = nlohmann::json::object();
+    for (const auto &[k, v] : det.timing_ms) timing[k] = std::round(v * 1000.0) / 1000.0;
+    j["timing_ms"] = timing;
+    j["gravity"] = vec(config.gravity.normalized());
+    return j;
+}
+
+DetectionFile readDetectionJson(const std::string &path) {
+    requireReadable(path);
+    std::ifstream in(path);
+    nlohmann::json j;
+    try {
+        in >> j;
+    } catch (const nlohmann::json::exception &e) {
+        throw InputError(path, std::string("malformed JSON: ") + e.what());
+    }
+    DetectionFile out;
+    try {
+        if (!j.is_object() || !j.contains("found") || !j["found"].is_boolean())
+            throw InputError(path, "missing boolean key 'found'");
+        out.found = j["found"].get<bool>();
+        if (!out.found) {
+            out.reason = j.contains("reason") && j["reason"].is_string() ? j["reason"].get<std::string>() : "";
+            throw InputError(path, "the detection found no surface" +
+                                       (out.reason.empty() ? std::string() : " (" + out.reason + ")"));
+        }
+        const auto &rect = j.at("rectangle");
+        const auto &corners = rect.at("corners");
+        if (!corners.is_array() || corners.size() != 4)
+            throw InputError(path, "'rectangle.corners' must hold 4 points");
+        for (int i = 0; i < 4; ++i) {
+            const auto &c = corners[i];
+            if (!c.is_array() || c.size() != 3) throw InputError(path, "'rectangle.corners' must hold [x, y, z] points");
+            for (int k = 0; k < 3; ++k) {
+                if (!c[k].is_number()) throw InputError(path, "'rectangle.corners' holds a non-number");
+                out.rectangle.corners[i][k] = c[k].get<double>();
+            }
+            if (!out.rectangle.corners[i].allFinite()) throw InputError(path, "'rectangle.corners' is not finite");
+        }
+        if (j.contains("plane") && j["plane"].is_object() && j["plane"].contains("coefficients")) {
+            const auto &pc = j["plane"]["coefficients"];
+            if (pc.is_array() && pc.size() == 4 && pc[0].is_number())
+                out.plane = makePlane(Eigen::Vector3d(pc[0].get<double>(), pc[1].get<double>(), pc[2].get<double>()),
+                                      pc[3].get<double>());
+        }
+    } catch (const nlohmann::json::exception &e) {
+        throw InputError(path, std::string("unexpected content: ") + e.what());
+    }
+    const auto &c = out.rectangle.corners;
+    out.rectangle.width = (c[1] - c[0]).norm();
+    out.rectangle.height = (c[3] - c[0]).norm();
+    const double w2 = (c[2] - c[3]).norm(), h2 = (c[2] - c[1]).norm();
+    if (!(out.rectangle.width > 1e-6 && out.rectangle.height > 1e-6))
+        throw InputError(path, "'rectangle.corners' do not span a rectangle");
+    const double tol = 1e-3 * std::max(out.rectangle.width, out.rectangle.height) + 1e-6;
+    if (std::abs(w2 - out.rectangle.width) > tol || std::abs(h2 - out.rectangle.height) > tol ||
+        std::abs((c[1] - c[0]).normalized().dot((c[3] - c[0]).normalized())) > 1e-3)
+        throw InputError(path, "'rectangle.corners' are not the corners of a rectangle (TL, TR, BR, BL)");
+    return out;
+}
+
+}  // namespace projsurf

@@ -1,0 +1,26 @@
+#pragma once
+// The contract's detection JSON (`detect --json`) and its reader (`correct --detection`).
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "projsurf/pipeline/detector.hpp"
+
+namespace projsurf {
+
+/// The contract's keys (found, reason, plane, rectangle, surface_check, timing_ms) plus
+/// extensions (method, gravity, plane.yaw).
+nlohmann::json detectionToJson(const Detection &detection, const DetectorConfig &config);
+
+/// What `correct` needs from a detection file.
+struct DetectionFile {
+    bool found = false;
+    std::string reason;
+    Plane plane;
+    Rectangle rectangle;
+};
+
+/// Reads and validates a detection JSON; throws InputError naming the file and the problem
+/// (missing keys, found: false, corners not a proper rectangle).
+DetectionFile readDetectionJson(const std::string &path);
+
+}  // namespace projsurf

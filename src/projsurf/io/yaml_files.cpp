@@ -1,0 +1,142 @@
+#include "projsurf/io/yaml_files.hpp"
+
+#include <cmath>
+#include <yaml-cpp/yaml.h>
+
+#include "projsurf/io/errors.hpp"
+#include "projsurf/io/files.hpp"
+
+namespace projsurf {
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+YAML::Node loadYaml(const std::string &path) {
+    requireReadable(path);
+    try {
+        YAML::Node root = YAML::LoadFile(path);
+        if (!root.IsMap()) throw InputError(path, "expected a YAML mapping at the top level");
+        return root;
+    } catch (const YAML::Exception &e) {
+        throw InputError(path, std::string("malformed YAML: ") + e.what());
+    }
+}
+
+YAML::Node child(const std::string &path, const YAML::Node &node, const std::string &key, const std::string &where) {
+    if (!node.IsMap() || !node[key]) throw InputError(path, "missing key '" + where + key + "'");
+    return node[key];
+}
+
+double number(const std::string &path, const YAML::Node &node, const std::string &what) {
+    try {
+        const double v = node.as<double>();
+        if (!std::isfinite(v)) throw InputError(path, "'" + what + "' is not finite");
+        return v;
+    } catch (const YAML::Exception &) {
+        throw InputError(path, "'" + what + "' is not a number");
+    }
+}
+
+std::vector<double> numbers(const std::string &path, const YAML::Node &node, const std::string &what, std::size_t n) {
+    if (!node.IsSequence() || node.size() != n)
+        throw InputError(path, "'" + what + "' must be a list of " + std::to_string(n) + " numbers");
+    std::vector<double> out;
+    for (std::size_t i = 0; i < n; ++i) out.push_back(number(path, node[i], what));
+    return out;
+}
+
+}  // namespace
+
+Projector readCalibration(const std::string &path) {
+    const YAML::Node root = loadYaml(path);
+    const YAML::Node p = child(path, root, "projector", "");
+    const auto res = numbers(path, child(path, p, "resolution", "projector."), "projector.resolution", 2);
+    const auto fov = numbers(path, child(path, p, "fov_deg", "projector."), "projector.fov_deg", 2);
+    const YAML::Node axis = child(path, p, "axis", "projector.");
+    const auto o = numbers(path, child(path, axis, "origin", "projector.axis."), "projector.axis.origin", 3);
+    const auto d = numbers(path, child(path, axis, "direction", "projector.axis."), "projector.axis.direction", 3);
+
+    Projector proj;
+    if (res[0] < 2 || res[1] < 2 || res[0] > 16384 || res[1] > 16384 || res[0] != std::floor(res[0]) ||
+        res[1] != std::floor(res[1]))
+        throw InputError(path, "projector.resolution must be two whole numbers between 2 and 16384");
+    proj.width = static_cast<int>(res[0]);
+    proj.height = static_cast<int>(res[1]);
+    if (!(fov[0] > 0 && fov[0] < 170 && fov[1] > 0 && fov[1] < 170))
+        throw InputError(path, "projector.fov_deg must be two angles between 0 and 170 degrees");
+    proj.fov_h = fov[0] * kDeg;
+    proj.fov_v = fov[1] * kDeg;
+    proj.origin = Eigen::Vector3d(o[0], o[1], o[2]);
+    const Eigen::Vector3d dir(d[0], d[1], d[2]);
+    if (dir.norm() < 1e-9) throw InputError(path, "projector.axis.direction is the zero vector");
+    proj.direction = dir.normalized();
+    if (!isValidProjector(proj))
+        throw InputError(path, "projector.axis.direction is (nearly) vertical: the projector's image axes are undefined");
+    return proj;
+}
+
+YAML::Node calibrationNode(const Projector &projector) {
+    YAML::Node p;
+    auto seq = [](std::initializer_list<double> v) {
+        YAML::Node n;
+        for (double x : v) n.push_back(x);
+        n.SetStyle(YAML::EmitterStyle::Flow);
+        return n;
+    };
+    YAML::Node res;
+    res.push_back(projector.width);
+    res.push_back(projector.height);
+    res.SetStyle(YAML::EmitterStyle::Flow);
+    p["resolution"] = res;
+    p["fov_deg"] = seq({projector.fov_h / kDeg, projector.fov_v / kDeg});
+    const Eigen::Vector3d &o = projector.origin;
+    const Eigen::Vector3d d = projector.direction.normalized();
+    p["axis"]["origin"] = seq({o.x(), o.y(), o.z()});
+    p["axis"]["direction"] = seq({d.x(), d.y(), d.z()});
+    return p;
+}
+
+void writeCalibration(const std::string &path, const Projector &projector) {
+    YAML::Node root;
+    root["projector"] = calibrationNode(projector);
+    YAML::Emitter out;
+    out.SetDoublePrecision(9);
+    out << root;
+    writeFileAtomic(path, std::string(out.c_str()) + "\n");
+}
+
+CameraIntrinsics readCamera(const std::string &path) {
+    const YAML::Node root = loadYaml(path);
+    const YAML::Node c = child(path, root, "camera", "");
+    CameraIntrinsics cam;
+    const double w = number(path, child(path, c, "width", "camera."), "camera.width");
+    const double h = number(path, child(path, c, "height", "camera."), "camera.height");
+    if (w < 1 || h < 1 || w > 16384 || h > 16384 || w != std::floor(w) || h != std::floor(h))
+        throw InputError(path, "camera.width and camera.height must be positive whole numbers");
+    cam.width = static_cast<int>(w);
+    cam.height = static_cast<int>(h);
+    cam.fx = number(path, child(path, c, "fx", "camera."), "camera.fx");
+    cam.fy = number(path, child(path, c, "fy", "camera."), "camera.fy");
+    cam.cx = number(path, child(path, c, "cx", "camera."), "camera.cx");
+    cam.cy = number(path, child(path, c, "cy", "camera."), "camera.cy");
+    cam.depth_scale = c["depth_scale"] ? number(path, c["depth_scale"], "camera.depth_scale") : 1000.0;
+    if (!(cam.fx > 0 && cam.fy > 0)) throw InputError(path, "camera.fx and camera.fy must be positive");
+    if (!(cam.depth_scale > 0)) throw InputError(path, "camera.depth_scale must be positive");
+    return cam;
+}
+
+void writeCamera(const std::string &path, const CameraIntrinsics &cam) {
+    YAML::Node root;
+    root["camera"]["width"] = cam.width;
+    root["camera"]["height"] = cam.height;
+    root["camera"]["fx"] = cam.fx;
+    root["camera"]["fy"] = cam.fy;
+    root["camera"]["cx"] = cam.cx;
+    root["camera"]["cy"] = cam.cy;
+    root["camera"]["depth_scale"] = cam.depth_scale;
+    YAML::Emitter out;
+    out << root;
+    writeFileAtomic(path, std::string(out.c_str()) + "\n");
+}
+
+}  // namespace projsurf
