@@ -1,0 +1,72 @@
+#include "projsurf/core/rectangle_search.hpp"
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace projsurf {
+namespace {
+
+/// Integral image of blocked cells: S(r, c) = blocked cells in rows < r, cols < c.
+struct BlockedSum {
+    int rows = 0, cols = 0;
+    std::vector<int> s;
+    explicit BlockedSum(const cv::Mat &free_mask) : rows(free_mask.rows), cols(free_mask.cols) {
+        s.assign(static_cast<std::size_t>(rows + 1) * (cols + 1), 0);
+        for (int r = 0; r < rows; ++r) {
+            const uchar *m = free_mask.ptr<uchar>(r);
+            int run = 0;
+            for (int c = 0; c < cols; ++c) {
+                run += m[c] == 0;
+                at(r + 1, c + 1) = at(r, c + 1) + run;
+            }
+        }
+    }
+    int &at(int r, int c) { return s[static_cast<std::size_t>(r) * (cols + 1) + c]; }
+    int at(int r, int c) const { return s[static_cast<std::size_t>(r) * (cols + 1) + c]; }
+    int blocked(int r0, int c0, int nr, int nc) const {
+        return at(r0 + nr, c0 + nc) - at(r0, c0 + nc) - at(r0 + nr, c0) + at(r0, c0);
+    }
+};
+
+bool anyFits(const BlockedSum &bs, int nr, int nc) {
+    for (int r = 0; r + nr <= bs.rows; ++r)
+        for (int c = 0; c + nc <= bs.cols; ++c)
+            if (bs.blocked(r, c, nr, nc) == 0) return true;
+    return false;
+}
+
+}  // namespace
+
+int widthForRows(int rows, double aspect) { return static_cast<int>(std::ceil(aspect * rows - 1e-9)); }
+
+std::optional<GridRect> largestAspectRect(const cv::Mat &free_mask, double aspect, const Eigen::Vector2d &prefer) {
+    CV_Assert(free_mask.type() == CV_8UC1);
+    if (free_mask.empty() || !(aspect > 0.0)) return std::nullopt;
+    const BlockedSum bs(free_mask);
+    auto fits = [&](int nr) {
+        const int nc = widthForRows(nr, aspect);
+        return nr <= bs.rows && nc <= bs.cols && nc >= 1 && anyFits(bs, nr, nc);
+    };
+    if (!fits(1)) return std::nullopt;
+    int lo = 1, hi = std::min(bs.rows, static_cast<int>(bs.cols / aspect) + 1) + 1;  // fits(lo), !fits(hi)
+    while (hi - lo > 1) {
+        const int mid = (lo + hi) / 2;
+        (fits(mid) ? lo : hi) = mid;
+    }
+    const int nr = lo, nc = widthForRows(lo, aspect);
+    GridRect best;
+    double best_d = std::numeric_limits<double>::infinity();
+    for (int r = 0; r + nr <= bs.rows; ++r)
+        for (int c = 0; c + nc <= bs.cols; ++c) {
+            if (bs.blocked(r, c, nr, nc) != 0) continue;
+            const double d = (Eigen::Vector2d(c + 0.5 * nc, r + 0.5 * nr) - prefer).squaredNorm();
+            if (d < best_d) {
+                best_d = d;
+                best = {c, r, nc, nr};
+            }
+        }
+    return best;
+}
+
+}  // namespace projsurf
