@@ -24,7 +24,15 @@ SurfaceCheckResult checkSurfacePaper(const Cloud &cloud, const PlaneFrame &frame
 /// outlier when the distance to the plane exceeds max(min_band, sigmas * k z^2) (depth-noise
 /// model), reject when the outlier share exceeds max_fraction. Independent of range and
 /// sensor resolution.
+/// `step` checks every step-th point (1 = all).
 SurfaceCheckResult checkSurface(const Cloud &cloud, const PlaneFrame &frame, const Rectangle &rect,
-                                double noise_k, double sigmas, double min_band, double max_fraction);
+                                double noise_k, double sigmas, double min_band, double max_fraction, int step = 1);
+
+/// Distance band (m) within which a point at depth z counts as on a plane:
+/// clamp(sigmas * k * z^2, min_band, max_band) (sigma_z = k z^2, Khoshelham & Oude Elberink 2012).
+inline float depthBand(float z, double noise_k, double sigmas, double min_band, double max_band) {
+    const double b = sigmas * noise_k * static_cast<double>(z) * z;
+    return static_cast<float>(b < min_band ? min_band : (b > max_band ? max_band : b));
+}
 
 }  // namespace projsurf

@@ -1,14 +1,419 @@
 #include "projsurf/pipeline/detector.hpp"
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <random>
+
+#include "projsurf/core/euler_rodrigues.hpp"
+#include "projsurf/core/hull.hpp"
+#include "projsurf/core/raster.hpp"
+#include "projsurf/core/rectangle_search.hpp"
+#include "projsurf/core/vertical_ransac.hpp"
+#include "projsurf/core/voxel_grid.hpp"
+
 namespace projsurf {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+/// A vertical plane under consideration and what was found on it.
+struct Candidate {
+    Plane plane;
+    int inliers = 0;
+    PlaneFrame frame;
+    std::array<Eigen::Vector3d, 4> workspace{};
+    std::array<Eigen::Vector2d, 4> workspace_uv{};
+    RasterFrame raster;
+    cv::Mat free;  // 255 = free
+    Rectangle rectangle;
+    std::vector<std::vector<Eigen::Vector3d>> outlines;
+    std::vector<int> inlier_indices;
+};
+
+/// The projector workspace on the plane: the corner rays meet it (paper eqs. 5-6).
+bool workspaceOnPlane(const Eigen::Vector3d &origin, const std::array<Eigen::Vector3d, 4> &rays, Candidate &c) {
+    for (int i = 0; i < 4; ++i) {
+        const auto hit = intersectRay(c.plane, origin, rays[i]);
+        if (!hit) return false;
+        c.workspace[i] = *hit;
+        c.workspace_uv[i] = c.frame.toPlane(*hit);
+    }
+    return true;
+}
+
+/// The largest free rectangle of the aspect ratio in the candidate's raster, centred in the
+/// cells it occupies; false when none fits.
+bool placeRectangle(Candidate &c, double aspect) {
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    for (const auto &w : c.workspace_uv) centre += 0.25 * w;
+    const auto rect = largestAspectRect(c.free, aspect, c.raster.toCell(centre));
+    if (!rect) return false;
+    const double h = rect->rows * c.raster.cell, w = aspect * h;
+    const double u_mid = c.raster.top_left.x() + (rect->col + 0.5 * rect->cols) * c.raster.cell;
+    const double v_top = c.raster.top_left.y() - rect->row * c.raster.cell;
+    c.rectangle = makeRectangle(c.frame, {u_mid - 0.5 * w, v_top - h}, {u_mid + 0.5 * w, v_top});
+    return true;
+}
+
+std::vector<Eigen::Vector3d> toCamera(const PlaneFrame &f, const std::vector<Eigen::Vector2d> &uv) {
+    std::vector<Eigen::Vector3d> out;
+    for (const auto &p : uv) out.push_back(f.toCamera(p));
+    return out;
+}
+
+void fillDebug(const Candidate &c, DetectionDebug &debug) {
+    debug.frame = c.frame;
+    debug.workspace = c.workspace;
+    debug.has_workspace = true;
+    debug.hull = c.outlines;
+    debug.free_space = c.free;
+    debug.grid_origin = c.raster.top_left;
+    debug.grid_cell = c.raster.cell;
+    debug.inliers = c.inlier_indices;
+}
+
+Eigen::Vector3d centroid(const std::vector<Point> &pts, const std::vector<int> &idx) {
+    Eigen::Vector3d s = Eigen::Vector3d::Zero();
+    for (int i : idx) s += pts[i].cast<double>();
+    return s / std::max<std::size_t>(1, idx.size());
+}
+
+// ---------------------------------------------------------------------------------------
+// Paper mode: section 3.2, step by step.
+Detection detectPaper(const Cloud &cloud, const Projector &projector, const DetectorConfig &cfg, double aspect) {
+    Detection det;
+    const auto t0 = Clock::now();
+    auto t = Clock::now();
+    const std::vector<Point> voxels = voxelDownsample(cloud.points, cfg.voxel_leaf);
+    det.timing_ms["voxel_grid"] = msSince(t);
+    if (voxels.size() < 3) {
+        det.reason = "no points to search (empty or all-NaN cloud)";
+        det.timing_ms["total"] = msSince(t0);
+        return det;
+    }
+    t = Clock::now();
+    std::vector<int> active(voxels.size());
+    for (std::size_t i = 0; i < voxels.size(); ++i) active[i] = static_cast<int>(i);
+    const std::vector<float> band(voxels.size(), static_cast<float>(cfg.ransac_distance));
+    RansacOptions opt;
+    opt.max_tilt = cfg.max_tilt;
+    opt.max_iterations = cfg.ransac_iterations;
+    std::mt19937 rng(cfg.seed);
+    const auto found = findVerticalPlane(voxels, active, band, cfg.gravity, opt, rng);
+    det.timing_ms["plane"] = msSince(t);
+    if (!found || found->inliers.size() < 3) {
+        det.reason = "no vertical plane in view";
+        det.timing_ms["total"] = msSince(t0);
+        return det;
+    }
+    Candidate c;
+    c.plane = found->plane;  // the paper keeps RANSAC's model as it is
+    c.inliers = static_cast<int>(found->inliers.size());
+    c.frame = makePlaneFrame(c.plane, cfg.gravity, centroid(voxels, found->inliers));
+    det.plane = c.plane;
+    det.inliers = c.inliers;
+    det.orientation_deg = orientationDeg(c.plane);
+
+    t = Clock::now();
+    std::vector<Eigen::Vector2d> uv;
+    for (int i : found->inliers) uv.push_back(c.frame.toPlane(voxels[i].cast<double>()));
+    std::vector<Segment2> hull_edges;
+    if (cfg.hull == HullKind::Convex) {
+        const auto hull = convexHull(uv);
+        hull_edges = polygonEdges(hull);
+        c.outlines.push_back(toCamera(c.frame, hull));
+    } else {
+        hull_edges = concaveHullEdges(uv, cfg.concave_alpha);
+        for (const auto &e : hull_edges) c.outlines.push_back({c.frame.toCamera(e[0]), c.frame.toCamera(e[1])});
+    }
+    det.timing_ms["hull"] = msSince(t);
+
+    t = Clock::now();
+    const auto rays = paperCornerRays(projector.direction, projector.fov_h, projector.fov_v);
+    if (!workspaceOnPlane(projector.origin, rays, c)) {
+        det.reason = "the projector workspace does not reach the plane";
+        det.timing_ms["total"] = msSince(t0);
+        return det;
+    }
+    Eigen::Vector2d lo = c.workspace_uv[0], hi = c.workspace_uv[0];
+    for (const auto &p : uv) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    for (const auto &p : c.workspace_uv) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    c.raster = makeRasterFrame(lo, hi, cfg.paper_cell);
+    const cv::Mat m1 = outlineMask(c.raster, hull_edges);
+    const cv::Mat m2 = outlineMask(c.raster, polygonEdges({c.workspace_uv.begin(), c.workspace_uv.end()}));
+    c.free = (m1 + m2) == 0;  // M3: cells at 0 in the sum are projectable
+    det.timing_ms["free_space"] = msSince(t);
+
+    t = Clock::now();
+    const bool placed = placeRectangle(c, aspect);
+    det.timing_ms["rectangle"] = msSince(t);
+    fillDebug(c, det.debug);
+    det.debug.candidates = {c.plane};
+    if (!placed) {
+        det.reason = "no free area on the plane for the picture";
+        det.timing_ms["total"] = msSince(t0);
+        return det;
+    }
+    det.rectangle = c.rectangle;
+
+    t = Clock::now();
+    det.surface_check = checkSurfacePaper(cloud, c.frame, c.rectangle, cfg.outlier_distance, cfg.max_outliers);
+    det.timing_ms["surface_check"] = msSince(t);
+    det.debug.outliers = det.surface_check.outlier_indices;
+    det.found = det.surface_check.accepted;
+    if (!det.found)
+        det.reason = "surface check rejected the area: " + std::to_string(det.surface_check.outliers) +
+                     " outliers > " + std::to_string(cfg.max_outliers);
+    det.timing_ms["total"] = msSince(t0);
+    return det;
+}
+
+// ---------------------------------------------------------------------------------------
+// Default mode.
+/// Sampled point indices: a pixel grid on organized clouds, every k-th point otherwise.
+std::vector<int> samplePoints(const Cloud &cloud, int target) {
+    std::vector<int> out;
+    const int n = static_cast<int>(cloud.points.size());
+    if (cloud.organized()) {
+        const int s = std::max(1, static_cast<int>(std::round(std::sqrt(static_cast<double>(n) / target))));
+        for (int v = s / 2; v < cloud.height; v += s)
+            for (int u = s / 2; u < cloud.width; u += s) {
+                const int i = v * cloud.width + u;
+                if (isFinite(cloud.points[i])) out.push_back(i);
+            }
+    } else {
+        const int finite = static_cast<int>(countFinite(cloud));
+        const int k = std::max(1, finite / std::max(1, target));
+        int seen = 0;
+        for (int i = 0; i < n; ++i)
+            if (isFinite(cloud.points[i]) && seen++ % k == 0) out.push_back(i);
+    }
+    return out;
+}
+
+/// Free space of one candidate from where its plane was observed: a cell is free when
+/// wall points were seen in it, nothing was seen through it, and no point in front of the
+/// wall shadows it from the projector.
+void observedFreeSpace(const Cloud &cloud, const Projector &projector, const DetectorConfig &cfg, Candidate &c) {
+    const cv::Size size(c.raster.cols, c.raster.rows);
+    cv::Mat support = cv::Mat::zeros(size, CV_16UC1), behind = cv::Mat::zeros(size, CV_16UC1),
+            shadow = cv::Mat::zeros(size, CV_8UC1);
+    const Eigen::Vector3f n = c.plane.normal.cast<float>(), o = projector.origin.cast<float>();
+    const float d = static_cast<float>(c.plane.d);
+    const Eigen::Vector3f fo = c.frame.origin.cast<float>(), right = c.frame.right.cast<float>(),
+                          up = c.frame.up.cast<float>();
+    const float inv_cell = static_cast<float>(1.0 / c.raster.cell);
+    const float u0 = static_cast<float>(c.raster.top_left.x()), v0 = static_cast<float>(c.raster.top_left.y());
+    const float proj_h = n.dot(o) + d;  // projector height above the plane
+    auto cellOf = [&](const Eigen::Vector3f &q, int &col, int &row) {
+        const Eigen::Vector3f r = q - fo;
+        col = static_cast<int>(std::floor((r.dot(right) - u0) * inv_cell));
+        row = static_cast<int>(std::floor((v0 - r.dot(up)) * inv_cell));
+        return col >= 0 && row >= 0 && col < size.width && row < size.height;
+    };
+    auto bump16 = [](cv::Mat &m, int row, int col) {
+        auto &v = m.at<std::uint16_t>(row, col);
+        if (v < 65535) ++v;
+    };
+    const int step = cloud.organized() ? std::max(1, cfg.support_stride) : 1;
+    const int width = cloud.organized() ? cloud.width : static_cast<int>(cloud.points.size());
+    const int height = cloud.organized() ? cloud.height : 1;
+    for (int y = 0; y < height; y += step) {
+        const Point *row_pts = cloud.points.data() + static_cast<std::size_t>(y) * width;
+        for (int x = 0; x < width; x += step) {
+            const Point &p = row_pts[x];
+            if (!isFinite(p)) continue;
+            const float h = n.dot(p) + d;
+            const float band = depthBand(p.z(), cfg.plane_noise, cfg.plane_sigmas, cfg.min_band, cfg.max_band);
+            int col, row;
+            if (std::abs(h) <= band) {
+                if (cellOf(p - h * n, col, row)) bump16(support, row, col);
+            } else if (h < 0.0f) {
+                // Seen through the plane (hole, door, window): where the camera ray crosses it.
+                const float t = (h - d) == 0.0f ? 0.0f : -d / (h - d);
+                if (t > 0.0f && cellOf(t * p, col, row)) bump16(behind, row, col);
+            } else if (h < proj_h) {
+                // Between projector and wall: its projector shadow on the wall.
+                const float t = proj_h / (proj_h - h);
+                if (cellOf(o + t * (p - o), col, row)) shadow.at<uchar>(row, col) = 1;
+            }
+        }
+    }
+    // Support: cells with wall points, small sampling gaps closed.
+    cv::Mat supported = support > 0;
+    cv::morphologyEx(supported, supported, cv::MORPH_CLOSE, cv::getStructuringElement(cv::MORPH_RECT, {3, 3}));
+    // Blocked: seen through more than seen on, or shadowed; isolated single cells are noise.
+    cv::Mat blocked = (behind > support) | (shadow > 0);
+    cv::Mat neighbours;
+    cv::boxFilter(blocked / 255, neighbours, CV_16U, {3, 3}, {-1, -1}, false, cv::BORDER_CONSTANT);
+    blocked &= neighbours >= 2;
+    cv::Mat footprint = cv::Mat::zeros(size, CV_8UC1);
+    fillPolygon(footprint, c.raster, {c.workspace_uv.begin(), c.workspace_uv.end()}, 255);
+    c.free = supported & ~blocked & footprint;
+}
+
+Detection detectDefault(const Cloud &cloud, const Projector &projector, const DetectorConfig &cfg, double aspect) {
+    Detection det;
+    const auto t0 = Clock::now();
+    auto t = Clock::now();
+    const std::vector<int> sample = samplePoints(cloud, cfg.target_samples);
+    std::vector<Point> pts(sample.size());
+    std::vector<float> band(sample.size());
+    for (std::size_t i = 0; i < sample.size(); ++i) {
+        pts[i] = cloud.points[sample[i]];
+        band[i] = depthBand(pts[i].z(), cfg.plane_noise, cfg.plane_sigmas, cfg.min_band, cfg.max_band);
+    }
+    det.timing_ms["sample"] = msSince(t);
+    if (pts.size() < 3) {
+        det.reason = "no points to search (empty or all-NaN cloud)";
+        det.timing_ms["total"] = msSince(t0);
+        return det;
+    }
+
+    // Every vertical plane, biggest first (sequential RANSAC + least-squares refinement).
+    t = Clock::now();
+    std::vector<int> active(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i) active[i] = static_cast<int>(i);
+    RansacOptions opt;
+    opt.max_tilt = cfg.max_tilt;
+    opt.max_iterations = 300;
+    opt.score_subset = 1500;
+    opt.max_sample_span = 1.5;
+    std::mt19937 rng(cfg.seed);
+    std::vector<Candidate> candidates;
+    const int min_points = std::min<int>(cfg.min_plane_points, static_cast<int>(pts.size()) / 20 + 3);
+    for (int k = 0; k < cfg.max_planes && static_cast<int>(active.size()) >= min_points; ++k) {
+        const auto found = findVerticalPlane(pts, active, band, cfg.gravity, opt, rng);
+        if (!found || static_cast<int>(found->inliers.size()) < min_points) break;
+        Candidate c;
+        c.plane = found->plane;
+        std::vector<int> inliers = found->inliers;
+        for (int round = 0; round < 2; ++round) {
+            const auto refined = fitPlane(pts, inliers);
+            if (!refined || tiltFromVertical(*refined, cfg.gravity) > cfg.max_tilt) break;
+            c.plane = *refined;
+            inliers = planeInliers(pts, active, band, c.plane);
+        }
+        std::vector<char> taken(pts.size(), 0);
+        for (int i : inliers) taken[i] = 1;
+        active.erase(std::remove_if(active.begin(), active.end(), [&](int i) { return taken[i]; }), active.end());
+        c.inliers = static_cast<int>(inliers.size());
+        c.frame = makePlaneFrame(c.plane, cfg.gravity, centroid(pts, inliers));
+        for (int i : inliers) c.inlier_indices.push_back(sample[i]);
+        candidates.push_back(std::move(c));
+    }
+    det.timing_ms["planes"] = msSince(t);
+    for (const auto &c : candidates) det.debug.candidates.push_back(c.plane);
+    if (candidates.empty()) {
+        det.reason = "no vertical plane in view";
+        det.timing_ms["total"] = msSince(t0);
+        return det;
+    }
+
+    // Free space and the biggest rectangle on each candidate.
+    t = Clock::now();
+    const auto rays = projector.cornerRays();
+    std::vector<int> usable;
+    for (int k = 0; k < static_cast<int>(candidates.size()); ++k) {
+        Candidate &c = candidates[k];
+        if (!workspaceOnPlane(projector.origin, rays, c)) continue;
+        Eigen::Vector2d lo = c.workspace_uv[0], hi = c.workspace_uv[0];
+        for (const auto &w : c.workspace_uv) {
+            lo = lo.cwiseMin(w);
+            hi = hi.cwiseMax(w);
+        }
+        // Only where the plane was seen can the picture go: clip to its inliers' extent.
+        Eigen::Vector2d ilo = Eigen::Vector2d::Constant(1e9), ihi = Eigen::Vector2d::Constant(-1e9);
+        for (int i : c.inlier_indices) {
+            const Eigen::Vector2d uv = c.frame.toPlane(cloud.points[i].cast<double>());
+            ilo = ilo.cwiseMin(uv);
+            ihi = ihi.cwiseMax(uv);
+        }
+        lo = lo.cwiseMax(ilo - Eigen::Vector2d::Constant(cfg.cell));
+        hi = hi.cwiseMin(ihi + Eigen::Vector2d::Constant(cfg.cell));
+        if (!(lo.array() < hi.array()).all()) continue;
+        c.raster = makeRasterFrame(lo, hi, cfg.cell);
+        observedFreeSpace(cloud, projector, cfg, c);
+        usable.push_back(k);
+    }
+    det.timing_ms["free_space"] = msSince(t);
+
+    t = Clock::now();
+    std::vector<int> placed;
+    for (int k : usable)
+        if (placeRectangle(candidates[k], aspect)) placed.push_back(k);
+    std::sort(placed.begin(), placed.end(),
+              [&](int a, int b) { return candidates[a].rectangle.area() > candidates[b].rectangle.area(); });
+    det.timing_ms["rectangle"] = msSince(t);
+
+    // The biggest rectangle that passes the surface check.
+    t = Clock::now();
+    const Candidate *chosen = nullptr;
+    SurfaceCheckResult last;
+    for (int k : placed) {
+        const Candidate &c = candidates[k];
+        last = checkSurface(cloud, c.frame, c.rectangle, cfg.plane_noise, cfg.plane_sigmas, cfg.min_band,
+                            cfg.max_outlier_fraction, cloud.organized() ? cfg.support_stride : 1);
+        if (last.accepted) {
+            chosen = &c;
+            break;
+        }
+    }
+    det.timing_ms["surface_check"] = msSince(t);
+
+    const Candidate &shown = chosen ? *chosen : candidates[placed.empty() ? (usable.empty() ? 0 : usable[0]) : placed[0]];
+    det.plane = shown.plane;
+    det.inliers = shown.inliers;
+    det.orientation_deg = orientationDeg(shown.plane);
+    if (!shown.free.empty()) {
+        fillDebug(shown, det.debug);
+        std::vector<std::vector<cv::Point>> contours;
+        cv::findContours(shown.free.clone(), contours, cv::RETR_LIST, cv::CHAIN_APPROX_SIMPLE);
+        for (const auto &contour : contours) {
+            std::vector<Eigen::Vector3d> outline;
+            for (const auto &p : contour)
+                outline.push_back(shown.frame.toCamera(shown.raster.toPlane({p.x + 0.5, p.y + 0.5})));
+            det.debug.hull.push_back(outline);
+        }
+    }
+    det.debug.inliers = shown.inlier_indices;
+    if (chosen) {
+        det.found = true;
+        det.rectangle = chosen->rectangle;
+        det.surface_check = last;
+    } else if (usable.empty()) {
+        det.reason = "the projector workspace does not reach any vertical plane in view";
+    } else if (placed.empty()) {
+        det.reason = "no free area for the picture on any vertical plane";
+    } else {
+        det.rectangle = candidates[placed[0]].rectangle;
+        det.surface_check = last;
+        det.surface_check.accepted = false;
+        det.reason = "the surface check rejected every candidate area";
+    }
+    det.debug.outliers = det.surface_check.outlier_indices;
+    det.timing_ms["total"] = msSince(t0);
+    return det;
+}
+
+}  // namespace
 
 SurfaceDetector::SurfaceDetector(const Projector &projector, const DetectorConfig &config)
     : projector_(projector), config_(config) {}
 
-Detection SurfaceDetector::detect(const Cloud &) {
-    Detection d;
-    d.reason = "not implemented";
-    return d;
+Detection SurfaceDetector::detect(const Cloud &cloud) {
+    const double aspect = config_.aspect > 0.0 ? config_.aspect : projector_.aspect();
+    return config_.method == Method::Paper ? detectPaper(cloud, projector_, config_, aspect)
+                                           : detectDefault(cloud, projector_, config_, aspect);
 }
 
 Detection detectSurface(const Cloud &cloud, const Projector &projector, const DetectorConfig &config) {

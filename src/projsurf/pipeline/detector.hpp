@@ -47,8 +47,8 @@ struct DetectorConfig {
     double plane_sigmas = 3.0;          ///< inlier band in sigmas of the depth noise
     double min_band = 0.01;             ///< m, inlier band floor (flat posters stay inliers)
     double max_band = 0.06;             ///< m, inlier band ceiling
-    double cell = 0.02;                 ///< m, free-space raster cell
-    double min_clearance = 0.05;        ///< m, obstacles closer than this to the wall still shadow it
+    double cell = 0.015;                ///< m, free-space raster cell (area error < 0.05 m^2 at 3 m)
+    int support_stride = 2;             ///< pixel step of the free-space pass on organized clouds
     double max_outlier_fraction = 0.02; ///< share of checked points off the plane that rejects a rectangle
 };
 

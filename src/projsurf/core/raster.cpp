@@ -1,0 +1,88 @@
+#include "projsurf/core/raster.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace projsurf {
+
+RasterFrame makeRasterFrame(const Eigen::Vector2d &lo, const Eigen::Vector2d &hi, double cell, int max_cells) {
+    RasterFrame f;
+    f.cell = cell;
+    f.top_left = {lo.x(), hi.y()};
+    f.cols = std::clamp(static_cast<int>(std::ceil((hi.x() - lo.x()) / cell)), 1, max_cells);
+    f.rows = std::clamp(static_cast<int>(std::ceil((hi.y() - lo.y()) / cell)), 1, max_cells);
+    return f;
+}
+
+void drawLine(cv::Mat &grid, const Eigen::Vector2i &a, const Eigen::Vector2i &b, uchar value) {
+    int x0 = a.x(), y0 = a.y();
+    const int x1 = b.x(), y1 = b.y();
+    const int dx = std::abs(x1 - x0), dy = -std::abs(y1 - y0);
+    const int sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1;
+    int err = dx + dy;
+    while (true) {
+        if (x0 >= 0 && y0 >= 0 && x0 < grid.cols && y0 < grid.rows) grid.at<uchar>(y0, x0) = value;
+        if (x0 == x1 && y0 == y1) break;
+        const int e2 = 2 * err;
+        if (e2 >= dy) {
+            err += dy;
+            x0 += sx;
+        }
+        if (e2 <= dx) {
+            err += dx;
+            y0 += sy;
+        }
+    }
+}
+
+void fillOutsideRows(cv::Mat &grid, uchar value) {
+    for (int r = 0; r < grid.rows; ++r) {
+        uchar *row = grid.ptr<uchar>(r);
+        int first = 0;
+        while (first < grid.cols && row[first] == 0) ++first;
+        if (first == grid.cols) {
+            std::fill(row, row + grid.cols, value);
+            continue;
+        }
+        std::fill(row, row + first, value);
+        int last = grid.cols - 1;
+        while (last >= 0 && row[last] == 0) --last;
+        std::fill(row + last + 1, row + grid.cols, value);
+    }
+}
+
+void fillPolygon(cv::Mat &grid, const RasterFrame &frame, const std::vector<Eigen::Vector2d> &polygon, uchar value) {
+    if (polygon.size() < 3) return;
+    std::vector<Eigen::Vector2d> cells;
+    for (const auto &p : polygon) cells.push_back(frame.toCell(p));
+    std::vector<double> xs;
+    for (int r = 0; r < grid.rows; ++r) {
+        const double y = r + 0.5;
+        xs.clear();
+        for (std::size_t i = 0; i < cells.size(); ++i) {
+            const Eigen::Vector2d &a = cells[i], &b = cells[(i + 1) % cells.size()];
+            if ((a.y() <= y) == (b.y() <= y)) continue;
+            xs.push_back(a.x() + (y - a.y()) / (b.y() - a.y()) * (b.x() - a.x()));
+        }
+        std::sort(xs.begin(), xs.end());
+        uchar *row = grid.ptr<uchar>(r);
+        for (std::size_t i = 0; i + 1 < xs.size(); i += 2) {
+            const int c0 = std::max(0, static_cast<int>(std::ceil(xs[i] - 0.5)));
+            const int c1 = std::min(grid.cols - 1, static_cast<int>(std::floor(xs[i + 1] - 0.5)));
+            for (int c = c0; c <= c1; ++c) row[c] = value;
+        }
+    }
+}
+
+cv::Mat outlineMask(const RasterFrame &frame, const std::vector<Segment2> &edges) {
+    cv::Mat grid = cv::Mat::zeros(frame.rows, frame.cols, CV_8UC1);
+    auto cellOf = [&](const Eigen::Vector2d &uv) {
+        const Eigen::Vector2d c = frame.toCell(uv);
+        return Eigen::Vector2i(static_cast<int>(std::floor(c.x())), static_cast<int>(std::floor(c.y())));
+    };
+    for (const auto &e : edges) drawLine(grid, cellOf(e[0]), cellOf(e[1]), 1);
+    fillOutsideRows(grid, 1);
+    return grid;
+}
+
+}  // namespace projsurf

@@ -1,0 +1,70 @@
+#include "projsurf/core/vertical_ransac.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace projsurf {
+
+std::vector<int> planeInliers(const std::vector<Point> &points, const std::vector<int> &active,
+                              const std::vector<float> &band, const Plane &plane) {
+    std::vector<int> out;
+    const Eigen::Vector3f n = plane.normal.cast<float>();
+    const float d = static_cast<float>(plane.d);
+    for (int i : active)
+        if (std::abs(n.dot(points[i]) + d) <= band[i]) out.push_back(i);
+    return out;
+}
+
+std::optional<PlaneInliers> findVerticalPlane(const std::vector<Point> &points, const std::vector<int> &active,
+                                              const std::vector<float> &band, const Eigen::Vector3d &gravity,
+                                              const RansacOptions &options, std::mt19937 &rng) {
+    if (active.size() < 3) return std::nullopt;
+    const Eigen::Vector3f g = gravity.normalized().cast<float>();
+    const float max_sin_tilt = static_cast<float>(std::sin(options.max_tilt));
+
+    // Hypotheses are scored on a fixed random subset (all points when small).
+    std::vector<int> subset = active;
+    if (options.score_subset > 0 && static_cast<int>(subset.size()) > options.score_subset) {
+        std::shuffle(subset.begin(), subset.end(), rng);
+        subset.resize(options.score_subset);
+    }
+    std::uniform_int_distribution<std::size_t> pick(0, active.size() - 1);
+    const float span2 = static_cast<float>(options.max_sample_span * options.max_sample_span);
+
+    int best_score = 0;
+    Eigen::Vector3f best_n = Eigen::Vector3f::Zero();
+    float best_d = 0.0f;
+    double needed = options.max_iterations;
+    for (int it = 0; it < options.max_iterations && it < needed; ++it) {
+        const Point &p1 = points[active[pick(rng)]];
+        Point p2 = points[active[pick(rng)]], p3 = points[active[pick(rng)]];
+        if (span2 > 0.0f) {
+            for (int retry = 0; retry < 8 && (p2 - p1).squaredNorm() > span2; ++retry) p2 = points[active[pick(rng)]];
+            for (int retry = 0; retry < 8 && (p3 - p1).squaredNorm() > span2; ++retry) p3 = points[active[pick(rng)]];
+        }
+        Eigen::Vector3f n = (p2 - p1).cross(p3 - p1);
+        const float len = n.norm();
+        if (!(len > 1e-6f)) continue;
+        n /= len;
+        if (std::abs(n.dot(g)) > max_sin_tilt) continue;  // not vertical
+        const float d = -n.dot(p1);
+        int score = 0;
+        for (int i : subset) score += std::abs(n.dot(points[i]) + d) <= band[i];
+        if (score > best_score) {
+            best_score = score;
+            best_n = n;
+            best_d = d;
+            const double w = static_cast<double>(score) / subset.size();
+            const double p_good = w * w * w;
+            if (p_good >= 1.0) needed = 0;
+            else if (p_good > 0.0) needed = std::log(1.0 - options.probability) / std::log(1.0 - p_good);
+        }
+    }
+    if (best_score < 3) return std::nullopt;
+    PlaneInliers result;
+    result.plane = makePlane(best_n.cast<double>(), best_d);
+    result.inliers = planeInliers(points, active, band, result.plane);
+    return result;
+}
+
+}  // namespace projsurf

@@ -1,0 +1,175 @@
+#include "projsurf/io/overlay.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <cstdio>
+#include <opencv2/imgproc.hpp>
+
+namespace projsurf {
+namespace {
+
+const cv::Scalar kInlier(80, 200, 80), kFree(0, 220, 255), kWorkspace(255, 160, 40), kRect(255, 0, 255),
+    kOutlier(40, 40, 255), kText(255, 255, 255);
+
+/// Where camera-frame points land in the picture.
+struct View {
+    CameraIntrinsics cam;
+    double scale = 1.0;  // picture pixels per camera pixel
+    cv::Point2f operator()(const Eigen::Vector3d &p) const {
+        const double z = std::max(p.z(), 1e-3);
+        return {static_cast<float>((cam.fx * p.x() / z + cam.cx + 0.5) * scale - 0.5),
+                static_cast<float>((cam.fy * p.y() / z + cam.cy + 0.5) * scale - 0.5)};
+    }
+};
+
+void polyline(cv::Mat &img, const View &view, const std::vector<Eigen::Vector3d> &pts, bool closed,
+              const cv::Scalar &color, int thickness) {
+    if (pts.size() < 2) return;
+    std::vector<cv::Point> px;
+    for (const auto &p : pts) {
+        const cv::Point2f q = view(p);
+        px.emplace_back(cvRound(q.x * 16), cvRound(q.y * 16));
+    }
+    cv::polylines(img, std::vector<std::vector<cv::Point>>{px}, closed, color, thickness, cv::LINE_AA, 4);
+}
+
+void legend(cv::Mat &img, const std::vector<std::pair<cv::Scalar, std::string>> &items, const std::vector<std::string> &lines) {
+    const double fs = std::max(0.4, img.cols / 1400.0);
+    const int lh = static_cast<int>(22 * fs / 0.5);
+    const int h = lh * static_cast<int>(items.size() + lines.size()) + 10;
+    int w = 0;
+    for (const auto &l : lines) w = std::max(w, cv::getTextSize(l, cv::FONT_HERSHEY_SIMPLEX, fs, 1, nullptr).width);
+    for (const auto &it : items) w = std::max(w, cv::getTextSize(it.second, cv::FONT_HERSHEY_SIMPLEX, fs, 1, nullptr).width + lh);
+    cv::Mat roi = img(cv::Rect(0, 0, std::min(img.cols, w + 20), std::min(img.rows, h)));
+    roi *= 0.35;
+    int y = lh;
+    for (const auto &l : lines) {
+        cv::putText(img, l, {8, y - 4}, cv::FONT_HERSHEY_SIMPLEX, fs, kText, 1, cv::LINE_AA);
+        y += lh;
+    }
+    for (const auto &it : items) {
+        cv::rectangle(img, cv::Rect(8, y - lh + 6, lh - 10, lh - 10), it.first, cv::FILLED);
+        cv::putText(img, it.second, {8 + lh, y - 4}, cv::FONT_HERSHEY_SIMPLEX, fs, kText, 1, cv::LINE_AA);
+        y += lh;
+    }
+}
+
+}  // namespace
+
+CameraIntrinsics estimateIntrinsics(const Cloud &cloud) {
+    CameraIntrinsics cam;
+    cam.fx = 0.0;
+    if (!cloud.organized()) return cam;
+    Eigen::Matrix2d ax = Eigen::Matrix2d::Zero(), ay = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d bx = Eigen::Vector2d::Zero(), by = Eigen::Vector2d::Zero();
+    int used = 0;
+    for (int v = 0; v < cloud.height; v += 4)
+        for (int u = 0; u < cloud.width; u += 4) {
+            const Point &p = cloud.points[static_cast<std::size_t>(v) * cloud.width + u];
+            if (!isFinite(p) || p.z() <= 0) continue;
+            const Eigen::Vector2d rx(p.x() / p.z(), 1.0), ry(p.y() / p.z(), 1.0);
+            ax += rx * rx.transpose();
+            bx += rx * u;
+            ay += ry * ry.transpose();
+            by += ry * v;
+            ++used;
+        }
+    if (used < 50) return cam;
+    const Eigen::Vector2d sx = ax.ldlt().solve(bx), sy = ay.ldlt().solve(by);
+    cam.width = cloud.width;
+    cam.height = cloud.height;
+    cam.fx = sx(0);
+    cam.cx = sx(1);
+    cam.fy = sy(0);
+    cam.cy = sy(1);
+    if (!(cam.fx > 0 && cam.fy > 0 && std::isfinite(cam.cx) && std::isfinite(cam.cy))) cam.fx = 0.0;
+    return cam;
+}
+
+cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorConfig &config,
+                      const CameraIntrinsics *camera, const cv::Mat &color) {
+    View view;
+    if (camera) view.cam = *camera;
+    else view.cam = estimateIntrinsics(cloud);
+    if (!(view.cam.fx > 0)) view.cam = CameraIntrinsics{};  // a virtual Kinect-like view
+    const int w = view.cam.width, h = view.cam.height;
+    view.scale = std::max(1.0, 960.0 / w);
+
+    // Background: the colour image, or the depth shaded grey (near = bright).
+    cv::Mat base(h, w, CV_8UC3, cv::Scalar(30, 30, 30));
+    const bool use_color = !color.empty() && color.cols == w && color.rows == h && color.type() == CV_8UC3;
+    if (use_color) base = color * 0.6;
+    const Eigen::Vector3f n = det.plane.normal.cast<float>();
+    const float d = static_cast<float>(det.plane.d);
+    std::vector<char> outlier(cloud.points.size(), 0);
+    for (int i : det.debug.outliers)
+        if (i >= 0 && i < static_cast<int>(outlier.size())) outlier[i] = 1;
+    const bool organized_match = cloud.organized() && cloud.width == w && cloud.height == h;
+    for (std::size_t i = 0; i < cloud.points.size(); ++i) {
+        const Point &p = cloud.points[i];
+        if (!isFinite(p) || p.z() <= 0) continue;
+        int u, v;
+        if (organized_match) {
+            u = static_cast<int>(i % w);
+            v = static_cast<int>(i / w);
+        } else {
+            u = static_cast<int>(std::lround(view.cam.fx * p.x() / p.z() + view.cam.cx));
+            v = static_cast<int>(std::lround(view.cam.fy * p.y() / p.z() + view.cam.cy));
+            if (u < 0 || v < 0 || u >= w || v >= h) continue;
+        }
+        cv::Vec3b &px = base.at<cv::Vec3b>(v, u);
+        if (!use_color) {
+            const int g = static_cast<int>(std::clamp(255.0f - 40.0f * p.z(), 40.0f, 230.0f));
+            px = cv::Vec3b(g, g, g);
+        }
+        if (outlier[i]) {
+            px = cv::Vec3b(40, 40, 255);
+        } else if (det.inliers > 0) {
+            const float band = depthBand(p.z(), config.plane_noise, config.plane_sigmas, config.min_band, config.max_band);
+            if (std::abs(n.dot(p) + d) <= band)
+                px = cv::Vec3b(static_cast<uchar>(px[0] * 0.5 + 40), static_cast<uchar>(px[1] * 0.5 + 100),
+                               static_cast<uchar>(px[2] * 0.5 + 40));
+        }
+    }
+    cv::Mat img;
+    cv::resize(base, img, {}, view.scale, view.scale, cv::INTER_NEAREST);
+
+    for (const auto &outline : det.debug.hull) polyline(img, view, outline, outline.size() > 2, kFree, 2);
+    if (det.debug.has_workspace) polyline(img, view, {det.debug.workspace.begin(), det.debug.workspace.end()}, true, kWorkspace, 2);
+    if (det.rectangle.area() > 0) {
+        polyline(img, view, {det.rectangle.corners.begin(), det.rectangle.corners.end()}, true,
+                 det.found ? kRect : cv::Scalar(128, 0, 128), 4);
+        const cv::Point2f tl = view(det.rectangle.corners[0]);
+        cv::putText(img, "TL", tl + cv::Point2f(6, 22), cv::FONT_HERSHEY_SIMPLEX, 0.6, kRect, 2, cv::LINE_AA);
+    }
+
+    char line[256];
+    std::vector<std::string> lines;
+    if (det.found) {
+        std::snprintf(line, sizeof line, "found: %.2f x %.2f m = %.2f m^2", det.rectangle.width, det.rectangle.height,
+                      det.rectangle.area());
+    } else {
+        std::snprintf(line, sizeof line, "not found: %s", det.reason.c_str());
+    }
+    lines.emplace_back(line);
+    if (det.inliers > 0) {
+        std::snprintf(line, sizeof line, "plane %.2f m away, %.1f deg to the optical axis, %d inliers", det.plane.d,
+                      det.orientation_deg, det.inliers);
+        lines.emplace_back(line);
+    }
+    std::snprintf(line, sizeof line, "surface check: %d outliers / %d points; method %s; %.1f ms",
+                  det.surface_check.outliers, det.surface_check.points,
+                  config.method == Method::Paper ? "paper" : "default",
+                  det.timing_ms.count("total") ? det.timing_ms.at("total") : 0.0);
+    lines.emplace_back(line);
+    legend(img,
+           {{kInlier, "wall points (plane inliers)"},
+            {kFree, config.method == Method::Paper ? "plane hull" : "free space on the wall"},
+            {kWorkspace, "projector workspace"},
+            {kRect, "picture rectangle"},
+            {kOutlier, "surface-check outliers"}},
+           lines);
+    return img;
+}
+
+}  // namespace projsurf
