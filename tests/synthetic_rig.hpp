@@ -98,16 +98,16 @@ inline CaptureImages renderCapture(const Projector &proj, const Plane &plane, co
     const Eigen::Vector2d centre(proj.cx(), proj.cy());
     for (int v = 0; v < cam.height; ++v)
         for (int u = 0; u < cam.width; ++u) {
-            int lit = 0;  // 3x3 supersampling for the colour
-            for (int sy = -1; sy <= 1; ++sy)
-                for (int sx = -1; sx <= 1; ++sx) {
+            int lit = 0;  // 2x2 supersampling for the colour
+            for (int sy = 0; sy < 2; ++sy)
+                for (int sx = 0; sx < 2; ++sx) {
                     const auto hit = intersectRay(plane, Eigen::Vector3d::Zero(),
-                                                  cam.backProject(u + sx / 3.0, v + sy / 3.0, 1.0));
+                                                  cam.backProject(u - 0.25 + 0.5 * sx, v - 0.25 + 0.5 * sy, 1.0));
                     if (!hit) continue;
                     const auto px = proj.toPixel(*hit);
                     if (!opt.no_disc && px && (*px - centre).norm() <= opt.disc_radius_px) ++lit;
                 }
-            double grey = 12.0 + 210.0 * lit / 9.0 + (opt.noise ? 4.0 * unit(rng) : 0.0);
+            double grey = 12.0 + 210.0 * lit / 4.0 + (opt.noise ? 4.0 * unit(rng) : 0.0);
             const auto g = cv::saturate_cast<uchar>(grey);
             c.color.at<cv::Vec3b>(v, u) = cv::Vec3b(g, g, g);
             const auto hit = intersectRay(plane, Eigen::Vector3d::Zero(), cam.backProject(u, v, 1.0));

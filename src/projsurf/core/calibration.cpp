@@ -44,6 +44,39 @@ std::optional<Plane> planeThrough(const std::vector<Eigen::Vector3d> &pts, const
     return makePlane(normal, -normal.dot(mean));
 }
 
+/// The contour's moments place the centre to about 0.2 px (Canny puts the edge on the inner
+/// pixel on some sides and the outer one on others). The intensity-weighted centroid of the
+/// blob (grey level above the surrounding background, over the contour's interior grown by
+/// 2 px so antialiased rim pixels count) is unbiased.
+Eigen::Vector2d refineCentroid(const cv::Mat &grey, const std::vector<cv::Point> &contour,
+                               const Eigen::Vector2d &fallback) {
+    const int pad = 8;
+    cv::Rect box = cv::boundingRect(contour);
+    box = cv::Rect(box.x - pad, box.y - pad, box.width + 2 * pad, box.height + 2 * pad) &
+          cv::Rect(0, 0, grey.cols, grey.rows);
+    cv::Mat filled(box.size(), CV_8UC1, cv::Scalar(0));
+    std::vector<std::vector<cv::Point>> one{contour};
+    cv::drawContours(filled, one, 0, cv::Scalar(255), cv::FILLED, cv::LINE_8, cv::noArray(), 0,
+                     cv::Point(-box.x, -box.y));
+    cv::Mat inner, outer;
+    const cv::Mat k3 = cv::getStructuringElement(cv::MORPH_RECT, cv::Size(3, 3));
+    cv::dilate(filled, inner, k3, cv::Point(-1, -1), 2);
+    cv::dilate(filled, outer, k3, cv::Point(-1, -1), 5);
+    const cv::Mat roi = grey(box);
+    const cv::Mat ring = outer & ~inner;
+    if (cv::countNonZero(ring) == 0) return fallback;
+    const double background = cv::mean(roi, ring)[0];
+    double sw = 0, sx = 0, sy = 0;
+    for (int y = 0; y < roi.rows; ++y)
+        for (int x = 0; x < roi.cols; ++x) {
+            if (!inner.at<uchar>(y, x)) continue;
+            const double w = std::max(0.0, roi.at<uchar>(y, x) - background);
+            sw += w, sx += w * (x + box.x), sy += w * (y + box.y);
+        }
+    if (!(sw > 0)) return fallback;
+    return Eigen::Vector2d(sx / sw, sy / sw);
+}
+
 }  // namespace
 
 std::optional<DiscDetection> findDisc(const cv::Mat &image, const DiscConfig &config) {
@@ -62,6 +95,7 @@ std::optional<DiscDetection> findDisc(const cv::Mat &image, const DiscConfig &co
     cv::findContours(edges, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
 
     std::optional<DiscDetection> best;
+    int best_index = -1;
     int candidates = 0;
     for (const auto &c : contours) {
         const cv::Moments m = cv::moments(c);  // ... and moments (Green's theorem) for the centroid
@@ -72,6 +106,7 @@ std::optional<DiscDetection> findDisc(const cv::Mat &image, const DiscConfig &co
         const double circularity = perimeter > 0 ? 4.0 * kPi * area / (perimeter * perimeter) : 0.0;
         if (circularity < config.min_circularity) continue;
         if (best && best->area_px >= area) continue;
+        best_index = static_cast<int>(&c - contours.data());
         DiscDetection d;
         d.centroid = Eigen::Vector2d(m.m10 / m.m00, m.m01 / m.m00);
         d.area_px = area;
@@ -79,7 +114,9 @@ std::optional<DiscDetection> findDisc(const cv::Mat &image, const DiscConfig &co
         d.circularity = circularity;
         best = d;
     }
-    if (best) best->candidates = candidates;
+    if (!best) return best;
+    best->candidates = candidates;
+    best->centroid = refineCentroid(grey, contours[best_index], best->centroid);
     return best;
 }
 

@@ -35,9 +35,11 @@ struct DiscDetection {
     int candidates = 0;         ///< bright blobs seen (1 for a clean capture)
 };
 
-/// Paper 3.1.1: binary threshold, morphological opening, Canny, contours, moments -> centroid.
-/// Picks the largest sufficiently round blob. nullopt when there is none. Accepts 8-bit
-/// grey, BGR or BGRA images.
+/// Paper 3.1.1: binary threshold, morphological opening, Canny, contours, moments. Picks the
+/// largest sufficiently round blob; its centre is the intensity-weighted centroid of the grey
+/// image over the blob (the paper's "weighted average of the pixel intensities"), which is
+/// sub-pixel accurate where the contour's moments are biased by ~0.2 px. nullopt when there is
+/// no disc. Accepts 8-bit (or 16-bit) grey, BGR or BGRA images.
 std::optional<DiscDetection> findDisc(const cv::Mat &image, const DiscConfig &config = {});
 
 struct LiftConfig {
