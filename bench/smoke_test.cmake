@@ -1,0 +1,10 @@
+# ctest smoke test: runs ${BENCH} ${ARGS}; passes when it exits 0 and prints ${EXPECT}.
+execute_process(COMMAND ${BENCH} ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "${BENCH} ${ARGS} exited with ${rc}\n${err}")
+endif()
+string(FIND "${out}" "${EXPECT}" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "output lacks \"${EXPECT}\":\n${out}")
+endif()
+message(STATUS "ok: exit 0 and \"${EXPECT}\" printed")
