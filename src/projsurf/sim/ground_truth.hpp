@@ -1,0 +1,60 @@
+#pragma once
+// The true answer for a simulated scene: on every vertical projection surface, the cells
+// (default 5 mm) that are on the surface, seen by the camera (in the image, in range, not
+// at a grazing angle, not hidden) and lit by the projector (in its frustum, not in an
+// obstacle's shadow); then the largest free upright rectangle of the wanted aspect ratio
+// (core/rectangle_search.hpp). The best surface's rectangle is the ground truth.
+#include <Eigen/Core>
+#include <array>
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "projsurf/core/plane.hpp"
+#include "projsurf/core/plane_frame.hpp"
+#include "projsurf/core/projector.hpp"
+#include "projsurf/sim/scene.hpp"
+#include "projsurf/sim/sensor_model.hpp"
+
+namespace projsurf::sim {
+
+struct TruthOptions {
+    double aspect = 0.0;      ///< width / height; 0 = the projector framebuffer's
+    double cell = 0.005;      ///< m, raster cell on the surface
+    double max_tilt = 0.1;    ///< rad, a surface is vertical within this (contract, paper 3.2.1)
+    double tolerance = 0.01;  ///< m, a hit this close in front of a cell does not hide it (posters)
+};
+
+/// The result on one projection surface.
+struct SurfaceTruth {
+    int surface = -1;                 ///< Quad::surface id
+    std::string label;                ///< label of its quads ("wall", "closet", ...)
+    Plane plane;                      ///< camera frame, normal towards the camera
+    PlaneFrame frame;                 ///< up = -gravity, origin where the projector axis meets it
+    std::array<Eigen::Vector3d, 4> footprint{};  ///< projector footprint TL, TR, BR, BL
+    bool has_footprint = false;       ///< false when a corner ray misses the plane
+    cv::Mat free_mask;                ///< CV_8U, 255 = free; row 0 is the top (largest up)
+    Eigen::Vector2d grid_origin = Eigen::Vector2d::Zero();  ///< plane coords of the mask's top-left corner
+    double cell = 0.0;                ///< m
+    bool found = false;
+    Rectangle rectangle;              ///< exact aspect, inside free cells
+    double free_area = 0.0;           ///< m^2 of free cells
+};
+
+struct GroundTruth {
+    bool found = false;
+    double aspect = 0.0;
+    SurfaceTruth best;                  ///< the surface with the largest rectangle
+    std::vector<SurfaceTruth> surfaces; ///< every vertical projection surface considered
+};
+
+/// Ground truth for a scene seen by `sensor.camera` (its range and grazing limits) with
+/// `projector`; `gravity` in the camera frame.
+GroundTruth computeGroundTruth(const Scene &scene, const SensorModel &sensor, const Projector &projector,
+                               const Eigen::Vector3d &gravity, const TruthOptions &options = {});
+
+/// True when the segment from `from` to `to` is blocked by a quad more than `tolerance`
+/// before `to`.
+bool segmentBlocked(const Scene &scene, const Eigen::Vector3d &from, const Eigen::Vector3d &to, double tolerance);
+
+}  // namespace projsurf::sim

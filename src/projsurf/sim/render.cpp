@@ -1,0 +1,126 @@
+#include "projsurf/sim/render.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "projsurf/sim/raster.hpp"
+
+namespace projsurf::sim {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
+
+/// Bilinear BGR sample of an 8-bit image at (x, y) (pixel centres at integers), in [0, 1].
+cv::Vec3f sampleBilinear(const cv::Mat &img, double x, double y) {
+    const double fx = std::clamp(x, 0.0, img.cols - 1.0), fy = std::clamp(y, 0.0, img.rows - 1.0);
+    const int x0 = static_cast<int>(fx), y0 = static_cast<int>(fy);
+    const int x1 = std::min(x0 + 1, img.cols - 1), y1 = std::min(y0 + 1, img.rows - 1);
+    const float ax = static_cast<float>(fx - x0), ay = static_cast<float>(fy - y0);
+    const cv::Vec3b &a = img.at<cv::Vec3b>(y0, x0), &b = img.at<cv::Vec3b>(y0, x1);
+    const cv::Vec3b &c = img.at<cv::Vec3b>(y1, x0), &d = img.at<cv::Vec3b>(y1, x1);
+    cv::Vec3f out;
+    for (int k = 0; k < 3; ++k)
+        out[k] = ((1 - ay) * ((1 - ax) * a[k] + ax * b[k]) + ay * ((1 - ax) * c[k] + ax * d[k])) / 255.0f;
+    return out;
+}
+
+}  // namespace
+
+RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned seed,
+                      const std::optional<Projection> &projection, const Lighting &lighting) {
+    const CameraIntrinsics &cam = sensor.camera;
+    const PinholeView view = cameraView(cam);
+    const DepthBuffer buf = castView(scene, view, 0.05);
+
+    std::optional<ShadowMap> emitter;
+    if (sensor.ir_shadow) {
+        // The emitter's pattern covers a little more than the camera's view.
+        PinholeView e = view;
+        e.origin = sensor.emitter;
+        const int pad = cam.width / 8;
+        e.width += 2 * pad;
+        e.height += 2 * pad;
+        e.cx += pad;
+        e.cy += pad;
+        emitter = makeShadowMap(scene, e);
+    }
+    std::optional<ShadowMap> light;
+    PinholeView pview;
+    if (projection) {
+        const cv::Mat &fb = projection->framebuffer;
+        if (fb.type() != CV_8UC3 || fb.cols != projection->projector.width || fb.rows != projection->projector.height)
+            throw std::invalid_argument("renderFrame: the framebuffer must be BGR 8-bit of the projector's resolution");
+        pview = projectorView(projection->projector);
+        // A shadow map about as fine as the camera image is enough for the light's edges.
+        light = makeShadowMap(scene, pview, std::min(1.0, 2.0 * cam.width / pview.width));
+    }
+
+    RgbdFrame f;
+    f.depth = cv::Mat(cam.height, cam.width, CV_16UC1, cv::Scalar(0));
+    f.rgb = cv::Mat(cam.height, cam.width, CV_8UC3, cv::Scalar(0, 0, 0));
+    f.quad = buf.quad.clone();
+    f.cloud.width = cam.width;
+    f.cloud.height = cam.height;
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    f.cloud.points.assign(static_cast<std::size_t>(cam.width) * cam.height, Point(nan, nan, nan));
+
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    std::normal_distribution<float> colour_noise(0.0f, static_cast<float>(sensor.rgb_noise));
+    for (int v = 0; v < cam.height; ++v) {
+        const int *qrow = buf.quad.ptr<int>(v);
+        const double *zrow = buf.z.ptr<double>(v);
+        for (int u = 0; u < cam.width; ++u) {
+            const int qi = qrow[u];
+            if (qi < 0) continue;  // nothing there: no reading, black
+            const Quad &quad = scene.quads[qi];
+            const Eigen::Vector3d d = view.rayDirection(u, v);
+            const double z = zrow[u];
+            const Eigen::Vector3d p = z * d;
+
+            // Depth reading.
+            const double angle = std::acos(std::min(1.0, std::abs(quad.normal().dot(d)) / d.norm())) * kRadToDeg;
+            bool valid = !(emitter && !emitter->reaches(p, qi));
+            const double drop = sensor.dropoutProbability(angle);
+            if (valid && drop > 0.0) valid = drop < 1.0 && uniform(rng) >= drop;
+            const double zm = valid ? sensor.measure(z, rng) : 0.0;
+            if (zm > 0.0) {
+                const std::size_t i = static_cast<std::size_t>(v) * cam.width + u;
+                f.cloud.points[i] = (zm * d).cast<float>();
+                f.depth.at<std::uint16_t>(v, u) =
+                    static_cast<std::uint16_t>(std::min(65535.0, std::round(zm * cam.depth_scale)));
+            }
+
+            // Colour: albedo under ambient light plus the projector's light where it reaches.
+            cv::Vec3f c = quad.albedo * static_cast<float>(lighting.ambient);
+            if (light && light->reaches(p, qi)) {
+                const Eigen::Vector2d px = pview.pixelOf(pview.toView(p));
+                if (pview.inside(px)) {
+                    const cv::Vec3f fbc = sampleBilinear(projection->framebuffer, px.x(), px.y());
+                    c += quad.albedo.mul(fbc) * static_cast<float>(lighting.projector_gain);
+                }
+            }
+            cv::Vec3b &out = f.rgb.at<cv::Vec3b>(v, u);
+            for (int k = 0; k < 3; ++k) {
+                float value = 255.0f * c[k];
+                if (sensor.noise && sensor.rgb_noise > 0.0) value += colour_noise(rng);
+                out[k] = cv::saturate_cast<uchar>(value);
+            }
+        }
+    }
+    return f;
+}
+
+cv::Mat calibrationPicture(int width, int height, double radius_px) {
+    if (radius_px <= 0.0) radius_px = height / 8.0;
+    cv::Mat img(height, width, CV_8UC3, cv::Scalar(0, 0, 0));
+    const double cx = 0.5 * (width - 1), cy = 0.5 * (height - 1), r2 = radius_px * radius_px;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r2) img.at<cv::Vec3b>(y, x) = cv::Vec3b(255, 255, 255);
+    return img;
+}
+
+}  // namespace projsurf::sim

@@ -1,0 +1,46 @@
+#pragma once
+// Renders what the RGB-D camera sees of a scene, optionally with a picture projected on it:
+// the depth image, the organized cloud and the colour image (with the projector's light and
+// its shadows). Deterministic for a given seed.
+#include <optional>
+#include <opencv2/core.hpp>
+
+#include "projsurf/core/cloud.hpp"
+#include "projsurf/core/projector.hpp"
+#include "projsurf/sim/scene.hpp"
+#include "projsurf/sim/sensor_model.hpp"
+
+namespace projsurf::sim {
+
+/// A picture sent to the projector: `framebuffer` is BGR (CV_8UC3) of the projector's resolution.
+struct Projection {
+    Projector projector;
+    cv::Mat framebuffer;
+};
+
+/// Light on the scene, as fractions of full white (a dim room, so the projected picture and
+/// the calibration disc stand out, as in the paper's set-up, section 3.1.1).
+struct Lighting {
+    double ambient = 0.15;         ///< room light reaching every surface
+    double projector_gain = 1.0;   ///< a white framebuffer pixel adds this much light
+};
+
+struct RgbdFrame {
+    cv::Mat depth;  ///< CV_16UC1 in camera.depth_scale units (mm), 0 = no reading
+    cv::Mat rgb;    ///< CV_8UC3 BGR, registered to the depth image
+    Cloud cloud;    ///< organized, camera frame, metres; NaN where there is no reading
+    cv::Mat quad;   ///< CV_32S, index of the quad seen at each pixel (-1 = nothing), before dropouts
+};
+
+/// Renders one frame. `projection` (optional) is lit onto the scene: a camera pixel shows the
+/// framebuffer colour (bilinear) times the surface albedo when its surface point is inside
+/// the projector's frustum and not in a projector shadow; every surface also gets ambient light.
+RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned seed,
+                      const std::optional<Projection> &projection = std::nullopt, const Lighting &lighting = {});
+
+/// The calibration picture of paper section 3.1.1: black, one white disc of `radius_px`
+/// centred on the framebuffer centre ((W-1)/2, (H-1)/2, the principal point). A radius
+/// <= 0 means H / 8.
+cv::Mat calibrationPicture(int width, int height, double radius_px = 0.0);
+
+}  // namespace projsurf::sim

@@ -1,0 +1,182 @@
+#include "projsurf/sim/scenarios.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace projsurf::sim {
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kCameraHeight = 1.0;  // m above the floor (robot 1.15 m tall, paper section 5)
+constexpr double kWallWidth = 8.0;     // m
+constexpr double kWallHeight = 2.6;    // m
+
+// Colours, BGR reflectance.
+const cv::Vec3f kWallPaint{0.82f, 0.85f, 0.86f};
+const cv::Vec3f kFloor{0.42f, 0.48f, 0.55f};
+const cv::Vec3f kWood{0.25f, 0.42f, 0.58f};
+const cv::Vec3f kCardboard{0.35f, 0.55f, 0.70f};
+const cv::Vec3f kPoster{0.25f, 0.22f, 0.75f};
+const cv::Vec3f kClothes{0.45f, 0.25f, 0.15f};
+const cv::Vec3f kSkin{0.55f, 0.65f, 0.85f};
+
+/// Places things relative to the main wall (see scenarios.hpp): s along, h up, out towards the camera.
+struct WallFrame {
+    Eigen::Vector3d origin, right, up, normal;
+    WallFrame(double distance, double angle_deg) {
+        const double a = angle_deg * kDeg;
+        origin = Eigen::Vector3d(0.0, kCameraHeight, distance);  // on the floor below the axis point
+        right = Eigen::Vector3d(std::cos(a), 0.0, std::sin(a));
+        up = Eigen::Vector3d(0.0, -1.0, 0.0);
+        normal = Eigen::Vector3d(std::sin(a), 0.0, -std::cos(a));
+    }
+    Eigen::Vector3d at(double s, double h, double out) const { return origin + s * right + h * up + out * normal; }
+    /// Perpendicular distance from the camera to the wall.
+    double cameraOut() const { return -origin.dot(normal); }
+};
+
+/// A box against / in front of the wall: s in [s0, s1], h in [h0, h1], out in [o0, o1].
+std::array<int, 6> wallBox(Scene &scene, const WallFrame &w, double s0, double s1, double h0, double h1, double o0,
+                           double o1, const cv::Vec3f &albedo, const std::string &label) {
+    return addBox(scene, w.at(s0, h0, o0), (s1 - s0) * w.right, (h1 - h0) * w.up, (o1 - o0) * w.normal, albedo, label);
+}
+
+void addFloor(Scene &scene, const WallFrame &w, double out0, double out1) {
+    Quad q;
+    q.corner = w.at(-5.0, 0.0, out0);
+    q.edge_a = 10.0 * w.right;
+    q.edge_b = (out1 - out0) * w.normal;
+    q.albedo = kFloor;
+    q.label = "floor";
+    scene.quads.push_back(q);
+}
+
+void addMainWall(Scene &scene, const WallFrame &w, std::vector<WallHole> holes_s_h) {
+    for (auto &h : holes_s_h) {  // from (s, h) to the wall's own coordinates
+        h.x0 += 0.5 * kWallWidth;
+        h.x1 += 0.5 * kWallWidth;
+    }
+    addWall(scene, w.at(-0.5 * kWallWidth, 0.0, 0.0), w.right, w.up, kWallWidth, kWallHeight, holes_s_h, kWallPaint,
+            "wall", 0);
+}
+
+void requireRoom(const std::string &name, const WallFrame &w, double needed_out) {
+    if (w.cameraOut() < needed_out)
+        throw std::invalid_argument("scenario '" + name + "': the camera must be at least " +
+                                    std::to_string(needed_out) + " m from the wall (perpendicular) for its objects");
+}
+
+}  // namespace
+
+const std::vector<std::string> &scenarioNames() {
+    static const std::vector<std::string> names{"wall",   "small_obstacles", "big_obstacle", "closet", "door",
+                                                "window", "poster",          "person",       "rolled"};
+    return names;
+}
+
+Projector exampleProjector() {
+    Projector p;  // 1280x800, 39.3 x 24.0 deg (paper 3.1.2)
+    p.origin = Eigen::Vector3d(0.0, 0.12, 0.0);
+    p.direction = Eigen::Vector3d(0.0, -0.05, 1.0).normalized();
+    return p;
+}
+
+void rollCamera(Scenario &s, double roll_deg) {
+    // The camera turns by R about its z axis; a point's coordinates turn by R^T.
+    const Eigen::Matrix3d r_t = Eigen::AngleAxisd(roll_deg * kDeg, Eigen::Vector3d::UnitZ()).toRotationMatrix().transpose();
+    Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
+    t.linear() = r_t;
+    s.scene = transformed(s.scene, t);
+    s.gravity = (r_t * s.gravity).normalized();
+    s.wall = makePlane(r_t * s.wall.normal, s.wall.d);
+    s.roll_deg += roll_deg;
+}
+
+Scenario makeScenario(const std::string &name, double distance, double angle_deg) {
+    if (!(distance >= 0.5 && distance <= 10.0))
+        throw std::invalid_argument("scenario distance must be between 0.5 and 10 m");
+    if (!(std::abs(angle_deg) < 75.0)) throw std::invalid_argument("scenario angle must be within +-75 degrees");
+    Scenario sc;
+    sc.name = name;
+    sc.distance = distance;
+    sc.angle_deg = angle_deg;
+    const WallFrame w(distance, angle_deg);
+    sc.wall = makePlane(w.normal, -w.normal.dot(w.origin));
+    Scene &scene = sc.scene;
+
+    if (name == "wall" || name == "rolled") {
+        sc.description = "plain wall and floor";
+        addMainWall(scene, w, {});
+        addFloor(scene, w, 0.0, 8.0);
+        if (name == "rolled") {
+            sc.description = "plain wall seen by a camera rolled 4 degrees";
+            rollCamera(sc, 4.0);
+        }
+    } else if (name == "small_obstacles") {
+        sc.description = "three small boxes on the wall (paper 4.3, SO)";
+        requireRoom(name, w, 0.5);
+        addMainWall(scene, w, {});
+        addFloor(scene, w, 0.0, 8.0);
+        wallBox(scene, w, -0.27, -0.13, 0.94, 1.06, 0.0, 0.10, kCardboard, "box");
+        wallBox(scene, w, 0.06, 0.24, 0.77, 0.87, 0.0, 0.12, kCardboard, "box");
+        wallBox(scene, w, 0.24, 0.36, 1.01, 1.15, 0.0, 0.08, kCardboard, "box");
+    } else if (name == "big_obstacle") {
+        sc.description = "a big cardboard box (0.6 x 1.05 x 0.45 m) against the wall (paper 4.3, BO)";
+        requireRoom(name, w, 0.75);
+        addMainWall(scene, w, {});
+        addFloor(scene, w, 0.0, 8.0);
+        wallBox(scene, w, -0.45, 0.15, 0.0, 1.05, 0.0, 0.45, kCardboard, "box");
+    } else if (name == "closet") {
+        sc.description = "a closet (1.0 wide, 0.6 deep, 2.0 m tall) against the wall (paper 4.2, cluttered)";
+        requireRoom(name, w, 0.9);
+        addMainWall(scene, w, {});
+        addFloor(scene, w, 0.0, 8.0);
+        const auto faces = wallBox(scene, w, -0.8, 0.2, 0.0, 2.0, 0.0, 0.6, kWood, "closet");
+        scene.quads[faces[5]].surface = 1;  // the front (+out face) is a projection surface
+    } else if (name == "door") {
+        sc.description = "an open doorway (0.9 x 2.05 m) right of the axis, a room 3.5 m deep behind";
+        addMainWall(scene, w, {{0.35, 0.0, 1.25, 2.05}});
+        addFloor(scene, w, -3.5, 8.0);
+        addWall(scene, w.at(-5.0, 0.0, -3.5), w.right, w.up, 10.0, kWallHeight, {}, kWallPaint, "wall", 1);
+    } else if (name == "window") {
+        sc.description = "a window hole (1.2 x 1.0 m, sill at 0.9 m) left of the axis, nothing in range behind";
+        addMainWall(scene, w, {{-1.1, 0.9, 0.1, 1.9}});
+        addFloor(scene, w, 0.0, 8.0);
+    } else if (name == "poster") {
+        sc.description = "an A1 poster 3 mm proud of the wall (flat: still a projection surface)";
+        addMainWall(scene, w, {});
+        addFloor(scene, w, 0.0, 8.0);
+        Quad q;
+        q.corner = w.at(-0.45, 0.75, 0.003);
+        q.edge_a = 0.594 * w.right;
+        q.edge_b = 0.841 * w.up;
+        q.albedo = kPoster;
+        q.label = "poster";
+        scene.quads.push_back(q);
+    } else if (name == "person") {
+        sc.description = "a person (1.7 m) standing between the robot and the wall, right of the axis";
+        requireRoom(name, w, 0.8);
+        addMainWall(scene, w, {});
+        addFloor(scene, w, 0.0, 8.0);
+        const double out = std::min(0.8, 0.45 * w.cameraOut());
+        wallBox(scene, w, 0.10, 0.55, 0.0, 1.45, out, out + 0.25, kClothes, "person");
+        wallBox(scene, w, 0.22, 0.42, 1.45, 1.70, out + 0.02, out + 0.24, kSkin, "person");
+    } else {
+        throw std::invalid_argument("unknown scenario '" + name + "'");
+    }
+    return sc;
+}
+
+std::vector<PaperExperiment> paperExperiments() {
+    const std::vector<double> d5{1.0, 1.5, 2.0, 2.5, 3.0};
+    return {
+        {"wall", d5, {27.5, 17.19}, "4.1-4.2, uncluttered (Fig 12a, Tables 1-2)"},
+        {"closet", {1.5, 2.0, 2.5, 3.0}, {-26.01, -16.62}, "4.2, cluttered (Fig 12b, Table 2)"},
+        {"wall", d5, {27.5, 17.19}, "4.3, no obstacle NO (Figs 14a, 15)"},
+        {"small_obstacles", d5, {27.5, 17.19}, "4.3, small obstacles SO (Figs 14b, 15)"},
+        {"big_obstacle", d5, {27.5, 17.19}, "4.3, big obstacle BO (Figs 14c, 15)"},
+        {"wall", {1.0, 2.0, 3.0}, {27.5, 17.19, -12.06}, "4.4, image correction (Table 3)"},
+    };
+}
+
+}  // namespace projsurf::sim

@@ -1,0 +1,73 @@
+#pragma once
+// A simulated scene: planar patches (parallelograms) in the camera's optical frame
+// (x right, y down, z forward; metres). Walls, floors, boxes and people are all patches.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <array>
+#include <optional>
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+namespace projsurf::sim {
+
+/// The parallelogram corner + a * edge_a + b * edge_b, a, b in [0, 1].
+struct Quad {
+    Eigen::Vector3d corner = Eigen::Vector3d::Zero();
+    Eigen::Vector3d edge_a = Eigen::Vector3d::UnitX();
+    Eigen::Vector3d edge_b = Eigen::Vector3d::UnitY();
+    cv::Vec3f albedo{0.8f, 0.8f, 0.8f};  ///< BGR reflectance in [0, 1]
+    std::string label = "wall";          ///< "wall", "floor", "closet", "box", "poster", "person", ...
+    /// Quads with the same id >= 0 lie on one plane and form one projection surface (a wall
+    /// with a hole is several quads of one surface); -1 = not a place to project on.
+    int surface = -1;
+
+    Eigen::Vector3d normal() const { return edge_a.cross(edge_b).normalized(); }
+    Eigen::Vector3d center() const { return corner + 0.5 * (edge_a + edge_b); }
+    std::array<Eigen::Vector3d, 4> corners() const {
+        return {corner, corner + edge_a, corner + edge_a + edge_b, corner + edge_b};
+    }
+};
+
+struct Scene {
+    std::vector<Quad> quads;
+};
+
+/// Nearest intersection of a ray with the scene.
+struct Hit {
+    double t = 0.0;  ///< ray parameter: point = origin + t * direction
+    int quad = -1;   ///< index into Scene::quads
+};
+
+/// Parameter t of the ray origin + t * direction on the quad (t > t_min), nullopt on a miss.
+std::optional<double> intersectQuad(const Quad &quad, const Eigen::Vector3d &origin, const Eigen::Vector3d &direction,
+                                    double t_min = 1e-9);
+/// Nearest hit with t in (t_min, t_max); nullopt when the ray meets nothing.
+std::optional<Hit> castRay(const Scene &scene, const Eigen::Vector3d &origin, const Eigen::Vector3d &direction,
+                           double t_min = 1e-9, double t_max = 1e30);
+
+/// Adds a box with corner `corner` and edges ex, ey, ez (any right-handed or left-handed
+/// set of perpendicular vectors). Returns the indices of its six faces in the order
+/// -ex, +ex, -ey, +ey, -ez, +ez (the face at corner, the face at corner + e, per axis).
+std::array<int, 6> addBox(Scene &scene, const Eigen::Vector3d &corner, const Eigen::Vector3d &ex,
+                          const Eigen::Vector3d &ey, const Eigen::Vector3d &ez, const cv::Vec3f &albedo,
+                          const std::string &label);
+
+/// Rectangle [x0, x1] x [y0, y1] in a wall's own 2-D coordinates.
+struct WallHole {
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+/// Adds the rectangle origin + x * right + y * up, x in [0, width], y in [0, height], minus
+/// the holes (doors, windows), as few quads. All quads get `surface`. Returns their indices.
+std::vector<int> addWall(Scene &scene, const Eigen::Vector3d &origin, const Eigen::Vector3d &right,
+                         const Eigen::Vector3d &up, double width, double height, const std::vector<WallHole> &holes,
+                         const cv::Vec3f &albedo, const std::string &label, int surface);
+
+/// The scene moved by a rigid transform (e.g. into a rolled camera's frame).
+Scene transformed(const Scene &scene, const Eigen::Isometry3d &transform);
+
+/// A surface id not used yet in the scene.
+int nextSurfaceId(const Scene &scene);
+
+}  // namespace projsurf::sim
