@@ -2,6 +2,7 @@
 
 #include <sched.h>
 #include <sys/resource.h>
+#include <time.h>
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
+#include <stdexcept>
 
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -118,6 +120,21 @@ std::string allowedCpus() {
     return out.str();
 }
 
+double threadCpuMs() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return 1e3 * static_cast<double>(ts.tv_sec) + 1e-6 * static_cast<double>(ts.tv_nsec);
+}
+
+std::string loadAverage() {
+    std::ifstream in("/proc/loadavg");
+    double a = 0, b = 0, c = 0;
+    if (!(in >> a >> b >> c)) return "?";
+    std::ostringstream out;
+    out << a << " " << b << " " << c;
+    return out.str();
+}
+
 std::string cpuModel() {
     std::ifstream in("/proc/cpuinfo");
     std::string line;
@@ -129,28 +146,45 @@ std::string cpuModel() {
     return "unknown";
 }
 
-KeystoneWarp::KeystoneWarp(int width, int height) {
+KeystoneWarp::KeystoneWarp(const Projector &projector, bool bare) : bare_(bare) {
     // A picture with detail everywhere (so no path of the warp can skip work).
-    in_.create(height, width, CV_8UC3);
+    in_.create(projector.height, projector.width, CV_8UC3);
     cv::randu(in_, cv::Scalar::all(0), cv::Scalar::all(255));
     cv::GaussianBlur(in_, in_, cv::Size(5, 5), 1.5);
-    // Framebuffer corners -> the corrected quad of a wall seen 20 deg off-axis and a little
-    // from below: what a detection at ~2 m typically asks for.
-    const float w = static_cast<float>(width), h = static_cast<float>(height);
-    const std::vector<cv::Point2f> src = {{0, 0}, {w, 0}, {w, h}, {0, h}};
-    const std::vector<cv::Point2f> dst = {
-        {0.10f * w, 0.08f * h}, {0.86f * w, 0.15f * h}, {0.84f * w, 0.88f * h}, {0.12f * w, 0.95f * h}};
-    homography_ = cv::getPerspectiveTransform(src, dst);
-    out_.create(height, width, CV_8UC3);
+    // A wall 2 m along the projector axis, turned 20 deg about the vertical; the biggest
+    // upright rectangle of the picture's aspect (shrunk in 5 % steps) that the projector covers.
+    const double yaw = 20.0 * M_PI / 180.0;
+    const Eigen::Vector3d normal(std::sin(yaw), 0.0, -std::cos(yaw));
+    const Eigen::Vector3d centre = projector.origin + 2.0 * projector.direction.normalized();
+    const Plane wall = makePlane(normal, -normal.dot(centre));
+    const PlaneFrame frame = makePlaneFrame(wall, Eigen::Vector3d(0, 1, 0), centre);
+    const double aspect = static_cast<double>(projector.width) / projector.height;
+    for (double h = 2.0 * 2.0 * std::tan(0.5 * projector.fov_v); h > 0.05; h *= 0.95) {
+        const Eigen::Vector2d half(0.5 * h * aspect, 0.5 * h);
+        const KeystoneResult k = computeKeystone(projector, makeRectangle(frame, -half, half), in_.size());
+        if (k.keystone) {
+            keystone_ = std::make_shared<const Keystone>(*k.keystone);
+            break;
+        }
+    }
+    if (!keystone_) throw std::runtime_error("keystone benchmark: no rectangle fits the projector");
+    out_ = cv::Mat(keystone_->framebuffer, CV_8UC3, cv::Scalar::all(0));
 }
 
 void KeystoneWarp::run() {
-    cv::warpPerspective(in_, out_, homography_, out_.size(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar::all(0));
+    if (bare_)
+        cv::warpPerspective(in_, out_, cv::Mat(keystone_->homography), out_.size(), cv::INTER_LINEAR,
+                            cv::BORDER_CONSTANT, cv::Scalar::all(0));
+    else
+        out_ = warpToFramebuffer(in_, *keystone_);
 }
 
 std::string KeystoneWarp::what() const {
     std::ostringstream out;
-    out << "cv::warpPerspective, " << in_.cols << "x" << in_.rows << " BGR, bilinear, black border";
+    out << (bare_ ? "cv::warpPerspective alone (same homography, output preallocated)"
+                  : "projsurf::warpToFramebuffer (keystone.hpp)")
+        << ", " << in_.cols << "x" << in_.rows << " BGR picture -> " << out_.cols << "x" << out_.rows
+        << " framebuffer";
     return out.str();
 }
 

@@ -2,11 +2,14 @@
 // Shared by the benchmark executables: test frames, statistics, machine facts, pinning,
 // and the keystone warp workload.
 #include <opencv2/core.hpp>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "projsurf/core/camera.hpp"
 #include "projsurf/core/cloud.hpp"
+#include "projsurf/core/keystone.hpp"
+#include "projsurf/core/projector.hpp"
 
 namespace projsurf::bench {
 
@@ -43,20 +46,29 @@ double peakRssMiB();
 bool pinToCpu(int cpu);
 /// The CPUs this process may run on, e.g. "0" or "0-1".
 std::string allowedCpus();
+/// CPU time of the calling thread, ms (CLOCK_THREAD_CPUTIME_ID): what the work cost even
+/// when other processes share the core.
+double threadCpuMs();
+/// The 1, 5 and 15 minute load averages, as /proc/loadavg shows them.
+std::string loadAverage();
 /// "Model name" from /proc/cpuinfo.
 std::string cpuModel();
 
-/// The keystone workload: warps a BGR framebuffer-size picture into `out` with a
-/// representative keystone homography (a detection's corrected quad).
+/// The keystone workload: a BGR picture of the framebuffer's size shown in a representative
+/// detected rectangle (a wall 2 m ahead, turned 20 deg), through projsurf's keystone
+/// (computeKeystone once, warpToFramebuffer per frame), or through a bare cv::warpPerspective
+/// with the same homography into a preallocated framebuffer (`bare`).
 class KeystoneWarp {
 public:
-    KeystoneWarp(int width, int height);
+    explicit KeystoneWarp(const Projector &projector, bool bare = false);
     void run();
     const cv::Mat &output() const { return out_; }
     std::string what() const;
 
 private:
-    cv::Mat in_, out_, homography_;
+    bool bare_ = false;
+    cv::Mat in_, out_;
+    std::shared_ptr<const Keystone> keystone_;
 };
 
 }  // namespace projsurf::bench

@@ -233,7 +233,7 @@ void BM_StockTotal(benchmark::State &state) {
 // --- keystone ------------------------------------------------------------------------------
 
 void BM_KeystoneWarp1280x800(benchmark::State &state) {
-    KeystoneWarp warp(1280, 800);
+    KeystoneWarp warp(Projector{}, state.range(0) != 0);  // 0: projsurf::warpToFramebuffer, 1: bare OpenCV
     for (auto _ : state) {
         warp.run();
         benchmark::DoNotOptimize(warp.output().data);
@@ -294,7 +294,7 @@ BENCHMARK(BM_SharedRectangleSearch)->Unit(benchmark::kMillisecond)->UseRealTime(
 BENCHMARK(BM_StockCrop)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_StockOutliers)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_StockTotal)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_KeystoneWarp1280x800)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_KeystoneWarp1280x800)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ScaleOursDefault)->Apply(scaleArgs)->Complexity(benchmark::oN)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ScaleStock)->Apply(scaleArgs)->Complexity(benchmark::oN)->Unit(benchmark::kMillisecond)->UseRealTime();
 
