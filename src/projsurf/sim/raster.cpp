@@ -98,18 +98,20 @@ DepthBuffer castView(const Scene &scene, const PinholeView &view, double near) {
         if (std::abs(nc) < 1e-15) continue;  // seen edge-on
         const Eigen::Vector3d fa = B.cross(n) / B.cross(n).dot(A);
         const Eigen::Vector3d fb = n.cross(A) / n.cross(A).dot(B);
+        const double cfa = C.dot(fa), cfb = C.dot(fb);
+        // Along a row d = (x, dy, 1) with x = (u - cx) / fx, so n.d, d.fa and d.fb are linear in x.
         for (int v = v0; v <= v1; ++v) {
             const double dy = (v - view.cy) / view.fy;
+            const double n0 = n.y() * dy + n.z(), a0 = fa.y() * dy + fa.z(), b0 = fb.y() * dy + fb.z();
             double *zrow = buf.z.ptr<double>(v);
             int *qrow = buf.quad.ptr<int>(v);
             for (int u = u0; u <= u1; ++u) {
-                const Eigen::Vector3d d((u - view.cx) / view.fx, dy, 1.0);
-                const double den = n.dot(d);
+                const double x = (u - view.cx) / view.fx;
+                const double den = n.x() * x + n0;
                 if (std::abs(den) < 1e-15) continue;
                 const double t = nc / den;
                 if (!(t >= near) || !(t < zrow[u])) continue;
-                const Eigen::Vector3d r = t * d - C;
-                const double a = r.dot(fa), b = r.dot(fb);
+                const double a = t * (fa.x() * x + a0) - cfa, b = t * (fb.x() * x + b0) - cfb;
                 if (a < -eps || a > 1.0 + eps || b < -eps || b > 1.0 + eps) continue;
                 zrow[u] = t;
                 qrow[u] = static_cast<int>(qi);
@@ -124,8 +126,8 @@ bool ShadowMap::reaches(const Eigen::Vector3d &p, int quad) const {
     if (!(pv.z() > 0.0)) return false;
     const Eigen::Vector2d px = view.pixelOf(pv);
     if (!view.inside(px)) return false;
-    const int u = std::clamp(static_cast<int>(std::lround(px.x())), 0, view.width - 1);
-    const int v = std::clamp(static_cast<int>(std::lround(px.y())), 0, view.height - 1);
+    const int u = std::clamp(static_cast<int>(px.x() + 0.5), 0, view.width - 1);  // px >= -0.5
+    const int v = std::clamp(static_cast<int>(px.y() + 0.5), 0, view.height - 1);
     const int seen = buffer.quad.at<int>(v, u);
     if (seen == quad) return true;
     // A different surface at that texel: p is reached when that surface is not clearly in

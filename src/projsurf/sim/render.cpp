@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "projsurf/sim/raster.hpp"
+#include "projsurf/sim/gaussian_table.hpp"
 
 namespace projsurf::sim {
 namespace {
@@ -53,8 +54,8 @@ RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned se
         if (fb.type() != CV_8UC3 || fb.cols != projection->projector.width || fb.rows != projection->projector.height)
             throw std::invalid_argument("renderFrame: the framebuffer must be BGR 8-bit of the projector's resolution");
         pview = projectorView(projection->projector);
-        // A shadow map about as fine as the camera image is enough for the light's edges.
-        light = makeShadowMap(scene, pview, std::min(1.0, 2.0 * cam.width / pview.width));
+        // A shadow map as wide as the camera image is enough for the light's edges.
+        light = makeShadowMap(scene, pview, std::min(1.0, static_cast<double>(cam.width) / pview.width));
     }
 
     RgbdFrame f;
@@ -66,31 +67,42 @@ RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned se
     const float nan = std::numeric_limits<float>::quiet_NaN();
     f.cloud.points.assign(static_cast<std::size_t>(cam.width) * cam.height, Point(nan, nan, nan));
 
+    // Per-quad constants, and the grazing-angle thresholds as cosines (no acos per pixel).
+    std::vector<Eigen::Vector3d> normals;
+    for (const auto &q : scene.quads) normals.push_back(q.normal());
+    const double cos_start = std::cos(sensor.grazing_start_deg / kRadToDeg);
+    const double cos_max = std::cos(sensor.grazing_max_deg / kRadToDeg);
+
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
-    std::normal_distribution<float> colour_noise(0.0f, static_cast<float>(sensor.rgb_noise));
+    NormalSource gauss(rng);
+    const float colour_sigma = sensor.noise ? static_cast<float>(sensor.rgb_noise) : 0.0f;
     for (int v = 0; v < cam.height; ++v) {
         const int *qrow = buf.quad.ptr<int>(v);
         const double *zrow = buf.z.ptr<double>(v);
+        cv::Vec3b *rgb_row = f.rgb.ptr<cv::Vec3b>(v);
+        std::uint16_t *depth_row = f.depth.ptr<std::uint16_t>(v);
+        Point *cloud_row = f.cloud.points.data() + static_cast<std::size_t>(v) * cam.width;
+        const double dy = (v - cam.cy) / cam.fy;
         for (int u = 0; u < cam.width; ++u) {
             const int qi = qrow[u];
             if (qi < 0) continue;  // nothing there: no reading, black
             const Quad &quad = scene.quads[qi];
-            const Eigen::Vector3d d = view.rayDirection(u, v);
+            const Eigen::Vector3d d((u - cam.cx) / cam.fx, dy, 1.0);  // camera ray, z = 1
             const double z = zrow[u];
             const Eigen::Vector3d p = z * d;
 
             // Depth reading.
-            const double angle = std::acos(std::min(1.0, std::abs(quad.normal().dot(d)) / d.norm())) * kRadToDeg;
             bool valid = !(emitter && !emitter->reaches(p, qi));
-            const double drop = sensor.dropoutProbability(angle);
-            if (valid && drop > 0.0) valid = drop < 1.0 && uniform(rng) >= drop;
-            const double zm = valid ? sensor.measure(z, rng) : 0.0;
+            const double cos_angle = std::abs(normals[qi].dot(d)) / d.norm();
+            if (valid && cos_angle < cos_start) {
+                const double drop = sensor.dropoutProbability(std::acos(cos_angle) * kRadToDeg);
+                valid = cos_angle > cos_max && drop < 1.0 && (drop <= 0.0 || uniform(rng) >= drop);
+            }
+            const double zm = valid ? sensor.measure(z, sensor.noise ? gauss.next() : 0.0f) : 0.0;
             if (zm > 0.0) {
-                const std::size_t i = static_cast<std::size_t>(v) * cam.width + u;
-                f.cloud.points[i] = (zm * d).cast<float>();
-                f.depth.at<std::uint16_t>(v, u) =
-                    static_cast<std::uint16_t>(std::min(65535.0, std::round(zm * cam.depth_scale)));
+                cloud_row[u] = (zm * d).cast<float>();
+                depth_row[u] = static_cast<std::uint16_t>(std::min(65535.0, std::round(zm * cam.depth_scale)));
             }
 
             // Colour: albedo under ambient light plus the projector's light where it reaches.
@@ -102,11 +114,10 @@ RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned se
                     c += quad.albedo.mul(fbc) * static_cast<float>(lighting.projector_gain);
                 }
             }
-            cv::Vec3b &out = f.rgb.at<cv::Vec3b>(v, u);
             for (int k = 0; k < 3; ++k) {
                 float value = 255.0f * c[k];
-                if (sensor.noise && sensor.rgb_noise > 0.0) value += colour_noise(rng);
-                out[k] = cv::saturate_cast<uchar>(value);
+                if (colour_sigma > 0.0f) value += colour_sigma * gauss.next();
+                rgb_row[u][k] = cv::saturate_cast<uchar>(value);
             }
         }
     }

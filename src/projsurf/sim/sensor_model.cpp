@@ -1,5 +1,6 @@
 #include "projsurf/sim/sensor_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace projsurf::sim {
@@ -18,18 +19,19 @@ double SensorModel::dropoutProbability(double angle_deg) const {
     return (angle_deg - grazing_start_deg) / (grazing_max_deg - grazing_start_deg);
 }
 
-double SensorModel::measure(double z, std::mt19937 &rng) const {
+double SensorModel::inverseDepthSigma() const {
+    if (!noise) return 0.0;
+    // sigma_z = sigma_w z^2 for small noise, so sigma_w = k; quantisation adds step^2 / 12
+    // of variance in w, which the published total already contains.
+    const double q2 = quantize ? disparity_step * disparity_step / 12.0 : 0.0;
+    return std::sqrt(std::max(noise_k * noise_k - q2, 0.0));
+}
+
+double SensorModel::measure(double z, double standard_normal) const {
     if (!(z >= min_depth && z <= max_depth)) return 0.0;
-    double w = 1.0 / z;  // inverse depth, 1/m
-    if (noise) {
-        // sigma_z = s_w z^2 for small noise, so s_w = k; quantisation adds step^2 / 12 of
-        // variance in w, which the published total already contains.
-        const double q2 = quantize ? disparity_step * disparity_step / 12.0 : 0.0;
-        const double s_w = std::sqrt(std::max(noise_k * noise_k - q2, 0.0));
-        w += std::normal_distribution<double>(0.0, s_w)(rng);
-    }
+    double w = 1.0 / z + inverseDepthSigma() * standard_normal;  // inverse depth, 1/m
     if (quantize) {
-        const double raw = std::round((disparity_offset - w) / disparity_step);
+        const double raw = std::floor((disparity_offset - w) / disparity_step + 0.5);
         w = disparity_offset - disparity_step * raw;
     }
     if (!(w > 0.0)) return 0.0;

@@ -12,7 +12,6 @@
 //    specifies 0.8-4 m); invalid pixels at grazing angles and in the IR emitter's shadow
 //    beside depth edges (7.5 cm emitter-camera baseline, K&OE 2012).
 #include <Eigen/Core>
-#include <random>
 
 #include "projsurf/core/camera.hpp"
 
@@ -44,10 +43,13 @@ struct SensorModel {
     double quantumAt(double z) const { return quantize ? disparity_step * z * z : 0.0; }
     /// Probability that a reading at ray-normal angle `angle_deg` is missing.
     double dropoutProbability(double angle_deg) const;
-    /// A simulated reading of true depth z (m): noise is drawn in inverse depth (the Kinect
-    /// measures disparity) with sigma chosen so that noise + quantisation give depthSigma(z),
-    /// then 1/z is quantised. Returns 0 when the reading falls outside the range.
-    double measure(double z, std::mt19937 &rng) const;
+    /// Sigma (1/m) of the noise added to inverse depth before quantisation, chosen so that
+    /// noise + quantisation together give depthSigma(z).
+    double inverseDepthSigma() const;
+    /// A simulated reading of true depth z (m), given one standard-normal sample: the noise
+    /// is added to inverse depth (the Kinect measures disparity), then 1/z is quantised.
+    /// Returns 0 when the reading falls outside the range.
+    double measure(double z, double standard_normal) const;
 };
 
 }  // namespace projsurf::sim
