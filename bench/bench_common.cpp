@@ -16,6 +16,9 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/yaml_files.hpp"
+#include "projsurf/sim/render.hpp"
+#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/sensor_model.hpp"
 
 namespace projsurf::bench {
 
@@ -46,6 +49,38 @@ std::vector<BenchFrame> loadRealFrames(const std::string &dir) {
         f.finite = countFinite(f.cloud);
         frames.push_back(std::move(f));
     }
+    return frames;
+}
+
+std::vector<BenchFrame> simulatorFrames(int max_frames) {
+    struct Shot {
+        const char *scenario;
+        double angle_deg;
+        std::vector<double> distances;
+    };
+    const std::vector<Shot> shots = {{"wall", 27.5, {1.0, 2.0, 3.0}},
+                                     {"wall", 17.19, {1.0, 2.0, 3.0}},
+                                     {"closet", -26.01, {1.5, 2.0, 3.0}},
+                                     {"small_obstacles", 27.5, {1.0, 2.0, 3.0}},
+                                     {"big_obstacle", 17.19, {1.0, 2.0, 3.0}}};
+    const sim::SensorModel sensor;  // Kinect v1, VGA
+    std::vector<BenchFrame> frames;
+    unsigned seed = 1;
+    for (const auto &shot : shots)
+        for (const double d : shot.distances) {
+            if (max_frames > 0 && static_cast<int>(frames.size()) >= max_frames) return frames;
+            const sim::Scenario sc = sim::makeScenario(shot.scenario, d, shot.angle_deg);
+            sim::RgbdFrame r = sim::renderFrame(sc.scene, sensor, seed++);
+            BenchFrame f;
+            std::ostringstream name;
+            name << "sim " << shot.scenario << " " << d << " m " << shot.angle_deg << "°";
+            f.name = name.str();
+            f.camera = sensor.camera;
+            f.depth = r.depth;
+            f.cloud = std::move(r.cloud);
+            f.finite = countFinite(f.cloud);
+            frames.push_back(std::move(f));
+        }
     return frames;
 }
 
@@ -146,7 +181,7 @@ std::string cpuModel() {
     return "unknown";
 }
 
-KeystoneWarp::KeystoneWarp(const Projector &projector, bool bare) : bare_(bare) {
+KeystoneWarp::KeystoneWarp(const Projector &projector, Kind kind) : kind_(kind) {
     // A picture with detail everywhere (so no path of the warp can skip work).
     in_.create(projector.height, projector.width, CV_8UC3);
     cv::randu(in_, cv::Scalar::all(0), cv::Scalar::all(255));
@@ -169,20 +204,46 @@ KeystoneWarp::KeystoneWarp(const Projector &projector, bool bare) : bare_(bare) 
     }
     if (!keystone_) throw std::runtime_error("keystone benchmark: no rectangle fits the projector");
     out_ = cv::Mat(keystone_->framebuffer, CV_8UC3, cv::Scalar::all(0));
+    if (kind_ == Kind::Remap) {
+        // Bounding box of the picture's quad in the framebuffer, and the inverse mapping.
+        std::vector<cv::Point2f> quad;
+        for (const auto &c : keystone_->picture_px)
+            quad.emplace_back(static_cast<float>(c.x()), static_cast<float>(c.y()));
+        roi_ = cv::boundingRect(quad) & cv::Rect(0, 0, out_.cols, out_.rows);
+        const cv::Matx33d inv = keystone_->homography.inv();
+        cv::Mat mapx(roi_.size(), CV_32F), mapy(roi_.size(), CV_32F);
+        for (int y = 0; y < roi_.height; ++y)
+            for (int x = 0; x < roi_.width; ++x) {
+                const cv::Vec3d p = inv * cv::Vec3d(x + roi_.x, y + roi_.y, 1.0);
+                mapx.at<float>(y, x) = static_cast<float>(p[0] / p[2]);
+                mapy.at<float>(y, x) = static_cast<float>(p[1] / p[2]);
+            }
+        cv::convertMaps(mapx, mapy, map1_, map2_, CV_16SC2);
+    }
 }
 
 void KeystoneWarp::run() {
-    if (bare_)
+    switch (kind_) {
+    case Kind::Projsurf:
+        out_ = warpToFramebuffer(in_, *keystone_);
+        break;
+    case Kind::Bare:
         cv::warpPerspective(in_, out_, cv::Mat(keystone_->homography), out_.size(), cv::INTER_LINEAR,
                             cv::BORDER_CONSTANT, cv::Scalar::all(0));
-    else
-        out_ = warpToFramebuffer(in_, *keystone_);
+        break;
+    case Kind::Remap: {
+        cv::Mat roi = out_(roi_);
+        cv::remap(in_, roi, map1_, map2_, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar::all(0));
+        break;
+    }
+    }
 }
 
 std::string KeystoneWarp::what() const {
     std::ostringstream out;
-    out << (bare_ ? "cv::warpPerspective alone (same homography, output preallocated)"
-                  : "projsurf::warpToFramebuffer (keystone.hpp)")
+    out << (kind_ == Kind::Bare    ? "cv::warpPerspective alone (same homography, output preallocated)"
+            : kind_ == Kind::Remap ? "cv::remap, fixed-point maps over the quad's bounding box built once (experiment)"
+                                   : "projsurf::warpToFramebuffer (keystone.hpp)")
         << ", " << in_.cols << "x" << in_.rows << " BGR picture -> " << out_.cols << "x" << out_.rows
         << " framebuffer";
     return out.str();

@@ -29,6 +29,11 @@ std::string defaultRealDir();
 /// InputError when the folder is missing, holds no frame, or a frame is malformed.
 std::vector<BenchFrame> loadRealFrames(const std::string &dir);
 
+/// The simulator's paper scenes (section 4: uncluttered wall, closet, small and big
+/// obstacles) at 1, 2 and 3 m (closet 1.5, 2, 3 m), Kinect v1 sensor model, fixed seeds.
+/// `max_frames` > 0 keeps only the first ones (they are rendered on demand).
+std::vector<BenchFrame> simulatorFrames(int max_frames = 0);
+
 /// The frame resampled (nearest neighbour) to width x height, intrinsics scaled to match.
 BenchFrame resizeFrame(const BenchFrame &frame, int width, int height);
 
@@ -57,17 +62,22 @@ std::string cpuModel();
 /// The keystone workload: a BGR picture of the framebuffer's size shown in a representative
 /// detected rectangle (a wall 2 m ahead, turned 20 deg), through projsurf's keystone
 /// (computeKeystone once, warpToFramebuffer per frame), or through a bare cv::warpPerspective
-/// with the same homography into a preallocated framebuffer (`bare`).
+/// with the same homography into a preallocated framebuffer (Bare), or by cv::remap over the
+/// picture's bounding box with fixed-point maps built once per detection (Remap: what a
+/// video loop could do; the rest of the framebuffer stays black from the first frame).
 class KeystoneWarp {
 public:
-    explicit KeystoneWarp(const Projector &projector, bool bare = false);
+    enum class Kind { Projsurf, Bare, Remap };
+    explicit KeystoneWarp(const Projector &projector, Kind kind = Kind::Projsurf);
     void run();
     const cv::Mat &output() const { return out_; }
     std::string what() const;
 
 private:
-    bool bare_ = false;
+    Kind kind_ = Kind::Projsurf;
     cv::Mat in_, out_;
+    cv::Mat map1_, map2_;  ///< Remap: CV_16SC2 + CV_16UC1 over roi_
+    cv::Rect roi_;
     std::shared_ptr<const Keystone> keystone_;
 };
 

@@ -23,6 +23,7 @@
 #include "projsurf/core/rectangle_search.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/pipeline/detector.hpp"
+#include "projsurf/sim/scenarios.hpp"
 
 namespace {
 
@@ -52,7 +53,7 @@ struct StockStages {
 const std::vector<StockStages> &stockStages() {
     static const std::vector<StockStages> all = [] {
         const StockConfig config;
-        const Projector projector;
+        const Projector projector = sim::exampleProjector();
         std::vector<StockStages> out;
         for (const auto &f : frames()) {
             StockStages s;
@@ -112,7 +113,7 @@ void setFrameCounters(benchmark::State &state, std::size_t used) {
 void detectBench(benchmark::State &state, Method method) {
     DetectorConfig config;
     config.method = method;
-    SurfaceDetector detector(Projector{}, config);
+    SurfaceDetector detector(sim::exampleProjector(), config);
     const auto &f = frames();
     std::map<std::string, double> sums;
     double found = 0;
@@ -195,7 +196,7 @@ void BM_StockWorkspaceRaster(benchmark::State &state) {
 void BM_SharedRectangleSearch(benchmark::State &state) {  // projsurf core, on the stock rasters
     const auto s = reaching(&StockStages::has_raster);
     if (s.empty()) return state.SkipWithError("no frame reached this stage");
-    const double aspect = Projector{}.aspect();
+    const double aspect = sim::exampleProjector().aspect();
     std::size_t i = 0;
     for (auto _ : state) {
         const StockStages *x = s[i++ % s.size()];
@@ -224,7 +225,7 @@ void BM_StockTotal(benchmark::State &state) {
     const auto s = reaching(nullptr);
     StockConfig config;
     config.convex_too = false;  // the alternative hull is not part of the pipeline's time
-    const StockPipeline stock(Projector{}, config);
+    const StockPipeline stock(sim::exampleProjector(), config);
     std::size_t i = 0;
     for (auto _ : state) benchmark::DoNotOptimize(stock.run(s[i++ % s.size()]->cloud));
     setFrameCounters(state, s.size());
@@ -233,7 +234,8 @@ void BM_StockTotal(benchmark::State &state) {
 // --- keystone ------------------------------------------------------------------------------
 
 void BM_KeystoneWarp1280x800(benchmark::State &state) {
-    KeystoneWarp warp(Projector{}, state.range(0) != 0);  // 0: projsurf::warpToFramebuffer, 1: bare OpenCV
+    // 0: projsurf::warpToFramebuffer, 1: bare cv::warpPerspective, 2: cv::remap with maps built once
+    KeystoneWarp warp(sim::exampleProjector(), static_cast<KeystoneWarp::Kind>(state.range(0)));
     for (auto _ : state) {
         warp.run();
         benchmark::DoNotOptimize(warp.output().data);
@@ -256,7 +258,7 @@ const std::vector<BenchFrame> &resized(int width, int height) {
 
 void BM_ScaleOursDefault(benchmark::State &state) {
     const auto &f = resized(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
-    SurfaceDetector detector(Projector{}, DetectorConfig{});
+    SurfaceDetector detector(sim::exampleProjector(), DetectorConfig{});
     std::size_t i = 0;
     for (auto _ : state) benchmark::DoNotOptimize(detector.detect(f[i++ % f.size()].cloud));
     state.SetComplexityN(state.range(0) * state.range(1));
@@ -267,7 +269,7 @@ void BM_ScaleStock(benchmark::State &state) {
     for (const auto &fr : f) clouds.push_back(toPcl(fr.cloud));
     StockConfig config;
     config.convex_too = false;
-    const StockPipeline stock(Projector{}, config);
+    const StockPipeline stock(sim::exampleProjector(), config);
     std::size_t i = 0;
     for (auto _ : state) benchmark::DoNotOptimize(stock.run(clouds[i++ % clouds.size()]));
     state.SetComplexityN(state.range(0) * state.range(1));
@@ -294,7 +296,7 @@ BENCHMARK(BM_SharedRectangleSearch)->Unit(benchmark::kMillisecond)->UseRealTime(
 BENCHMARK(BM_StockCrop)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_StockOutliers)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_StockTotal)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_KeystoneWarp1280x800)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_KeystoneWarp1280x800)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ScaleOursDefault)->Apply(scaleArgs)->Complexity(benchmark::oN)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ScaleStock)->Apply(scaleArgs)->Complexity(benchmark::oN)->Unit(benchmark::kMillisecond)->UseRealTime();
 

@@ -27,6 +27,7 @@
 #include "projsurf/core/projector.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/pipeline/detector.hpp"
+#include "projsurf/sim/scenarios.hpp"
 
 namespace {
 
@@ -260,6 +261,7 @@ struct Options {
     int cpu = 0;
     bool quick = false;
     bool scale = false;
+    bool sim = true;
     int scale_reps = 10;
 };
 
@@ -369,8 +371,8 @@ void reportKeystone(const Options &o, const Projector &projector) {
     std::cout << "A picture of the framebuffer's size shown in a detected rectangle on a wall 2 m ahead turned 20°; "
                  "per frame (the homography is computed once per detection).\n\n";
     std::cout << "| warp | median ms | p10–p90 ms | max ms | target |\n|---|---:|---:|---:|---:|\n";
-    for (const bool bare : {false, true}) {
-        KeystoneWarp warp(projector, bare);
+    for (const auto kind : {KeystoneWarp::Kind::Projsurf, KeystoneWarp::Kind::Bare, KeystoneWarp::Kind::Remap}) {
+        KeystoneWarp warp(projector, kind);
         const int warmup = o.quick ? 0 : 10, reps = o.quick ? 1 : 300;
         for (int i = 0; i < warmup; ++i) warp.run();
         std::vector<double> v;
@@ -497,6 +499,7 @@ int main(int argc, char **argv) {
     app.add_option("--cpu", o.cpu, "pin to this CPU (-1 = do not pin; then use taskset -c 0)")
         ->check(CLI::Range(-1, 1023));
     app.add_flag("--quick", o.quick, "smoke run: 1 frame, 1 repetition, no warm-up");
+    app.add_flag("!--no-sim", o.sim, "skip the simulator's paper scenes");
     app.add_flag("--scale", o.scale, "time against the number of points, 160x120 ... 1280x720");
     app.add_option("--scale-reps", o.scale_reps, "repetitions per frame in --scale")->check(CLI::Range(1, 100000));
     try {
@@ -519,13 +522,18 @@ int main(int argc, char **argv) {
         if (o.max_frames > 0 && frames.size() > static_cast<std::size_t>(o.max_frames)) frames.resize(o.max_frames);
         std::cerr << "projsurf_bench: " << frames.size() << " frames loaded (peak RSS so far " << fmt(peakRssMiB())
                   << " MiB)\n";
-        const Projector projector;  // the contract's example calibration
+        const Projector projector = sim::exampleProjector();  // the contract's example calibration
         printHeader(o, pinned);
         if (o.scale) {
             reportScale(frames, o, projector);
         } else {
             const std::string memory = reportMemory(frames, projector);  // first: a clean parent to fork
-            reportFrameSet("Real frames", frames, o, projector);
+            reportFrameSet("Real frames (" + o.data + ")", frames, o, projector);
+            if (o.sim) {
+                std::cerr << "projsurf_bench: rendering the simulator's paper scenes ...\n";
+                reportFrameSet("Simulator: the paper's scenes (Kinect v1 model)", simulatorFrames(o.max_frames), o,
+                               projector);
+            }
             reportKeystone(o, projector);
             std::cout << memory;
             std::cout << "Peak RSS of this benchmark process (libraries, every frame as loaded, all three pipelines): "
