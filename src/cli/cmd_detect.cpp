@@ -1,12 +1,103 @@
+// projsurf detect: find the biggest upright area a projector can use on a vertical surface.
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include <opencv2/imgcodecs.hpp>
+
 #include "cli/commands.hpp"
+#include "cli/parse.hpp"
+#include "projsurf/io/cloud_io.hpp"
+#include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
+#include "projsurf/io/files.hpp"
+#include "projsurf/io/overlay.hpp"
+#include "projsurf/io/yaml_files.hpp"
 
 namespace projsurf::cli {
+namespace {
+
+struct DetectOptions {
+    std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity, method = "default",
+        hull = "concave";
+    DetectorConfig config;
+};
+
+void run(const DetectOptions &o) {
+    // Validate every input before any work, and before any output is written.
+    if (o.cloud.empty() == o.depth.empty()) throw InputError("arguments", "give exactly one of --cloud FILE or --depth FILE");
+    if (!o.depth.empty() && o.camera.empty()) throw InputError("arguments", "--depth needs --camera camera.yaml");
+    DetectorConfig cfg = o.config;
+    if (o.method == "paper") cfg.method = Method::Paper;
+    else if (o.method == "default") cfg.method = Method::Default;
+    else throw InputError("--method", "expected 'default' or 'paper', got '" + o.method + "'");
+    if (o.hull == "concave") cfg.hull = HullKind::Concave;
+    else if (o.hull == "convex") cfg.hull = HullKind::Convex;
+    else throw InputError("--hull", "expected 'concave' or 'convex', got '" + o.hull + "'");
+    if (!o.gravity.empty()) cfg.gravity = parseVector3("--gravity", o.gravity);
+    if (!o.aspect.empty()) cfg.aspect = parseAspect("--aspect", o.aspect);
+    for (const auto &out : {o.json, o.overlay})
+        if (!out.empty()) requireWritableLocation(out);
+
+    const Projector projector = readCalibration(o.calib);
+    std::unique_ptr<CameraIntrinsics> camera;
+    Cloud cloud;
+    if (!o.cloud.empty()) {
+        cloud = readCloud(o.cloud);
+    } else {
+        camera = std::make_unique<CameraIntrinsics>(readCamera(o.camera));
+        cloud = readDepthCloud(o.depth, o.camera);
+    }
+    cv::Mat color;
+    if (!o.rgb.empty()) {
+        color = readImage(o.rgb, cv::IMREAD_COLOR);
+        if (cloud.organized() && (color.cols != cloud.width || color.rows != cloud.height))
+            throw InputError(o.rgb, "colour image is " + std::to_string(color.cols) + "x" + std::to_string(color.rows) +
+                                        ", the cloud is " + std::to_string(cloud.width) + "x" + std::to_string(cloud.height));
+    }
+
+    const Detection det = detectSurface(cloud, projector, cfg);
+    const nlohmann::json j = detectionToJson(det, cfg);
+    if (!o.json.empty()) writeFileAtomic(o.json, j.dump(2) + "\n");
+    if (!o.overlay.empty()) writeImageAtomic(o.overlay, renderOverlay(cloud, det, cfg, camera.get(), color));
+    if (o.json.empty()) {
+        std::cout << j.dump(2) << "\n";
+    } else if (det.found) {
+        std::printf("found: %.2f x %.2f m (%.2f m^2) on a plane %.2f m away at %.1f deg; %.1f ms\n", det.rectangle.width,
+                    det.rectangle.height, det.rectangle.area(), det.plane.d, det.orientation_deg, det.timing_ms.at("total"));
+    } else {
+        std::printf("not found: %s\n", det.reason.c_str());
+    }
+}
+
+}  // namespace
 
 void addDetectCommand(CLI::App &app) {
-    auto *sub = app.add_subcommand("detect", "(not available yet)");
-    sub->allow_extras();
-    sub->callback([] { throw InputError("detect", "not available yet"); });
+    auto o = std::make_shared<DetectOptions>();
+    auto *sub = app.add_subcommand("detect", "Find the biggest upright projection area on a vertical surface");
+    sub->add_option("--cloud", o->cloud, "Point cloud (PCD or PLY, camera optical frame, metres)");
+    sub->add_option("--depth", o->depth, "16-bit depth PNG (0 = no reading); needs --camera");
+    sub->add_option("--camera", o->camera, "Camera intrinsics YAML for --depth");
+    sub->add_option("--rgb", o->rgb, "Colour PNG registered to the cloud, for the overlay");
+    sub->add_option("--calib", o->calib, "Projector calibration YAML")->required();
+    sub->add_option("--aspect", o->aspect, "Picture aspect ratio W:H (default: the framebuffer's)");
+    sub->add_option("--json", o->json, "Write the detection JSON here (else it goes to stdout)");
+    sub->add_option("--overlay", o->overlay, "Write a picture of what was detected here (PNG)");
+    sub->add_option("--gravity", o->gravity, "Gravity in the camera frame gx,gy,gz (default 0,1,0)");
+    sub->add_option("--method", o->method, "default | paper (the paper's steps, for reproduction)");
+    sub->add_option("--hull", o->hull, "paper method: concave | convex hull of the plane");
+    auto &c = o->config;
+    sub->add_option("--max-tilt", c.max_tilt, "Vertical tolerance, rad (paper 3.2.1)")->check(CLI::Range(0.0, 1.5));
+    sub->add_option("--seed", c.seed, "RANSAC random seed");
+    sub->add_option("--voxel-leaf", c.voxel_leaf, "paper: voxel side, m")->check(CLI::Range(0.001, 1.0));
+    sub->add_option("--ransac-distance", c.ransac_distance, "paper: RANSAC inlier distance, m")->check(CLI::Range(0.001, 1.0));
+    sub->add_option("--max-outliers", c.max_outliers, "paper: outliers that reject a surface")->check(CLI::NonNegativeNumber);
+    sub->add_option("--cell", c.cell, "default: free-space raster cell, m")->check(CLI::Range(0.002, 0.5));
+    sub->add_option("--max-planes", c.max_planes, "default: vertical planes considered")->check(CLI::Range(1, 20));
+    sub->add_option("--max-outlier-fraction", c.max_outlier_fraction, "default: outlier share that rejects an area")
+        ->check(CLI::Range(0.0, 1.0));
+    sub->callback([o] { run(*o); });
 }
 
 }  // namespace projsurf::cli

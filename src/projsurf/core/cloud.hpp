@@ -1,6 +1,7 @@
 #pragma once
 // A point cloud in the camera's optical frame (x right, y down, z forward; metres).
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstddef>
 #include <vector>
 

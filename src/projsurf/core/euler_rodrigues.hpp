@@ -1,6 +1,7 @@
 #pragma once
 // The paper's corner-ray construction (section 3.1.2 and Appendix, eqs. 3-4, A.1-A.9).
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <array>
 
 namespace projsurf {

@@ -2,6 +2,7 @@
 // The projector as the contract defines it: a pinhole whose principal point is the
 // framebuffer centre and whose roll is zero with respect to the camera it is mounted on.
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <array>
 #include <optional>
 

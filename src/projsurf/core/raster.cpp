@@ -74,6 +74,34 @@ void fillPolygon(cv::Mat &grid, const RasterFrame &frame, const std::vector<Eige
     }
 }
 
+std::vector<Eigen::Vector2d> insetConvexPolygon(const std::vector<Eigen::Vector2d> &poly, double distance) {
+    const std::size_t n = poly.size();
+    if (n < 3) return poly;
+    double area2 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto &a = poly[i], &b = poly[(i + 1) % n];
+        area2 += a.x() * b.y() - b.x() * a.y();
+    }
+    const double side = area2 > 0 ? 1.0 : -1.0;  // inward normal of edge a->b is side * (-dy, dx)
+    std::vector<Eigen::Vector2d> out;
+    for (std::size_t i = 0; i < n; ++i) {
+        // Corner i is where the moved edges (i-1 -> i) and (i -> i+1) meet.
+        const auto &p0 = poly[(i + n - 1) % n], &p1 = poly[i], &p2 = poly[(i + 1) % n];
+        const Eigen::Vector2d d1 = (p1 - p0).normalized(), d2 = (p2 - p1).normalized();
+        const Eigen::Vector2d n1 = side * Eigen::Vector2d(-d1.y(), d1.x()), n2 = side * Eigen::Vector2d(-d2.y(), d2.x());
+        const Eigen::Vector2d a = p0 + distance * n1, b = p1 + distance * n2;
+        const double det = d1.x() * (-d2.y()) - d1.y() * (-d2.x());
+        if (std::abs(det) < 1e-12) {
+            out.push_back(p1 + distance * n1);
+            continue;
+        }
+        const Eigen::Vector2d rhs = b - a;
+        const double t = (rhs.x() * (-d2.y()) - rhs.y() * (-d2.x())) / det;
+        out.push_back(a + t * d1);
+    }
+    return out;
+}
+
 cv::Mat outlineMask(const RasterFrame &frame, const std::vector<Segment2> &edges) {
     cv::Mat grid = cv::Mat::zeros(frame.rows, frame.cols, CV_8UC1);
     auto cellOf = [&](const Eigen::Vector2d &uv) {

@@ -37,6 +37,10 @@ void fillOutsideRows(cv::Mat &grid, uchar value);
 /// are set to `value` (exact, scanline even-odd).
 void fillPolygon(cv::Mat &grid, const RasterFrame &frame, const std::vector<Eigen::Vector2d> &polygon, uchar value);
 
+/// A convex polygon moved inwards by `distance` on every edge (counter-clockwise or
+/// clockwise input); used so that whole cells, not only their centres, lie inside.
+std::vector<Eigen::Vector2d> insetConvexPolygon(const std::vector<Eigen::Vector2d> &polygon, double distance);
+
 /// The paper's M matrix: edges drawn with Bresenham, outside filled; 1 = not projectable.
 cv::Mat outlineMask(const RasterFrame &frame, const std::vector<Segment2> &edges);
 

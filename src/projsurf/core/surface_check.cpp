@@ -57,7 +57,7 @@ SurfaceCheckResult checkSurfacePaper(const Cloud &cloud, const PlaneFrame &frame
 }
 
 SurfaceCheckResult checkSurface(const Cloud &cloud, const PlaneFrame &frame, const Rectangle &rect,
-                                double noise_k, double sigmas, double min_band, double max_fraction, int step) {
+                                const DepthTolerance &tolerance, double max_fraction, int step) {
     const Box box = planeBox(frame, rect);
     const Eigen::Vector3f n = frame.normal.cast<float>();
     const float d = static_cast<float>(-frame.normal.dot(frame.origin));
@@ -76,7 +76,7 @@ SurfaceCheckResult checkSurface(const Cloud &cloud, const PlaneFrame &frame, con
         if (!box.contains(uv)) continue;
         ++r.points;
         const float h = np + d;
-        if (std::abs(h) > depthBand(p.z(), noise_k, sigmas, min_band, 1e9)) r.outlier_indices.push_back(i);
+        if (std::abs(h) > tolerance.margin(p.z())) r.outlier_indices.push_back(i);
     }
     r.outliers = static_cast<int>(r.outlier_indices.size());
     r.accepted = r.points > 0 && r.outliers <= max_fraction * r.points;

@@ -20,19 +20,33 @@ struct SurfaceCheckResult {
 SurfaceCheckResult checkSurfacePaper(const Cloud &cloud, const PlaneFrame &frame, const Rectangle &rect,
                                      double threshold, int max_outliers);
 
+/// How far off a plane a depth reading may be, as a function of its depth z (m).
+/// sigma_z = k z^2 (Khoshelham & Oude Elberink 2012, Kinect v1).
+struct DepthTolerance {
+    double noise_k = 1.425e-3;   ///< 1/m
+    double sigmas = 3.0;         ///< inlier band in sigmas
+    double min_band = 0.01;      ///< m
+    double max_band = 0.06;      ///< m
+    double obstacle_bands = 2.0; ///< beyond this many bands: an obstacle or a hole
+    double min_obstacle = 0.03;  ///< m, and at least this far
+
+    /// Within this distance a point is on the plane.
+    float band(float z) const {
+        const double b = sigmas * noise_k * static_cast<double>(z) * z;
+        return static_cast<float>(b < min_band ? min_band : (b > max_band ? max_band : b));
+    }
+    /// Beyond this distance a point is off the plane for sure (obstacle in front, hole behind).
+    float margin(float z) const {
+        const float m = static_cast<float>(obstacle_bands) * band(z);
+        return m > min_obstacle ? m : static_cast<float>(min_obstacle);
+    }
+};
+
 /// Default: points seen through the rectangle (camera ray meets the plane inside it);
-/// outlier when the distance to the plane exceeds max(min_band, sigmas * k z^2) (depth-noise
-/// model), reject when the outlier share exceeds max_fraction. Independent of range and
-/// sensor resolution.
+/// outlier when farther from the plane than tolerance.margin(z); reject when the outlier
+/// share exceeds max_fraction. Independent of range and sensor resolution.
 /// `step` checks every step-th point (1 = all).
 SurfaceCheckResult checkSurface(const Cloud &cloud, const PlaneFrame &frame, const Rectangle &rect,
-                                double noise_k, double sigmas, double min_band, double max_fraction, int step = 1);
-
-/// Distance band (m) within which a point at depth z counts as on a plane:
-/// clamp(sigmas * k * z^2, min_band, max_band) (sigma_z = k z^2, Khoshelham & Oude Elberink 2012).
-inline float depthBand(float z, double noise_k, double sigmas, double min_band, double max_band) {
-    const double b = sigmas * noise_k * static_cast<double>(z) * z;
-    return static_cast<float>(b < min_band ? min_band : (b > max_band ? max_band : b));
-}
+                                const DepthTolerance &tolerance, double max_fraction, int step = 1);
 
 }  // namespace projsurf

@@ -58,6 +58,12 @@ bool placeRectangle(Candidate &c, double aspect) {
     return true;
 }
 
+Rectangle shrink(const PlaneFrame &f, const Rectangle &r, double margin) {
+    const Eigen::Vector2d lo = f.toPlane(r.corners[3]), hi = f.toPlane(r.corners[1]);
+    const Eigen::Vector2d m = Eigen::Vector2d::Constant(std::min(margin, 0.25 * std::min(r.width, r.height)));
+    return makeRectangle(f, lo + m, hi - m);
+}
+
 std::vector<Eigen::Vector3d> toCamera(const PlaneFrame &f, const std::vector<Eigen::Vector2d> &uv) {
     std::vector<Eigen::Vector3d> out;
     for (const auto &p : uv) out.push_back(f.toCamera(p));
@@ -214,6 +220,7 @@ void observedFreeSpace(const Cloud &cloud, const Projector &projector, const Det
     const float inv_cell = static_cast<float>(1.0 / c.raster.cell);
     const float u0 = static_cast<float>(c.raster.top_left.x()), v0 = static_cast<float>(c.raster.top_left.y());
     const float proj_h = n.dot(o) + d;  // projector height above the plane
+    const DepthTolerance tol = cfg.tolerance();
     auto cellOf = [&](const Eigen::Vector3f &q, int &col, int &row) {
         const Eigen::Vector3f r = q - fo;
         col = static_cast<int>(std::floor((r.dot(right) - u0) * inv_cell));
@@ -233,15 +240,15 @@ void observedFreeSpace(const Cloud &cloud, const Projector &projector, const Det
             const Point &p = row_pts[x];
             if (!isFinite(p)) continue;
             const float h = n.dot(p) + d;
-            const float band = depthBand(p.z(), cfg.plane_noise, cfg.plane_sigmas, cfg.min_band, cfg.max_band);
+            const float band = tol.band(p.z()), margin = tol.margin(p.z());
             int col, row;
             if (std::abs(h) <= band) {
                 if (cellOf(p - h * n, col, row)) bump16(support, row, col);
-            } else if (h < 0.0f) {
+            } else if (h < -margin) {
                 // Seen through the plane (hole, door, window): where the camera ray crosses it.
-                const float t = (h - d) == 0.0f ? 0.0f : -d / (h - d);
-                if (t > 0.0f && cellOf(t * p, col, row)) bump16(behind, row, col);
-            } else if (h < proj_h) {
+                const float t = -d / (h - d);
+                if (cellOf(t * p, col, row)) bump16(behind, row, col);
+            } else if (h > margin && h < proj_h) {
                 // Between projector and wall: its projector shadow on the wall.
                 const float t = proj_h / (proj_h - h);
                 if (cellOf(o + t * (p - o), col, row)) shadow.at<uchar>(row, col) = 1;
@@ -257,7 +264,9 @@ void observedFreeSpace(const Cloud &cloud, const Projector &projector, const Det
     cv::boxFilter(blocked / 255, neighbours, CV_16U, {3, 3}, {-1, -1}, false, cv::BORDER_CONSTANT);
     blocked &= neighbours >= 2;
     cv::Mat footprint = cv::Mat::zeros(size, CV_8UC1);
-    fillPolygon(footprint, c.raster, {c.workspace_uv.begin(), c.workspace_uv.end()}, 255);
+    // Whole cells inside the footprint: its edges moved in by half a cell diagonal.
+    fillPolygon(footprint, c.raster, insetConvexPolygon({c.workspace_uv.begin(), c.workspace_uv.end()}, 0.7072 * c.raster.cell),
+                255);
     c.free = supported & ~blocked & footprint;
 }
 
@@ -265,12 +274,13 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     Detection det;
     const auto t0 = Clock::now();
     auto t = Clock::now();
+    const DepthTolerance tol = cfg.tolerance();
     const std::vector<int> sample = samplePoints(cloud, cfg.target_samples);
     std::vector<Point> pts(sample.size());
     std::vector<float> band(sample.size());
     for (std::size_t i = 0; i < sample.size(); ++i) {
         pts[i] = cloud.points[sample[i]];
-        band[i] = depthBand(pts[i].z(), cfg.plane_noise, cfg.plane_sigmas, cfg.min_band, cfg.max_band);
+        band[i] = tol.band(pts[i].z());
     }
     det.timing_ms["sample"] = msSince(t);
     if (pts.size() < 3) {
@@ -291,25 +301,50 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     std::mt19937 rng(cfg.seed);
     std::vector<Candidate> candidates;
     const int min_points = std::min<int>(cfg.min_plane_points, static_cast<int>(pts.size()) / 20 + 3);
-    for (int k = 0; k < cfg.max_planes && static_cast<int>(active.size()) >= min_points; ++k) {
-        const auto found = findVerticalPlane(pts, active, band, cfg.gravity, opt, rng);
-        if (!found || static_cast<int>(found->inliers.size()) < min_points) break;
-        Candidate c;
-        c.plane = found->plane;
-        std::vector<int> inliers = found->inliers;
+    std::vector<std::vector<int>> members;  // sampled inliers of each candidate
+    auto refine = [&](Plane plane, std::vector<int> &inliers, const std::vector<int> &pool) {
         for (int round = 0; round < 2; ++round) {
             const auto refined = fitPlane(pts, inliers);
             if (!refined || tiltFromVertical(*refined, cfg.gravity) > cfg.max_tilt) break;
-            c.plane = *refined;
-            inliers = planeInliers(pts, active, band, c.plane);
+            plane = *refined;
+            inliers = planeInliers(pts, pool, band, plane);
         }
+        return plane;
+    };
+    for (int attempt = 0; attempt < 2 * cfg.max_planes && static_cast<int>(candidates.size()) < cfg.max_planes &&
+                          static_cast<int>(active.size()) >= min_points;
+         ++attempt) {
+        const auto found = findVerticalPlane(pts, active, band, cfg.gravity, opt, rng);
+        if (!found || static_cast<int>(found->inliers.size()) < min_points) break;
+        std::vector<int> inliers = found->inliers;
+        const Plane plane = refine(found->plane, inliers, active);
         std::vector<char> taken(pts.size(), 0);
         for (int i : inliers) taken[i] = 1;
         active.erase(std::remove_if(active.begin(), active.end(), [&](int i) { return taken[i]; }), active.end());
-        c.inliers = static_cast<int>(inliers.size());
-        c.frame = makePlaneFrame(c.plane, cfg.gravity, centroid(pts, inliers));
-        for (int i : inliers) c.inlier_indices.push_back(sample[i]);
-        candidates.push_back(std::move(c));
+        // A second slice of a plane already found (depth quantisation ribs, lens distortion of
+        // the depth camera) joins it instead of counting as a surface of its own.
+        const float z = static_cast<float>(centroid(pts, inliers).z());
+        int same = -1;
+        for (int k = 0; k < static_cast<int>(candidates.size()); ++k)
+            if (std::abs(candidates[k].plane.normal.dot(plane.normal)) > std::cos(0.05) &&
+                std::abs(candidates[k].plane.d - plane.d) < tol.margin(z))
+                same = k;
+        Candidate c;
+        c.plane = plane;
+        if (same >= 0) {
+            members[same].insert(members[same].end(), inliers.begin(), inliers.end());
+            const auto merged = fitPlane(pts, members[same]);
+            if (merged && tiltFromVertical(*merged, cfg.gravity) <= cfg.max_tilt) candidates[same].plane = *merged;
+            continue;
+        }
+        candidates.push_back(c);
+        members.push_back(std::move(inliers));
+    }
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+        Candidate &c = candidates[k];
+        c.inliers = static_cast<int>(members[k].size());
+        c.frame = makePlaneFrame(c.plane, cfg.gravity, centroid(pts, members[k]));
+        for (int i : members[k]) c.inlier_indices.push_back(sample[i]);
     }
     det.timing_ms["planes"] = msSince(t);
     for (const auto &c : candidates) det.debug.candidates.push_back(c.plane);
@@ -361,8 +396,11 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     SurfaceCheckResult last;
     for (int k : placed) {
         const Candidate &c = candidates[k];
-        last = checkSurface(cloud, c.frame, c.rectangle, cfg.plane_noise, cfg.plane_sigmas, cfg.min_band,
-                            cfg.max_outlier_fraction, cloud.organized() ? cfg.support_stride : 1);
+        // Mixed pixels at depth edges along the border are not the surface's fault: the check
+        // looks one raster cell inside the rectangle.
+        const Rectangle inner = shrink(c.frame, c.rectangle, c.raster.cell);
+        last = checkSurface(cloud, c.frame, inner, tol, cfg.max_outlier_fraction,
+                            cloud.organized() ? cfg.support_stride : 1);
         if (last.accepted) {
             chosen = &c;
             break;
