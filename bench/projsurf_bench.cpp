@@ -459,6 +459,7 @@ void reportScale(const std::vector<BenchFrame> &frames, const Options &o, const 
     std::cout << "| size | pixels | valid points (mean) | default ms | default ns/pixel | stock ms | stock ns/pixel | "
                  "stock / default |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
     std::vector<double> px, ours_ms, stock_ms;
+    std::vector<Measured> ours_runs;
     for (const auto &[w, h] : sizes) {
         std::cerr << "projsurf_bench: scale " << w << "x" << h << " ...\n";
         std::vector<BenchFrame> resized;
@@ -468,7 +469,8 @@ void reportScale(const std::vector<BenchFrame> &frames, const Options &o, const 
             finite += resized.back().finite;
         }
         Pipeline ours = oursPipeline("", projector, Method::Default), stock = stockPipeline(projector);
-        const Stats a = wallStats(measure(ours, resized, warmup, reps));
+        ours_runs.push_back(measure(ours, resized, warmup, reps));
+        const Stats a = wallStats(ours_runs.back());
         const Stats b = wallStats(measure(stock, resized, warmup, reps));
         const double pixels = static_cast<double>(w) * h;
         px.push_back(pixels);
@@ -477,6 +479,23 @@ void reportScale(const std::vector<BenchFrame> &frames, const Options &o, const 
         std::cout << "| " << w << "x" << h << " | " << static_cast<long>(pixels) << " | " << finite / frames.size()
                   << " | " << fmt(a.median) << " | " << fmt(1e6 * a.median / pixels) << " | " << fmt(b.median) << " | "
                   << fmt(1e6 * b.median / pixels) << " | " << ratio(b.median, a.median) << " |\n";
+    }
+    // Which of our stages depend on the number of points and which do not.
+    std::vector<std::string> stages;
+    for (const auto &m : ours_runs)
+        for (const auto &k : m.stage_order)
+            if (std::find(stages.begin(), stages.end(), k) == stages.end()) stages.push_back(k);
+    sortStages(stages);
+    std::cout << "\nprojsurf default, median ms per stage:\n\n| size |";
+    for (const auto &k : stages) std::cout << " " << k << " |";
+    std::cout << " total (wall) | total (CPU) |\n|---|";
+    for (std::size_t i = 0; i < stages.size() + 2; ++i) std::cout << "---:|";
+    std::cout << "\n";
+    for (std::size_t i = 0; i < sizes.size(); ++i) {
+        std::cout << "| " << sizes[i].first << "x" << sizes[i].second << " |";
+        for (const auto &k : stages) std::cout << " " << fmt(stageStats(ours_runs[i], k).median) << " |";
+        std::cout << " " << fmt(wallStats(ours_runs[i]).median) << " | " << fmt(cpuStats(ours_runs[i]).median)
+                  << " |\n";
     }
     const Fit fa = fitLine(px, ours_ms), fb = fitLine(px, stock_ms);
     std::cout << "\nLeast-squares line through the medians, t = a + b · pixels:\n\n";
