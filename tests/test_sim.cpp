@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <string>
 
 #include "projsurf/core/plane.hpp"
@@ -321,15 +323,15 @@ TEST(SimTruth, RectangleAvoidsObstacles) {
         ASSERT_TRUE(gt.found) << name;
         EXPECT_LT(gt.best.rectangle.area(), plain) << name;
         // Every point of the rectangle is seen by the camera and lit by the projector: the
-        // first thing on both rays is the wall itself.
+        // first thing on both rays is the surface itself (the wall, or a box's flat face).
         const auto &c = gt.best.rectangle.corners;
-        for (int i = 0; i <= 10; ++i)
-            for (int j = 0; j <= 10; ++j) {
+        for (int i = 1; i < 10; ++i)  // inside points: a box face shares its edges with the next face
+            for (int j = 1; j < 10; ++j) {
                 const Eigen::Vector3d p = c[3] + (i / 10.0) * (c[2] - c[3]) + (j / 10.0) * (c[0] - c[3]);
                 for (const Eigen::Vector3d &from : {Eigen::Vector3d::Zero().eval(), projector.origin}) {
                     const auto hit = castRay(s.scene, from, p - from);
                     ASSERT_TRUE(hit);
-                    EXPECT_EQ(s.scene.quads[hit->quad].label, "wall") << name << " " << i << "," << j;
+                    EXPECT_EQ(s.scene.quads[hit->quad].surface, gt.best.surface) << name << " " << i << "," << j;
                     EXPECT_NEAR(hit->t, 1.0, 1e-6);
                 }
             }
@@ -341,7 +343,7 @@ TEST(SimTruth, ClosetFrontWinsNearAndPosterIsNotAnObstacle) {
     const Scenario near = makeScenario("closet", 1.5, -16.62);
     const GroundTruth g1 = computeGroundTruth(near.scene, SensorModel(), projector, near.gravity);
     ASSERT_TRUE(g1.found);
-    EXPECT_EQ(g1.surfaces.size(), 2u);
+    EXPECT_EQ(g1.surfaces.size(), 4u);  // wall, closet front and both closet sides
     EXPECT_EQ(g1.best.label, "closet");
     // The poster is flat on the wall: the truth equals the plain wall's.
     const GroundTruth plain = computeGroundTruth(makeScenario("wall", 2.0, 17.19).scene, SensorModel(), projector,
@@ -367,4 +369,78 @@ TEST(SimScenarios, EveryScenarioRendersItsWall) {
     EXPECT_THROW(makeScenario("closet", 0.8, 0.0), std::invalid_argument);
     const Scenario rolled = makeScenario("rolled", 2.0, 0.0);
     EXPECT_NEAR(std::asin(std::abs(rolled.gravity.x())) * 180.0 / M_PI, 4.0, 1e-9);
+}
+
+namespace {
+
+struct CliResult {
+    int status = -1;
+    std::string out, err;
+};
+
+std::string slurp(const std::string &path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+CliResult runSimulate(const std::string &args, const std::string &tmp) {
+    const std::string o = tmp + "/stdout.txt", e = tmp + "/stderr.txt";
+    const int s = std::system(("timeout 120 " + std::string(PROJSURF_CLI) + " simulate " + args + " >" + o + " 2>" + e).c_str());
+    CliResult r;
+    r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+    r.out = slurp(o);
+    r.err = slurp(e);
+    return r;
+}
+
+std::string freshDir(const std::string &name) {
+    const std::string dir = "/tmp/projsurf_test_sim_" + name + "_" + std::to_string(::getpid());
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+}  // namespace
+
+TEST(SimCli, WritesTheContractFilesAndTheTruth) {
+    const std::string tmp = freshDir("cli");
+    const std::string out = tmp + "/frame";
+    const CliResult r = runSimulate("--scenario big_obstacle --distance 2.5 --angle-deg 17.19 --seed 4 --captures 3 --out " + out, tmp);
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (const char *f : {"cloud.pcd", "depth.png", "rgb.png", "camera.yaml", "calib.yaml", "truth.json",
+                          "captures/camera.yaml", "captures/capture_0_rgb.png", "captures/capture_2_depth.png"})
+        EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
+    const cv::Mat depth = cv::imread(out + "/depth.png", cv::IMREAD_UNCHANGED);
+    ASSERT_EQ(depth.type(), CV_16UC1);
+    EXPECT_EQ(depth.cols, 640);
+    EXPECT_GT(cv::countNonZero(depth), 200000);
+    // The truth file matches the library's ground truth for the same scene.
+    const nlohmann::json j = nlohmann::json::parse(slurp(out + "/truth.json"));
+    ASSERT_TRUE(j["found"].get<bool>());
+    const Scenario s = makeScenario("big_obstacle", 2.5, 17.19);
+    const GroundTruth gt = computeGroundTruth(s.scene, SensorModel(), exampleProjector(), s.gravity);
+    EXPECT_NEAR(j["rectangle"]["area_m2"].get<double>(), gt.best.rectangle.area(), 1e-9);
+    EXPECT_EQ(j["rectangle"]["corners"].size(), 4u);
+    for (int k = 0; k < 4; ++k)
+        EXPECT_NEAR(j["plane"]["coefficients"][k].get<double>(), s.wall.coefficients()[k], 1e-9);
+    EXPECT_EQ(j["scenario"]["name"], "big_obstacle");
+    std::filesystem::remove_all(tmp);
+}
+
+TEST(SimCli, BadArgumentsExitTwoAndWriteNothing) {
+    const std::string tmp = freshDir("bad");
+    const std::string out = tmp + "/never";
+    for (const std::string &args : std::vector<std::string>{"--scenario nonsense --out " + out, "--scenario wall --distance 0.1 --out " + out, std::string("--scenario wall"),
+          "--scenario wall --captures 2 --out " + out, "--scenario wall --aspect 16x9 --out " + out,
+          "--scenario wall --calib /nonexistent/calib.yaml --out " + out,
+          "--scenario wall --picture /nonexistent/p.png --out " + out}) {
+        const CliResult r = runSimulate(args, tmp);
+        EXPECT_EQ(r.status, 2) << args;
+        EXPECT_NE(r.err.find("error"), std::string::npos) << args << ": " << r.err;
+        EXPECT_FALSE(std::filesystem::exists(out)) << args;
+    }
+    const CliResult list = runSimulate("--list", tmp);
+    EXPECT_EQ(list.status, 0);
+    for (const auto &name : scenarioNames()) EXPECT_NE(list.out.find(name), std::string::npos) << name;
+    std::filesystem::remove_all(tmp);
 }

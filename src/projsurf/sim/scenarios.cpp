@@ -41,6 +41,12 @@ std::array<int, 6> wallBox(Scene &scene, const WallFrame &w, double s0, double s
     return addBox(scene, w.at(s0, h0, o0), (s1 - s0) * w.right, (h1 - h0) * w.up, (o1 - o0) * w.normal, albedo, label);
 }
 
+/// The visible vertical faces of a piece of furniture (front and both sides) are flat
+/// vertical surfaces a picture could go on, like the wall: each becomes a surface of its own.
+void markVerticalFaces(Scene &scene, const std::array<int, 6> &faces) {
+    for (int slot : {0, 1, 5}) scene.quads[faces[slot]].surface = nextSurfaceId(scene);
+}
+
 void addFloor(Scene &scene, const WallFrame &w, double out0, double out1) {
     Quad q;
     q.corner = w.at(-5.0, 0.0, out0);
@@ -62,8 +68,9 @@ void addMainWall(Scene &scene, const WallFrame &w, std::vector<WallHole> holes_s
 
 void requireRoom(const std::string &name, const WallFrame &w, double needed_out) {
     if (w.cameraOut() < needed_out)
-        throw std::invalid_argument("scenario '" + name + "': the camera must be at least " +
-                                    std::to_string(needed_out) + " m from the wall (perpendicular) for its objects");
+        throw std::invalid_argument("scenario '" + name + "' needs the camera at least " +
+                                    std::to_string(needed_out).substr(0, 4) +
+                                    " m from the wall (perpendicular distance = distance * cos(angle))");
 }
 
 }  // namespace
@@ -125,14 +132,13 @@ Scenario makeScenario(const std::string &name, double distance, double angle_deg
         requireRoom(name, w, 0.75);
         addMainWall(scene, w, {});
         addFloor(scene, w, 0.0, 8.0);
-        wallBox(scene, w, -0.45, 0.15, 0.0, 1.05, 0.0, 0.45, kCardboard, "box");
+        markVerticalFaces(scene, wallBox(scene, w, -0.45, 0.15, 0.0, 1.05, 0.0, 0.45, kCardboard, "box"));
     } else if (name == "closet") {
         sc.description = "a closet (1.0 wide, 0.6 deep, 2.0 m tall) against the wall (paper 4.2, cluttered)";
         requireRoom(name, w, 0.9);
         addMainWall(scene, w, {});
         addFloor(scene, w, 0.0, 8.0);
-        const auto faces = wallBox(scene, w, -0.8, 0.2, 0.0, 2.0, 0.0, 0.6, kWood, "closet");
-        scene.quads[faces[5]].surface = 1;  // the front (+out face) is a projection surface
+        markVerticalFaces(scene, wallBox(scene, w, -0.8, 0.2, 0.0, 2.0, 0.0, 0.6, kWood, "closet"));
     } else if (name == "door") {
         sc.description = "an open doorway (0.9 x 2.05 m) right of the axis, a room 3.5 m deep behind";
         addMainWall(scene, w, {{0.35, 0.0, 1.25, 2.05}});
