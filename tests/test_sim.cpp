@@ -327,7 +327,9 @@ TEST(SimTruth, RectangleAvoidsObstacles) {
         const auto &c = gt.best.rectangle.corners;
         for (int i = 1; i < 10; ++i)  // inside points: a box face shares its edges with the next face
             for (int j = 1; j < 10; ++j) {
-                const Eigen::Vector3d p = c[3] + (i / 10.0) * (c[2] - c[3]) + (j / 10.0) * (c[0] - c[3]);
+                // Just inside the edges: an edge may lie exactly on a box face's border.
+                const double a = 0.001 + 0.998 * i / 10.0, b = 0.001 + 0.998 * j / 10.0;
+                const Eigen::Vector3d p = c[3] + a * (c[2] - c[3]) + b * (c[0] - c[3]);
                 for (const Eigen::Vector3d &from : {Eigen::Vector3d::Zero().eval(), projector.origin}) {
                     const auto hit = castRay(s.scene, from, p - from);
                     ASSERT_TRUE(hit);

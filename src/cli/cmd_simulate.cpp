@@ -77,6 +77,8 @@ void run(const SimulateOptions &o) {
     if (o.scenario.empty() && o.captures == 0) throw InputError("--scenario", "required (see --list)");
     if (o.captures != 0 && (o.captures < 3 || o.captures > 50))
         throw InputError("--captures", "must be between 3 and 50 (the contract needs N >= 3)");
+    if (!(o.distance >= 0.5 && o.distance <= 10.0)) throw InputError("--distance", "must be between 0.5 and 10 m");
+    if (!(std::abs(o.angle_deg) < 75.0)) throw InputError("--angle-deg", "must be within +-75 degrees");
     if (!std::isfinite(o.roll_deg) || std::abs(o.roll_deg) > 45.0)
         throw InputError("--roll-deg", "must be within +-45 degrees");
     const Projector projector = o.calib.empty() ? sim::exampleProjector() : readCalibration(o.calib);
