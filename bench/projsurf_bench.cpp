@@ -339,6 +339,18 @@ void reportFrameSet(const std::string &title, const std::vector<BenchFrame> &fra
                       << (total.median > 0 && !module.empty() ? fmt(100.0 * s.median / total.median) + " %" : "-")
                       << " |\n";
         }
+        {  // time between and around the stages (result assembly, debug output, copies)
+            std::vector<double> rest;
+            for (const auto &r : m.runs) {
+                double sum = 0.0;
+                for (const auto &[key, ms] : r.stages)
+                    if (!moduleOf(key).empty()) sum += ms;
+                rest.push_back(r.wall_ms - sum);
+            }
+            const Stats s = summarize(rest);
+            std::cout << "| (outside the stages) | | " << fmt(s.median) << " | " << spread(s) << " | "
+                      << (total.median > 0 ? fmt(100.0 * s.median / total.median) + " %" : "-") << " |\n";
+        }
         std::cout << "| **total (wall clock)** | | **" << fmt(total.median) << "** | " << spread(total) << " | |\n\n";
     }
 
