@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 PACKAGES=(
   cmake make g++ ccache pkg-config
   libeigen3-dev libopencv-dev libpcl-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
-  libgtest-dev libbenchmark-dev
+  libgtest-dev libbenchmark-dev xvfb x11-apps
 )
 # ROS 1 (Debian's packages) for the node in ros/; see ros/README.md.
 ROS_PACKAGES=()

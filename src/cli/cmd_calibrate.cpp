@@ -1,13 +1,175 @@
-// Placeholder until the calibrate command lands; it refuses to run.
+// projsurf calibrate: find the projector's central axis from captures of the calibration
+// picture (paper 3.1) and write the calibration YAML (contract keys + fit report).
+#include <cmath>
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <opencv2/imgcodecs.hpp>
+#include <regex>
+#include <sstream>
+
 #include "cli/commands.hpp"
+#include "projsurf/core/calibration.hpp"
+#include "projsurf/io/calibration_report.hpp"
 #include "projsurf/io/errors.hpp"
+#include "projsurf/io/files.hpp"
+#include "projsurf/io/yaml_files.hpp"
+
+namespace fs = std::filesystem;
 
 namespace projsurf::cli {
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+struct CalibrateOptions {
+    std::string captures;
+    std::string out;
+    std::string fov = "39.3,24.0";     // deg, Aaxa P300 (paper 3.1.2)
+    std::string resolution = "1280,800";  // px, Aaxa P300
+    int threshold = 50;                // paper 3.1.1
+};
+
+/// "A,B" -> two finite numbers; InputError naming the option otherwise.
+std::pair<double, double> parseTwo(const std::string &option, const std::string &text) {
+    std::stringstream ss(text);
+    double a = 0, b = 0;
+    char comma = 0;
+    if (!(ss >> a >> comma >> b) || comma != ',' || !std::isfinite(a) || !std::isfinite(b) ||
+        !(ss >> std::ws).eof())
+        throw InputError(option, "expected two numbers separated by a comma, got '" + text + "'");
+    return {a, b};
+}
+
+std::string utcNow() {
+    const std::time_t t = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&t, &tm);
+    char buf[32];
+    std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return buf;
+}
+
+std::string fmt(const char *format, double a, double b = 0, double c = 0, double d = 0) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, format, a, b, c, d);
+    return buf;
+}
+
+void run(const CalibrateOptions &o) {
+    // Arguments first, then every input, before any work; the output only at the end.
+    const auto [fov_h, fov_v] = parseTwo("--fov-deg", o.fov);
+    if (!(fov_h > 0 && fov_h < 170 && fov_v > 0 && fov_v < 170))
+        throw InputError("--fov-deg", "angles must be between 0 and 170 degrees");
+    const auto [res_w, res_h] = parseTwo("--resolution", o.resolution);
+    if (res_w < 2 || res_h < 2 || res_w > 16384 || res_h > 16384 || res_w != std::floor(res_w) ||
+        res_h != std::floor(res_h))
+        throw InputError("--resolution", "must be two whole numbers between 2 and 16384");
+    if (o.threshold < 0 || o.threshold > 254) throw InputError("--threshold", "must be between 0 and 254");
+    std::error_code ec;
+    if (!fs::is_directory(o.captures, ec)) throw InputError(o.captures, "not a directory");
+    requireWritableLocation(o.out);
+    const fs::path dir(o.captures);
+    const CameraIntrinsics camera = readCamera((dir / "camera.yaml").string());
+
+    // capture_<k>_rgb.png for k = 0..N-1, each with its capture_<k>_depth.png.
+    std::map<int, std::string> found;
+    const std::regex pattern(R"(capture_(\d+)_rgb\.png)");
+    for (const auto &entry : fs::directory_iterator(dir, ec)) {
+        std::smatch m;
+        const std::string name = entry.path().filename().string();
+        if (std::regex_match(name, m, pattern)) found[std::stoi(m[1])] = name;
+    }
+    const int n = static_cast<int>(found.size());
+    for (int k = 0; k < n; ++k)
+        if (!found.count(k))
+            throw InputError((dir / ("capture_" + std::to_string(k) + "_rgb.png")).string(),
+                             "missing (captures must be numbered 0.." + std::to_string(n - 1) + ")");
+    if (n < 3)
+        throw InputError(o.captures, "found " + std::to_string(n) +
+                                         " capture(s) (capture_k_rgb.png), need at least 3 taken at different "
+                                         "distances from the wall");
+
+    std::vector<CaptureImages> captures;
+    CalibrationProvenance prov;
+    std::vector<std::string> rgb_paths, depth_paths;
+    for (int k = 0; k < n; ++k) {
+        const std::string rgb = (dir / ("capture_" + std::to_string(k) + "_rgb.png")).string();
+        const std::string dep = (dir / ("capture_" + std::to_string(k) + "_depth.png")).string();
+        CaptureImages c;
+        c.color = readImage(rgb, cv::IMREAD_COLOR);
+        c.depth = readImage(dep, cv::IMREAD_UNCHANGED);
+        if (c.depth.type() != CV_16UC1) throw InputError(dep, "expected a 16-bit single-channel depth PNG");
+        const std::string size = std::to_string(camera.width) + "x" + std::to_string(camera.height);
+        if (c.color.cols != camera.width || c.color.rows != camera.height)
+            throw InputError(rgb, "size differs from camera.yaml (" + size + ")");
+        if (c.depth.cols != camera.width || c.depth.rows != camera.height)
+            throw InputError(dep, "size differs from camera.yaml (" + size + ")");
+        captures.push_back(c);
+        rgb_paths.push_back(rgb);
+        depth_paths.push_back(dep);
+        prov.capture_names.push_back(fs::path(rgb).filename().string());
+    }
+
+    CalibrationConfig config;
+    config.disc.threshold = o.threshold;
+    config.width = static_cast<int>(res_w);
+    config.height = static_cast<int>(res_h);
+    config.fov_h = fov_h * kDeg;
+    config.fov_v = fov_v * kDeg;
+    const Calibration cal = calibrateProjector(captures, camera, config);
+    switch (cal.failure) {
+    case CalibrationFailure::None: break;
+    case CalibrationFailure::NoDisc:
+    case CalibrationFailure::SizeMismatch: throw InputError(rgb_paths.at(cal.failed_capture), cal.message);
+    case CalibrationFailure::NoDepth: throw InputError(depth_paths.at(cal.failed_capture), cal.message);
+    default: throw InputError(o.captures, cal.message);
+    }
+
+    prov.captures_dir = o.captures;
+    prov.threshold = o.threshold;
+    prov.created_utc = utcNow();
+    writeCalibrationReport(o.out, cal, prov);
+
+    const Eigen::Vector3d &d = cal.projector.direction, &og = cal.projector.origin;
+    std::cout << "projsurf calibrate: " << n << " captures -> " << o.out << "\n"
+              << fmt("  axis direction [%.5f, %.5f, %.5f]", d.x(), d.y(), d.z())
+              << fmt(", origin (z = 0, A.1) [%.4f, %.4f, %.4f] m\n", og.x(), og.y(), og.z());
+    for (int k = 0; k < n; ++k) {
+        const CaptureResult &r = cal.captures[k];
+        std::cout << "  " << prov.capture_names[k]
+                  << fmt(": disc at (%.2f, %.2f) px, radius %.1f px", r.disc.centroid.x(), r.disc.centroid.y(),
+                         r.disc.radius_px)
+                  << fmt(" -> [%.4f, %.4f, %.4f] m", r.lifted.point->x(), r.lifted.point->y(), r.lifted.point->z())
+                  << fmt(", residual %.2f mm\n", r.residual_m * 1000);
+    }
+    const std::string verdict = calibrationVerdict(cal.axis);
+    std::cout << fmt("  fit: residual rms %.2f mm, max %.2f mm, centroids span %.2f m along the axis", cal.axis.rms_m * 1000,
+                     cal.axis.max_m * 1000, cal.axis.spread_m)
+              << ": " << verdict << "\n";
+    if (verdict == "redo")
+        std::cerr << "projsurf: warning: the captures disagree by up to "
+                  << fmt("%.1f mm", cal.axis.max_m * 1000)
+                  << " from one line; check the robot did not turn the projector between captures and take them "
+                     "again\n";
+}
+
+}  // namespace
 
 void addCalibrateCommand(CLI::App &app) {
-    auto *sub = app.add_subcommand("calibrate", "(not available yet)");
-    sub->allow_extras();
-    sub->callback([] { throw InputError("calibrate", "this command is not available in this build yet"); });
+    auto opts = std::make_shared<CalibrateOptions>();
+    auto *sub = app.add_subcommand("calibrate", "find the projector's axis from captures of the calibration picture");
+    sub->add_option("--captures", opts->captures,
+                    "folder with camera.yaml and capture_k_rgb.png / capture_k_depth.png, k = 0..N-1 (N >= 3)")
+        ->required();
+    sub->add_option("--out", opts->out, "calibration YAML to write")->required();
+    sub->add_option("--fov-deg", opts->fov, "projector's full horizontal,vertical field of view, deg")
+        ->capture_default_str();
+    sub->add_option("--resolution", opts->resolution, "projector framebuffer width,height, px")->capture_default_str();
+    sub->add_option("--threshold", opts->threshold, "grey level that separates the disc from the background (0-254)")
+        ->capture_default_str();
+    sub->callback([opts] { run(*opts); });
 }
 
 }  // namespace projsurf::cli
