@@ -27,7 +27,8 @@ struct Candidate {
     std::array<Eigen::Vector3d, 4> workspace{};
     std::array<Eigen::Vector2d, 4> workspace_uv{};
     RasterFrame raster;
-    cv::Mat free;  // 255 = free
+    cv::Mat free;     // 255 = free (whole cells inside the footprint)
+    cv::Mat surface;  // 255 = observed free surface, footprint not applied (default mode)
     Rectangle rectangle;
     std::vector<std::vector<Eigen::Vector3d>> outlines;
     std::vector<int> inlier_indices;
@@ -206,6 +207,37 @@ std::vector<int> samplePoints(const Cloud &cloud, int target) {
     return out;
 }
 
+/// Typical distance (m) between neighbouring points of the pass with this pixel step on the
+/// candidate's plane: the size of the gaps the support raster must close.
+double sampleSpacing(const Cloud &cloud, const Candidate &c, int step, const DepthTolerance &tol, int support_points) {
+    std::vector<float> d;
+    const Eigen::Vector3f n = c.plane.normal.cast<float>();
+    const float pd = static_cast<float>(c.plane.d);
+    auto onPlane = [&](const Point &p) { return isFinite(p) && std::abs(n.dot(p) + pd) <= tol.band(p.z()); };
+    if (cloud.organized()) {
+        for (int i : c.inlier_indices) {
+            const int u = i % cloud.width, v = i / cloud.width;
+            if (u + step < cloud.width && onPlane(cloud.points[i + step]))
+                d.push_back((cloud.points[i + step] - cloud.points[i]).norm());
+            if (v + step < cloud.height && onPlane(cloud.points[i + step * cloud.width]))
+                d.push_back((cloud.points[i + step * cloud.width] - cloud.points[i]).norm());
+        }
+    }
+    if (d.size() < 10) {
+        // Unorganized: the area the wall points spread over, shared among them.
+        Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e9), hi = Eigen::Vector2d::Constant(-1e9);
+        for (int i : c.inlier_indices) {
+            const Eigen::Vector2d uv = c.frame.toPlane(cloud.points[i].cast<double>());
+            lo = lo.cwiseMin(uv);
+            hi = hi.cwiseMax(uv);
+        }
+        const double area = std::max(0.0, (hi - lo).prod());
+        return std::sqrt(area / std::max(1, support_points));
+    }
+    std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
+    return d[d.size() / 2];
+}
+
 /// Free space of one candidate from where its plane was observed: a cell is free when
 /// wall points were seen in it, nothing was seen through it, and no point in front of the
 /// wall shadows it from the projector.
@@ -232,6 +264,7 @@ void observedFreeSpace(const Cloud &cloud, const Projector &projector, const Det
         if (v < 65535) ++v;
     };
     const int step = cloud.organized() ? std::max(1, cfg.support_stride) : 1;
+    int support_points = 0;
     const int width = cloud.organized() ? cloud.width : static_cast<int>(cloud.points.size());
     const int height = cloud.organized() ? cloud.height : 1;
     for (int y = 0; y < height; y += step) {
@@ -243,7 +276,10 @@ void observedFreeSpace(const Cloud &cloud, const Projector &projector, const Det
             const float band = tol.band(p.z()), margin = tol.margin(p.z());
             int col, row;
             if (std::abs(h) <= band) {
-                if (cellOf(p - h * n, col, row)) bump16(support, row, col);
+                if (cellOf(p - h * n, col, row)) {
+                    bump16(support, row, col);
+                    ++support_points;
+                }
             } else if (h < -margin) {
                 // Seen through the plane (hole, door, window): where the camera ray crosses it.
                 const float t = -d / (h - d);
@@ -255,9 +291,10 @@ void observedFreeSpace(const Cloud &cloud, const Projector &projector, const Det
             }
         }
     }
-    // Support: cells with wall points, small sampling gaps closed.
+    // Support: cells with wall points, the gaps between neighbouring samples closed.
+    const int gap = std::clamp(static_cast<int>(std::ceil(sampleSpacing(cloud, c, step, tol, support_points) / c.raster.cell)), 1, 8);
     cv::Mat supported = support > 0;
-    cv::morphologyEx(supported, supported, cv::MORPH_CLOSE, cv::getStructuringElement(cv::MORPH_RECT, {3, 3}));
+    cv::morphologyEx(supported, supported, cv::MORPH_CLOSE, cv::getStructuringElement(cv::MORPH_RECT, {2 * gap + 1, 2 * gap + 1}));
     // Blocked: seen through more than seen on, or shadowed; isolated single cells are noise.
     cv::Mat blocked = (behind > support) | (shadow > 0);
     cv::Mat neighbours;
@@ -267,7 +304,58 @@ void observedFreeSpace(const Cloud &cloud, const Projector &projector, const Det
     // Whole cells inside the footprint: its edges moved in by half a cell diagonal.
     fillPolygon(footprint, c.raster, insetConvexPolygon({c.workspace_uv.begin(), c.workspace_uv.end()}, 0.7072 * c.raster.cell),
                 255);
-    c.free = supported & ~blocked & footprint;
+    // A cell with a wall point may reach up to a cell past the wall's true edge: trim one
+    // cell off every edge of the observed surface so the picture never hangs over it.
+    c.surface = supported & ~blocked;
+    cv::erode(c.surface, c.surface, cv::getStructuringElement(cv::MORPH_RECT, {3, 3}), {-1, -1}, 1,
+              cv::BORDER_CONSTANT, 0);
+    c.free = c.surface & footprint;
+}
+
+bool insideConvex(const std::array<Eigen::Vector2d, 4> &quad, const Eigen::Vector2d &p) {
+    int sign = 0;
+    for (int i = 0; i < 4; ++i) {
+        const Eigen::Vector2d e = quad[(i + 1) % 4] - quad[i], q = p - quad[i];
+        const double cr = e.x() * q.y() - e.y() * q.x();
+        const int s = cr > 1e-12 ? 1 : (cr < -1e-12 ? -1 : 0);
+        if (s != 0 && sign != 0 && s != sign) return false;
+        if (s != 0) sign = s;
+    }
+    return true;
+}
+
+/// Grows the grid rectangle about its centre, continuously, while its corners stay inside
+/// the exact footprint and every cell it touches is observed free surface: recovers the
+/// quantisation of the grid search (the footprint is known exactly).
+void refineRectangle(Candidate &c, double aspect) {
+    const Eigen::Vector2d lo = c.frame.toPlane(c.rectangle.corners[3]), hi = c.frame.toPlane(c.rectangle.corners[1]);
+    const Eigen::Vector2d mid = 0.5 * (lo + hi);
+    const double cell = c.raster.cell;
+    auto fits = [&](double h) {
+        const Eigen::Vector2d half(0.5 * aspect * h, 0.5 * h);
+        const Eigen::Vector2d a = mid - half, b = mid + half;
+        for (const Eigen::Vector2d &p : {a, b, Eigen::Vector2d(a.x(), b.y()), Eigen::Vector2d(b.x(), a.y())})
+            if (!insideConvex(c.workspace_uv, p)) return false;
+        const int c0 = static_cast<int>(std::floor((a.x() - c.raster.top_left.x()) / cell));
+        const int c1 = static_cast<int>(std::floor((b.x() - c.raster.top_left.x()) / cell - 1e-9));
+        const int r0 = static_cast<int>(std::floor((c.raster.top_left.y() - b.y()) / cell));
+        const int r1 = static_cast<int>(std::floor((c.raster.top_left.y() - a.y()) / cell - 1e-9));
+        if (c0 < 0 || r0 < 0 || c1 >= c.surface.cols || r1 >= c.surface.rows) return false;
+        for (int r = r0; r <= r1; ++r) {
+            const uchar *row = c.surface.ptr<uchar>(r);
+            for (int k = c0; k <= c1; ++k)
+                if (!row[k]) return false;
+        }
+        return true;
+    };
+    double good = hi.y() - lo.y(), bad = good + 2.0 * cell;
+    if (fits(bad)) good = bad;
+    for (int it = 0; it < 12 && bad > good; ++it) {
+        const double h = 0.5 * (good + bad);
+        (fits(h) ? good : bad) = h;
+    }
+    const Eigen::Vector2d half(0.5 * aspect * good, 0.5 * good);
+    c.rectangle = makeRectangle(c.frame, mid - half, mid + half);
 }
 
 Detection detectDefault(const Cloud &cloud, const Projector &projector, const DetectorConfig &cfg, double aspect) {
@@ -385,7 +473,10 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     t = Clock::now();
     std::vector<int> placed;
     for (int k : usable)
-        if (placeRectangle(candidates[k], aspect)) placed.push_back(k);
+        if (placeRectangle(candidates[k], aspect)) {
+            refineRectangle(candidates[k], aspect);
+            placed.push_back(k);
+        }
     std::sort(placed.begin(), placed.end(),
               [&](int a, int b) { return candidates[a].rectangle.area() > candidates[b].rectangle.area(); });
     det.timing_ms["rectangle"] = msSince(t);

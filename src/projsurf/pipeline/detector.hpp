@@ -49,7 +49,7 @@ struct DetectorConfig {
     double max_band = 0.06;             ///< m, inlier band ceiling
     double obstacle_bands = 2.0;        ///< off the plane by more than this many inlier bands = obstacle or hole
     double min_obstacle = 0.03;         ///< m, ... and by at least this much (paper 3.2.3 uses 0.05)
-    double cell = 0.015;                ///< m, free-space raster cell (area error < 0.05 m^2 at 3 m)
+    double cell = 0.01;                 ///< m, free-space raster cell (area error < 0.05 m^2 at 3 m, measured)
     int support_stride = 2;             ///< pixel step of the free-space pass on organized clouds
     double max_outlier_fraction = 0.03; ///< share of checked points off the plane that rejects a rectangle
 
