@@ -170,6 +170,20 @@ std::string loadAverage() {
     return out.str();
 }
 
+std::string schedulingPolicy() {
+    sched_param param{};
+    const int policy = sched_getscheduler(0);
+    sched_getparam(0, &param);
+    switch (policy) {
+    case SCHED_FIFO:
+        return "SCHED_FIFO priority " + std::to_string(param.sched_priority);
+    case SCHED_RR:
+        return "SCHED_RR priority " + std::to_string(param.sched_priority);
+    default:
+        return "SCHED_OTHER (time-shared: on a busy machine the wall clock exceeds the CPU time)";
+    }
+}
+
 std::string cpuModel() {
     std::ifstream in("/proc/cpuinfo");
     std::string line;

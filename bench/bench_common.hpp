@@ -56,6 +56,9 @@ std::string allowedCpus();
 double threadCpuMs();
 /// The 1, 5 and 15 minute load averages, as /proc/loadavg shows them.
 std::string loadAverage();
+/// This process's scheduling policy, e.g. "SCHED_FIFO priority 10" (run under `chrt -f 10`
+/// on a shared machine so that other processes cannot take the pinned core).
+std::string schedulingPolicy();
 /// "Model name" from /proc/cpuinfo.
 std::string cpuModel();
 

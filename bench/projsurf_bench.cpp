@@ -273,7 +273,7 @@ void printHeader(const Options &o, bool pinned) {
     std::cout << "- Build: " << PROJSURF_BUILD_TYPE << "; PCL " << PCL_VERSION_PRETTY << "; OpenCV " << CV_VERSION
               << "\n";
     std::cout << "- Frames: " << o.data << "\n";
-    std::cout << "- Load average at start: " << loadAverage() << "\n";
+    std::cout << "- Load average at start: " << loadAverage() << "; scheduling: " << schedulingPolicy() << "\n";
     if (std::string(PROJSURF_BUILD_TYPE) != "Release")
         std::cout << "- **Warning: not a Release build; the times below do not count.**\n";
     std::cout << "\n";
