@@ -261,3 +261,37 @@ TEST(KeystoneRoundTrip, ExactCalibrationNoisyCloud) {
     std::printf("worst: %.4f %%\n", worst);
     EXPECT_LE(worst, 0.2);
 }
+
+TEST(KeystoneRoundTrip, LensOffsetAlongTheAxis) {
+    // The calibration puts the lens where the axis crosses z = 0 (paper, A.1). A real lens some
+    // centimetres in front of or behind the camera's optical centre is off by that much along
+    // the axis; this measures what that costs at the paper's distances and angles. On a flat
+    // wall the true picture is then a scaled copy of the intended one about the lens (every
+    // wall point's distance ratio is the same), so eq. (8) cannot see it: the cost is placement.
+    double previous = -1.0;
+    for (double dz : {0.0, 0.02, 0.05, 0.10}) {
+        Projector truth = rig::trueProjector();
+        truth.origin.z() = dz;
+        Projector assumed = truth;  // exact axis, lens moved along it to z = 0
+        assumed.origin = axisPointAtZeroZ(truth.origin, truth.direction);
+        double worst = 0.0, worst_outside_mm = 0.0;
+        for (double angle : kAngles)
+            for (double distance : kDistances) {
+                const Plane w = rig::wall(distance, angle);
+                const Rectangle rect = rig::rectangleInWorkspace(assumed, w);
+                const auto k = computeKeystone(assumed, rect, cv::Size(640, 480));
+                ASSERT_TRUE(k.keystone) << k.problem;
+                const Corners3 c = onWall(truth, k.keystone->picture_px, w);
+                worst = std::max(worst, eq8Errors(c).worst_pct());
+                // How far the picture's corners land from where they were meant to be.
+                for (int i = 0; i < 4; ++i)
+                    worst_outside_mm = std::max(worst_outside_mm, 1000 * (c[i] - k.keystone->shown.corners[i]).norm());
+            }
+        std::printf("lens %.0f mm off z = 0: worst eq. (8) error %.4f %%, corners displaced up to %.1f mm\n",
+                    dz * 1000, worst, worst_outside_mm);
+        EXPECT_LT(worst, 1e-6);                  // still an undistorted rectangle
+        EXPECT_GT(worst_outside_mm, previous);   // but displaced, more with a larger offset
+        EXPECT_LT(worst_outside_mm, 400 * dz + 1e-9);  // under 0.4 mm per mm of offset
+        previous = worst_outside_mm;
+    }
+}

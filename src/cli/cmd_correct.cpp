@@ -1,11 +1,9 @@
 // projsurf correct: warp a picture (or every frame of a video) into the projector framebuffer so
 // that it appears whole and undistorted in the detected rectangle (paper 3.3).
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <regex>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -17,6 +15,7 @@
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/video_files.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace fs = std::filesystem;
@@ -28,33 +27,6 @@ struct CorrectOptions {
     std::string calib, detection, image, video, out, json;
     double fps = 0.0;  // output frame rate for video; 0 = the input's (25 when unknown)
 };
-
-std::string lowerExtension(const std::string &path) {
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
-
-bool isPattern(const std::string &path) { return path.find('%') != std::string::npos; }
-
-/// A frame-number pattern has exactly one %d-style field (e.g. frames/%04d.png).
-bool isValidPattern(const std::string &path) {
-    static const std::regex one_field(R"([^%]*%0?[0-9]*d[^%]*)");
-    return std::regex_match(path, one_field);
-}
-
-bool isVideoFile(const std::string &path) {
-    const std::string e = lowerExtension(path);
-    return e == ".mp4" || e == ".avi" || e == ".mkv" || e == ".mov" || e == ".m4v" || e == ".webm";
-}
-
-/// FourCC for an output container; MJPG in AVI is what every OpenCV build can write.
-int fourccFor(const std::string &path) {
-    const std::string e = lowerExtension(path);
-    if (e == ".avi" || e == ".mkv") return cv::VideoWriter::fourcc('M', 'J', 'P', 'G');
-    if (e == ".mp4" || e == ".m4v" || e == ".mov") return cv::VideoWriter::fourcc('m', 'p', '4', 'v');
-    return 0;
-}
 
 nlohmann::json corners(const Corners2 &c) {
     nlohmann::json a = nlohmann::json::array();
@@ -80,29 +52,35 @@ std::string keystoneJson(const Keystone &k, const std::string &method) {
     return j.dump(2) + "\n";
 }
 
-/// One line on stderr, redrawn in place: [#####.....] 50% 120/240 frames.
+/// Progress on stderr: on a terminal one line redrawn in place, [#####.....] 50% 120/240 frames;
+/// in a log, a line every 10%.
 class Progress {
   public:
-    explicit Progress(long total) : total_(total) {}
+    explicit Progress(long total) : total_(total), tty_(::isatty(2) != 0) {}
     void update(long done) {
-        if (total_ > 0) {
-            const int pct = static_cast<int>(std::min<long>(100, 100 * done / total_));
+        if (total_ <= 0) {
+            if (tty_ && done % 25 == 0) std::cerr << "\rcorrect: " << done << " frames" << std::flush;
+            return;
+        }
+        const int pct = static_cast<int>(std::min<long>(100, 100 * done / total_));
+        if (tty_) {
             if (pct == last_) return;
-            last_ = pct;
             const int bar = pct / 4;
             std::cerr << "\rcorrect: [" << std::string(bar, '#') << std::string(25 - bar, '.') << "] " << pct << "% "
                       << done << "/" << total_ << " frames" << std::flush;
-        } else if (done % 25 == 0) {
-            std::cerr << "\rcorrect: " << done << " frames" << std::flush;
+        } else {
+            if (pct / 10 == last_ / 10 && last_ >= 0) return;
+            std::cerr << "correct: " << pct << "% (" << done << "/" << total_ << " frames)\n";
         }
+        last_ = pct;
     }
     void finish(long done) {
-        if (total_ > 0) update(total_);
-        std::cerr << "\rcorrect: " << done << " frames done" << std::string(30, ' ') << "\n";
+        if (tty_) std::cerr << "\rcorrect: " << done << " frames done" << std::string(40, ' ') << "\n";
     }
 
   private:
     long total_;
+    bool tty_;
     int last_ = -1;
 };
 
@@ -126,16 +104,14 @@ Keystone keystoneFor(const Projector &projector, const DetectionFile &det, cv::S
 
 void runVideo(const CorrectOptions &o, const std::string &input, const Projector &projector,
               const DetectionFile &det) {
-    if (!isPattern(input)) requireReadable(input);
-    cv::VideoCapture cap;
+    cv::VideoCapture cap = openVideoInput(input);
+    cv::Mat frame;
+    bool first = false;
     try {
-        cap.open(input);
+        first = cap.read(frame) && !frame.empty();
     } catch (const cv::Exception &) {
     }
-    cv::Mat frame;
-    if (!cap.isOpened() || !cap.read(frame) || frame.empty())
-        throw InputError(input, isPattern(input) ? "no readable image sequence matches this pattern"
-                                                 : "not a readable video");
+    if (!first) throw InputError(input, "no frame could be read");
     if (frame.channels() == 1) cv::cvtColor(frame, frame, cv::COLOR_GRAY2BGR);
     if (frame.channels() == 4) cv::cvtColor(frame, frame, cv::COLOR_BGRA2BGR);
     const Keystone k = keystoneFor(projector, det, frame.size(), o.detection);
@@ -144,7 +120,7 @@ void runVideo(const CorrectOptions &o, const std::string &input, const Projector
     const long total = static_cast<long>(cap.get(cv::CAP_PROP_FRAME_COUNT));
 
     TempFiles temps;
-    const bool sequence_out = isPattern(o.out);
+    const bool sequence_out = isFramePattern(o.out);
     cv::VideoWriter writer;
     std::string tmp_video;
     std::vector<std::pair<std::string, std::string>> renames;  // tmp -> final
@@ -154,8 +130,7 @@ void runVideo(const CorrectOptions &o, const std::string &input, const Projector
                                           out.extension().string()))
                         .string();
         temps.paths.push_back(tmp_video);
-        writer.open(tmp_video, fourccFor(o.out), fps, k.framebuffer, true);
-        if (!writer.isOpened()) throw InputError(o.out, "cannot write a video here (try an .avi file: MJPG)");
+        writer = openVideoOutput(tmp_video, o.out, fps, k.framebuffer);
     }
     Progress progress(total);
     long n = 0;
@@ -169,7 +144,8 @@ void runVideo(const CorrectOptions &o, const std::string &input, const Projector
         if (sequence_out) {
             char name[4096];
             std::snprintf(name, sizeof name, o.out.c_str(), static_cast<int>(n));
-            const std::string tmp = std::string(name) + ".tmp-" + std::to_string(::getpid()) + lowerExtension(name);
+            const std::string tmp =
+                std::string(name) + ".tmp-" + std::to_string(::getpid()) + fs::path(name).extension().string();
             temps.paths.push_back(tmp);
             bool ok = false;
             try {
@@ -205,21 +181,20 @@ void run(const CorrectOptions &o) {
     if (!o.image.empty() && !o.video.empty()) throw InputError("--image", "give --image or --video, not both");
     const std::string input = o.image.empty() ? o.video : o.image;
     if (input.empty()) throw InputError("correct", "--image (a picture, video or image-sequence pattern) is required");
-    const bool video = !o.video.empty() || isVideoFile(input) || isPattern(input);
+    const bool video = !o.video.empty() || isVideoPath(input) || isFramePattern(input);
     // Validate every input and output location before any work.
     const Projector projector = readCalibration(o.calib);
     const DetectionFile det = readDetectionJson(o.detection);
     requireWritableLocation(o.out);
     if (!o.json.empty()) requireWritableLocation(o.json);
     if (video) {
-        if (!isPattern(o.out) && fourccFor(o.out) == 0)
+        if (isFramePattern(o.out)) {
+            if (!isValidFramePattern(o.out))
+                throw InputError(o.out, "an output pattern needs exactly one frame-number field such as %04d");
+            if (!cv::haveImageWriter(o.out)) throw InputError(o.out, "cannot write images with this extension");
+        } else if (videoFourcc(o.out) == 0) {
             throw InputError(o.out, "a corrected video needs a .avi, .mkv, .mp4 or .mov output (or a %04d.png pattern)");
-        if (isPattern(o.out) && !isValidPattern(o.out))
-            throw InputError(o.out, "an output pattern needs exactly one frame-number field such as %04d");
-        if (isPattern(input) && !isValidPattern(input))
-            throw InputError(input, "an image-sequence pattern needs exactly one frame-number field such as %04d");
-        if (isPattern(o.out) && !cv::haveImageWriter(o.out))
-            throw InputError(o.out, "cannot write images with this extension");
+        }
         runVideo(o, input, projector, det);
         return;
     }

@@ -12,6 +12,7 @@
 #include "cli/commands.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/video_files.hpp"
 
 namespace projsurf::cli {
 namespace {
@@ -97,12 +98,13 @@ void run(const ShowOptions &o) {
     if (!o.image.empty()) {
         image = readImage(o.image, cv::IMREAD_COLOR);
     } else {
-        if (o.video.find('%') == std::string::npos) requireReadable(o.video);
+        cap = openVideoInput(o.video);
+        bool first = false;
         try {
-            cap.open(o.video);
+            first = cap.read(image) && !image.empty();
         } catch (const cv::Exception &) {
         }
-        if (!cap.isOpened() || !cap.read(image) || image.empty()) throw InputError(o.video, "not a readable video");
+        if (!first) throw InputError(o.video, "no frame could be read");
         const double f = cap.get(cv::CAP_PROP_FPS);
         if (f > 0 && f < 1000) fps = f;
     }
