@@ -422,7 +422,10 @@ TEST(CliShow, FramebufferFullScreenUnderXvfb) {
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
     posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-    std::vector<std::string> args = {"Xvfb", display, "-screen", "0", "1280x800x24", "-nolisten", "tcp"};
+    // Two screens, as on a robot whose projector is a second output: the picture must go to
+    // screen 1 (the framebuffer's size) and leave screen 0 alone.
+    std::vector<std::string> args = {"Xvfb",          display, "-screen", "0", "640x480x24", "-screen", "1",
+                                     "1280x800x24", "-nolisten", "tcp"};
     std::vector<char *> argv;
     for (auto &a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -449,7 +452,8 @@ TEST(CliShow, FramebufferFullScreenUnderXvfb) {
 
     CliRun shown;
     std::thread show([&] {
-        shown = cli("show --image " + (dir / "fb.png").string() + " --display " + display + " --seconds 4", dir);
+        shown = cli("show --image " + (dir / "fb.png").string() + " --display " + display + " --screen-index 1 --seconds 4",
+                    dir);
     });
     // Screenshot after the window had time to appear (bounded: retry for up to ~8 s).
     cv::Mat shot;
@@ -457,7 +461,7 @@ TEST(CliShow, FramebufferFullScreenUnderXvfb) {
     for (int attempt = 0; attempt < 8; ++attempt) {
         std::this_thread::sleep_for(std::chrono::milliseconds(attempt == 0 ? 1500 : 300));
         const std::string xwd = (dir / "shot.xwd").string();
-        if (std::system(("timeout 10 xwd -root -silent -display " + display + " > " + xwd).c_str()) != 0) continue;
+        if (std::system(("timeout 10 xwd -root -silent -display " + display + ".1 > " + xwd).c_str()) != 0) continue;
         shot = readXwd(xwd);
         if (shot.size() != fb.size()) continue;
         cv::Mat diff;
@@ -465,7 +469,14 @@ TEST(CliShow, FramebufferFullScreenUnderXvfb) {
         best = cv::mean(diff)[0] + cv::mean(diff)[1] + cv::mean(diff)[2];
         if (best < 1.0) break;
     }
-    show.join();
+    // Meanwhile screen 0 stays black: nothing was shown there.
+    const std::string xwd0 = (dir / "shot0.xwd").string();
+    const int xwd0_status = std::system(("timeout 10 xwd -root -silent -display " + display + ".0 > " + xwd0).c_str());
+    show.join();  // (no ASSERT before this: the thread must be joined)
+    EXPECT_EQ(xwd0_status, 0);
+    const cv::Mat shot0 = readXwd(xwd0);
+    EXPECT_EQ(shot0.size(), cv::Size(640, 480));
+    if (!shot0.empty()) EXPECT_EQ(cv::countNonZero(shot0.reshape(1)), 0);
     ASSERT_EQ(shot.size(), fb.size()) << "no screenshot of " << display;
     EXPECT_EQ(shown.status, 0) << shown.err;
     // The whole screen shows the framebuffer, pixel for pixel.
