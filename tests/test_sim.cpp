@@ -446,3 +446,68 @@ TEST(SimCli, BadArgumentsExitTwoAndWriteNothing) {
     for (const auto &name : scenarioNames()) EXPECT_NE(list.out.find(name), std::string::npos) << name;
     std::filesystem::remove_all(tmp);
 }
+
+TEST(SimScenarios, PitchedCameraSeesTheFloorOneMetreDown) {
+    // Looking down 15 degrees: gravity turns in the camera frame, and every floor point is
+    // still 1.0 m below the camera along gravity.
+    Scenario s = makeScenario("wall", 3.0, 17.19);
+    pitchCamera(s, 15.0);
+    EXPECT_NEAR(std::acos(s.gravity.dot(Eigen::Vector3d::UnitY())) * 180.0 / M_PI, 15.0, 1e-9);
+    EXPECT_GT(s.gravity.z(), 0.0);  // looking down: gravity has a forward component
+    const RgbdFrame f = renderFrame(s.scene, SensorModel::ideal(), 1);
+    int floor = 0;
+    for (int v = 0; v < 480; v += 3)
+        for (int u = 0; u < 640; u += 3) {
+            const Point &p = f.cloud.points[v * 640 + u];
+            if (!isLabel(s, f, u, v, "floor") || !isFinite(p)) continue;
+            EXPECT_NEAR(s.gravity.dot(p.cast<double>()), 1.0, 1e-6);
+            ++floor;
+        }
+    EXPECT_GT(floor, 2000);
+    EXPECT_LT(std::abs(s.wall.normal.dot(s.gravity)), 1e-12);
+}
+
+TEST(SimSensor, DepthEdgesAreRaggedOnlyWithNoise) {
+    // The big box's left edge: with noise the first box column varies from row to row
+    // (lateral edge noise), without it the edge is a straight line.
+    const Scenario s = makeScenario("big_obstacle", 2.0, 0.0);
+    for (const bool noisy : {false, true}) {
+        SensorModel sensor = noisy ? SensorModel() : SensorModel::ideal();
+        sensor.ir_shadow = false;
+        const RgbdFrame f = renderFrame(s.scene, sensor, 9);
+        std::vector<int> first;
+        for (int v = 280; v < 380; ++v)
+            for (int u = 100; u < 320; ++u) {
+                const Point &p = f.cloud.points[v * 640 + u];
+                if (isFinite(p) && p.z() < 1.8) {  // on the box front (1.55 m), not the wall (2 m)
+                    first.push_back(u);
+                    break;
+                }
+            }
+        ASSERT_EQ(first.size(), 100u);
+        const auto [lo, hi] = std::minmax_element(first.begin(), first.end());
+        if (noisy)
+            EXPECT_GE(*hi - *lo, 2);
+        else
+            EXPECT_EQ(*hi - *lo, 0);
+    }
+}
+
+TEST(SimTruth, RequireDepthLeavesOutTheIrShadow) {
+    // Beside the person the wall is free but the IR pattern cannot reach it (no depth there).
+    const Scenario s = makeScenario("person", 2.5, 10.0);
+    const Projector projector = exampleProjector();
+    TruthOptions measurable;
+    measurable.require_depth = true;
+    const GroundTruth free_wall = computeGroundTruth(s.scene, SensorModel(), projector, s.gravity);
+    const GroundTruth measured = computeGroundTruth(s.scene, SensorModel(), projector, s.gravity, measurable);
+    ASSERT_TRUE(free_wall.found && measured.found);
+    EXPECT_LT(measured.best.free_area, free_wall.best.free_area);
+    EXPECT_LE(measured.best.rectangle.area(), free_wall.best.rectangle.area());
+    const auto &c = measured.best.rectangle.corners;
+    for (int i = 0; i <= 10; ++i)
+        for (int j = 0; j <= 10; ++j) {
+            const Eigen::Vector3d p = c[3] + (0.001 + 0.0998 * i) * (c[2] - c[3]) + (0.001 + 0.0998 * j) * (c[0] - c[3]);
+            EXPECT_FALSE(segmentBlocked(s.scene, SensorModel().emitter, p, 0.01)) << i << "," << j;
+        }
+}

@@ -30,6 +30,7 @@ struct SimulateOptions {
     double distance = 2.0;   // m, camera to wall along the optical axis
     double angle_deg = 0.0;  // wall orientation (paper: 27.5, 17.19, -12.06, -26.01, -16.62)
     double roll_deg = 0.0;   // extra camera roll
+    double pitch_deg = 0.0;  // camera pitch, positive looking down
     unsigned seed = 0;
     std::string calib;       // default: the contract's example projector
     std::string aspect;      // default: the framebuffer's
@@ -50,9 +51,11 @@ double parseAspectText(const std::string &text) {
     return w / h;
 }
 
-sim::Scenario buildScenario(const std::string &name, double distance, double angle_deg, double roll_deg) {
+sim::Scenario buildScenario(const std::string &name, double distance, double angle_deg, double roll_deg,
+                            double pitch_deg) {
     try {
         sim::Scenario s = sim::makeScenario(name, distance, angle_deg);
+        if (pitch_deg != 0.0) sim::pitchCamera(s, pitch_deg);
         if (roll_deg != 0.0) sim::rollCamera(s, roll_deg);
         return s;
     } catch (const std::invalid_argument &e) {
@@ -81,6 +84,8 @@ void run(const SimulateOptions &o) {
     if (!(std::abs(o.angle_deg) < 75.0)) throw InputError("--angle-deg", "must be within +-75 degrees");
     if (!std::isfinite(o.roll_deg) || std::abs(o.roll_deg) > 45.0)
         throw InputError("--roll-deg", "must be within +-45 degrees");
+    if (!std::isfinite(o.pitch_deg) || std::abs(o.pitch_deg) > 30.0)
+        throw InputError("--pitch-deg", "must be within +-30 degrees");
     const Projector projector = o.calib.empty() ? sim::exampleProjector() : readCalibration(o.calib);
     const double aspect = o.aspect.empty() ? projector.aspect() : parseAspectText(o.aspect);
     std::optional<sim::Projection> projection;
@@ -92,7 +97,7 @@ void run(const SimulateOptions &o) {
     }
     const sim::SensorModel sensor = o.noise_free ? sim::SensorModel::ideal() : sim::SensorModel();
     std::optional<sim::Scenario> scenario;
-    if (!o.scenario.empty()) scenario = buildScenario(o.scenario, o.distance, o.angle_deg, o.roll_deg);
+    if (!o.scenario.empty()) scenario = buildScenario(o.scenario, o.distance, o.angle_deg, o.roll_deg, o.pitch_deg);
     const fs::path out(o.out);
     std::error_code ec;
     if (fs::exists(out, ec) && !fs::is_directory(out, ec)) throw InputError(o.out, "exists and is not a directory");
@@ -112,7 +117,7 @@ void run(const SimulateOptions &o) {
     const double angles[] = {0.0, 10.0, -10.0, 20.0, -20.0};
     for (int k = 0; k < o.captures; ++k) {
         const double d = 1.2 + 1.8 * k / (o.captures - 1);
-        const sim::Scenario wall = buildScenario("wall", d, angles[k % 5], o.roll_deg);
+        const sim::Scenario wall = buildScenario("wall", d, angles[k % 5], o.roll_deg, o.pitch_deg);
         captures.push_back(sim::renderFrame(wall.scene, sensor, o.seed + 1000u + k, sim::Projection{projector, disc}));
     }
 
@@ -156,6 +161,7 @@ void addSimulateCommand(CLI::App &app) {
     sub->add_option("--distance", opts->distance, "Camera to wall along the optical axis, m (default 2.0)");
     sub->add_option("--angle-deg", opts->angle_deg, "Wall normal vs camera z about the vertical, deg (default 0)");
     sub->add_option("--roll-deg", opts->roll_deg, "Extra camera roll about its optical axis, deg (default 0)");
+    sub->add_option("--pitch-deg", opts->pitch_deg, "Camera pitch, positive looking down, deg (default 0)");
     sub->add_option("--seed", opts->seed, "Noise seed (default 0)");
     sub->add_option("--calib", opts->calib, "Projector calibration YAML (default: the contract's example)");
     sub->add_option("--aspect", opts->aspect, "Aspect ratio W:H of the true rectangle (default: the framebuffer's)");

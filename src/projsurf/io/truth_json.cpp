@@ -25,6 +25,7 @@ nlohmann::json truthToJson(const sim::GroundTruth &truth, const sim::Scenario &s
                      {"distance_m", scenario.distance},
                      {"angle_deg", scenario.angle_deg},
                      {"roll_deg", scenario.roll_deg},
+                     {"pitch_deg", scenario.pitch_deg},
                      {"gravity", vec(scenario.gravity)},
                      {"seed", seed},
                      {"noise", noise}};

@@ -10,7 +10,7 @@
 
 namespace projsurf {
 
-/// Keys: found, aspect, cell_m, scenario{name, description, distance_m, angle_deg, roll_deg,
+/// Keys: found, aspect, cell_m, scenario{name, description, distance_m, angle_deg, roll_deg, pitch_deg,
 /// gravity, seed, noise}, plane{coefficients, orientation_deg, surface}, rectangle{corners,
 /// width_m, height_m, area_m2} (null when not found), footprint (4 corners or null),
 /// wall_plane{coefficients, orientation_deg}, surfaces[{surface, coefficients, found,

@@ -23,6 +23,10 @@ struct TruthOptions {
     double cell = 0.005;      ///< m, raster cell on the surface
     double max_tilt = 0.1;    ///< rad, a surface is vertical within this (contract, paper 3.2.1)
     double tolerance = 0.01;  ///< m, a hit this close in front of a cell does not hide it (posters)
+    /// Also require a depth reading to be possible: when the sensor models the IR emitter's
+    /// shadow, cells the emitter's pattern cannot reach (beside foreground edges) are not
+    /// free. Off by default: those cells are free wall, only unmeasured.
+    bool require_depth = false;
 };
 
 /// The result on one projection surface.

@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include <opencv2/imgproc.hpp>
+
 #include "projsurf/sim/raster.hpp"
 #include "projsurf/sim/gaussian_table.hpp"
 
@@ -73,6 +75,22 @@ RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned se
     const double cos_start = std::cos(sensor.grazing_start_deg / kRadToDeg);
     const double cos_max = std::cos(sensor.grazing_max_deg / kRadToDeg);
 
+    // Pixels within two of a depth edge (a different surface more than edge_jump away).
+    const bool jitter = sensor.noise && sensor.edge_jitter_px > 0.0;
+    cv::Mat edges;
+    if (jitter) {
+        edges = cv::Mat::zeros(cam.height, cam.width, CV_8U);
+        auto jump = [&](int u0, int v0, int u1, int v1) {
+            const int a = buf.quad.at<int>(v0, u0), b = buf.quad.at<int>(v1, u1);
+            return a != b && (a < 0 || b < 0 || std::abs(buf.z.at<double>(v0, u0) - buf.z.at<double>(v1, u1)) > sensor.edge_jump);
+        };
+        for (int v = 0; v < cam.height; ++v)
+            for (int u = 0; u < cam.width; ++u)
+                if ((u + 1 < cam.width && jump(u, v, u + 1, v)) || (v + 1 < cam.height && jump(u, v, u, v + 1)))
+                    edges.at<uchar>(v, u) = 1;
+        cv::dilate(edges, edges, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
+    }
+
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     NormalSource gauss(rng);
@@ -92,14 +110,30 @@ RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned se
             const double z = zrow[u];
             const Eigen::Vector3d p = z * d;
 
-            // Depth reading.
-            bool valid = !(emitter && !emitter->reaches(p, qi));
-            const double cos_angle = std::abs(normals[qi].dot(d)) / d.norm();
+            // Depth reading. Beside a depth edge the reading may come from the neighbouring
+            // surface: the edge lands within about a pixel (ragged edges).
+            int qd = qi;
+            double zd = z;
+            if (jitter && edges.at<uchar>(v, u)) {
+                const int du = static_cast<int>(std::lround(sensor.edge_jitter_px * gauss.next()));
+                const int dv = static_cast<int>(std::lround(sensor.edge_jitter_px * gauss.next()));
+                const int nu = std::clamp(u + du, 0, cam.width - 1), nv = std::clamp(v + dv, 0, cam.height - 1);
+                const int qn = buf.quad.at<int>(nv, nu);
+                const double zn = buf.z.at<double>(nv, nu);
+                if (qn != qi && (qn < 0 || std::abs(zn - z) > sensor.edge_jump)) {
+                    qd = qn;
+                    zd = zn;
+                }
+            }
+            bool valid = qd >= 0;
+            const Eigen::Vector3d pd = zd * d;
+            if (valid && emitter && !emitter->reaches(pd, qd)) valid = false;
+            const double cos_angle = valid ? std::abs(normals[qd].dot(d)) / d.norm() : 1.0;
             if (valid && cos_angle < cos_start) {
                 const double drop = sensor.dropoutProbability(std::acos(cos_angle) * kRadToDeg);
                 valid = cos_angle > cos_max && drop < 1.0 && (drop <= 0.0 || uniform(rng) >= drop);
             }
-            const double zm = valid ? sensor.measure(z, sensor.noise ? gauss.next() : 0.0f) : 0.0;
+            const double zm = valid ? sensor.measure(zd, sensor.noise ? gauss.next() : 0.0f) : 0.0;
             if (zm > 0.0) {
                 cloud_row[u] = (zm * d).cast<float>();
                 depth_row[u] = static_cast<std::uint16_t>(std::min(65535.0, std::round(zm * cam.depth_scale)));

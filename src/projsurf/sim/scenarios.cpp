@@ -88,15 +88,29 @@ Projector exampleProjector() {
     return p;
 }
 
-void rollCamera(Scenario &s, double roll_deg) {
-    // The camera turns by R about its z axis; a point's coordinates turn by R^T.
-    const Eigen::Matrix3d r_t = Eigen::AngleAxisd(roll_deg * kDeg, Eigen::Vector3d::UnitZ()).toRotationMatrix().transpose();
+namespace {
+
+/// The camera turns by `r` (its new axes in the old camera frame); a point's coordinates turn by r^T.
+void turnCamera(Scenario &s, const Eigen::Matrix3d &r) {
+    const Eigen::Matrix3d r_t = r.transpose();
     Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
     t.linear() = r_t;
     s.scene = transformed(s.scene, t);
     s.gravity = (r_t * s.gravity).normalized();
     s.wall = makePlane(r_t * s.wall.normal, s.wall.d);
+}
+
+}  // namespace
+
+void rollCamera(Scenario &s, double roll_deg) {
+    turnCamera(s, Eigen::AngleAxisd(roll_deg * kDeg, Eigen::Vector3d::UnitZ()).toRotationMatrix());
     s.roll_deg += roll_deg;
+}
+
+void pitchCamera(Scenario &s, double pitch_deg) {
+    // Looking down turns z towards +y (down): a rotation about x by -pitch.
+    turnCamera(s, Eigen::AngleAxisd(-pitch_deg * kDeg, Eigen::Vector3d::UnitX()).toRotationMatrix());
+    s.pitch_deg += pitch_deg;
 }
 
 Scenario makeScenario(const std::string &name, double distance, double angle_deg) {

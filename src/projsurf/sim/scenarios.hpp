@@ -27,6 +27,7 @@ struct Scenario {
     double distance = 2.0;   ///< m, camera to the main wall along the optical axis
     double angle_deg = 0.0;  ///< wall normal vs camera z, about the vertical
     double roll_deg = 0.0;   ///< camera (and projector) roll about the optical axis
+    double pitch_deg = 0.0;  ///< camera (and projector) pitch, positive looking down
     Scene scene;             ///< camera frame
     Eigen::Vector3d gravity{0.0, 1.0, 0.0};  ///< camera frame, unit
     Plane wall;              ///< the main wall, camera frame (normal towards the camera, d > 0)
@@ -52,6 +53,9 @@ Scenario makeScenario(const std::string &name, double distance, double angle_deg
 /// Rolls the camera (and the projector mounted on it) by `roll_deg` about its optical axis:
 /// the scene and gravity are rotated into the rolled camera's frame.
 void rollCamera(Scenario &scenario, double roll_deg);
+/// Pitches the camera (and the projector) by `pitch_deg` about its x axis; positive looks
+/// down (a robot head tilted towards the floor). The camera stays where it is.
+void pitchCamera(Scenario &scenario, double pitch_deg);
 
 /// The projector of the contract's example calibration (1280x800, 39.3 x 24.0 deg, origin
 /// [0, 0.12, 0], direction [0, -0.05, 1]): just below the camera, tilted slightly up.

@@ -11,6 +11,8 @@
 //  - Range and dropouts: readings from about 0.5 m to 4-5 m (K&OE 2012 use 0.5-5 m; Microsoft
 //    specifies 0.8-4 m); invalid pixels at grazing angles and in the IR emitter's shadow
 //    beside depth edges (7.5 cm emitter-camera baseline, K&OE 2012).
+//  - Ragged depth edges: Nguyen, Izadi & Lovell, "Modeling Kinect Sensor Noise for Improved
+//    3D Reconstruction and Tracking", 3DIMPVT 2012 (lateral sigma ~0.8 px).
 #include <Eigen/Core>
 
 #include "projsurf/core/camera.hpp"
@@ -32,6 +34,11 @@ struct SensorModel {
     bool ir_shadow = true;             ///< no reading where the IR emitter's pattern cannot reach
     Eigen::Vector3d emitter{0.075, 0.0, 0.0};  ///< m, IR emitter position (camera frame, K&OE baseline)
     double rgb_noise = 2.0;            ///< grey levels, sigma of colour noise when `noise`
+    /// px, sigma of where a depth edge lands (Nguyen, Izadi & Lovell 2012: lateral noise
+    /// 0.8 px at moderate angles); beside a depth jump a reading may come from the other
+    /// side. Applied only when `noise`; 0 turns it off.
+    double edge_jitter_px = 0.8;
+    double edge_jump = 0.03;           ///< m, depth difference that counts as a depth edge
 
     /// Noise-free, unquantised, no random or IR-shadow dropouts: exact geometry, for tests.
     /// Range limits and the hard grazing-angle cut stay.
