@@ -272,7 +272,7 @@ void printHeader(const Options &o, bool pinned) {
               << " (allowed: " << allowedCpus() << "); OpenCV threads: " << cv::getNumThreads() << "\n";
     std::cout << "- Build: " << PROJSURF_BUILD_TYPE << "; PCL " << PCL_VERSION_PRETTY << "; OpenCV " << CV_VERSION
               << "\n";
-    std::cout << "- Frames: " << o.data << "\n";
+    std::cout << "- Real frames folder: " << o.data << "\n";
     std::cout << "- Load average at start: " << loadAverage() << "; scheduling: " << schedulingPolicy() << "\n";
     if (std::string(PROJSURF_BUILD_TYPE) != "Release")
         std::cout << "- **Warning: not a Release build; the times below do not count.**\n";
@@ -523,7 +523,7 @@ int main(int argc, char **argv) {
     o.data = defaultRealDir();
     CLI::App app{"projsurf_bench: detector stages vs a stock-PCL pipeline of the paper's steps, keystone warp, "
                  "memory; Markdown on stdout"};
-    app.add_option("--data", o.data, "folder of real frames (sub-folders with depth.png + camera.yaml)");
+    auto *data_option = app.add_option("--data", o.data, "folder of real frames (sub-folders with depth.png + camera.yaml)");
     app.add_option("--reps", o.reps, "timed repetitions per frame")->check(CLI::Range(1, 100000));
     app.add_option("--warmup", o.warmup, "untimed repetitions per frame first")->check(CLI::Range(0, 100000));
     app.add_option("--frames", o.max_frames, "use only the first N frames (0 = all)")->check(CLI::Range(0, 100000));
@@ -540,6 +540,7 @@ int main(int argc, char **argv) {
         std::cerr << "projsurf_bench: " << e.what() << " (see --help)\n";
         return 2;
     }
+    const bool data_given = data_option->count() > 0;
     if (o.quick) {
         o.reps = 1;
         o.warmup = 0;
@@ -549,22 +550,32 @@ int main(int argc, char **argv) {
     const bool pinned = o.cpu >= 0 && pinToCpu(o.cpu);
     if (o.cpu >= 0 && !pinned) std::cerr << "projsurf_bench: warning: could not pin to CPU " << o.cpu << "\n";
     try {
-        std::vector<BenchFrame> frames = loadRealFrames(o.data);
-        if (o.max_frames > 0 && frames.size() > static_cast<std::size_t>(o.max_frames)) frames.resize(o.max_frames);
-        std::cerr << "projsurf_bench: " << frames.size() << " frames loaded (peak RSS so far " << fmt(peakRssMiB())
-                  << " MiB)\n";
+        // The real frames; without --data a missing default folder falls back to the simulator.
+        std::vector<BenchFrame> real;
+        try {
+            real = loadRealFrames(o.data);
+        } catch (const InputError &e) {
+            if (data_given) throw;
+            std::cerr << "projsurf_bench: warning: " << e.what() << "; using the simulator's scenes only\n";
+        }
+        if (o.max_frames > 0 && real.size() > static_cast<std::size_t>(o.max_frames)) real.resize(o.max_frames);
+        std::vector<BenchFrame> simulated;
+        if (o.sim || real.empty()) {
+            std::cerr << "projsurf_bench: rendering the simulator's paper scenes ...\n";
+            simulated = simulatorFrames(o.max_frames);
+        }
+        std::cerr << "projsurf_bench: " << real.size() << " real and " << simulated.size()
+                  << " simulated frames (peak RSS so far " << fmt(peakRssMiB()) << " MiB)\n";
+        const std::vector<BenchFrame> &any = real.empty() ? simulated : real;
         const Projector projector = sim::exampleProjector();  // the contract's example calibration
         printHeader(o, pinned);
         if (o.scale) {
-            reportScale(frames, o, projector);
+            reportScale(any, o, projector);
         } else {
-            const std::string memory = reportMemory(frames, projector);  // first: a clean parent to fork
-            reportFrameSet("Real frames (" + o.data + ")", frames, o, projector);
-            if (o.sim) {
-                std::cerr << "projsurf_bench: rendering the simulator's paper scenes ...\n";
-                reportFrameSet("Simulator: the paper's scenes (Kinect v1 model)", simulatorFrames(o.max_frames), o,
-                               projector);
-            }
+            const std::string memory = reportMemory(any, projector);  // first: a clean parent to fork
+            if (!real.empty()) reportFrameSet("Real frames (" + o.data + ")", real, o, projector);
+            if (!simulated.empty())
+                reportFrameSet("Simulator: the paper's scenes (Kinect v1 model)", simulated, o, projector);
             reportKeystone(o, projector);
             std::cout << memory;
             std::cout << "Peak RSS of this benchmark process (libraries, every frame as loaded, all three pipelines): "
