@@ -67,6 +67,7 @@ struct Outcome {
     Eigen::Vector3d normal = Eigen::Vector3d::Zero();
     double area = 0.0;
     int outliers = 0, check_points = 0;
+    int planes = 0;  ///< vertical planes the pipeline considered
 };
 
 struct Pipeline {
@@ -97,6 +98,7 @@ Pipeline oursPipeline(const std::string &name, const Projector &projector, Metho
         out.area = d.found ? d.rectangle.area() : 0.0;
         out.outliers = d.surface_check.outliers;
         out.check_points = d.surface_check.points;
+        out.planes = static_cast<int>(d.debug.candidates.size());
         return r;
     };
     return p;
@@ -126,6 +128,7 @@ Pipeline stockPipeline(const Projector &projector) {
         out.area = s.found ? s.rectangle.area() : 0.0;
         out.outliers = s.outliers;
         out.check_points = s.check_points;
+        out.planes = s.inliers > 0;
         return r;
     };
     return p;
@@ -355,9 +358,9 @@ void reportFrameSet(const std::string &title, const std::vector<BenchFrame> &fra
     }
 
     std::cout << "### Per frame (median ms; outcome of the last repetition)\n\n";
-    std::cout << "| frame | valid points | default ms | paper-mode ms | stock ms | stock / default | default: area m² "
-                 "| paper mode: area m² | stock: area m² | plane angle default vs stock |\n"
-                 "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    std::cout << "| frame | valid points | default ms | default planes | paper-mode ms | stock ms | stock / default "
+                 "| default: area m² | paper mode: area m² | stock: area m² | plane angle default vs stock |\n"
+                 "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     auto outcome = [](const Outcome &o) {
         if (o.found) return fmt(o.area);
         return std::string("none (") + (o.reason.empty() ? "?" : o.reason) + ")";
@@ -370,7 +373,7 @@ void reportFrameSet(const std::string &title, const std::vector<BenchFrame> &fra
                         M_PI) +
                     "°";
         std::cout << "| " << frames[f].name << " | " << frames[f].finite << " | " << fmt(results[0].frame_median_ms[f])
-                  << " | " << fmt(results[1].frame_median_ms[f]) << " | " << fmt(results[2].frame_median_ms[f])
+                  << " | " << a.planes << " | " << fmt(results[1].frame_median_ms[f]) << " | " << fmt(results[2].frame_median_ms[f])
                   << " | " << ratio(results[2].frame_median_ms[f], results[0].frame_median_ms[f]) << " | "
                   << outcome(a) << " | " << outcome(results[1].outcomes[f]) << " | " << outcome(b) << " | " << angle
                   << " |\n";
