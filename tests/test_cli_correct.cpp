@@ -8,6 +8,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 #include <random>
 #include <fcntl.h>
@@ -144,6 +145,18 @@ TEST(CliCalibrate, SyntheticCapturesToYamlAndRefusals) {
     const Projector p2 = readCalibration(out2);
     EXPECT_EQ(p2.width, 1920);
     EXPECT_NEAR(p2.fov_v * 180 / M_PI, 25.0, 1e-9);
+
+    // A second, smaller bright blob (a lamp): the disc is still used, with a warning.
+    const fs::path lamp = dir / "lamp";
+    fs::create_directories(lamp);
+    auto with_lamp = caps;
+    with_lamp[2].color = caps[2].color.clone();
+    cv::circle(with_lamp[2].color, cv::Point(40, 40), 8, cv::Scalar(255, 255, 255), -1);
+    writeCaptures(lamp, with_lamp);
+    r = cli("calibrate --captures " + lamp.string() + " --out " + (dir / "calib3.yaml").string(), dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("capture_2_rgb.png: 2 bright blobs"), std::string::npos) << r.err;
+    EXPECT_LT(angleBetweenDeg(readCalibration((dir / "calib3.yaml").string()).direction, truth.direction), 0.5);
 
     auto refuse = [&](const std::string &args, const std::string &needle) {
         const std::string target = (dir / "refused.yaml").string();

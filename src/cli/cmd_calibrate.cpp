@@ -144,6 +144,12 @@ void run(const CalibrateOptions &o) {
                   << fmt(" -> [%.4f, %.4f, %.4f] m", r.lifted.point->x(), r.lifted.point->y(), r.lifted.point->z())
                   << fmt(", residual %.2f mm\n", r.residual_m * 1000);
     }
+    for (int k = 0; k < n; ++k)
+        if (cal.captures[k].disc.candidates > 1)
+            std::cerr << "projsurf: warning: " << rgb_paths[k] << ": " << cal.captures[k].disc.candidates
+                      << " bright blobs; used the largest round one"
+                      << fmt(" at (%.0f, %.0f) px", cal.captures[k].disc.centroid.x(), cal.captures[k].disc.centroid.y())
+                      << " (raise --threshold or darken the room if that is not the disc)\n";
     const std::string verdict = calibrationVerdict(cal.axis);
     std::cout << fmt("  fit: residual rms %.2f mm, max %.2f mm, centroids span %.2f m along the axis", cal.axis.rms_m * 1000,
                      cal.axis.max_m * 1000, cal.axis.spread_m)
