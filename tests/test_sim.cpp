@@ -511,3 +511,31 @@ TEST(SimTruth, RequireDepthLeavesOutTheIrShadow) {
             EXPECT_FALSE(segmentBlocked(s.scene, SensorModel().emitter, p, 0.01)) << i << "," << j;
         }
 }
+
+TEST(SimProjector, AudienceViewShowsTheProjectorFootprint) {
+    // A white picture on a wall turned 27.5 degrees, seen by someone facing the wall: the lit
+    // region is the keystoned footprint (the corner rays meeting the wall).
+    const Projector projector = exampleProjector();
+    const cv::Mat white(projector.height, projector.width, CV_8UC3, cv::Scalar(255, 255, 255));
+    const Scenario s = makeScenario("wall", 2.0, 27.5);
+    const auto axis_hit = intersectRay(s.wall, projector.origin, projector.direction);
+    ASSERT_TRUE(axis_hit);
+    const PinholeView viewer = facingView(s.wall, *axis_hit, 2.5, s.gravity);
+    const cv::Mat img = renderView(s.scene, viewer, Projection{projector, white});
+    std::vector<Eigen::Vector2d> corners;
+    for (const auto &ray : projector.cornerRays()) {
+        const auto hit = intersectRay(s.wall, projector.origin, ray);
+        ASSERT_TRUE(hit);
+        corners.push_back(viewer.pixelOf(viewer.toView(*hit)));
+        ASSERT_TRUE(viewer.inside(corners.back()));
+    }
+    const Eigen::Vector2d centre = 0.25 * (corners[0] + corners[1] + corners[2] + corners[3]);
+    for (const auto &c : corners) {
+        const Eigen::Vector2d towards = (centre - c).normalized();
+        const Eigen::Vector2d in = c + 3.0 * towards, out = c - 3.0 * towards;
+        EXPECT_GT(img.at<cv::Vec3b>(int(std::lround(in.y())), int(std::lround(in.x())))[1], 180);
+        EXPECT_LT(img.at<cv::Vec3b>(int(std::lround(out.y())), int(std::lround(out.x())))[1], 60);
+    }
+    // Seen square-on, the footprint's near (left) side is shorter than its far (right) side.
+    EXPECT_LT((corners[3] - corners[0]).norm(), (corners[2] - corners[1]).norm());
+}

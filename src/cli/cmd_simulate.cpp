@@ -105,11 +105,22 @@ void run(const SimulateOptions &o) {
     // Render.
     std::optional<sim::RgbdFrame> frame;
     sim::GroundTruth truth;
+    cv::Mat audience;
     if (scenario) {
         frame = sim::renderFrame(scenario->scene, sensor, o.seed, projection);
         sim::TruthOptions topt;
         topt.aspect = aspect;
         truth = sim::computeGroundTruth(scenario->scene, sensor, projector, scenario->gravity, topt);
+        if (projection) {
+            // The picture as someone facing the wall sees it, 2.5 m in front of where the
+            // projector's axis meets the wall (or of the true rectangle's centre).
+            const Plane &wall = truth.found ? truth.best.plane : scenario->wall;
+            const auto axis_hit = intersectRay(wall, projector.origin, projector.direction.normalized());
+            const Eigen::Vector3d target = truth.found ? truth.best.rectangle.center()
+                                                       : axis_hit.value_or(Eigen::Vector3d(0.0, 0.0, o.distance));
+            audience = sim::renderView(scenario->scene, sim::facingView(wall, target, 2.5, scenario->gravity),
+                                       projection);
+        }
     }
     // Calibration captures: a plain wall from N robot positions, 1.2-3.0 m, turned a little.
     std::vector<sim::RgbdFrame> captures;
@@ -126,6 +137,7 @@ void run(const SimulateOptions &o) {
     if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
     if (scenario) {
         writeFrame(out, "", *frame, true);
+        if (!audience.empty()) writeImageAtomic((out / "audience.png").string(), audience);
         writeCamera((out / "camera.yaml").string(), sensor.camera);
         writeCalibration((out / "calib.yaml").string(), projector);
         writeTruthJson((out / "truth.json").string(), truth, *scenario, o.seed, !o.noise_free);
@@ -165,7 +177,7 @@ void addSimulateCommand(CLI::App &app) {
     sub->add_option("--seed", opts->seed, "Noise seed (default 0)");
     sub->add_option("--calib", opts->calib, "Projector calibration YAML (default: the contract's example)");
     sub->add_option("--aspect", opts->aspect, "Aspect ratio W:H of the true rectangle (default: the framebuffer's)");
-    sub->add_option("--picture", opts->picture, "Image to project (scaled to the framebuffer), shown in rgb.png");
+    sub->add_option("--picture", opts->picture, "Image to project (scaled to the framebuffer), shown in rgb.png and audience.png (a frontal view)");
     sub->add_flag("--noise-free", opts->noise_free, "Exact depth: no noise, quantisation or random dropouts");
     sub->add_option("--captures", opts->captures, "Also write N calibration captures to OUT/captures");
     sub->add_option("--out", opts->out, "Output directory (created if missing)");

@@ -46,6 +46,26 @@ PinholeView projectorView(const Projector &p) {
     return v;
 }
 
+PinholeView facingView(const Plane &plane, const Eigen::Vector3d &target, double distance,
+                       const Eigen::Vector3d &gravity, int width, int height, double fov_h_deg) {
+    const Eigen::Vector3d forward = -plane.normal;  // the normal points towards the camera side
+    Eigen::Vector3d down = gravity - gravity.dot(forward) * forward;
+    if (down.norm() < 1e-9) down = Eigen::Vector3d::UnitY() - forward.y() * forward;
+    down.normalize();
+    const Eigen::Vector3d right = down.cross(forward);
+    PinholeView v;
+    v.origin = plane.project(target) - distance * forward;
+    v.rotation.row(0) = right.transpose();
+    v.rotation.row(1) = down.transpose();
+    v.rotation.row(2) = forward.transpose();
+    v.width = width;
+    v.height = height;
+    v.fx = v.fy = 0.5 * width / std::tan(0.5 * fov_h_deg * 3.14159265358979323846 / 180.0);
+    v.cx = 0.5 * (width - 1);
+    v.cy = 0.5 * (height - 1);
+    return v;
+}
+
 namespace {
 
 /// Pixel bounding box [u0, u1] x [v0, v1] of a quad (view frame corners), clipped to the

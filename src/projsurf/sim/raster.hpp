@@ -6,6 +6,7 @@
 #include <opencv2/core.hpp>
 
 #include "projsurf/core/camera.hpp"
+#include "projsurf/core/plane.hpp"
 #include "projsurf/core/projector.hpp"
 #include "projsurf/sim/scene.hpp"
 
@@ -39,6 +40,11 @@ struct PinholeView {
 PinholeView cameraView(const CameraIntrinsics &camera);
 /// The projector as the contract defines it (principal point at the framebuffer centre, zero roll).
 PinholeView projectorView(const Projector &projector);
+
+/// A viewer `distance` metres in front of `target` on `plane`, looking straight at it, image
+/// upright for `gravity` (camera frame), with a horizontal field of view of `fov_h_deg`.
+PinholeView facingView(const Plane &plane, const Eigen::Vector3d &target, double distance,
+                       const Eigen::Vector3d &gravity, int width = 640, int height = 480, double fov_h_deg = 60.0);
 
 /// Nearest surface per pixel.
 struct DepthBuffer {

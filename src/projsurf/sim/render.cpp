@@ -29,7 +29,59 @@ cv::Vec3f sampleBilinear(const cv::Mat &img, double x, double y) {
     return out;
 }
 
+/// The projector as a light: its shadow map and framebuffer.
+struct ProjectorLight {
+    ShadowMap map;
+    PinholeView view;
+    cv::Mat framebuffer;
+};
+
+/// Checks the framebuffer and casts the projector's shadow map (about `width` texels wide).
+std::optional<ProjectorLight> makeLight(const Scene &scene, const std::optional<Projection> &projection, int width) {
+    if (!projection) return std::nullopt;
+    const cv::Mat &fb = projection->framebuffer;
+    if (fb.type() != CV_8UC3 || fb.cols != projection->projector.width || fb.rows != projection->projector.height)
+        throw std::invalid_argument("render: the framebuffer must be BGR 8-bit of the projector's resolution");
+    ProjectorLight light;
+    light.view = projectorView(projection->projector);
+    light.map = makeShadowMap(scene, light.view, std::min(1.0, static_cast<double>(width) / light.view.width));
+    light.framebuffer = fb;
+    return light;
+}
+
+/// Light leaving surface point p of quad qi, as a fraction of white per BGR channel: the
+/// albedo under ambient light, plus the framebuffer's colour where the projector reaches p.
+cv::Vec3f shade(const Quad &quad, const Eigen::Vector3d &p, int qi, const std::optional<ProjectorLight> &light,
+                const Lighting &lighting) {
+    cv::Vec3f c = quad.albedo * static_cast<float>(lighting.ambient);
+    if (light && light->map.reaches(p, qi)) {
+        const Eigen::Vector2d px = light->view.pixelOf(light->view.toView(p));
+        if (light->view.inside(px)) {
+            const cv::Vec3f fbc = sampleBilinear(light->framebuffer, px.x(), px.y());
+            c += quad.albedo.mul(fbc) * static_cast<float>(lighting.projector_gain);
+        }
+    }
+    return c;
+}
+
 }  // namespace
+
+cv::Mat renderView(const Scene &scene, const PinholeView &viewer, const std::optional<Projection> &projection,
+                   const Lighting &lighting) {
+    const DepthBuffer buf = castView(scene, viewer, 0.01);
+    const std::optional<ProjectorLight> light = makeLight(scene, projection, std::max(viewer.width, 640));
+    cv::Mat img(viewer.height, viewer.width, CV_8UC3, cv::Scalar(0, 0, 0));
+    for (int v = 0; v < viewer.height; ++v)
+        for (int u = 0; u < viewer.width; ++u) {
+            const int qi = buf.quad.at<int>(v, u);
+            if (qi < 0) continue;
+            const Eigen::Vector3d p = viewer.origin + buf.z.at<double>(v, u) * viewer.rayDirection(u, v);
+            const cv::Vec3f c = shade(scene.quads[qi], p, qi, light, lighting);
+            cv::Vec3b &out = img.at<cv::Vec3b>(v, u);
+            for (int k = 0; k < 3; ++k) out[k] = cv::saturate_cast<uchar>(255.0f * c[k]);
+        }
+    return img;
+}
 
 RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned seed,
                       const std::optional<Projection> &projection, const Lighting &lighting) {
@@ -49,16 +101,8 @@ RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned se
         e.cy += pad;
         emitter = makeShadowMap(scene, e);
     }
-    std::optional<ShadowMap> light;
-    PinholeView pview;
-    if (projection) {
-        const cv::Mat &fb = projection->framebuffer;
-        if (fb.type() != CV_8UC3 || fb.cols != projection->projector.width || fb.rows != projection->projector.height)
-            throw std::invalid_argument("renderFrame: the framebuffer must be BGR 8-bit of the projector's resolution");
-        pview = projectorView(projection->projector);
-        // A shadow map as wide as the camera image is enough for the light's edges.
-        light = makeShadowMap(scene, pview, std::min(1.0, static_cast<double>(cam.width) / pview.width));
-    }
+    // A projector shadow map as wide as the camera image is enough for the light's edges.
+    const std::optional<ProjectorLight> light = makeLight(scene, projection, cam.width);
 
     RgbdFrame f;
     f.depth = cv::Mat(cam.height, cam.width, CV_16UC1, cv::Scalar(0));
@@ -140,14 +184,7 @@ RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned se
             }
 
             // Colour: albedo under ambient light plus the projector's light where it reaches.
-            cv::Vec3f c = quad.albedo * static_cast<float>(lighting.ambient);
-            if (light && light->reaches(p, qi)) {
-                const Eigen::Vector2d px = pview.pixelOf(pview.toView(p));
-                if (pview.inside(px)) {
-                    const cv::Vec3f fbc = sampleBilinear(projection->framebuffer, px.x(), px.y());
-                    c += quad.albedo.mul(fbc) * static_cast<float>(lighting.projector_gain);
-                }
-            }
+            const cv::Vec3f c = shade(quad, p, qi, light, lighting);
             for (int k = 0; k < 3; ++k) {
                 float value = 255.0f * c[k];
                 if (colour_sigma > 0.0f) value += colour_sigma * gauss.next();

@@ -7,6 +7,7 @@
 
 #include "projsurf/core/cloud.hpp"
 #include "projsurf/core/projector.hpp"
+#include "projsurf/sim/raster.hpp"
 #include "projsurf/sim/scene.hpp"
 #include "projsurf/sim/sensor_model.hpp"
 
@@ -37,6 +38,11 @@ struct RgbdFrame {
 /// the projector's frustum and not in a projector shadow; every surface also gets ambient light.
 RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned seed,
                       const std::optional<Projection> &projection = std::nullopt, const Lighting &lighting = {});
+
+/// A noise-free colour image of the scene from any viewpoint (an audience member facing the
+/// wall, see facingView), lit like renderFrame's colour image.
+cv::Mat renderView(const Scene &scene, const PinholeView &viewer, const std::optional<Projection> &projection,
+                   const Lighting &lighting = {});
 
 /// The calibration picture of paper section 3.1.1: black, one white disc of `radius_px`
 /// centred on the framebuffer centre ((W-1)/2, (H-1)/2, the principal point). A radius
