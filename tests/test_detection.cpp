@@ -1,6 +1,7 @@
 // Detection on simulated clouds with a known answer (the simulator's ground truth).
 #include <gtest/gtest.h>
 
+#include "projsurf/core/gravity.hpp"
 #include "projsurf/pipeline/detector.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
@@ -134,4 +135,20 @@ TEST(Detection, EmptyAndAllNanCloudsAreNotFound) {
         EXPECT_FALSE(det.found);
         EXPECT_FALSE(det.reason.empty());
     }
+}
+
+TEST(Gravity, FromTheFloorOfARolledAndPitchedCamera) {
+    sim::Scenario sc = sim::makeScenario("wall", 4.0, 17.19);  // a level camera sees the floor from 2.2 m on
+    sim::rollCamera(sc, 6.0);
+    const sim::RgbdFrame frame = sim::renderFrame(sc.scene, sim::SensorModel{}, 4);
+    const auto g = estimateGravityFromFloor(frame.cloud, Eigen::Vector3d::UnitY());
+    ASSERT_TRUE(g.has_value());
+    EXPECT_LT(std::acos(std::min(1.0, g->gravity.dot(sc.gravity))), 1.0 * M_PI / 180.0)
+        << g->gravity.transpose() << " vs " << sc.gravity.transpose();
+    // No floor in view: no estimate.
+    Cloud wall_only;
+    for (int i = 0; i < 80; ++i)
+        for (int j = 0; j < 60; ++j) wall_only.points.emplace_back(-1.0f + 0.025f * i, -0.7f + 0.025f * j, 2.0f);
+    wall_only.width = static_cast<int>(wall_only.points.size());
+    EXPECT_FALSE(estimateGravityFromFloor(wall_only, Eigen::Vector3d::UnitY()).has_value());
 }

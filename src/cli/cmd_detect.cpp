@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/parse.hpp"
+#include "projsurf/core/gravity.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
@@ -35,7 +36,8 @@ void run(const DetectOptions &o) {
     if (o.hull == "concave") cfg.hull = HullKind::Concave;
     else if (o.hull == "convex") cfg.hull = HullKind::Convex;
     else throw InputError("--hull", "expected 'concave' or 'convex', got '" + o.hull + "'");
-    if (!o.gravity.empty()) cfg.gravity = parseVector3("--gravity", o.gravity);
+    const bool auto_gravity = o.gravity == "auto";
+    if (!o.gravity.empty() && !auto_gravity) cfg.gravity = parseVector3("--gravity", o.gravity);
     if (!o.aspect.empty()) cfg.aspect = parseAspect("--aspect", o.aspect);
     for (const auto &out : {o.json, o.overlay})
         if (!out.empty()) requireWritableLocation(out);
@@ -57,6 +59,11 @@ void run(const DetectOptions &o) {
                                         ", the cloud is " + std::to_string(cloud.width) + "x" + std::to_string(cloud.height));
     }
 
+    if (auto_gravity) {
+        // No IMU: take "down" from the floor when one is in view, else keep a level camera.
+        if (const auto g = estimateGravityFromFloor(cloud, cfg.gravity)) cfg.gravity = g->gravity;
+        else std::fprintf(stderr, "projsurf: note: --gravity auto found no floor; assuming a level camera\n");
+    }
     const Detection det = detectSurface(cloud, projector, cfg);
     const nlohmann::json j = detectionToJson(det, cfg);
     if (!o.json.empty()) writeFileAtomic(o.json, j.dump(2) + "\n");
@@ -84,7 +91,7 @@ void addDetectCommand(CLI::App &app) {
     sub->add_option("--aspect", o->aspect, "Picture aspect ratio W:H (default: the framebuffer's)");
     sub->add_option("--json", o->json, "Write the detection JSON here (else it goes to stdout)");
     sub->add_option("--overlay", o->overlay, "Write a picture of what was detected here (PNG)");
-    sub->add_option("--gravity", o->gravity, "Gravity in the camera frame gx,gy,gz (default 0,1,0)");
+    sub->add_option("--gravity", o->gravity, "Gravity in the camera frame gx,gy,gz (default 0,1,0), or 'auto' (from the floor)");
     sub->add_option("--method", o->method, "default | paper (the paper's steps, for reproduction)");
     sub->add_option("--hull", o->hull, "paper method: concave | convex hull of the plane");
     auto &c = o->config;

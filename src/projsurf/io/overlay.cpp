@@ -33,25 +33,26 @@ void polyline(cv::Mat &img, const View &view, const std::vector<Eigen::Vector3d>
     cv::polylines(img, std::vector<std::vector<cv::Point>>{px}, closed, color, thickness, cv::LINE_AA, 4);
 }
 
-void legend(cv::Mat &img, const std::vector<std::pair<cv::Scalar, std::string>> &items, const std::vector<std::string> &lines) {
-    const double fs = std::max(0.4, img.cols / 1400.0);
-    const int lh = static_cast<int>(22 * fs / 0.5);
-    const int h = lh * static_cast<int>(items.size() + lines.size()) + 10;
-    int w = 0;
-    for (const auto &l : lines) w = std::max(w, cv::getTextSize(l, cv::FONT_HERSHEY_SIMPLEX, fs, 1, nullptr).width);
-    for (const auto &it : items) w = std::max(w, cv::getTextSize(it.second, cv::FONT_HERSHEY_SIMPLEX, fs, 1, nullptr).width + lh);
-    cv::Mat roi = img(cv::Rect(0, 0, std::min(img.cols, w + 20), std::min(img.rows, h)));
-    roi *= 0.35;
-    int y = lh;
+/// Appends a panel below the picture: status lines, then the colour key in two columns.
+cv::Mat withLegend(const cv::Mat &img, const std::vector<std::pair<cv::Scalar, std::string>> &items,
+                   const std::vector<std::string> &lines) {
+    const double fs = std::max(0.45, img.cols / 1700.0);
+    const int lh = static_cast<int>(std::round(26 * fs / 0.5));
+    const int key_rows = static_cast<int>((items.size() + 1) / 2);
+    cv::Mat out(img.rows + lh * static_cast<int>(lines.size() + key_rows) + lh / 2, img.cols, CV_8UC3, cv::Scalar(32, 32, 32));
+    img.copyTo(out(cv::Rect(0, 0, img.cols, img.rows)));
+    int y = img.rows + lh;
     for (const auto &l : lines) {
-        cv::putText(img, l, {8, y - 4}, cv::FONT_HERSHEY_SIMPLEX, fs, kText, 1, cv::LINE_AA);
+        cv::putText(out, l, {10, y - lh / 4}, cv::FONT_HERSHEY_SIMPLEX, fs, kText, 1, cv::LINE_AA);
         y += lh;
     }
-    for (const auto &it : items) {
-        cv::rectangle(img, cv::Rect(8, y - lh + 6, lh - 10, lh - 10), it.first, cv::FILLED);
-        cv::putText(img, it.second, {8 + lh, y - 4}, cv::FONT_HERSHEY_SIMPLEX, fs, kText, 1, cv::LINE_AA);
-        y += lh;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        const int x = 10 + static_cast<int>(i % 2) * (img.cols / 2);
+        const int yy = y + static_cast<int>(i / 2) * lh;
+        cv::rectangle(out, cv::Rect(x, yy - lh + lh / 4, lh / 2, lh / 2), items[i].first, cv::FILLED);
+        cv::putText(out, items[i].second, {x + lh, yy - lh / 4}, cv::FONT_HERSHEY_SIMPLEX, fs, kText, 1, cv::LINE_AA);
     }
+    return out;
 }
 
 }  // namespace
@@ -163,14 +164,13 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
                   config.method == Method::Paper ? "paper" : "default",
                   det.timing_ms.count("total") ? det.timing_ms.at("total") : 0.0);
     lines.emplace_back(line);
-    legend(img,
+    return withLegend(img,
            {{kInlier, "wall points (plane inliers)"},
             {kFree, config.method == Method::Paper ? "plane hull" : "free space on the wall"},
             {kWorkspace, "projector workspace"},
             {kRect, "picture rectangle"},
             {kOutlier, "surface-check outliers"}},
            lines);
-    return img;
 }
 
 }  // namespace projsurf

@@ -329,9 +329,8 @@ bool insideConvex(const std::array<Eigen::Vector2d, 4> &quad, const Eigen::Vecto
 /// quantisation of the grid search (the footprint is known exactly).
 void refineRectangle(Candidate &c, double aspect) {
     const Eigen::Vector2d lo = c.frame.toPlane(c.rectangle.corners[3]), hi = c.frame.toPlane(c.rectangle.corners[1]);
-    const Eigen::Vector2d mid = 0.5 * (lo + hi);
     const double cell = c.raster.cell;
-    auto fits = [&](double h) {
+    auto fits = [&](const Eigen::Vector2d &mid, double h) {
         const Eigen::Vector2d half(0.5 * aspect * h, 0.5 * h);
         const Eigen::Vector2d a = mid - half, b = mid + half;
         for (const Eigen::Vector2d &p : {a, b, Eigen::Vector2d(a.x(), b.y()), Eigen::Vector2d(b.x(), a.y())})
@@ -348,13 +347,34 @@ void refineRectangle(Candidate &c, double aspect) {
         }
         return true;
     };
-    double good = hi.y() - lo.y(), bad = good + 2.0 * cell;
-    if (fits(bad)) good = bad;
-    for (int it = 0; it < 12 && bad > good; ++it) {
-        const double h = 0.5 * (good + bad);
-        (fits(h) ? good : bad) = h;
+    // Largest height that fits about `mid`, searched in [h0, h0 + 2 cells].
+    auto grow = [&](const Eigen::Vector2d &mid, double h0) {
+        double good = h0, bad = h0 + 2.0 * cell;
+        if (fits(mid, bad)) return bad;
+        for (int it = 0; it < 10; ++it) {
+            const double h = 0.5 * (good + bad);
+            (fits(mid, h) ? good : bad) = h;
+        }
+        return good;
+    };
+    Eigen::Vector2d mid = 0.5 * (lo + hi);
+    double h = grow(mid, hi.y() - lo.y());
+    // Slide away from whatever limits it, half a cell at a time, while that lets it grow.
+    for (int round = 0; round < 8; ++round) {
+        bool improved = false;
+        for (const Eigen::Vector2d &dir : {Eigen::Vector2d(1, 0), Eigen::Vector2d(-1, 0), Eigen::Vector2d(0, 1), Eigen::Vector2d(0, -1)}) {
+            const Eigen::Vector2d moved = mid + 0.5 * cell * dir;
+            if (!fits(moved, h)) continue;
+            const double grown = grow(moved, h);
+            if (grown > h + 1e-4) {
+                mid = moved;
+                h = grown;
+                improved = true;
+            }
+        }
+        if (!improved) break;
     }
-    const Eigen::Vector2d half(0.5 * aspect * good, 0.5 * good);
+    const Eigen::Vector2d half(0.5 * aspect * h, 0.5 * h);
     c.rectangle = makeRectangle(c.frame, mid - half, mid + half);
 }
 
