@@ -3,6 +3,8 @@
 #include <chrono>
 #include <cstdlib>
 #include <dlfcn.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <iostream>
 #include <opencv2/highgui.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -122,6 +124,12 @@ void run(const ShowOptions &o) {
         std::cerr << "projsurf: warning: the framebuffer is " << image.cols << "x" << image.rows << " but the screen is "
                   << screen->width << "x" << screen->height << "; it is stretched to fill the screen\n";
     ::setenv("DISPLAY", display.c_str(), 1);
+    if (!std::getenv("XDG_RUNTIME_DIR")) {
+        // Qt wants a private runtime directory and warns when it has to pick one itself.
+        const std::string dir = "/tmp/runtime-" + std::to_string(::getuid());
+        ::mkdir(dir.c_str(), 0700);
+        ::setenv("XDG_RUNTIME_DIR", dir.c_str(), 1);
+    }
 
     openFullscreen(image, *screen);
     const auto start = std::chrono::steady_clock::now();
