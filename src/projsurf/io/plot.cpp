@@ -12,6 +12,8 @@ const cv::Scalar kWhite(255, 255, 255), kBlack(30, 30, 30), kGrid(225, 225, 225)
 constexpr int kFont = cv::FONT_HERSHEY_SIMPLEX;
 
 std::string fmt(double v) {
+    v += 0.0;  // no "-0"
+    if (std::abs(v) < 1e-12) v = 0.0;
     char buf[32];
     const double a = std::abs(v);
     if (a >= 10000) std::snprintf(buf, sizeof buf, "%.0fk", v / 1000.0);
@@ -179,7 +181,7 @@ cv::Mat drawLineChart(const LineChart &c) {
         xlo = std::min(xlo, x);
         xhi = std::max(xhi, x);
     }
-    for (const auto &h : c.h_lines) yhi = std::max(yhi, h.first);
+    for (const auto &h : c.h_lines) yhi = std::max(yhi, h.value);
     if (xlo > xhi) xlo = 0, xhi = 1;
     if (xhi - xlo < 1e-9) xlo -= 0.5, xhi += 0.5;
     const double xpad = 0.06 * (xhi - xlo);
@@ -218,10 +220,12 @@ cv::Mat drawLineChart(const LineChart &c) {
     verticalText(img, c.y_label, {18, box.y + box.height / 2}, 0.5, kBlack);
 
     // Reference lines.
-    for (const auto &[v, label] : c.h_lines) {
-        const double y = Y(v);
+    for (const auto &h : c.h_lines) {
+        const double y = Y(h.value);
         dashedLine(img, cv::Point2d(box.x, y), cv::Point2d(box.x + box.width, y), kGreyText, 1);
-        text(img, label, {box.x + box.width - 6, cvRound(y) - 5}, 0.42, kGreyText, 2);
+        const int ty = h.label_below ? cvRound(y) + 15 : cvRound(y) - 5;
+        if (h.label_left) text(img, h.label, {box.x + 6, ty}, 0.42, kGreyText, 0);
+        else text(img, h.label, {box.x + box.width - 6, ty}, 0.42, kGreyText, 2);
     }
     // Series.
     for (const auto &s : c.series) {

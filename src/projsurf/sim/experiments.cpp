@@ -114,10 +114,13 @@ Trial scoreTrial(const Detection &det, const GroundTruth &truth, const Projector
     t.outliers = det.surface_check.outliers;
     t.area = det.found ? det.rectangle.area() : 0.0;
     t.score = scoreDetection(det, truth, projector, gravity, aspect);
+    ScoreOptions slack;
+    slack.pixel_tolerance = kFramebufferSlackPx;
+    t.slack_success = scoreDetection(det, truth, projector, gravity, aspect, slack).success;
     if (t.checked) {
         Detection shown = det;  // the rectangle the checker judged, as if it had been accepted
         shown.found = true;
-        t.checked_valid = scoreDetection(shown, truth, projector, gravity, aspect).valid;
+        t.checked_valid = scoreDetection(shown, truth, projector, gravity, aspect, slack).valid;
         if (const SurfaceTruth *s = surfaceOf(det.rectangle, truth, ScoreOptions{}.plane_tolerance)) t.surface = s->label;
     }
     return t;
@@ -147,6 +150,7 @@ Summary summarize(const std::vector<const Trial *> &trials) {
         ++s.n;
         s.found += t->found;
         s.truth_success += t->score.success;
+        s.slack_success += t->slack_success;
         s.paper_success += t->paper_success;
         truth_err.push_back(std::abs(t->score.area_error));
         best.push_back(t->score.best_area);
@@ -198,14 +202,19 @@ CalibrationRun calibrateFromSimulation(const Projector &truth, const SensorModel
 }
 
 WallPicture pictureOnWall(const Projector &believed, const Projector &real, const Scene &scene, const Rectangle &rect,
-                          cv::Size picture) {
-    WallPicture w;
-    const std::optional<Corners2> px = framebufferCornersFor(believed, rect, picture);
-    if (!px) {
-        w.problem = "the rectangle cannot be shown (behind the projector or outside its framebuffer)";
+                          cv::Size picture, double tolerance_px) {
+    const KeystoneResult k = computeKeystone(believed, rect, picture, tolerance_px);
+    if (!k.keystone) {
+        WallPicture w;
+        w.problem = k.problem;
         return w;
     }
-    return framebufferOnWall(real, scene, *px);
+    WallPicture w = framebufferOnWall(real, scene, k.keystone->picture_px);
+    for (const auto &p : k.keystone->picture_px) {
+        const double out = std::max({-0.5 - p.x(), p.x() - (believed.width - 0.5), -0.5 - p.y(), p.y() - (believed.height - 0.5)});
+        w.overshoot_px = std::max(w.overshoot_px, out);
+    }
+    return w;
 }
 
 WallPicture framebufferOnWall(const Projector &real, const Scene &scene, const Corners2 &framebuffer_px) {
@@ -279,7 +288,7 @@ EvalResults runEval(const EvalPlan &plan, const Progress &progress) {
     for (std::size_t j = 0; j < plan.jobs.size(); ++j) {
         const PoseJob &job = plan.jobs[j];
         const Scenario sc = makeScenario(job.scenario, job.distance, job.angle_deg);
-        const std::string pose = describePose(job.scenario, job.distance, job.angle_deg);
+        const std::string pose = (job.keystone ? "table 3: " : "") + describePose(job.scenario, job.distance, job.angle_deg);
         GroundTruth truth;
         if (!job.keystone) {
             TruthOptions topt;
@@ -324,8 +333,10 @@ EvalResults runEval(const EvalPlan &plan, const Progress &progress) {
                     k.problem = "not found: " + det.reason;
                 } else {
                     const WallPicture w = pictureOnWall(cal.projector, projector, sc.scene, det.rectangle,
-                                                        cv::Size(projector.width, projector.height));
+                                                        cv::Size(projector.width, projector.height),
+                                                        plan.keystone_tolerance_px);
                     k.shown = w.ok;
+                    k.overshoot_px = w.overshoot_px;
                     k.problem = w.problem;
                     k.errors = w.errors;
                 }

@@ -1,0 +1,35 @@
+#pragma once
+// The evaluation report: Markdown tables with the paper's published numbers beside ours, and
+// PNG charts (success rates, surface-check outliers, keystone errors, timing), plus the real
+// frame gallery.
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "projsurf/io/real_gallery.hpp"
+#include "projsurf/sim/experiments.hpp"
+
+namespace projsurf {
+
+struct ReportInfo {
+    std::string command;     ///< the command line that made the report
+    bool quick = false;
+    std::string real_dir;    ///< where the real frames came from ("" = none)
+    double real_seconds = 0; ///< time spent on the gallery
+};
+
+/// The report's Markdown (links plots and gallery pictures by relative path).
+std::string evalReportMarkdown(const sim::EvalResults &results, const std::vector<GalleryEntry> &gallery,
+                               const ReportInfo &info);
+
+/// The charts, as (file name, image).
+std::vector<std::pair<std::string, cv::Mat>> evalPlots(const sim::EvalResults &results);
+
+/// Writes dir/report.md, the charts, dir/gallery/<name>.png and dir/gallery/contact_sheet.png
+/// (atomically, each file). `dir` must exist.
+void writeEvalReport(const std::string &dir, const sim::EvalResults &results, const std::vector<GalleryEntry> &gallery,
+                     const ReportInfo &info);
+
+}  // namespace projsurf
