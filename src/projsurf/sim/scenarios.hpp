@@ -40,9 +40,13 @@ const std::vector<std::string> &scenarioNames();
 /// that does not leave the camera in front of the wall (distance 0.5-10 m, |angle| < 75 deg).
 ///  wall             plain wall and floor (paper 4.1, uncluttered; 4.3 "NO")
 ///  small_obstacles  three small boxes on the wall (paper 4.3 "SO")
-///  big_obstacle     a big cardboard box standing against the wall (paper 4.3 "BO")
+///  big_obstacle     a big cardboard box (0.6 wide, 1.05 tall, 0.45 m deep) standing against
+///                   the wall, a little left of the axis (paper 4.3 "BO")
 ///  closet           a 1.0 m wide, 0.6 m deep, 2.0 m tall closet against the wall, slightly
 ///                   left of the axis (paper 4.2, cluttered)
+/// The wall is projection surface 0; the vertical faces of the closet and of the big box
+/// (front and sides) are projection surfaces of their own; small boxes, the person, the
+/// poster and the floor are not (Quad::surface).
 ///  door             an open doorway right of the axis, a room behind it
 ///  window           a window hole left of the axis, nothing behind it in range
 ///  poster           an A1 poster 3 mm proud of the wall (flat: not an obstacle)
