@@ -15,6 +15,7 @@
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/truth_json.hpp"
 #include "projsurf/io/yaml_files.hpp"
+#include "projsurf/sim/calibration_captures.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
@@ -124,13 +125,8 @@ void run(const SimulateOptions &o) {
     }
     // Calibration captures: a plain wall from N robot positions, 1.2-3.0 m, turned a little.
     std::vector<sim::RgbdFrame> captures;
-    const cv::Mat disc = sim::calibrationPicture(projector.width, projector.height);
-    const double angles[] = {0.0, 10.0, -10.0, 20.0, -20.0};
-    for (int k = 0; k < o.captures; ++k) {
-        const double d = 1.2 + 1.8 * k / (o.captures - 1);
-        const sim::Scenario wall = buildScenario("wall", d, angles[k % 5], o.roll_deg, o.pitch_deg);
-        captures.push_back(sim::renderFrame(wall.scene, sensor, o.seed + 1000u + k, sim::Projection{projector, disc}));
-    }
+    if (o.captures > 0)
+        captures = sim::renderCalibrationCaptures(projector, sensor, o.captures, o.seed, o.roll_deg, o.pitch_deg);
 
     // Write.
     fs::create_directories(out, ec);

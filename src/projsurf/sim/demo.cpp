@@ -4,6 +4,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "projsurf/sim/raster.hpp"
 #include "projsurf/sim/test_card.hpp"
 
 namespace projsurf::sim {
@@ -16,44 +17,6 @@ double msSince(Clock::time_point t0) {
 }
 
 }  // namespace
-
-cv::Mat renderAudienceView(const Scene &scene, const Eigen::Vector3d &wall_normal, const Eigen::Vector3d &target,
-                           double distance, const Eigen::Vector3d &gravity, const std::optional<Projection> &projection,
-                           cv::Size size, double hfov_deg) {
-    // Viewer axes in the camera frame: forward = into the wall, down = gravity, right = down x forward.
-    const Eigen::Vector3d down = gravity.normalized();
-    Eigen::Vector3d forward = -wall_normal;
-    forward = (forward - forward.dot(down) * down).normalized();
-    const Eigen::Vector3d right = down.cross(forward).normalized();
-    const Eigen::Vector3d eye = target - distance * forward;
-    Eigen::Matrix3d r;
-    r.row(0) = right.transpose();
-    r.row(1) = down.transpose();
-    r.row(2) = forward.transpose();
-    Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
-    t.linear() = r;
-    t.translation() = -r * eye;
-
-    SensorModel viewer = SensorModel::ideal();
-    viewer.camera.width = size.width;
-    viewer.camera.height = size.height;
-    viewer.camera.fx = viewer.camera.fy = 0.5 * size.width / std::tan(0.5 * hfov_deg * M_PI / 180.0);
-    viewer.camera.cx = 0.5 * (size.width - 1);
-    viewer.camera.cy = 0.5 * (size.height - 1);
-    viewer.min_depth = 0.05;
-    viewer.max_depth = 50.0;
-    viewer.grazing_max_deg = 89.5;
-    viewer.grazing_start_deg = 89.0;
-    std::optional<Projection> moved;
-    if (projection) {
-        moved = *projection;
-        moved->projector.origin = t * projection->projector.origin;
-        moved->projector.direction = r * projection->projector.direction;
-    }
-    Lighting light;
-    light.ambient = 0.22;  // a dim room, brighter than the camera's view so the wall is visible
-    return renderFrame(transformed(scene, t), viewer, 0, moved, light).rgb;
-}
 
 DemoResult runDemo(const DemoOptions &o) {
     DemoResult res;
@@ -116,13 +79,13 @@ DemoResult runDemo(const DemoOptions &o) {
     cv::resize(res.picture, as_is, cv::Size(real.width, real.height), 0, 0, cv::INTER_AREA);
     Eigen::Vector3d target = res.scenario.wall.project(real.origin + 2.0 * real.direction);
     if (const auto hit = intersectRay(res.scenario.wall, real.origin, real.direction)) target = *hit;
-    const double view_distance = std::max(2.5, 1.3 * o.distance);
-    res.audience_uncorrected =
-        renderAudienceView(res.scenario.scene, res.scenario.wall.normal, target, view_distance, res.scenario.gravity,
-                           Projection{real, as_is}, o.audience_size, o.audience_hfov_deg);
-    res.audience_corrected =
-        renderAudienceView(res.scenario.scene, res.scenario.wall.normal, target, view_distance, res.scenario.gravity,
-                           Projection{real, res.framebuffer}, o.audience_size, o.audience_hfov_deg);
+    const double view_distance = std::max(2.5, 1.3 * o.distance);  // m, a person facing the wall
+    const PinholeView viewer = facingView(res.scenario.wall, target, view_distance, res.scenario.gravity,
+                                          o.audience_size.width, o.audience_size.height, o.audience_hfov_deg);
+    Lighting light;
+    light.ambient = 0.22;  // a dim room, a little brighter than the camera's so the wall shows
+    res.audience_uncorrected = renderView(res.scenario.scene, viewer, Projection{real, as_is}, light);
+    res.audience_corrected = renderView(res.scenario.scene, viewer, Projection{real, res.framebuffer}, light);
     res.stage_ms.emplace_back("render the audience views", msSince(t));
     res.stage_ms.emplace_back("total", msSince(t_all));
     return res;

@@ -54,11 +54,4 @@ struct DemoResult {
 /// Runs the demo; throws std::invalid_argument for an unknown scenario or impossible pose.
 DemoResult runDemo(const DemoOptions &options);
 
-/// What a person standing `distance` m in front of `target` (on a vertical wall with normal
-/// `wall_normal`, towards the camera) and facing it sees, with `projection` lit on the scene.
-/// Noise-free colour render; `gravity` (camera frame) gives "up".
-cv::Mat renderAudienceView(const Scene &scene, const Eigen::Vector3d &wall_normal, const Eigen::Vector3d &target,
-                           double distance, const Eigen::Vector3d &gravity, const std::optional<Projection> &projection,
-                           cv::Size size, double hfov_deg);
-
 }  // namespace projsurf::sim
