@@ -10,7 +10,7 @@ PACKAGES=(
   libgtest-dev libbenchmark-dev xvfb x11-apps
 )
 # ROS 1 (Debian's packages) for the node in ros/; see ros/README.md.
-ROS_PACKAGES=()
+ROS_PACKAGES=(libroscpp-dev libstd-msgs-dev libstd-srvs-dev libsensor-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libtf2-ros-dev librosbag-storage-dev python3-rosmaster python3-roslaunch)
 
 missing=()
 for p in "${PACKAGES[@]}" "${ROS_PACKAGES[@]}"; do

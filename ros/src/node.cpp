@@ -1,0 +1,245 @@
+#include "node.hpp"
+
+#include <geometry_msgs/PolygonStamped.h>
+#include <std_msgs/String.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <cstdio>
+#include <opencv2/imgcodecs.hpp>
+
+#include "conversions.hpp"
+#include "framebuffer.hpp"
+#include "projsurf/io/detection_json.hpp"
+#include "projsurf/io/errors.hpp"
+#include "projsurf/io/files.hpp"
+
+namespace projsurf::ros_node {
+namespace {
+
+Eigen::Isometry3d toEigen(const geometry_msgs::Transform &t) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() = Eigen::Quaterniond(t.rotation.w, t.rotation.x, t.rotation.y, t.rotation.z).normalized().toRotationMatrix();
+    T.translation() = Eigen::Vector3d(t.translation.x, t.translation.y, t.translation.z);
+    return T;
+}
+
+std::string summary(const Detection &det) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "found %.2f x %.2f m (%.2f m^2) on a plane %.2f m away at %.1f deg in %.1f ms",
+                  det.rectangle.width, det.rectangle.height, det.rectangle.area(), det.plane.d, det.orientation_deg,
+                  det.timing_ms.count("total") ? det.timing_ms.at("total") : 0.0);
+    return buf;
+}
+
+}  // namespace
+
+ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams params)
+    : params_(std::move(params)), nh_(nh), pnh_(pnh) {
+    if (!params_.image.empty()) picture_ = readImage(params_.image, cv::IMREAD_COLOR);
+    else picture_ = testCard({params_.projector.width, params_.projector.height});
+    if (!params_.gravity_frame.empty() || !params_.fixed_frame.empty()) {
+        tf_buffer_ = std::make_unique<tf2_ros::Buffer>(ros::Duration(30.0));
+        tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, nh_);
+    }
+    if (params_.continuous) continuous_ = std::make_unique<ContinuousMode>(params_);
+
+    result_pub_ = pnh_.advertise<std_msgs::String>("result", 1, true);
+    rectangle_pub_ = pnh_.advertise<geometry_msgs::PolygonStamped>("rectangle", 1, true);
+    framebuffer_pub_ = pnh_.advertise<sensor_msgs::Image>("framebuffer", 1, true);
+    markers_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
+    detect_srv_ = pnh_.advertiseService("detect", &ProjsurfNode::onDetect, this);
+    // Queue of 1: in continuous mode a slow frame drops the ones behind it, never lags.
+    cloud_sub_ = nh_.subscribe("points", 1, &ProjsurfNode::onCloud, this);
+    depth_sub_ = nh_.subscribe("depth/image_rect", 1, &ProjsurfNode::onDepth, this);
+    info_sub_ = nh_.subscribe("depth/camera_info", 1, &ProjsurfNode::onCameraInfo, this);
+    image_sub_ = nh_.subscribe("image", 1, &ProjsurfNode::onImage, this);
+    ROS_INFO("projsurf_node: projector %dx%d from %s; %s mode; listening on %s (or %s + %s)", params_.projector.width,
+             params_.projector.height, params_.calib.c_str(), params_.continuous ? "continuous" : "on-demand (~detect)",
+             cloud_sub_.getTopic().c_str(), depth_sub_.getTopic().c_str(), info_sub_.getTopic().c_str());
+}
+
+void ProjsurfNode::onImage(const sensor_msgs::ImageConstPtr &msg) {
+    try {
+        picture_ = toBgr(*msg);
+        picture_from_topic_ = true;
+    } catch (const InputError &e) {
+        ROS_WARN_THROTTLE(5.0, "projsurf_node: ignoring picture on %s: %s", image_sub_.getTopic().c_str(), e.what());
+    }
+}
+
+void ProjsurfNode::onCameraInfo(const sensor_msgs::CameraInfoConstPtr &msg) { camera_info_ = msg; }
+
+void ProjsurfNode::onDepth(const sensor_msgs::ImageConstPtr &msg) {
+    if (!camera_info_) {
+        ROS_WARN_THROTTLE(5.0, "projsurf_node: depth image without camera_info on %s yet", info_sub_.getTopic().c_str());
+        return;
+    }
+    try {
+        takeCloud(toCloud(*msg, *camera_info_), msg->header);
+    } catch (const InputError &e) {
+        ROS_WARN_THROTTLE(5.0, "projsurf_node: ignoring depth image: %s", e.what());
+    }
+}
+
+void ProjsurfNode::onCloud(const sensor_msgs::PointCloud2ConstPtr &msg) {
+    try {
+        takeCloud(toCloud(*msg), msg->header);
+    } catch (const InputError &e) {
+        ROS_WARN_THROTTLE(5.0, "projsurf_node: ignoring cloud: %s", e.what());
+    }
+}
+
+void ProjsurfNode::takeCloud(Cloud cloud, const std_msgs::Header &header) {
+    cloud_ = std::move(cloud);
+    cloud_header_ = header;
+    have_cloud_ = true;
+    if (continuous_) runContinuous();
+}
+
+bool ProjsurfNode::lookup(const std::string &target, const std::string &source, const ros::Time &stamp,
+                          Eigen::Isometry3d &pose, std::string &problem) {
+    if (target == source) {
+        pose = Eigen::Isometry3d::Identity();
+        return true;
+    }
+    try {
+        const auto t = tf_buffer_->lookupTransform(target, source, stamp, ros::Duration(params_.tf_timeout));
+        pose = toEigen(t.transform);
+        return true;
+    } catch (const tf2::TransformException &e) {
+        problem = "no transform from " + source + " to " + target + ": " + e.what();
+        return false;
+    }
+}
+
+SurfaceDetector &ProjsurfNode::detectorFor(const std_msgs::Header &header, std::string &problem) {
+    DetectorConfig config = params_.detector;
+    if (!params_.gravity_frame.empty()) {
+        Eigen::Isometry3d camera_from_gravity;
+        if (lookup(header.frame_id, params_.gravity_frame, header.stamp, camera_from_gravity, problem)) {
+            config.gravity = camera_from_gravity.linear() * Eigen::Vector3d(0.0, 0.0, -1.0);  // -z of a z-up frame
+        } else {
+            problem += " (using ~gravity instead)";
+        }
+    }
+    // The detector keeps scratch buffers between frames: rebuild it only when gravity moved.
+    if (!detector_ || detector_->config().gravity.dot(config.gravity) < std::cos(1e-4))
+        detector_ = std::make_unique<SurfaceDetector>(params_.projector, config);
+    return *detector_;
+}
+
+void ProjsurfNode::publishBlack(const std_msgs::Header &header) {
+    cv::Mat black(params_.projector.height, params_.projector.width, CV_8UC3, cv::Scalar::all(0));
+    framebuffer_pub_.publish(toImageMsg(black, header));
+}
+
+std::string ProjsurfNode::publishFramebuffer(const Rectangle &rect, const std_msgs::Header &header) {
+    const Framebuffer fb = renderFramebuffer(params_.projector, rect, picture_, params_.keystone_tolerance_px);
+    if (fb.image.empty()) return fb.problem;
+    framebuffer_pub_.publish(toImageMsg(fb.image, header));
+    if (!params_.framebuffer_file.empty()) {
+        // For `projsurf show` on the projector's display; at most 5 writes a second.
+        const ros::WallTime now = ros::WallTime::now();
+        if ((now - last_file_write_).toSec() >= 0.2) {
+            try {
+                writeImageAtomic(params_.framebuffer_file, fb.image);
+                last_file_write_ = now;
+            } catch (const InputError &e) {
+                ROS_WARN_THROTTLE(10.0, "projsurf_node: %s", e.what());
+            }
+        }
+    }
+    return {};
+}
+
+ProjsurfNode::Outcome ProjsurfNode::detectOnce() {
+    Outcome out;
+    if (!have_cloud_) {
+        out.message = "no cloud received yet on " + cloud_sub_.getTopic() + " (or " + depth_sub_.getTopic() + ")";
+        return out;
+    }
+    std::string tf_problem;
+    SurfaceDetector &detector = detectorFor(cloud_header_, tf_problem);
+    if (!tf_problem.empty()) ROS_WARN("projsurf_node: %s", tf_problem.c_str());
+    const Detection det = detector.detect(cloud_);
+    std_msgs::String json;
+    json.data = detectionToJson(det, detector.config()).dump();
+    result_pub_.publish(json);
+    markers_pub_.publish(toMarkers(det, nullptr, cloud_header_, params_.marker_ns));
+    if (!det.found) {
+        // The paper's robot shows an error message and moves on (section 5).
+        out.message = det.reason.empty() ? "no projection surface found" : det.reason;
+        publishBlack(cloud_header_);
+        ROS_INFO("projsurf_node: no surface: %s", out.message.c_str());
+        return out;
+    }
+    out.success = true;
+    out.message = summary(det);
+    rectangle_pub_.publish(toPolygon(det.rectangle, cloud_header_));
+    const std::string problem = publishFramebuffer(det.rectangle, cloud_header_);
+    if (!problem.empty()) out.message += "; but the picture cannot be shown there: " + problem;
+    ROS_INFO("projsurf_node: %s", out.message.c_str());
+    return out;
+}
+
+bool ProjsurfNode::onDetect(std_srvs::Trigger::Request &, std_srvs::Trigger::Response &res) {
+    Outcome o;
+    try {
+        o = detectOnce();
+    } catch (const std::exception &e) {  // never take the node down for one bad frame
+        o.success = false;
+        o.message = std::string("detection failed: ") + e.what();
+        ROS_ERROR("projsurf_node: %s", o.message.c_str());
+    }
+    res.success = o.success;
+    res.message = o.message;
+    return true;
+}
+
+void ProjsurfNode::runContinuous() {
+    const std_msgs::Header header = cloud_header_;
+    Eigen::Isometry3d fixed_from_camera = Eigen::Isometry3d::Identity();
+    std::string problem;
+    if (!params_.fixed_frame.empty() && !lookup(params_.fixed_frame, header.frame_id, header.stamp, fixed_from_camera, problem)) {
+        ROS_WARN_THROTTLE(5.0, "projsurf_node: skipping a cloud: %s", problem.c_str());
+        return;
+    }
+    std::string tf_problem;
+    SurfaceDetector &detector = detectorFor(header, tf_problem);
+    if (!tf_problem.empty()) ROS_WARN_THROTTLE(5.0, "projsurf_node: %s", tf_problem.c_str());
+    Detection det;
+    try {
+        det = detector.detect(cloud_);
+    } catch (const std::exception &e) {
+        ROS_ERROR_THROTTLE(5.0, "projsurf_node: detection failed: %s", e.what());
+        return;
+    }
+    const ContinuousMode::Output o = continuous_->update(det, cloud_, fixed_from_camera, detector.config());
+
+    nlohmann::json j = detectionToJson(det, detector.config());
+    j["continuous"] = {{"event", toString(o.event)}, {"showing", o.has_target}, {"stamp", header.stamp.toSec()}};
+    std_msgs::String json;
+    json.data = j.dump();
+    result_pub_.publish(json);
+    markers_pub_.publish(toMarkers(det, o.has_target ? &o.shown : nullptr, header, params_.marker_ns));
+    if (o.has_target) {
+        rectangle_pub_.publish(toPolygon(o.shown, header));
+        const std::string why = publishFramebuffer(o.shown, header);
+        if (!why.empty()) publishBlack(header);  // held but out of the projector's reach for now
+    } else {
+        publishBlack(header);
+    }
+    if (o.event != SteadyEvent::Kept && o.event != SteadyEvent::None)
+        ROS_INFO("projsurf_node: continuous: %s", toString(o.event));
+
+    const ros::WallTime now = ros::WallTime::now();
+    if (!last_frame_.isZero()) {
+        const double dt = (now - last_frame_).toSec();
+        if (dt > 0.0) rate_hz_ = rate_hz_ == 0.0 ? 1.0 / dt : 0.9 * rate_hz_ + 0.1 / dt;
+    }
+    last_frame_ = now;
+    ROS_INFO_THROTTLE(10.0, "projsurf_node: continuous mode at %.1f Hz, detection %.1f ms",
+                      rate_hz_, det.timing_ms.count("total") ? det.timing_ms.at("total") : 0.0);
+}
+
+}  // namespace projsurf::ros_node

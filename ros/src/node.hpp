@@ -1,0 +1,74 @@
+#pragma once
+// projsurf_node: ROS 1 front end of the library (contract, "ROS node"). Subscribes to the
+// clouds (or depth + camera_info) and the picture; the ~detect service runs one detection
+// (the paper's start signal, section 5); continuous mode detects on every cloud and keeps the
+// picture steady on the wall while the robot moves.
+#include <ros/ros.h>
+#include <sensor_msgs/CameraInfo.h>
+#include <sensor_msgs/Image.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/buffer.h>
+#include <tf2_ros/transform_listener.h>
+
+#include <Eigen/Geometry>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "continuous.hpp"
+#include "params.hpp"
+#include "projsurf/pipeline/detector.hpp"
+
+namespace projsurf::ros_node {
+
+class ProjsurfNode {
+public:
+    /// `nh` resolves the input topics, `pnh` (private, "~") the outputs and the service.
+    ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams params);
+
+private:
+    struct Outcome {
+        bool success = false;
+        std::string message;
+    };
+
+    void onCloud(const sensor_msgs::PointCloud2ConstPtr &msg);
+    void onDepth(const sensor_msgs::ImageConstPtr &msg);
+    void onCameraInfo(const sensor_msgs::CameraInfoConstPtr &msg);
+    void onImage(const sensor_msgs::ImageConstPtr &msg);
+    bool onDetect(std_srvs::Trigger::Request &req, std_srvs::Trigger::Response &res);
+
+    void takeCloud(Cloud cloud, const std_msgs::Header &header);
+    Outcome detectOnce();
+    void runContinuous();
+    /// The detector for this cloud: gravity from tf2 when ~gravity_frame is set.
+    SurfaceDetector &detectorFor(const std_msgs::Header &header, std::string &problem);
+    bool lookup(const std::string &target, const std::string &source, const ros::Time &stamp,
+                Eigen::Isometry3d &pose, std::string &problem);
+    /// Warps the picture into `rect` (camera frame) and publishes it; empty string on success.
+    std::string publishFramebuffer(const Rectangle &rect, const std_msgs::Header &header);
+    void publishBlack(const std_msgs::Header &header);
+
+    NodeParams params_;
+    ros::NodeHandle nh_, pnh_;
+    ros::Subscriber cloud_sub_, depth_sub_, info_sub_, image_sub_;
+    ros::Publisher result_pub_, rectangle_pub_, framebuffer_pub_, markers_pub_;
+    ros::ServiceServer detect_srv_;
+    std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
+    std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
+
+    cv::Mat picture_;              ///< BGR picture to show
+    bool picture_from_topic_ = false;
+    Cloud cloud_;                  ///< latest cloud
+    std_msgs::Header cloud_header_;
+    bool have_cloud_ = false;
+    sensor_msgs::CameraInfoConstPtr camera_info_;
+    std::unique_ptr<SurfaceDetector> detector_;
+    std::unique_ptr<ContinuousMode> continuous_;
+    ros::WallTime last_file_write_;
+    double rate_hz_ = 0.0;  ///< running estimate of the continuous-mode frame rate
+    ros::WallTime last_frame_;
+};
+
+}  // namespace projsurf::ros_node

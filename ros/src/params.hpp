@@ -1,0 +1,48 @@
+#pragma once
+// The node's parameters (contract, "ROS node"): ~calib, ~aspect, ~image, ~continuous,
+// ~gravity and every pipeline setting under the CLI's name with '-' written '_'
+// (ROS names allow no '-'), plus the node's own: input, frames and continuous-mode settings.
+#include <ros/node_handle.h>
+
+#include <string>
+
+#include "projsurf/core/projector.hpp"
+#include "projsurf/core/steady_tracker.hpp"
+#include "projsurf/pipeline/detector.hpp"
+
+namespace projsurf::ros_node {
+
+struct NodeParams {
+    std::string calib;        ///< ~calib: projector calibration YAML (required)
+    std::string image;        ///< ~image: picture to show (optional; the `image` topic overrides it)
+    bool continuous = false;  ///< ~continuous: detect on every cloud and keep the picture steady
+    Projector projector;      ///< read from ~calib
+    /// ~aspect, ~gravity, ~method, ~hull and the CLI's pipeline options: ~max_tilt, ~seed,
+    /// ~voxel_leaf, ~ransac_distance, ~max_outliers, ~cell, ~max_planes, ~max_outlier_fraction
+    /// (defaults: DetectorConfig's).
+    DetectorConfig detector;
+
+    /// ~gravity_frame: a frame whose -z is gravity (e.g. base_link or odom); when set, gravity
+    /// in the camera frame comes from tf2 for every cloud and ~gravity is the fallback.
+    std::string gravity_frame;
+    /// ~fixed_frame: a frame that does not move with the robot (odom, map); continuous mode
+    /// keeps the picture put in it. Empty: the camera frame (a robot standing still).
+    std::string fixed_frame;
+    double tf_timeout = 0.1;        ///< ~tf_timeout, s: wait for a transform at a cloud's stamp
+    SteadyConfig steady;            ///< ~steady_scale, ~switch_frames, ~hold_frames, ~plane_smoothing, ...
+    /// ~keystone_tolerance_px: a rectangle may leave the framebuffer by this much and still be
+    /// shown (its edge clipped); the detector's raster puts corners up to a few px outside.
+    double keystone_tolerance_px = 4.0;
+    double fit_margin_px = 2.0;     ///< ~fit_margin_px: the held picture must stay this far inside the framebuffer
+    std::string framebuffer_file;   ///< ~framebuffer_file: also write each new framebuffer PNG here (for `projsurf show`)
+    std::string marker_ns = "projsurf";  ///< ~marker_ns: namespace of the RViz markers
+};
+
+/// Reads every parameter from the private handle `pnh`; throws InputError naming the
+/// parameter (or the calibration file) and the problem.
+NodeParams loadParams(const ros::NodeHandle &pnh);
+
+/// "W:H" or one positive number -> W / H; throws InputError naming `what`.
+double parseAspectText(const std::string &what, const std::string &text);
+
+}  // namespace projsurf::ros_node

@@ -1,0 +1,450 @@
+// Drives projsurf_node through a real rosmaster (started by run_node_test.sh): publishes
+// simulated clouds (and tf for a moving robot), calls ~detect, and checks what the node
+// publishes. Also writes a rosbag and reads it back (Bag.*; needs no master).
+// Every wait is bounded.
+#include <geometry_msgs/PolygonStamped.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <rosbag/bag.h>
+#include <sensor_msgs/Image.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <std_msgs/String.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/transform_broadcaster.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "conversions.hpp"
+#include "projsurf/io/errors.hpp"
+#include "projsurf/io/rosbag_clouds.hpp"
+#include "sim_wall.hpp"
+
+using namespace projsurf;
+using namespace projsurf::sim_test;
+
+namespace {
+
+std::string env(const char *name, const std::string &fallback = "") {
+    const char *v = std::getenv(name);
+    return v != nullptr ? v : fallback;
+}
+
+/// Polls `done` until it is true or `seconds` pass (wall clock).
+bool waitFor(const std::function<bool()> &done, double seconds) {
+    const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(seconds);
+    while (ros::WallTime::now() < end) {
+        if (done()) return true;
+        ros::WallDuration(0.01).sleep();
+    }
+    return done();
+}
+
+/// Keeps the messages of one topic, by header stamp.
+template <typename Msg>
+struct Inbox {
+    std::mutex mutex;
+    std::map<ros::Time, Msg> by_stamp;
+    ros::Subscriber sub;
+
+    void open(ros::NodeHandle &nh, const std::string &topic) {
+        sub = nh.subscribe<Msg>(topic, 100, [this](const boost::shared_ptr<const Msg> &m) {
+            std::lock_guard<std::mutex> lock(mutex);
+            by_stamp[m->header.stamp] = *m;
+        });
+    }
+    bool waitStamp(const ros::Time &stamp, double seconds, Msg &out) {
+        const bool ok = waitFor([&] {
+            std::lock_guard<std::mutex> lock(mutex);
+            return by_stamp.count(stamp) > 0;
+        }, seconds);
+        if (!ok) return false;
+        std::lock_guard<std::mutex> lock(mutex);
+        out = by_stamp.at(stamp);
+        return true;
+    }
+    std::map<ros::Time, Msg> snapshot() {
+        std::lock_guard<std::mutex> lock(mutex);
+        return by_stamp;
+    }
+};
+
+std_msgs::Header header(const std::string &frame, const ros::Time &stamp) {
+    std_msgs::Header h;
+    h.frame_id = frame;
+    h.stamp = stamp;
+    return h;
+}
+
+std::array<Eigen::Vector3d, 4> corners(const geometry_msgs::PolygonStamped &p) {
+    std::array<Eigen::Vector3d, 4> c;
+    for (int i = 0; i < 4; ++i) c[i] = Eigen::Vector3d(p.polygon.points[i].x, p.polygon.points[i].y, p.polygon.points[i].z);
+    return c;
+}
+
+bool isBlack(const sensor_msgs::Image &img, int u, int v) {
+    const std::uint8_t *p = &img.data[static_cast<std::size_t>(v) * img.step + 3 * u];
+    return p[0] == 0 && p[1] == 0 && p[2] == 0;
+}
+
+class NodeTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        ASSERT_TRUE(ros::master::check()) << "no rosmaster at " << ros::master::getURI();
+        nh_ = std::make_unique<ros::NodeHandle>();
+        spinner_ = std::make_unique<ros::AsyncSpinner>(2);
+        spinner_->start();
+    }
+    void TearDown() override {
+        if (spinner_) spinner_->stop();
+    }
+    std::unique_ptr<ros::NodeHandle> nh_;
+    std::unique_ptr<ros::AsyncSpinner> spinner_;
+};
+
+// ------------------------------------------------------------------------------------------
+// On demand: the paper's start signal (section 5), answered with the outcome.
+
+TEST_F(NodeTest, DetectServiceFindsTheWallAndPublishesRectangleAndFramebuffer) {
+    const std::string ns = env("PROJSURF_ONESHOT_NS", "/oneshot");
+    Inbox<geometry_msgs::PolygonStamped> rects;
+    Inbox<sensor_msgs::Image> fbs;
+    rects.open(*nh_, ns + "/projsurf/rectangle");
+    fbs.open(*nh_, ns + "/projsurf/framebuffer");
+    std::mutex mutex;
+    std::vector<std::string> results;
+    std::vector<visualization_msgs::MarkerArray> markers;
+    ros::Subscriber rsub = nh_->subscribe<std_msgs::String>(ns + "/projsurf/result", 10, [&](const std_msgs::StringConstPtr &m) {
+        std::lock_guard<std::mutex> lock(mutex);
+        results.push_back(m->data);
+    });
+    ros::Subscriber msub = nh_->subscribe<visualization_msgs::MarkerArray>(
+        ns + "/projsurf/markers", 10, [&](const visualization_msgs::MarkerArrayConstPtr &m) {
+            std::lock_guard<std::mutex> lock(mutex);
+            markers.push_back(*m);
+        });
+    ros::Publisher pub = nh_->advertise<sensor_msgs::PointCloud2>(ns + "/points", 1, true);
+    const std::string service = ns + "/projsurf/detect";
+    ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(60.0))) << service << " never came up";
+    ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0)) << "the node never subscribed to points";
+
+    // Before any cloud: a clear answer, not a crash.
+    std_srvs::Trigger early;
+    ASSERT_TRUE(ros::service::call(service, early));
+    EXPECT_FALSE(early.response.success);
+    EXPECT_NE(early.response.message.find("no cloud"), std::string::npos) << early.response.message;
+
+    const ros::Time stamp = ros::Time::now();
+    pub.publish(ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", stamp)));
+    // The service answers on the latest cloud; wait until the node has it.
+    std_srvs::Trigger call;
+    ASSERT_TRUE(waitFor([&] {
+        call = std_srvs::Trigger();
+        return ros::service::call(service, call) && call.response.message.find("no cloud") == std::string::npos;
+    }, 20.0));
+    ASSERT_TRUE(call.response.success) << call.response.message;
+    EXPECT_FALSE(call.response.message.empty());
+
+    geometry_msgs::PolygonStamped rect;
+    ASSERT_TRUE(rects.waitStamp(stamp, 20.0, rect)) << "no ~rectangle for the cloud";
+    EXPECT_EQ(rect.header.frame_id, "camera_optical");
+    ASSERT_EQ(rect.polygon.points.size(), 4u);
+    const auto c = corners(rect);
+    // On the front wall, 2 m straight ahead (the camera looks at it square on).
+    for (const auto &p : c) EXPECT_NEAR(p.z(), 2.0, 0.03);
+    const double width = (c[1] - c[0]).norm(), height = (c[3] - c[0]).norm();
+    EXPECT_NEAR(width / height, 1280.0 / 800.0, 0.02) << "default aspect is the framebuffer's";
+    EXPECT_GT(width * height, 0.8) << "most of the ~1.43 x 0.85 m projector footprint should be used";
+    // Upright: the left edge runs along gravity (camera y), top-left is up-left.
+    EXPECT_GT((c[3] - c[0]).normalized().dot(Eigen::Vector3d(0, 1, 0)), std::cos(0.02));
+    EXPECT_LT(c[0].x(), c[1].x());
+    EXPECT_LT(c[0].y(), c[3].y());
+
+    sensor_msgs::Image fb;
+    ASSERT_TRUE(fbs.waitStamp(stamp, 20.0, fb)) << "no ~framebuffer for the cloud";
+    EXPECT_EQ(fb.encoding, "bgr8");
+    ASSERT_EQ(fb.width, 1280u);
+    ASSERT_EQ(fb.height, 800u);
+    // The picture fills exactly the rectangle's pixels in the framebuffer: just inside each
+    // corner it is lit, just outside (where that is still in the framebuffer) it is black.
+    const Projector proj = testProjector();
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    std::array<Eigen::Vector2d, 4> px;
+    for (int i = 0; i < 4; ++i) {
+        const auto q = proj.toPixel(c[i]);
+        ASSERT_TRUE(q.has_value());
+        px[i] = *q;
+        centre += 0.25 * px[i];
+    }
+    int outside_checked = 0;
+    for (int i = 0; i < 4; ++i) {
+        const Eigen::Vector2d dir = (px[i] - centre).normalized();
+        const Eigen::Vector2d in = px[i] - 8.0 * dir, out = px[i] + 8.0 * dir;
+        EXPECT_FALSE(isBlack(fb, static_cast<int>(std::lround(in.x())), static_cast<int>(std::lround(in.y()))))
+            << "corner " << i << " at " << px[i].transpose();
+        if (out.x() >= 0 && out.y() >= 0 && out.x() <= 1279 && out.y() <= 799) {
+            ++outside_checked;
+            EXPECT_TRUE(isBlack(fb, static_cast<int>(std::lround(out.x())), static_cast<int>(std::lround(out.y()))))
+                << "corner " << i;
+        }
+    }
+    EXPECT_GE(outside_checked, 1) << "the projector's keystone leaves black framebuffer corners";
+
+    // ~result is the contract's JSON for the same rectangle; ~markers show it.
+    ASSERT_TRUE(waitFor([&] {
+        std::lock_guard<std::mutex> lock(mutex);
+        return !results.empty() && !markers.empty();
+    }, 10.0));
+    std::lock_guard<std::mutex> lock(mutex);
+    const auto j = nlohmann::json::parse(results.back());
+    EXPECT_TRUE(j.at("found").get<bool>());
+    for (int i = 0; i < 4; ++i)
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR(j.at("rectangle").at("corners").at(i).at(k).get<double>(), c[i][k], 1e-4);
+    bool has_rect_marker = false;
+    for (const auto &m : markers.back().markers) has_rect_marker |= m.id == 3 && m.points.size() == 5;
+    EXPECT_TRUE(has_rect_marker);
+}
+
+TEST_F(NodeTest, DetectServiceSaysWhyWhenThereIsNoWall) {
+    const std::string ns = env("PROJSURF_ONESHOT_NS", "/oneshot");
+    Inbox<sensor_msgs::Image> fbs;
+    fbs.open(*nh_, ns + "/projsurf/framebuffer");
+    ros::Publisher pub = nh_->advertise<sensor_msgs::PointCloud2>(ns + "/points", 1, true);
+    const std::string service = ns + "/projsurf/detect";
+    ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(60.0)));
+    ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0));
+    SceneOptions floor_only;
+    floor_only.front_wall = false;
+    floor_only.side_wall = false;
+    const ros::Time stamp = ros::Time::now();
+    pub.publish(ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), floor_only), header("camera_optical", stamp)));
+    sensor_msgs::Image fb;
+    std_srvs::Trigger call;
+    // Call until the answer is about this cloud (its framebuffer carries the stamp).
+    ASSERT_TRUE(waitFor([&] {
+        call = std_srvs::Trigger();
+        return ros::service::call(service, call) && fbs.waitStamp(stamp, 0.5, fb);
+    }, 20.0));
+    EXPECT_FALSE(call.response.success);
+    EXPECT_FALSE(call.response.message.empty());
+    EXPECT_EQ(call.response.message.find("no cloud"), std::string::npos) << call.response.message;
+    // Nothing to show: the framebuffer is black.
+    ASSERT_EQ(fb.data.size(), 1280u * 800u * 3u);
+    EXPECT_TRUE(std::all_of(fb.data.begin(), fb.data.end(), [](std::uint8_t b) { return b == 0; }));
+}
+
+// ------------------------------------------------------------------------------------------
+// Continuous mode: a robot drives along the wall; the picture must stay put on it.
+
+TEST_F(NodeTest, ContinuousModeKeepsThePicturePutOnTheWallWhileTheRobotMoves) {
+    const std::string ns = env("PROJSURF_MOVING_NS", "/moving");
+    Inbox<geometry_msgs::PolygonStamped> rects;
+    Inbox<sensor_msgs::Image> fbs;
+    rects.open(*nh_, ns + "/projsurf/rectangle");
+    fbs.open(*nh_, ns + "/projsurf/framebuffer");
+    std::mutex mutex;
+    std::map<double, nlohmann::json> results;  // by stamp
+    ros::Subscriber rsub = nh_->subscribe<std_msgs::String>(ns + "/projsurf/result", 100, [&](const std_msgs::StringConstPtr &m) {
+        auto j = nlohmann::json::parse(m->data);
+        std::lock_guard<std::mutex> lock(mutex);
+        results[j.at("continuous").at("stamp").get<double>()] = j;
+    });
+    ros::Publisher pub = nh_->advertise<sensor_msgs::PointCloud2>(ns + "/points", 1);
+    tf2_ros::TransformBroadcaster tf;
+    ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 60.0)) << "the node never subscribed";
+
+    // Phase 1 (frames 0-29): 5 cm forward and 6 cm sideways, 1 deg of turn: the held picture
+    // still fits the projector and must not move. Phase 2 (30-59): 0.6 m sideways: it no
+    // longer fits and must move along the same wall (never to the side wall).
+    const int frames = 60, phase1 = 30;
+    std::map<ros::Time, Eigen::Isometry3d> poses;
+    int missing = 0;
+    for (int k = 0; k < frames; ++k) {
+        const double s1 = std::min(k, phase1 - 1) / double(phase1 - 1);
+        const double s2 = k < phase1 ? 0.0 : (k - phase1 + 1) / double(frames - phase1);
+        const Eigen::Isometry3d pose = cameraPose(0.05 * s1, 0.06 * s1 + 0.6 * s2, (1.0 * M_PI / 180.0) * s1);
+        const ros::Time stamp = ros::Time::now();
+        poses[stamp] = pose;
+        geometry_msgs::TransformStamped t;
+        t.header = header("odom", stamp);
+        t.child_frame_id = "camera_optical_moving";
+        t.transform.translation.x = pose.translation().x();
+        t.transform.translation.y = pose.translation().y();
+        t.transform.translation.z = pose.translation().z();
+        const Eigen::Quaterniond q(pose.linear());
+        t.transform.rotation.w = q.w();
+        t.transform.rotation.x = q.x();
+        t.transform.rotation.y = q.y();
+        t.transform.rotation.z = q.z();
+        tf.sendTransform(t);
+        ros::WallDuration(0.02).sleep();
+        SceneOptions scene;
+        scene.seed = 100 + k;
+        pub.publish(ros_node::toPointCloud2(renderScene(pose, scene), header("camera_optical_moving", stamp)));
+        // Lock-step with the node (2 shared cores in CI): wait for this frame's framebuffer.
+        sensor_msgs::Image fb;
+        if (!fbs.waitStamp(stamp, 10.0, fb)) ++missing;
+    }
+    EXPECT_LE(missing, 2) << "frames the node did not answer";
+
+    const auto got = rects.snapshot();
+    std::vector<std::array<Eigen::Vector3d, 4>> world1, world2;  // shown corners in odom, per phase
+    std::vector<Eigen::Vector3d> raw_center1;                    // the detector's own rectangle, phase 1
+    int k = 0;
+    for (const auto &[stamp, pose] : poses) {
+        const auto it = got.find(stamp);
+        if (it != got.end()) {
+            auto c = corners(it->second);
+            for (auto &p : c) p = pose * p;
+            (k < phase1 ? world1 : world2).push_back(c);
+        }
+        std::lock_guard<std::mutex> lock(mutex);
+        const auto r = results.find(stamp.toSec());
+        if (k < phase1 && r != results.end() && r->second.at("found").get<bool>()) {
+            Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+            for (int i = 0; i < 4; ++i)
+                for (int d = 0; d < 3; ++d) centre[d] += 0.25 * r->second["rectangle"]["corners"][i][d].get<double>();
+            raw_center1.push_back(pose * centre);
+        }
+        ++k;
+    }
+    ASSERT_GE(world1.size(), static_cast<std::size_t>(phase1 - 2));
+    ASSERT_GE(world2.size(), static_cast<std::size_t>(frames - phase1 - 2));
+
+    // Always on the front wall (x = 2 in odom), never the side wall.
+    for (const auto *phase : {&world1, &world2})
+        for (const auto &c : *phase)
+            for (const auto &p : c) EXPECT_NEAR(p.x(), 2.0, 0.03);
+
+    // Phase 1: every corner stays within the tolerance of where it was first shown.
+    const double tolerance = std::stod(env("PROJSURF_STEADY_TOLERANCE", "0.01"));  // m
+    double worst = 0.0;
+    for (const auto &c : world1)
+        for (int i = 0; i < 4; ++i) worst = std::max(worst, (c[i] - world1.front()[i]).norm());
+    EXPECT_LT(worst, tolerance) << "corners moved in the world while the robot moved 8 cm";
+    // ... while the detector's own best rectangle followed the robot.
+    ASSERT_GE(raw_center1.size(), 2u);
+    EXPECT_GT((raw_center1.back() - raw_center1.front()).norm(), 0.04);
+    std::printf("[ measured ] phase 1: worst corner drift %.4f m over %zu frames (raw detection moved %.3f m)\n", worst,
+                world1.size(), (raw_center1.back() - raw_center1.front()).norm());
+
+    // Phase 2: the picture had to move (the robot went 0.6 m sideways) and did, along the wall,
+    // ending where the robot now is (left of where it started).
+    const Eigen::Vector3d first = 0.25 * (world1.front()[0] + world1.front()[1] + world1.front()[2] + world1.front()[3]);
+    const Eigen::Vector3d last = 0.25 * (world2.back()[0] + world2.back()[1] + world2.back()[2] + world2.back()[3]);
+    EXPECT_GT(last.y() - first.y(), 0.3);
+    // ... and it moved in few jumps, not every frame.
+    int jumps = 0;
+    for (std::size_t i = 1; i < world2.size(); ++i)
+        if ((world2[i][0] - world2[i - 1][0]).norm() > tolerance) ++jumps;
+    EXPECT_LE(jumps, 6) << "the picture should move in steps when it must, not follow every frame";
+    std::printf("[ measured ] phase 2: centre moved %.3f m along the wall in %d jumps over %zu frames\n",
+                last.y() - first.y(), jumps, world2.size());
+}
+
+// ------------------------------------------------------------------------------------------
+// Recorded data: a bag written here and read back.
+
+class Bag : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = env("PROJSURF_TEST_TMP", "/tmp") + "/bag_" + std::to_string(::getpid());
+        ASSERT_EQ(std::system(("mkdir -p '" + dir_ + "'").c_str()), 0);
+        bag_path_ = dir_ + "/walk.bag";
+        rosbag::Bag bag(bag_path_, rosbag::bagmode::Write);
+        SceneOptions floor_only;
+        floor_only.front_wall = floor_only.side_wall = false;
+        const std::vector<std::pair<Eigen::Isometry3d, SceneOptions>> frames = {
+            {cameraPose(0, 0, 0), SceneOptions{}}, {cameraPose(0, 0, 0), floor_only}, {cameraPose(0.3, 0.2, 0.1), SceneOptions{}}};
+        for (std::size_t i = 0; i < frames.size(); ++i) {
+            const ros::Time t(100.0 + i);
+            clouds_.push_back(renderScene(frames[i].first, frames[i].second));
+            bag.write("/camera/points", t, ros_node::toPointCloud2(clouds_.back(), header("camera_optical", t)));
+            sensor_msgs::Image img;
+            img.header = header("camera_optical", t);
+            bag.write("/camera/rgb", t, img);
+        }
+        bag.close();
+    }
+    void TearDown() override { (void)std::system(("rm -rf '" + dir_ + "'").c_str()); }
+    std::string dir_, bag_path_;
+    std::vector<Cloud> clouds_;
+};
+
+TEST_F(Bag, EveryCloudOfTheTopicComesBackInOrder) {
+    std::vector<BagCloudInfo> infos;
+    std::vector<Cloud> got;
+    const std::size_t n = forEachBagCloud(bag_path_, "/camera/points", [&](const Cloud &c, const BagCloudInfo &i) {
+        got.push_back(c);
+        infos.push_back(i);
+    });
+    ASSERT_EQ(n, 3u);
+    ASSERT_EQ(got.size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(infos[i].index, i);
+        EXPECT_DOUBLE_EQ(infos[i].stamp, 100.0 + i);
+        EXPECT_EQ(infos[i].frame_id, "camera_optical");
+        EXPECT_EQ(got[i].width, 320);
+        EXPECT_EQ(got[i].height, 240);
+        ASSERT_EQ(got[i].size(), clouds_[i].size());
+        std::size_t same = 0;
+        for (std::size_t k = 0; k < got[i].size(); ++k)
+            same += (got[i].points[k] == clouds_[i].points[k]) ||
+                    (!isFinite(got[i].points[k]) && !isFinite(clouds_[i].points[k]));
+        EXPECT_EQ(same, got[i].size()) << "message " << i;
+    }
+}
+
+TEST_F(Bag, BadBagsAndTopicsAreInputErrorsNamingTheProblem) {
+    auto message = [&](const std::string &path, const std::string &topic) -> std::string {
+        try {
+            forEachBagCloud(path, topic, [](const Cloud &, const BagCloudInfo &) {});
+        } catch (const InputError &e) {
+            return e.what();
+        }
+        return "no error";
+    };
+    const std::string unknown = message(bag_path_, "/nope");
+    EXPECT_NE(unknown.find("/nope"), std::string::npos) << unknown;
+    EXPECT_NE(unknown.find("/camera/points"), std::string::npos) << "should list the cloud topics: " << unknown;
+    const std::string wrong = message(bag_path_, "/camera/rgb");
+    EXPECT_NE(wrong.find("sensor_msgs/Image"), std::string::npos) << wrong;
+    EXPECT_NE(message(dir_ + "/missing.bag", "/camera/points").find("missing.bag"), std::string::npos);
+    const std::string junk = dir_ + "/junk.bag";
+    std::ofstream(junk) << "this is not a bag\n";
+    EXPECT_NE(message(junk, "/camera/points").find("junk.bag"), std::string::npos);
+    // A bag cut short in the middle of its data.
+    const std::string cut = dir_ + "/cut.bag";
+    {
+        std::ifstream in(bag_path_, std::ios::binary);
+        std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+    }
+    EXPECT_NE(message(cut, "/camera/points").find("cut.bag"), std::string::npos);
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+    ::testing::InitGoogleTest(&argc, argv);
+    if (argc >= 3 && std::string(argv[1]) == "--write-calibration") {
+        writeTestCalibration(argv[2]);
+        return 0;
+    }
+    if (argc >= 3 && std::string(argv[1]) == "--wait-for-master") {
+        // run_node_test.sh: is the master up yet? (bounded by the given seconds)
+        ros::init(argc, argv, "projsurf_wait_master", ros::init_options::AnonymousName | ros::init_options::NoRosout);
+        const double seconds = std::stod(argv[2]);
+        return waitFor([] { return ros::master::check(); }, seconds) ? 0 : 1;
+    }
+    ros::init(argc, argv, "projsurf_test_client", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
+    return RUN_ALL_TESTS();
+}

@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# The ROS node test (ctest ros_node): a real rosmaster on a free loopback port, projsurf_node
+# twice (on demand, started by roslaunch with ros/launch/projsurf.launch; continuous, started
+# directly), and the C++ test client. Every wait is bounded; everything started here is
+# stopped on exit, whatever happens.
+# usage: run_node_test.sh ROS_BUILD_DIR TEST_CLIENT PROJSURF_CLI
+set -euo pipefail
+build=$1 client=$2
+tmp=$(mktemp -d /tmp/projsurf-ros-test.XXXXXX)
+pids=()
+
+stop_all() {
+    local pid i
+    # Interrupt first (roslaunch stops its nodes), give them up to 10 s, then kill.
+    for pid in "${pids[@]}"; do kill -INT "$pid" 2>/dev/null || true; done
+    for i in $(seq 100); do
+        local alive=0
+        for pid in "${pids[@]}"; do kill -0 "$pid" 2>/dev/null && alive=1; done
+        [ $alive = 0 ] && break
+        sleep 0.1
+    done
+    for pid in "${pids[@]}"; do kill -KILL "$pid" 2>/dev/null || true; done
+    for pid in "${pids[@]}"; do wait "$pid" 2>/dev/null || true; done
+}
+on_exit() {
+    local rc=$?
+    stop_all
+    if [ $rc != 0 ]; then
+        for f in "$tmp"/*.log; do echo "----- $f (tail)"; tail -n 30 "$f"; done
+    fi
+    rm -rf "$tmp"
+    exit $rc
+}
+trap on_exit EXIT
+trap 'exit 130' INT TERM
+
+# A free TCP port on loopback (the kernel picks it; a tiny race with other programs remains,
+# so the master's start is checked and retried on another port).
+free_port() {
+    local p
+    for _ in $(seq 50); do
+        p=$(( (RANDOM % 20000) + 30000 ))
+        if ! (exec 3<>"/dev/tcp/127.0.0.1/$p") 2>/dev/null; then echo "$p"; return; fi
+    done
+    echo "run_node_test: no free port found" >&2
+    return 1
+}
+
+export ROS_HOSTNAME=127.0.0.1
+unset ROS_IP ROS_NAMESPACE
+export ROS_HOME="$tmp/home" ROS_LOG_DIR="$tmp/rlog"
+export ROS_PACKAGE_PATH="$build"
+export PROJSURF_TEST_TMP="$tmp"
+
+started=0
+for attempt in 1 2 3; do
+    port=$(free_port)
+    export ROS_MASTER_URI="http://127.0.0.1:$port"
+    rosmaster --core -p "$port" >"$tmp/master.log" 2>&1 &
+    master=$!
+    if "$client" --wait-for-master 30 >/dev/null 2>&1; then
+        pids+=("$master")
+        started=1
+        break
+    fi
+    kill -KILL "$master" 2>/dev/null || true
+    wait "$master" 2>/dev/null || true
+done
+[ $started = 1 ] || { echo "run_node_test: rosmaster did not start"; exit 1; }
+echo "run_node_test: rosmaster at $ROS_MASTER_URI"
+
+"$client" --write-calibration "$tmp/calib.yaml"
+
+# On demand, through the launch file (as a user starts it).
+ROS_NAMESPACE=/oneshot roslaunch projsurf projsurf.launch calib:="$tmp/calib.yaml" \
+    >"$tmp/roslaunch.log" 2>&1 &
+pids+=($!)
+# Continuous mode with tf: the picture is kept put in odom, gravity comes from odom's -z.
+"$build/projsurf_node" __ns:=/moving __name:=projsurf _calib:="$tmp/calib.yaml" _continuous:=true \
+    _fixed_frame:=odom _gravity_frame:=odom _tf_timeout:=0.5 >"$tmp/continuous_node.log" 2>&1 &
+pids+=($!)
+
+export PROJSURF_ONESHOT_NS=/oneshot PROJSURF_MOVING_NS=/moving
+timeout --signal=INT --kill-after=10 240 "$client" --gtest_filter='NodeTest.*'

@@ -1,0 +1,33 @@
+#pragma once
+// A small simulated scene for the node tests: a room corner seen by a depth camera on a robot.
+// World frame "odom": x forward, y left, z up (ROS REP 103). The scene: a front wall x = 2 m,
+// a side wall y = -1.2 m (on the robot's right) and the floor z = 0. The camera sits 1 m above
+// the floor; its optical frame is x right, y down, z forward.
+#include <Eigen/Geometry>
+
+#include "projsurf/core/cloud.hpp"
+#include "projsurf/core/projector.hpp"
+
+namespace projsurf::sim_test {
+
+struct SceneOptions {
+    bool front_wall = true;
+    bool side_wall = true;
+    double noise_k = 1.425e-3;  ///< 1/m, sigma_z = k z^2 (Kinect-like)
+    unsigned seed = 1;
+};
+
+/// Pose of the camera's optical frame in odom for a robot at (x, y) with heading yaw (rad),
+/// camera 1 m above the floor, looking along the robot's heading.
+Eigen::Isometry3d cameraPose(double x, double y, double yaw);
+
+/// Organized 320x240 cloud (fx = fy = 262.5) of the scene from `odom_from_camera`, in the
+/// camera frame, NaN where a ray hits nothing within 8 m.
+Cloud renderScene(const Eigen::Isometry3d &odom_from_camera, const SceneOptions &options);
+
+/// The projector the tests calibrate with (the contract's example).
+Projector testProjector();
+/// Writes it as a calibration YAML.
+void writeTestCalibration(const std::string &path);
+
+}  // namespace projsurf::sim_test
