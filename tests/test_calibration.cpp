@@ -67,6 +67,12 @@ TEST(CalibrationDisc, CentroidOfANoisyDiscWithSpecks) {
     ASSERT_TRUE(big);
     EXPECT_LT((big->centroid - Eigen::Vector2d(400, 300)).norm(), 0.2);
     EXPECT_EQ(big->candidates, 2);
+    // A disc cut by the image border is not used: its centroid is not the disc's centre.
+    cv::Mat cut(480, 640, CV_8UC1, cv::Scalar(0));
+    cv::circle(cut, cv::Point(630, 240), 30, cv::Scalar(255), -1);
+    int at_border = 0;
+    EXPECT_FALSE(findDisc(cut, DiscConfig{}, &at_border));
+    EXPECT_EQ(at_border, 1);
 }
 
 TEST(CalibrationLift, ObliqueNoisyWallWithHoles) {

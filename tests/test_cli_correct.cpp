@@ -489,7 +489,9 @@ TEST(CliShow, FramebufferFullScreenUnderXvfb) {
     EXPECT_EQ(xwd0_status, 0);
     const cv::Mat shot0 = readXwd(xwd0);
     EXPECT_EQ(shot0.size(), cv::Size(640, 480));
-    if (!shot0.empty()) EXPECT_EQ(cv::countNonZero(shot0.reshape(1)), 0);
+    if (!shot0.empty()) {
+        EXPECT_EQ(cv::countNonZero(shot0.reshape(1)), 0);
+    }
     ASSERT_EQ(shot.size(), fb.size()) << "no screenshot of " << display;
     EXPECT_EQ(shown.status, 0) << shown.err;
     // The whole screen shows the framebuffer, pixel for pixel.

@@ -79,7 +79,8 @@ Eigen::Vector2d refineCentroid(const cv::Mat &grey, const std::vector<cv::Point>
 
 }  // namespace
 
-std::optional<DiscDetection> findDisc(const cv::Mat &image, const DiscConfig &config) {
+std::optional<DiscDetection> findDisc(const cv::Mat &image, const DiscConfig &config, int *cut_by_border) {
+    if (cut_by_border) *cut_by_border = 0;
     if (image.empty()) return std::nullopt;
     const cv::Mat grey = toGrey8(image);
     cv::Mat binary;  // paper 3.1.1: binarise ...
@@ -89,10 +90,13 @@ std::optional<DiscDetection> findDisc(const cv::Mat &image, const DiscConfig &co
             cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(config.opening_px, config.opening_px));
         cv::morphologyEx(binary, binary, cv::MORPH_OPEN, kernel);
     }
-    cv::Mat edges;  // ... Canny for the contour ...
-    cv::Canny(binary, edges, config.canny_low, config.canny_high);
+    // ... Canny for the contour (on a black margin, so that a blob cut by the image border
+    // still has a closed contour and can be recognised as cut) ...
+    cv::Mat padded, edges;
+    cv::copyMakeBorder(binary, padded, 2, 2, 2, 2, cv::BORDER_CONSTANT, cv::Scalar(0));
+    cv::Canny(padded, edges, config.canny_low, config.canny_high);
     std::vector<std::vector<cv::Point>> contours;
-    cv::findContours(edges, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
+    cv::findContours(edges, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE, cv::Point(-2, -2));
 
     std::optional<DiscDetection> best;
     int best_index = -1;
@@ -105,6 +109,11 @@ std::optional<DiscDetection> findDisc(const cv::Mat &image, const DiscConfig &co
         const double perimeter = cv::arcLength(c, true);
         const double circularity = perimeter > 0 ? 4.0 * kPi * area / (perimeter * perimeter) : 0.0;
         if (circularity < config.min_circularity) continue;
+        const cv::Rect box = cv::boundingRect(c);
+        if (box.x < 1 || box.y < 1 || box.x + box.width > grey.cols - 1 || box.y + box.height > grey.rows - 1) {
+            if (cut_by_border) ++*cut_by_border;
+            continue;
+        }
         if (best && best->area_px >= area) continue;
         best_index = static_cast<int>(&c - contours.data());
         DiscDetection d;
@@ -238,7 +247,11 @@ Calibration calibrateProjector(const std::vector<CaptureImages> &captures, const
                         "colour and depth must both be " + std::to_string(camera.width) + "x" +
                             std::to_string(camera.height) + " (camera.yaml), depth 16-bit single-channel");
         CaptureResult r;
-        const auto disc = findDisc(c.color, config.disc);
+        int cut = 0;
+        const auto disc = findDisc(c.color, config.disc, &cut);
+        if (!disc && cut > 0)
+            return fail(CalibrationFailure::NoDisc, k,
+                        "the disc is cut by the image border: take the capture with the whole disc in view");
         if (!disc)
             return fail(CalibrationFailure::NoDisc, k,
                         "no projected disc found (threshold " + std::to_string(config.disc.threshold) +

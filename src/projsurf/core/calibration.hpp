@@ -40,7 +40,10 @@ struct DiscDetection {
 /// image over the blob (the paper's "weighted average of the pixel intensities"), which is
 /// sub-pixel accurate where the contour's moments are biased by ~0.2 px. nullopt when there is
 /// no disc. Accepts 8-bit (or 16-bit) grey, BGR or BGRA images.
-std::optional<DiscDetection> findDisc(const cv::Mat &image, const DiscConfig &config = {});
+/// Blobs that touch the image border are skipped (their centroid would be off the disc's
+/// centre); `cut_by_border`, when given, receives how many round enough blobs that were.
+std::optional<DiscDetection> findDisc(const cv::Mat &image, const DiscConfig &config = {},
+                                      int *cut_by_border = nullptr);
 
 struct LiftConfig {
     double region_factor = 2.0;  ///< depth is sampled within this many disc radii of the centroid
