@@ -57,26 +57,35 @@ SurfaceCheckResult checkSurfacePaper(const Cloud &cloud, const PlaneFrame &frame
 }
 
 SurfaceCheckResult checkSurface(const Cloud &cloud, const PlaneFrame &frame, const Rectangle &rect,
-                                const DepthTolerance &tolerance, double max_fraction, int step) {
+                                const DepthTolerance &tolerance, double max_fraction, int step, const cv::Rect &roi) {
     const Box box = planeBox(frame, rect);
     const Eigen::Vector3f n = frame.normal.cast<float>();
     const float d = static_cast<float>(-frame.normal.dot(frame.origin));
     const Eigen::Vector3f o = frame.origin.cast<float>(), right = frame.right.cast<float>(), up = frame.up.cast<float>();
     SurfaceCheckResult r;
-    const int n_points = static_cast<int>(cloud.points.size());
-    for (int i = 0; i < n_points; i += step) {
+    auto visit = [&](int i) {
         const Point &p = cloud.points[i];
-        if (!isFinite(p)) continue;
+        if (!isFinite(p)) return;
         const float np = n.dot(p);
-        if (std::abs(np) < 1e-6f) continue;
+        if (std::abs(np) < 1e-6f) return;
         const float t = -d / np;  // camera ray through p meets the plane at t * p
-        if (t <= 0.0f) continue;
+        if (t <= 0.0f) return;
         const Eigen::Vector3f q = t * p - o;
         const Eigen::Vector2d uv(q.dot(right), q.dot(up));
-        if (!box.contains(uv)) continue;
+        if (!box.contains(uv)) return;
         ++r.points;
-        const float h = np + d;
-        if (std::abs(h) > tolerance.margin(p.z())) r.outlier_indices.push_back(i);
+        if (std::abs(np + d) > tolerance.margin(p.z())) r.outlier_indices.push_back(i);
+    };
+    const bool use_roi = cloud.organized() && roi.area() > 0;
+    const cv::Rect area = use_roi ? (roi & cv::Rect(0, 0, cloud.width, cloud.height)) : cv::Rect();
+    if (use_roi) {
+        for (int v = area.y; v < area.y + area.height; v += step)
+            for (int u = area.x; u < area.x + area.width; u += step) visit(v * cloud.width + u);
+    } else if (cloud.organized()) {
+        for (int v = 0; v < cloud.height; v += step)
+            for (int u = 0; u < cloud.width; u += step) visit(v * cloud.width + u);
+    } else {
+        for (int i = 0; i < static_cast<int>(cloud.points.size()); i += step) visit(i);
     }
     r.outliers = static_cast<int>(r.outlier_indices.size());
     r.accepted = r.points > 0 && r.outliers <= max_fraction * r.points;

@@ -1,6 +1,7 @@
 #pragma once
 // The 3-D surface checker (paper 3.2.3): are the points that fall inside the rectangle on
 // the plane?
+#include <opencv2/core.hpp>
 #include <vector>
 
 #include "projsurf/core/cloud.hpp"
@@ -45,8 +46,10 @@ struct DepthTolerance {
 /// Default: points seen through the rectangle (camera ray meets the plane inside it);
 /// outlier when farther from the plane than tolerance.margin(z); reject when the outlier
 /// share exceeds max_fraction. Independent of range and sensor resolution.
-/// `step` checks every step-th point (1 = all).
+/// `step` checks every step-th point (every step-th row and column of an organized cloud);
+/// a non-empty `roi` limits an organized cloud to those pixels (where the plane is seen).
 SurfaceCheckResult checkSurface(const Cloud &cloud, const PlaneFrame &frame, const Rectangle &rect,
-                                const DepthTolerance &tolerance, double max_fraction, int step = 1);
+                                const DepthTolerance &tolerance, double max_fraction, int step = 1,
+                                const cv::Rect &roi = cv::Rect());
 
 }  // namespace projsurf

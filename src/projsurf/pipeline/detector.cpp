@@ -32,7 +32,23 @@ struct Candidate {
     Rectangle rectangle;
     std::vector<std::vector<Eigen::Vector3d>> outlines;
     std::vector<int> inlier_indices;
+    cv::Rect image_box;  // organized clouds: the pixels where the plane is seen (empty = all)
 };
+
+/// Pixels of an organized cloud where the candidate's sampled inliers lie, grown by `margin`.
+cv::Rect imageBox(const Cloud &cloud, const std::vector<int> &indices, int margin) {
+    if (!cloud.organized() || indices.empty()) return {};
+    int u0 = cloud.width, v0 = cloud.height, u1 = -1, v1 = -1;
+    for (int i : indices) {
+        const int u = i % cloud.width, v = i / cloud.width;
+        u0 = std::min(u0, u);
+        v0 = std::min(v0, v);
+        u1 = std::max(u1, u);
+        v1 = std::max(v1, v);
+    }
+    return cv::Rect(u0 - margin, v0 - margin, u1 - u0 + 1 + 2 * margin, v1 - v0 + 1 + 2 * margin) &
+           cv::Rect(0, 0, cloud.width, cloud.height);
+}
 
 /// The projector workspace on the plane: the corner rays meet it (paper eqs. 5-6).
 bool workspaceOnPlane(const Eigen::Vector3d &origin, const std::array<Eigen::Vector3d, 4> &rays, Candidate &c) {
@@ -265,11 +281,13 @@ void observedFreeSpace(const Cloud &cloud, const Projector &projector, const Det
     };
     const int step = cloud.organized() ? std::max(1, cfg.support_stride) : 1;
     int support_points = 0;
+    // Organized clouds: only the pixels where this plane is seen (holes in it and things in
+    // front of it are seen there too); unorganized: every point.
     const int width = cloud.organized() ? cloud.width : static_cast<int>(cloud.points.size());
-    const int height = cloud.organized() ? cloud.height : 1;
-    for (int y = 0; y < height; y += step) {
+    const cv::Rect box = c.image_box.area() > 0 ? c.image_box : cv::Rect(0, 0, width, cloud.organized() ? cloud.height : 1);
+    for (int y = box.y; y < box.y + box.height; y += step) {
         const Point *row_pts = cloud.points.data() + static_cast<std::size_t>(y) * width;
-        for (int x = 0; x < width; x += step) {
+        for (int x = box.x; x < box.x + box.width; x += step) {
             const Point &p = row_pts[x];
             if (!isFinite(p)) continue;
             const float h = n.dot(p) + d;
@@ -453,6 +471,7 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         c.inliers = static_cast<int>(members[k].size());
         c.frame = makePlaneFrame(c.plane, cfg.gravity, centroid(pts, members[k]));
         for (int i : members[k]) c.inlier_indices.push_back(sample[i]);
+        c.image_box = imageBox(cloud, c.inlier_indices, cloud.width / 16);
     }
     det.timing_ms["planes"] = msSince(t);
     for (const auto &c : candidates) det.debug.candidates.push_back(c.plane);
@@ -462,10 +481,13 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         return det;
     }
 
-    // Free space and the biggest rectangle on each candidate.
+    // Free space, rectangle and surface check, candidate by candidate, the largest possible
+    // rectangle first; a candidate whose raster could not hold a bigger rectangle than the
+    // one already accepted is not looked at.
     t = Clock::now();
     const auto rays = projector.cornerRays();
     std::vector<int> usable;
+    std::vector<double> bound(candidates.size(), 0.0);
     for (int k = 0; k < static_cast<int>(candidates.size()); ++k) {
         Candidate &c = candidates[k];
         if (!workspaceOnPlane(projector.origin, rays, c)) continue;
@@ -485,39 +507,44 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         hi = hi.cwiseMin(ihi + Eigen::Vector2d::Constant(cfg.cell));
         if (!(lo.array() < hi.array()).all()) continue;
         c.raster = makeRasterFrame(lo, hi, cfg.cell);
-        observedFreeSpace(cloud, projector, cfg, c);
+        const double h = std::min(hi.y() - lo.y(), (hi.x() - lo.x()) / aspect);
+        bound[k] = aspect * h * h;
         usable.push_back(k);
     }
-    det.timing_ms["free_space"] = msSince(t);
+    std::sort(usable.begin(), usable.end(), [&](int a, int b) { return bound[a] > bound[b]; });
+    double ms_free = msSince(t), ms_rect = 0.0, ms_check = 0.0;
 
-    t = Clock::now();
-    std::vector<int> placed;
-    for (int k : usable)
-        if (placeRectangle(candidates[k], aspect)) {
-            refineRectangle(candidates[k], aspect);
-            placed.push_back(k);
-        }
-    std::sort(placed.begin(), placed.end(),
-              [&](int a, int b) { return candidates[a].rectangle.area() > candidates[b].rectangle.area(); });
-    det.timing_ms["rectangle"] = msSince(t);
-
-    // The biggest rectangle that passes the surface check.
-    t = Clock::now();
     const Candidate *chosen = nullptr;
     SurfaceCheckResult last;
-    for (int k : placed) {
-        const Candidate &c = candidates[k];
+    std::vector<int> placed;
+    for (int k : usable) {
+        if (chosen && bound[k] <= chosen->rectangle.area()) break;
+        Candidate &c = candidates[k];
+        t = Clock::now();
+        observedFreeSpace(cloud, projector, cfg, c);
+        ms_free += msSince(t);
+        t = Clock::now();
+        const bool ok = placeRectangle(c, aspect);
+        if (ok) refineRectangle(c, aspect);
+        ms_rect += msSince(t);
+        if (!ok) continue;
+        placed.push_back(k);
+        if (chosen && c.rectangle.area() <= chosen->rectangle.area()) continue;
         // Mixed pixels at depth edges along the border are not the surface's fault: the check
         // looks one raster cell inside the rectangle.
-        const Rectangle inner = shrink(c.frame, c.rectangle, c.raster.cell);
-        last = checkSurface(cloud, c.frame, inner, tol, cfg.max_outlier_fraction,
-                            cloud.organized() ? cfg.support_stride : 1);
-        if (last.accepted) {
-            chosen = &c;
-            break;
-        }
+        t = Clock::now();
+        const SurfaceCheckResult check = checkSurface(cloud, c.frame, shrink(c.frame, c.rectangle, c.raster.cell), tol,
+                                                      cfg.max_outlier_fraction, cloud.organized() ? cfg.support_stride : 1,
+                                                      c.image_box);
+        ms_check += msSince(t);
+        if (check.accepted || !chosen) last = check;
+        if (check.accepted) chosen = &c;
     }
-    det.timing_ms["surface_check"] = msSince(t);
+    det.timing_ms["free_space"] = ms_free;
+    det.timing_ms["rectangle"] = ms_rect;
+    det.timing_ms["surface_check"] = ms_check;
+    std::sort(placed.begin(), placed.end(),
+              [&](int a, int b) { return candidates[a].rectangle.area() > candidates[b].rectangle.area(); });
 
     const Candidate &shown = chosen ? *chosen : candidates[placed.empty() ? (usable.empty() ? 0 : usable[0]) : placed[0]];
     det.plane = shown.plane;
