@@ -317,7 +317,7 @@ TEST(SimTruth, RectangleAvoidsObstacles) {
     const double plain = computeGroundTruth(makeScenario("wall", 2.0, 17.19).scene, SensorModel(), projector,
                                             Eigen::Vector3d::UnitY())
                              .best.rectangle.area();
-    for (const std::string name : {"small_obstacles", "big_obstacle", "person"}) {
+    for (const std::string name : {"small_obstacles", "big_obstacle", "person", "desk"}) {
         const Scenario s = makeScenario(name, 2.0, 17.19);
         const GroundTruth gt = computeGroundTruth(s.scene, SensorModel(), projector, s.gravity);
         ASSERT_TRUE(gt.found) << name;

@@ -1,5 +1,6 @@
 #include "projsurf/sim/scenarios.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -77,7 +78,7 @@ void requireRoom(const std::string &name, const WallFrame &w, double needed_out)
 
 const std::vector<std::string> &scenarioNames() {
     static const std::vector<std::string> names{"wall",   "small_obstacles", "big_obstacle", "closet", "door",
-                                                "window", "poster",          "person",       "rolled"};
+                                                "window", "poster",          "person",       "rolled", "corner", "desk"};
     return names;
 }
 
@@ -181,6 +182,19 @@ Scenario makeScenario(const std::string &name, double distance, double angle_deg
         const double out = std::min(0.8, 0.45 * w.cameraOut());
         wallBox(scene, w, 0.10, 0.55, 0.0, 1.45, out, out + 0.25, kClothes, "person");
         wallBox(scene, w, 0.22, 0.42, 1.45, 1.70, out + 0.02, out + 0.24, kSkin, "person");
+    } else if (name == "corner") {
+        sc.description = "a room corner: a side wall at right angles, right of the axis, coming towards the robot";
+        addMainWall(scene, w, {});
+        addFloor(scene, w, 0.0, 8.0);
+        // At least 1 m right of the axis point and 0.8 m right of the camera.
+        const double s_side = std::max(1.0, -w.origin.dot(w.right) + 0.8);
+        addWall(scene, w.at(s_side, 0.0, 0.0), w.normal, w.up, 6.0, kWallHeight, {}, kWallPaint, "wall", 1);
+    } else if (name == "desk") {
+        sc.description = "a desk (1.2 wide, 0.75 tall, 0.6 m deep, modelled solid) against the wall below the axis";
+        requireRoom(name, w, 0.9);
+        addMainWall(scene, w, {});
+        addFloor(scene, w, 0.0, 8.0);
+        markVerticalFaces(scene, wallBox(scene, w, -0.7, 0.5, 0.0, 0.75, 0.0, 0.6, kWood, "desk"));
     } else {
         throw std::invalid_argument("unknown scenario '" + name + "'");
     }

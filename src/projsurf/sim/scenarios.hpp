@@ -44,14 +44,17 @@ const std::vector<std::string> &scenarioNames();
 ///                   the wall, a little left of the axis (paper 4.3 "BO")
 ///  closet           a 1.0 m wide, 0.6 m deep, 2.0 m tall closet against the wall, slightly
 ///                   left of the axis (paper 4.2, cluttered)
-/// The wall is projection surface 0; the vertical faces of the closet and of the big box
-/// (front and sides) are projection surfaces of their own; small boxes, the person, the
-/// poster and the floor are not (Quad::surface).
 ///  door             an open doorway right of the axis, a room behind it
 ///  window           a window hole left of the axis, nothing behind it in range
 ///  poster           an A1 poster 3 mm proud of the wall (flat: not an obstacle)
 ///  person           a person standing between the robot and the wall
 ///  rolled           the plain wall seen by a camera rolled by 4 degrees
+///  corner           a room corner: a second wall at right angles, at least 1 m right of the axis
+///  desk             a desk (1.2 x 0.75 x 0.6 m, solid) against the wall, hiding its lower part
+/// The wall is projection surface 0 (the corner's side wall and the room behind the door are
+/// surface 1); the vertical faces of the closet, the desk and the big box (front and sides)
+/// are projection surfaces of their own; small boxes, the person, the
+/// poster and the floor are not (Quad::surface).
 Scenario makeScenario(const std::string &name, double distance, double angle_deg);
 
 /// Rolls the camera (and the projector mounted on it) by `roll_deg` about its optical axis:
