@@ -2,6 +2,8 @@
 // for the paper's method and the default one, run detection on the real frames, and write a
 // Markdown report with charts beside the paper's published numbers.
 #include <chrono>
+#include <cmath>
+#include <thread>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -30,6 +32,16 @@ struct EvalOptions {
     bool no_progress = false;
 };
 
+/// The 1-minute load average (Linux), NaN when unknown.
+double loadAverage() {
+    double load = std::nan("");
+    if (FILE *f = std::fopen("/proc/loadavg", "r")) {
+        if (std::fscanf(f, "%lf", &load) != 1) load = std::nan("");
+        std::fclose(f);
+    }
+    return load;
+}
+
 /// "\r[#####.....] 42% closet 2.5 m -16.62 deg" on stderr.
 void progressBar(int done, int total, const std::string &what) {
     const int width = 30;
@@ -52,6 +64,7 @@ void run(const EvalOptions &o, const std::string &command) {
 
     const int rounds = o.quick ? std::min(o.rounds, 2) : o.rounds;
     const sim::EvalPlan plan = sim::paperEvalPlan(rounds, o.quick, o.seed);
+    const double load_before = loadAverage();
     const sim::Progress progress = o.no_progress ? sim::Progress() : sim::Progress(progressBar);
     const sim::EvalResults results = sim::runEval(plan, progress);
 
@@ -69,6 +82,13 @@ void run(const EvalOptions &o, const std::string &command) {
     if (progress && !frames.empty()) progress(static_cast<int>(frames.size()), static_cast<int>(frames.size()), "real frames");
     if (progress) std::fprintf(stderr, "\n");
     info.real_dir = frames.empty() ? "" : o.real_dir;
+    const double load_after = loadAverage();
+    if (!std::isnan(load_before) && !std::isnan(load_after)) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "1-minute load average %.1f at the start, %.1f at the end, %u hardware threads",
+                      load_before, load_after, std::thread::hardware_concurrency());
+        info.load = buf;
+    }
     info.real_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     fs::create_directories(out, ec);
