@@ -53,6 +53,19 @@ void progressBar(int done, int total, const std::string &what) {
     std::fflush(stderr);
 }
 
+/// The default real-frame folder: ../shared/data/real from the working directory (the
+/// repository root), else from the repository that holds the binary (build/projsurf).
+std::string defaultRealDir(const std::string &relative) {
+    std::error_code ec;
+    if (fs::is_directory(relative, ec)) return relative;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        const fs::path candidate = exe.parent_path().parent_path() / relative;
+        if (fs::is_directory(candidate, ec)) return candidate.lexically_normal().string();
+    }
+    return relative;
+}
+
 void run(const EvalOptions &o, const std::string &command) {
     if (o.out.empty()) throw InputError("--out", "an output directory is required");
     if (o.rounds < 1 || o.rounds > 100) throw InputError("--rounds", "must be between 1 and 100");
@@ -74,14 +87,15 @@ void run(const EvalOptions &o, const std::string &command) {
     info.command = command;
     info.quick = o.quick;
     const auto t0 = std::chrono::steady_clock::now();
-    const std::vector<std::string> frames = o.real_dir.empty() ? std::vector<std::string>{} : listFrameFolders(o.real_dir);
+    const std::string real_dir = o.real_dir_given ? o.real_dir : defaultRealDir(o.real_dir);
+    const std::vector<std::string> frames = real_dir.empty() ? std::vector<std::string>{} : listFrameFolders(real_dir);
     for (std::size_t i = 0; i < frames.size(); ++i) {
         if (progress) progress(static_cast<int>(i), static_cast<int>(frames.size()), "real frame " + fs::path(frames[i]).filename().string());
         gallery.push_back(detectRealFrame(frames[i], sim::exampleProjector(), DetectorConfig{}));
     }
     if (progress && !frames.empty()) progress(static_cast<int>(frames.size()), static_cast<int>(frames.size()), "real frames");
     if (progress) std::fprintf(stderr, "\n");
-    info.real_dir = frames.empty() ? "" : o.real_dir;
+    info.real_dir = frames.empty() ? "" : real_dir;
     const double load_after = loadAverage();
     if (!std::isnan(load_before) && !std::isnan(load_after)) {
         char buf[160];
