@@ -1,5 +1,6 @@
 #include "projsurf/io/calibration_report.hpp"
 
+#include <cstdio>
 #include <yaml-cpp/yaml.h>
 
 #include "projsurf/io/files.hpp"
@@ -8,9 +9,16 @@
 namespace projsurf {
 namespace {
 
+/// A number written with 10 significant digits (yaml-cpp would write 39.299999999999997).
+YAML::Node num(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return YAML::Node(std::string(buf));
+}
+
 YAML::Node flow(std::initializer_list<double> values) {
     YAML::Node n;
-    for (double v : values) n.push_back(v);
+    for (double v : values) n.push_back(num(v));
     n.SetStyle(YAML::EmitterStyle::Flow);
     return n;
 }
@@ -33,7 +41,11 @@ std::string calibrationVerdict(const AxisFit &axis) {
 
 std::string calibrationReportYaml(const Calibration &cal, const CalibrationProvenance &prov) {
     YAML::Node root;
-    YAML::Node p = calibrationNode(cal.projector);
+    YAML::Node p = calibrationNode(cal.projector);  // the contract's keys ...
+    const Projector &pr = cal.projector;             // ... with readable numbers
+    p["fov_deg"] = flow({pr.fov_h * 180.0 / 3.14159265358979323846, pr.fov_v * 180.0 / 3.14159265358979323846});
+    p["axis"]["origin"] = flow(pr.origin);
+    p["axis"]["direction"] = flow(pr.direction.normalized());
     // Unit directions from axis.origin through the framebuffer's outer corners, ordered
     // top-left, top-right, bottom-right, bottom-left. `pinhole` is the contract's model (used by
     // projsurf); `paper` is the Appendix's Euler-Rodrigues construction, for comparison.
@@ -53,24 +65,24 @@ std::string calibrationReportYaml(const Calibration &cal, const CalibrationProve
         "along the axis is a convention, not measured; fov_deg and resolution come from the "
         "command line, not from the captures";
     c["fit"]["method"] = "least-squares 3-D line (principal axis) through the disc centroids";
-    c["fit"]["rms_residual_m"] = cal.axis.rms_m;
-    c["fit"]["max_residual_m"] = cal.axis.max_m;
-    c["fit"]["spread_along_axis_m"] = cal.axis.spread_m;
+    c["fit"]["rms_residual_m"] = num(cal.axis.rms_m);
+    c["fit"]["max_residual_m"] = num(cal.axis.max_m);
+    c["fit"]["spread_along_axis_m"] = num(cal.axis.spread_m);
     c["fit"]["verdict"] = calibrationVerdict(cal.axis);
     for (std::size_t k = 0; k < cal.captures.size(); ++k) {
         const CaptureResult &r = cal.captures[k];
         YAML::Node n;
         n["rgb"] = k < prov.capture_names.size() ? prov.capture_names[k] : std::string();
         n["centroid_px"] = flow({r.disc.centroid.x(), r.disc.centroid.y()});
-        n["disc_radius_px"] = r.disc.radius_px;
-        n["disc_circularity"] = r.disc.circularity;
+        n["disc_radius_px"] = num(r.disc.radius_px);
+        n["disc_circularity"] = num(r.disc.circularity);
         n["bright_blobs"] = r.disc.candidates;
         n["centroid_m"] = flow(*r.lifted.point);
         n["depth_readings"] = r.lifted.valid_points;
         n["depth_region_px"] = r.lifted.region_points;
         n["depth_inliers"] = r.lifted.inliers;
-        n["local_plane_rms_m"] = r.lifted.plane_rms_m;
-        n["residual_m"] = r.residual_m;
+        n["local_plane_rms_m"] = num(r.lifted.plane_rms_m);
+        n["residual_m"] = num(r.residual_m);
         c["captures"].push_back(n);
     }
     root["calibration"] = c;
