@@ -4,6 +4,7 @@
 #include <std_msgs/String.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <cmath>
 #include <cstdio>
 #include <opencv2/imgcodecs.hpp>
 
@@ -131,24 +132,27 @@ SurfaceDetector &ProjsurfNode::detectorFor(const std_msgs::Header &header, std::
 void ProjsurfNode::publishBlack(const std_msgs::Header &header) {
     cv::Mat black(params_.projector.height, params_.projector.width, CV_8UC3, cv::Scalar::all(0));
     framebuffer_pub_.publish(toImageMsg(black, header));
+    writeFramebufferFile(black);
+}
+
+void ProjsurfNode::writeFramebufferFile(const cv::Mat &image) {
+    if (params_.framebuffer_file.empty()) return;
+    // For `projsurf show` on the projector's display; at most 5 writes a second.
+    const ros::WallTime now = ros::WallTime::now();
+    if ((now - last_file_write_).toSec() < 0.2) return;
+    try {
+        writeImageAtomic(params_.framebuffer_file, image);
+        last_file_write_ = now;
+    } catch (const InputError &e) {
+        ROS_WARN_THROTTLE(10.0, "projsurf_node: %s", e.what());
+    }
 }
 
 std::string ProjsurfNode::publishFramebuffer(const Rectangle &rect, const std_msgs::Header &header) {
     const Framebuffer fb = renderFramebuffer(params_.projector, rect, picture_, params_.keystone_tolerance_px);
     if (fb.image.empty()) return fb.problem;
     framebuffer_pub_.publish(toImageMsg(fb.image, header));
-    if (!params_.framebuffer_file.empty()) {
-        // For `projsurf show` on the projector's display; at most 5 writes a second.
-        const ros::WallTime now = ros::WallTime::now();
-        if ((now - last_file_write_).toSec() >= 0.2) {
-            try {
-                writeImageAtomic(params_.framebuffer_file, fb.image);
-                last_file_write_ = now;
-            } catch (const InputError &e) {
-                ROS_WARN_THROTTLE(10.0, "projsurf_node: %s", e.what());
-            }
-        }
-    }
+    writeFramebufferFile(fb.image);
     return {};
 }
 
@@ -197,6 +201,7 @@ bool ProjsurfNode::onDetect(std_srvs::Trigger::Request &, std_srvs::Trigger::Res
 }
 
 void ProjsurfNode::runContinuous() {
+    const ros::WallTime start = ros::WallTime::now();
     const std_msgs::Header header = cloud_header_;
     Eigen::Isometry3d fixed_from_camera = Eigen::Isometry3d::Identity();
     std::string problem;
@@ -215,20 +220,24 @@ void ProjsurfNode::runContinuous() {
         return;
     }
     const ContinuousMode::Output o = continuous_->update(det, cloud_, fixed_from_camera, detector.config());
+    // Re-warp every frame: the robot moved, so the same place on the wall has new pixels.
+    Framebuffer fb;
+    if (o.has_target) fb = renderFramebuffer(params_.projector, o.shown, picture_, params_.keystone_tolerance_px);
+    if (fb.image.empty()) fb.image = cv::Mat(params_.projector.height, params_.projector.width, CV_8UC3, cv::Scalar::all(0));
+    const double frame_ms = (ros::WallTime::now() - start).toSec() * 1e3;
 
     nlohmann::json j = detectionToJson(det, detector.config());
-    j["continuous"] = {{"event", toString(o.event)}, {"showing", o.has_target}, {"stamp", header.stamp.toSec()}};
+    j["continuous"] = {{"event", toString(o.event)},
+                       {"showing", o.has_target && fb.problem.empty()},
+                       {"stamp", header.stamp.toSec()},
+                       {"frame_ms", std::round(frame_ms * 1000.0) / 1000.0}};
     std_msgs::String json;
     json.data = j.dump();
     result_pub_.publish(json);
     markers_pub_.publish(toMarkers(det, o.has_target ? &o.shown : nullptr, header, params_.marker_ns));
-    if (o.has_target) {
-        rectangle_pub_.publish(toPolygon(o.shown, header));
-        const std::string why = publishFramebuffer(o.shown, header);
-        if (!why.empty()) publishBlack(header);  // held but out of the projector's reach for now
-    } else {
-        publishBlack(header);
-    }
+    if (o.has_target) rectangle_pub_.publish(toPolygon(o.shown, header));
+    framebuffer_pub_.publish(toImageMsg(fb.image, header));
+    writeFramebufferFile(fb.image);
     if (o.event != SteadyEvent::Kept && o.event != SteadyEvent::None)
         ROS_INFO("projsurf_node: continuous: %s", toString(o.event));
 
@@ -238,8 +247,8 @@ void ProjsurfNode::runContinuous() {
         if (dt > 0.0) rate_hz_ = rate_hz_ == 0.0 ? 1.0 / dt : 0.9 * rate_hz_ + 0.1 / dt;
     }
     last_frame_ = now;
-    ROS_INFO_THROTTLE(10.0, "projsurf_node: continuous mode at %.1f Hz, detection %.1f ms",
-                      rate_hz_, det.timing_ms.count("total") ? det.timing_ms.at("total") : 0.0);
+    ROS_INFO_THROTTLE(10.0, "projsurf_node: continuous mode: %.1f clouds/s in, %.1f ms per frame (detection %.1f ms)",
+                      rate_hz_, frame_ms, det.timing_ms.count("total") ? det.timing_ms.at("total") : 0.0);
 }
 
 }  // namespace projsurf::ros_node

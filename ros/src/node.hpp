@@ -49,6 +49,7 @@ private:
     /// Warps the picture into `rect` (camera frame) and publishes it; empty string on success.
     std::string publishFramebuffer(const Rectangle &rect, const std_msgs::Header &header);
     void publishBlack(const std_msgs::Header &header);
+    void writeFramebufferFile(const cv::Mat &image);
 
     NodeParams params_;
     ros::NodeHandle nh_, pnh_;
