@@ -14,6 +14,10 @@
 #include <tf2_ros/transform_broadcaster.h>
 #include <visualization_msgs/MarkerArray.h>
 
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <functional>
@@ -440,6 +444,60 @@ TEST_F(Bag, BadBagsAndTopicsAreInputErrorsNamingTheProblem) {
     EXPECT_NE(message(cut, "/camera/points").find("cut.bag"), std::string::npos);
 }
 
+
+/// Runs a shell command; returns its exit status and what it printed (stdout + stderr).
+std::pair<int, std::string> runCommand(const std::string &cmd) {
+    std::string out;
+    FILE *pipe = popen((cmd + " 2>&1").c_str(), "r");
+    if (pipe == nullptr) return {-1, out};
+    char buf[4096];
+    std::size_t n;
+    while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) out.append(buf, n);
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+TEST_F(Bag, DetectBagWritesOneJsonLinePerCloud) {
+    const std::string calib = dir_ + "/calib.yaml", out = dir_ + "/detections.jsonl";
+    writeTestCalibration(calib);
+    const std::string cli = PROJSURF_CLI;
+    const auto [rc, text] = runCommand("timeout 120 '" + cli + "' detect --bag '" + bag_path_ +
+                                       "' --topic /camera/points --calib '" + calib + "' --json '" + out + "'");
+    ASSERT_EQ(rc, 0) << text;
+    std::ifstream in(out);
+    std::vector<nlohmann::json> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(nlohmann::json::parse(line));
+    ASSERT_EQ(lines.size(), 3u);
+    // Wall, floor only, wall seen from elsewhere.
+    EXPECT_TRUE(lines[0].at("found").get<bool>());
+    EXPECT_FALSE(lines[1].at("found").get<bool>());
+    EXPECT_FALSE(lines[1].at("reason").get<std::string>().empty());
+    EXPECT_TRUE(lines[2].at("found").get<bool>());
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(lines[i].at("bag").at("index").get<std::size_t>(), i);
+        EXPECT_DOUBLE_EQ(lines[i].at("bag").at("stamp").get<double>(), 100.0 + i);
+        EXPECT_EQ(lines[i].at("bag").at("frame_id").get<std::string>(), "camera_optical");
+    }
+    // The first cloud looks square at the wall 2 m ahead.
+    for (const auto &c : lines[0].at("rectangle").at("corners")) EXPECT_NEAR(c.at(2).get<double>(), 2.0, 0.03);
+
+    // Without --json the lines go to stdout.
+    const auto [rc2, text2] = runCommand("timeout 120 '" + cli + "' detect --bag '" + bag_path_ +
+                                         "' --topic /camera/points --calib '" + calib + "'");
+    ASSERT_EQ(rc2, 0) << text2;
+    EXPECT_EQ(std::count(text2.begin(), text2.end(), '\n'), 3) << text2;
+
+    // Bad input: exit 2, one line naming the file and the problem, no output file.
+    const std::string out3 = dir_ + "/never.jsonl";
+    const auto [rc3, text3] = runCommand("timeout 60 '" + cli + "' detect --bag '" + bag_path_ +
+                                         "' --topic /nope --calib '" + calib + "' --json '" + out3 + "'");
+    EXPECT_EQ(rc3, 2);
+    EXPECT_NE(text3.find("projsurf: error: " + bag_path_ + ": no topic '/nope'"), std::string::npos) << text3;
+    EXPECT_FALSE(std::ifstream(out3).good());
+    const auto [rc4, text4] = runCommand("timeout 60 '" + cli + "' detect --bag '" + bag_path_ + "' --calib '" + calib + "'");
+    EXPECT_EQ(rc4, 2);
+    EXPECT_NE(text4.find("--topic"), std::string::npos) << text4;
+}
 }  // namespace
 
 int main(int argc, char **argv) {

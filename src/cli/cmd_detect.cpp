@@ -14,6 +14,7 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/overlay.hpp"
+#include "projsurf/io/rosbag_clouds.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace projsurf::cli {
@@ -21,13 +22,44 @@ namespace {
 
 struct DetectOptions {
     std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity, method = "default",
-        hull = "concave";
+        hull = "concave", bag, topic;
     DetectorConfig config;
 };
 
+/// --bag: one detection per cloud of the topic, one JSON object per line (JSON Lines), each
+/// with a "bag" key (index, stamp, frame_id). With --json the file is written once all
+/// messages were read (never a partial file); without, lines go to stdout as they come.
+void runBag(const DetectOptions &o, const DetectorConfig &base, const Projector &projector, bool auto_gravity) {
+    std::string lines;
+    std::size_t found = 0;
+    const std::size_t n = forEachBagCloud(o.bag, o.topic, [&](const Cloud &cloud, const BagCloudInfo &info) {
+        DetectorConfig cfg = base;
+        if (auto_gravity)
+            if (const auto g = estimateGravityFromFloor(cloud, cfg.gravity)) cfg.gravity = g->gravity;
+        const Detection det = detectSurface(cloud, projector, cfg);
+        nlohmann::json j = detectionToJson(det, cfg);
+        j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", o.topic}};
+        found += det.found ? 1 : 0;
+        if (o.json.empty()) std::cout << j.dump() << "\n" << std::flush;
+        else lines += j.dump() + "\n";
+    });
+    if (!o.json.empty()) {
+        writeFileAtomic(o.json, lines);
+        std::printf("%zu clouds on %s: %zu with a surface, %zu without\n", n, o.topic.c_str(), found, n - found);
+    }
+}
+
 void run(const DetectOptions &o) {
     // Validate every input before any work, and before any output is written.
-    if (o.cloud.empty() == o.depth.empty()) throw InputError("arguments", "give exactly one of --cloud FILE or --depth FILE");
+    if (!o.bag.empty()) {
+        if (!o.cloud.empty() || !o.depth.empty()) throw InputError("arguments", "give only one of --cloud, --depth or --bag");
+        if (o.topic.empty()) throw InputError("arguments", "--bag needs --topic (a sensor_msgs/PointCloud2 topic)");
+        if (!o.overlay.empty() || !o.rgb.empty()) throw InputError("arguments", "--overlay and --rgb are for one cloud, not --bag");
+    } else if (!o.topic.empty()) {
+        throw InputError("arguments", "--topic goes with --bag");
+    } else if (o.cloud.empty() == o.depth.empty()) {
+        throw InputError("arguments", "give exactly one of --cloud FILE, --depth FILE or --bag FILE");
+    }
     if (!o.depth.empty() && o.camera.empty()) throw InputError("arguments", "--depth needs --camera camera.yaml");
     DetectorConfig cfg = o.config;
     if (o.method == "paper") cfg.method = Method::Paper;
@@ -43,6 +75,7 @@ void run(const DetectOptions &o) {
         if (!out.empty()) requireWritableLocation(out);
 
     const Projector projector = readCalibration(o.calib);
+    if (!o.bag.empty()) return runBag(o, cfg, projector, auto_gravity);
     std::unique_ptr<CameraIntrinsics> camera;
     Cloud cloud;
     if (!o.cloud.empty()) {
@@ -86,6 +119,8 @@ void addDetectCommand(CLI::App &app) {
     sub->add_option("--cloud", o->cloud, "Point cloud (PCD or PLY, camera optical frame, metres)");
     sub->add_option("--depth", o->depth, "16-bit depth PNG (0 = no reading); needs --camera");
     sub->add_option("--camera", o->camera, "Camera intrinsics YAML for --depth");
+    sub->add_option("--bag", o->bag, "ROS 1 bag: detect on every cloud of --topic, one JSON line per message");
+    sub->add_option("--topic", o->topic, "sensor_msgs/PointCloud2 topic in --bag");
     sub->add_option("--rgb", o->rgb, "Colour PNG registered to the cloud, for the overlay");
     sub->add_option("--calib", o->calib, "Projector calibration YAML")->required();
     sub->add_option("--aspect", o->aspect, "Picture aspect ratio W:H (default: the framebuffer's)");
