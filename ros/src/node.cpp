@@ -10,6 +10,7 @@
 
 #include "conversions.hpp"
 #include "framebuffer.hpp"
+#include "projsurf/core/gravity.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -122,6 +123,10 @@ SurfaceDetector &ProjsurfNode::detectorFor(const std_msgs::Header &header, std::
         } else {
             problem += " (using ~gravity instead)";
         }
+    }
+    if (params_.gravity_auto && (params_.gravity_frame.empty() || !problem.empty())) {
+        // No IMU and no tf: "down" from the floor when one is in view, else a level camera.
+        if (const auto g = estimateGravityFromFloor(cloud_, Eigen::Vector3d(0.0, 1.0, 0.0))) config.gravity = g->gravity;
     }
     // The detector keeps scratch buffers between frames: rebuild it only when gravity moved.
     if (!detector_ || detector_->config().gravity.dot(config.gravity) < std::cos(1e-4))

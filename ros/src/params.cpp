@@ -105,7 +105,9 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
             throw InputError(name(pnh, "aspect"), "expected \"W:H\"");
         }
     }
-    if (pnh.hasParam("gravity")) c.gravity = parseGravity(pnh);
+    std::string gravity_text;
+    if (pnh.getParam("gravity", gravity_text) && gravity_text == "auto") p.gravity_auto = true;
+    else if (pnh.hasParam("gravity")) c.gravity = parseGravity(pnh);
     std::string method = "default", hull = "concave";
     get(pnh, "method", method);
     get(pnh, "hull", hull);
