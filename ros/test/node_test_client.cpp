@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <rosbag/bag.h>
+#include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
 #include <sensor_msgs/PointCloud2.h>
 #include <std_msgs/String.h>
@@ -18,7 +19,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -243,6 +246,77 @@ TEST_F(NodeTest, DetectServiceSaysWhyWhenThereIsNoWall) {
     // Nothing to show: the framebuffer is black.
     ASSERT_EQ(fb.data.size(), 1280u * 800u * 3u);
     EXPECT_TRUE(std::all_of(fb.data.begin(), fb.data.end(), [](std::uint8_t b) { return b == 0; }));
+}
+
+TEST_F(NodeTest, DepthImageInputAndThePictureFromTheImageTopic) {
+    const std::string ns = env("PROJSURF_ONESHOT_NS", "/oneshot");
+    Inbox<sensor_msgs::Image> fbs;
+    Inbox<geometry_msgs::PolygonStamped> rects;
+    fbs.open(*nh_, ns + "/projsurf/framebuffer");
+    rects.open(*nh_, ns + "/projsurf/rectangle");
+    ros::Publisher info_pub = nh_->advertise<sensor_msgs::CameraInfo>(ns + "/depth/camera_info", 1, true);
+    ros::Publisher depth_pub = nh_->advertise<sensor_msgs::Image>(ns + "/depth/image_rect", 1, true);
+    ros::Publisher picture_pub = nh_->advertise<sensor_msgs::Image>(ns + "/image", 1, true);
+    const std::string service = ns + "/projsurf/detect";
+    ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(60.0)));
+    ASSERT_TRUE(waitFor([&] {
+        return info_pub.getNumSubscribers() > 0 && depth_pub.getNumSubscribers() > 0 && picture_pub.getNumSubscribers() > 0;
+    }, 30.0));
+
+    // The picture: plain green, 640x400 (the framebuffer's aspect, so it fills the rectangle).
+    sensor_msgs::Image picture;
+    picture.header = header("", ros::Time::now());
+    picture.width = 640;
+    picture.height = 400;
+    picture.encoding = "rgb8";
+    picture.step = 640 * 3;
+    picture.data.assign(picture.step * picture.height, 0);
+    for (std::size_t i = 1; i < picture.data.size(); i += 3) picture.data[i] = 255;  // G of RGB
+    picture_pub.publish(picture);
+
+    // The same wall as a 16-bit depth image (mm) with its camera_info.
+    const Cloud cloud = renderScene(cameraPose(0, 0, 0), {});
+    const ros::Time stamp = ros::Time::now();
+    sensor_msgs::CameraInfo info;
+    info.header = header("camera_optical", stamp);
+    info.width = 320;
+    info.height = 240;
+    info.K = {262.5, 0.0, 159.5, 0.0, 262.5, 119.5, 0.0, 0.0, 1.0};
+    sensor_msgs::Image depth;
+    depth.header = info.header;
+    depth.width = 320;
+    depth.height = 240;
+    depth.encoding = "16UC1";
+    depth.step = 320 * 2;
+    depth.data.assign(depth.step * depth.height, 0);
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+        const float z = cloud.points[i].z();
+        const std::uint16_t mm = std::isfinite(z) ? static_cast<std::uint16_t>(std::lround(z * 1000.0f)) : 0;
+        std::memcpy(&depth.data[2 * i], &mm, 2);
+    }
+    info_pub.publish(info);
+    ros::WallDuration(0.2).sleep();  // camera_info first: the node pairs a depth image with the latest one
+    depth_pub.publish(depth);
+
+    sensor_msgs::Image fb;
+    std_srvs::Trigger call;
+    ASSERT_TRUE(waitFor([&] {
+        call = std_srvs::Trigger();
+        return ros::service::call(service, call) && fbs.waitStamp(stamp, 0.5, fb);
+    }, 20.0)) << "no framebuffer for the depth image";
+    EXPECT_TRUE(call.response.success) << call.response.message;
+    geometry_msgs::PolygonStamped rect;
+    ASSERT_TRUE(rects.waitStamp(stamp, 10.0, rect));
+    for (const auto &p : corners(rect)) EXPECT_NEAR(p.z(), 2.0, 0.03);
+    // The rectangle's centre shows the green picture (BGR in the framebuffer).
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (const auto &p : corners(rect)) centre += 0.25 * p;
+    const auto px = testProjector().toPixel(centre);
+    ASSERT_TRUE(px.has_value());
+    const std::uint8_t *bgr = &fb.data[static_cast<std::size_t>(std::lround(px->y())) * fb.step + 3 * std::lround(px->x())];
+    EXPECT_LT(bgr[0], 20);
+    EXPECT_GT(bgr[1], 235);
+    EXPECT_LT(bgr[2], 20);
 }
 
 // ------------------------------------------------------------------------------------------

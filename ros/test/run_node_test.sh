@@ -58,7 +58,7 @@ for attempt in 1 2 3; do
     export ROS_MASTER_URI="http://127.0.0.1:$port"
     rosmaster --core -p "$port" >"$tmp/master.log" 2>&1 &
     master=$!
-    if "$client" --wait-for-master 30 >/dev/null 2>&1; then
+    if "$client" --wait-for-master 20 >/dev/null 2>&1; then
         pids+=("$master")
         started=1
         break
@@ -81,4 +81,4 @@ pids+=($!)
 pids+=($!)
 
 export PROJSURF_ONESHOT_NS=/oneshot PROJSURF_MOVING_NS=/moving
-timeout --signal=INT --kill-after=10 240 "$client" --gtest_filter='NodeTest.*'
+timeout --signal=INT --kill-after=10 200 "$client" --gtest_filter='NodeTest.*'
