@@ -1,5 +1,7 @@
 #include "projsurf/io/real_gallery.hpp"
 
+#include "projsurf/core/gravity.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -52,7 +54,11 @@ GalleryEntry detectRealFrame(const std::string &folder, const Projector &project
         return g;
     }
     g.read = true;
-    const Detection det = detectSurface(cloud, projector, config);
+    // These recordings have no IMU: take "down" from the floor when one is in view
+    // (as `projsurf detect --gravity auto` does).
+    DetectorConfig cfg = config;
+    if (const auto gravity = estimateGravityFromFloor(cloud, cfg.gravity)) cfg.gravity = gravity->gravity;
+    const Detection det = detectSurface(cloud, projector, cfg);
     g.found = det.found;
     g.reason = det.reason;
     if (det.found) {
@@ -66,7 +72,7 @@ GalleryEntry detectRealFrame(const std::string &folder, const Projector &project
     g.outliers = det.surface_check.outliers;
     const auto total = det.timing_ms.find("total");
     g.time_ms = total != det.timing_ms.end() ? total->second : 0.0;
-    g.overlay = renderOverlay(cloud, det, config, &camera, color);
+    g.overlay = renderOverlay(cloud, det, cfg, &camera, color);
     return g;
 }
 
@@ -88,7 +94,7 @@ cv::Mat contactSheet(const std::vector<GalleryEntry> &entries, int columns, int 
         cv::copyMakeBorder(p, p, 4, 4, 4, 4, cv::BORDER_CONSTANT, cv::Scalar(255, 255, 255));
         panels.push_back(p);
     }
-    return tilePanels(panels, columns, "Detection on real RGB-D frames (default method, example calibration, no gravity)");
+    return tilePanels(panels, columns, "Detection on real RGB-D frames (default method, example calibration, gravity from the floor)");
 }
 
 }  // namespace projsurf

@@ -285,13 +285,18 @@ void observedFreeSpace(const Cloud &cloud, const Projector &projector, const Det
     // front of it are seen there too); unorganized: every point.
     const int width = cloud.organized() ? cloud.width : static_cast<int>(cloud.points.size());
     const cv::Rect box = c.image_box.area() > 0 ? c.image_box : cv::Rect(0, 0, width, cloud.organized() ? cloud.height : 1);
+    // DepthTolerance::band and ::margin, in float for the per-point loop.
+    const float band_k = static_cast<float>(tol.sigmas * tol.noise_k), band_min = static_cast<float>(tol.min_band),
+                band_max = static_cast<float>(tol.max_band), obstacle_bands = static_cast<float>(tol.obstacle_bands),
+                obstacle_min = static_cast<float>(tol.min_obstacle);
     for (int y = box.y; y < box.y + box.height; y += step) {
         const Point *row_pts = cloud.points.data() + static_cast<std::size_t>(y) * width;
         for (int x = box.x; x < box.x + box.width; x += step) {
             const Point &p = row_pts[x];
             if (!isFinite(p)) continue;
             const float h = n.dot(p) + d;
-            const float band = tol.band(p.z()), margin = tol.margin(p.z());
+            const float band = std::clamp(band_k * p.z() * p.z(), band_min, band_max);
+            const float margin = std::max(obstacle_bands * band, obstacle_min);
             int col, row;
             if (std::abs(h) <= band) {
                 if (cellOf(p - h * n, col, row)) {

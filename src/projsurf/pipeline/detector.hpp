@@ -50,7 +50,7 @@ struct DetectorConfig {
     double obstacle_bands = 2.0;        ///< off the plane by more than this many inlier bands = obstacle or hole
     double min_obstacle = 0.03;         ///< m, ... and by at least this much (paper 3.2.3 uses 0.05)
     double cell = 0.01;                 ///< m, free-space raster cell (area error < 0.05 m^2 at 3 m, measured)
-    int support_stride = 2;             ///< pixel step of the free-space pass on organized clouds
+    int support_stride = 2;             ///< pixel step of the free-space pass on organized clouds (3 lost 7% of the area behind a person)
     double max_outlier_fraction = 0.03; ///< share of checked points off the plane that rejects a rectangle
 
     DepthTolerance tolerance() const {
