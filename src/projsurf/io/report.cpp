@@ -624,7 +624,7 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
     } else {
         md << "Detection (default method) on every frame in `" << info.real_dir
            << "`, with the contract's example calibration (`sim::exampleProjector()`): these frames have no real "
-              "projector and no gravity, so gravity is the contract's default (a level camera) and the rectangle "
+              "projector and no IMU, so gravity is taken from the floor (as `detect --gravity auto` does) and the rectangle "
               "shows where that projector *would* project. No ground truth: look at the overlays. "
            << num(info.real_seconds, 1) << " s in all.\n\n";
         md << "![gallery](gallery/contact_sheet.png)\n\n";
