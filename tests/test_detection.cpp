@@ -1,6 +1,9 @@
 // Detection on simulated clouds with a known answer (the simulator's ground truth).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <random>
+
 #include "projsurf/core/gravity.hpp"
 #include "projsurf/pipeline/detector.hpp"
 #include "projsurf/sim/ground_truth.hpp"
@@ -151,4 +154,26 @@ TEST(Gravity, FromTheFloorOfARolledAndPitchedCamera) {
         for (int j = 0; j < 60; ++j) wall_only.points.emplace_back(-1.0f + 0.025f * i, -0.7f + 0.025f * j, 2.0f);
     wall_only.width = static_cast<int>(wall_only.points.size());
     EXPECT_FALSE(estimateGravityFromFloor(wall_only, Eigen::Vector3d::UnitY()).has_value());
+}
+
+TEST(Detection, UnorganizedCloudGivesTheSameAnswer) {
+    // The same frame without its pixel grid (as a PLY or a merged map would be): NaNs
+    // dropped, order shuffled.
+    sim::Scenario sc = sim::makeScenario("closet", 2.5, -16.62);
+    const Projector projector = sim::exampleProjector();
+    const sim::RgbdFrame frame = sim::renderFrame(sc.scene, sim::SensorModel{}, 9);
+    Cloud loose;
+    for (const auto &p : frame.cloud.points)
+        if (isFinite(p)) loose.points.push_back(p);
+    std::mt19937 rng(3);
+    std::shuffle(loose.points.begin(), loose.points.end(), rng);
+    loose.width = static_cast<int>(loose.points.size());
+    ASSERT_FALSE(loose.organized());
+    DetectorConfig cfg;
+    cfg.gravity = sc.gravity;
+    const Detection det = detectSurface(loose, projector, cfg);
+    const sim::GroundTruth truth = sim::computeGroundTruth(sc.scene, sim::SensorModel{}, projector, sc.gravity);
+    const sim::Score score = sim::scoreDetection(det, truth, projector, sc.gravity, projector.aspect());
+    EXPECT_TRUE(score.valid) << score.why;
+    EXPECT_TRUE(score.success) << score.area << " vs best " << score.best_area << ": " << score.why;
 }
