@@ -14,18 +14,7 @@
 namespace projsurf::ros_node {
 namespace enc = sensor_msgs::image_encodings;
 
-Cloud toCloud(const sensor_msgs::PointCloud2 &msg) {
-    PointCloud2View v;
-    v.width = msg.width;
-    v.height = msg.height;
-    v.is_bigendian = msg.is_bigendian != 0;
-    v.point_step = msg.point_step;
-    v.row_step = msg.row_step;
-    v.data = msg.data.data();
-    v.data_size = msg.data.size();
-    for (const auto &f : msg.fields) v.fields.push_back({f.name, f.offset, f.datatype, f.count});
-    return cloudFromPointCloud2(v, "points");
-}
+Cloud toCloud(const sensor_msgs::PointCloud2 &msg) { return cloudFromPointCloud2(viewOfMessage(msg), "points"); }
 
 Cloud toCloud(const sensor_msgs::Image &depth, const sensor_msgs::CameraInfo &info) {
     if (depth.width != info.width || depth.height != info.height)

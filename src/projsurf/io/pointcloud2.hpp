@@ -29,6 +29,23 @@ struct PointCloud2View {
     std::size_t data_size = 0;
 };
 
+/// A view of any message with sensor_msgs/PointCloud2's members (the ROS message itself,
+/// from the node or a bag), without depending on ROS here.
+template <class Message>
+PointCloud2View viewOfMessage(const Message &msg) {
+    PointCloud2View v;
+    v.width = msg.width;
+    v.height = msg.height;
+    v.is_bigendian = msg.is_bigendian != 0;
+    v.point_step = msg.point_step;
+    v.row_step = msg.row_step;
+    v.data = msg.data.data();
+    v.data_size = msg.data.size();
+    v.fields.reserve(msg.fields.size());
+    for (const auto &f : msg.fields) v.fields.push_back({f.name, f.offset, f.datatype, f.count});
+    return v;
+}
+
 /// Reads x, y, z (FLOAT32 or FLOAT64) into a cloud; keeps the grid when height > 1, NaN
 /// points included. Throws InputError(source, problem) when x/y/z are missing, of another
 /// type, big-endian on this host, or the sizes do not add up.

@@ -23,20 +23,6 @@ namespace {
 
 constexpr const char *kCloudType = "sensor_msgs/PointCloud2";
 
-PointCloud2View viewOf(const sensor_msgs::PointCloud2 &msg) {
-    PointCloud2View v;
-    v.width = msg.width;
-    v.height = msg.height;
-    v.is_bigendian = msg.is_bigendian != 0;
-    v.point_step = msg.point_step;
-    v.row_step = msg.row_step;
-    v.data = msg.data.data();
-    v.data_size = msg.data.size();
-    v.fields.reserve(msg.fields.size());
-    for (const auto &f : msg.fields) v.fields.push_back({f.name, f.offset, f.datatype, f.count});
-    return v;
-}
-
 }  // namespace
 
 std::size_t forEachBagCloud(const std::string &path, const std::string &topic,
@@ -81,7 +67,7 @@ std::size_t forEachBagCloud(const std::string &path, const std::string &topic,
             info.frame_id = msg->header.frame_id;
             info.index = index;
             const Cloud cloud =
-                cloudFromPointCloud2(viewOf(*msg), path + ":" + topic + "#" + std::to_string(index));
+                cloudFromPointCloud2(viewOfMessage(*msg), path + ":" + topic + "#" + std::to_string(index));
             visit(cloud, info);
             ++index;
         }
