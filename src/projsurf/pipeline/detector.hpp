@@ -84,8 +84,8 @@ struct Detection {
     DetectionDebug debug;
 };
 
-/// Runs detection; keeps scratch buffers between calls so a stream of frames does not
-/// allocate in steady state.
+/// Runs detection with a fixed projector and configuration. Each call still allocates its
+/// own working buffers (samples, rasters); reusing them across frames is open work (issue 5).
 class SurfaceDetector {
 public:
     SurfaceDetector(const Projector &projector, const DetectorConfig &config);
