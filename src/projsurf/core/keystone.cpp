@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdio>
 #include <opencv2/imgproc.hpp>
+#include <stdexcept>
+
+#include "projsurf/core/keystone_warper.hpp"
 
 namespace projsurf {
 
@@ -121,29 +124,16 @@ KeystoneResult computeKeystone(const Projector &projector, const Rectangle &rect
 }
 
 cv::Mat warpToFramebuffer(const cv::Mat &picture, const Keystone &k) {
-    cv::Mat fb(k.framebuffer, picture.type(), cv::Scalar::all(0));
-    if (picture.empty()) return fb;
+    if (picture.empty()) return cv::Mat(k.framebuffer, picture.type(), cv::Scalar::all(0));
+    if (picture.depth() == CV_8U) return KeystoneWarper(k).warp(picture);
+    // Other depths: OpenCV's warp after the same area-averaging prepass.
+    if (picture.size() != k.picture)
+        throw std::invalid_argument("keystone warp: the picture's size differs from the keystone's");
+    const WarpSource source = warpSourceFor(k, picture.size());
     cv::Mat src = picture;
-    cv::Matx33d H = k.homography;
-    // The least-shrunk edge of the picture; below half size, area-average first.
-    const double sx[4] = {-0.5, picture.cols - 0.5, picture.cols - 0.5, -0.5};
-    const double sy[4] = {-0.5, -0.5, picture.rows - 0.5, picture.rows - 0.5};
-    double scale = 0.0;
-    for (int i = 0; i < 4; ++i) {
-        const int j = (i + 1) % 4;
-        const double src_len = std::hypot(sx[j] - sx[i], sy[j] - sy[i]);
-        scale = std::max(scale, (k.picture_px[j] - k.picture_px[i]).norm() / src_len);
-    }
-    if (scale < 0.5) {
-        const int w2 = std::max(1, static_cast<int>(std::lround(picture.cols * scale)));
-        const int h2 = std::max(1, static_cast<int>(std::lround(picture.rows * scale)));
-        cv::resize(picture, src, cv::Size(w2, h2), 0, 0, cv::INTER_AREA);
-        const double fx = static_cast<double>(w2) / picture.cols, fy = static_cast<double>(h2) / picture.rows;
-        // small-picture coordinates x' = (x + 0.5) fx - 0.5; H' = H S^-1
-        const cv::Matx33d S_inv(1.0 / fx, 0, (0.5 - 0.5 * fx) / fx, 0, 1.0 / fy, (0.5 - 0.5 * fy) / fy, 0, 0, 1);
-        H = H * S_inv;
-    }
-    cv::warpPerspective(src, fb, cv::Mat(H), k.framebuffer, cv::INTER_LINEAR, cv::BORDER_CONSTANT,
+    if (source.reduce) cv::resize(picture, src, source.size, 0, 0, cv::INTER_AREA);
+    cv::Mat fb(k.framebuffer, picture.type(), cv::Scalar::all(0));
+    cv::warpPerspective(src, fb, cv::Mat(source.homography), k.framebuffer, cv::INTER_LINEAR, cv::BORDER_CONSTANT,
                         cv::Scalar::all(0));
     return fb;
 }

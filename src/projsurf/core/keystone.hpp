@@ -57,7 +57,9 @@ KeystoneResult computeKeystone(const Projector &projector, const Rectangle &rect
 
 /// The framebuffer: black, of the keystone's framebuffer size, with `picture` (same size as the
 /// keystone's picture, any 8-bit type) warped in (bilinear; pictures shrunk below half size
-/// are first reduced with area averaging to avoid aliasing).
+/// are first reduced with area averaging to avoid aliasing). A picture of another size throws
+/// std::invalid_argument. For many pictures with one keystone, KeystoneWarper
+/// (keystone_warper.hpp) does the per-keystone work once.
 cv::Mat warpToFramebuffer(const cv::Mat &picture, const Keystone &keystone);
 
 /// For evaluation: framebuffer pixels of a picture's outer corners when shown in `rect`

@@ -1,0 +1,73 @@
+#pragma once
+// The keystone warp for many pictures shown with one Keystone (a video, a steady detection):
+// where each framebuffer pixel samples the picture is worked out once, so a frame costs only
+// the bilinear gather over the pixels inside the picture's quad.
+#include <cstdint>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "projsurf/core/keystone.hpp"
+
+namespace projsurf {
+
+/// What the warp samples: pictures shrunk below half size (the least-shrunk edge of the picture
+/// under the homography) are first reduced with area averaging (cv::INTER_AREA) to `size`,
+/// and `homography` maps that reduced picture into the framebuffer. For other pictures
+/// `reduce` is false, `size` the picture's and `homography` the keystone's.
+struct WarpSource {
+    bool reduce = false;
+    cv::Size size;
+    cv::Matx33d homography;
+};
+WarpSource warpSourceFor(const Keystone &keystone, cv::Size picture);
+
+/// Warps pictures of `keystone.picture`'s size into its framebuffer; the result equals
+/// cv::warpPerspective(picture, keystone.homography, INTER_LINEAR, BORDER_CONSTANT 0) after the
+/// same area-averaging prepass as warpToFramebuffer (pictures shrunk below half size), up to
+/// the rounding of source positions (see keystone_warper.cpp).
+///
+/// Construction computes every framebuffer pixel's source position once (1/32 px fixed point,
+/// like OpenCV's remap), only for the pixels whose bilinear footprint touches the picture;
+/// the rest of the framebuffer is black. One object must not warp from two threads at once
+/// (it keeps a scratch image for the prepass).
+class KeystoneWarper {
+public:
+    explicit KeystoneWarper(const Keystone &keystone);
+
+    /// `picture`: 8-bit, any number of channels, of the keystone's picture size, else
+    /// std::invalid_argument. `framebuffer` is (re)allocated to the keystone's framebuffer
+    /// size and the picture's type, and every one of its pixels is written. Fast paths for 1,
+    /// 3 and 4 channels.
+    void warp(const cv::Mat &picture, cv::Mat &framebuffer);
+    cv::Mat warp(const cv::Mat &picture);
+
+    const Keystone &keystone() const { return keystone_; }
+    /// Framebuffer pixels that sample the picture (the rest stay black).
+    std::size_t pixelsInside() const { return fast_idx_.size() + slow_.size(); }
+
+private:
+    /// Consecutive framebuffer pixels of one row whose four bilinear neighbours are all inside
+    /// the picture; their data starts at fast_idx_[data].
+    struct Run {
+        int y, x, count, data;
+    };
+    /// A pixel at the picture's edge: some neighbours are outside and count as black.
+    struct Slow {
+        int y, x;
+        int sx, sy;        ///< top-left neighbour, picture pixels (may be -1)
+        std::uint8_t fx, fy;  ///< position inside the cell, 1/32 px
+    };
+
+    Keystone keystone_;
+    bool reduce_ = false;  ///< area-average the picture to source_ first
+    cv::Size source_;      ///< the size the positions refer to (the picture, or its reduction)
+    std::vector<int> span_begin_, span_end_;  ///< per framebuffer row: pixels [begin, end) may be lit
+    std::vector<Run> runs_;
+    std::vector<std::int32_t> fast_idx_;  ///< sy * source_.width + sx of the top-left neighbour
+    std::vector<std::uint16_t> fast_fxy_; ///< fx | fy << 8, 1/32 px
+    std::vector<Slow> slow_;
+    cv::Mat reduced_, contiguous_;  ///< scratch: the area-averaged picture; a continuous copy
+};
+
+}  // namespace projsurf
