@@ -234,6 +234,10 @@ KeystoneWarp::KeystoneWarp(const Projector &projector, Kind kind) : kind_(kind) 
             }
         cv::convertMaps(mapx, mapy, map1_, map2_, CV_16SC2);
     }
+    if (kind_ == Kind::Warper || kind_ == Kind::WarperPlain) {
+        warper_ = std::make_shared<KeystoneWarper>(*keystone_);
+        warper_->setSimd(kind_ == Kind::Warper);
+    }
 }
 
 void KeystoneWarp::run() {
@@ -250,14 +254,21 @@ void KeystoneWarp::run() {
         cv::remap(in_, roi, map1_, map2_, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar::all(0));
         break;
     }
+    case Kind::Warper:
+    case Kind::WarperPlain:
+        warper_->warp(in_, out_);
+        break;
     }
 }
 
 std::string KeystoneWarp::what() const {
     std::ostringstream out;
-    out << (kind_ == Kind::Bare    ? "cv::warpPerspective alone (same homography, output preallocated)"
-            : kind_ == Kind::Remap ? "cv::remap, fixed-point maps over the quad's bounding box built once (experiment)"
-                                   : "projsurf::warpToFramebuffer (keystone.hpp)")
+    out << (kind_ == Kind::Bare     ? "cv::warpPerspective alone (same homography, output preallocated)"
+            : kind_ == Kind::Remap  ? "cv::remap, fixed-point maps over the quad's bounding box built once (experiment)"
+            : kind_ == Kind::Warper ? "projsurf::KeystoneWarper built once per detection, warp per frame "
+                                      "(keystone_warper.hpp; projsurf correct's video path)"
+            : kind_ == Kind::WarperPlain ? "the same KeystoneWarper with its plain C++ blend instead of SSSE3"
+                                    : "projsurf::warpToFramebuffer (keystone.hpp; builds a KeystoneWarper per call)")
         << ", " << in_.cols << "x" << in_.rows << " BGR picture -> " << out_.cols << "x" << out_.rows
         << " framebuffer";
     return out.str();

@@ -9,6 +9,7 @@
 #include "projsurf/core/camera.hpp"
 #include "projsurf/core/cloud.hpp"
 #include "projsurf/core/keystone.hpp"
+#include "projsurf/core/keystone_warper.hpp"
 #include "projsurf/core/projector.hpp"
 
 namespace projsurf::bench {
@@ -67,10 +68,13 @@ std::string cpuModel();
 /// (computeKeystone once, warpToFramebuffer per frame), or through a bare cv::warpPerspective
 /// with the same homography into a preallocated framebuffer (Bare), or by cv::remap over the
 /// picture's bounding box with fixed-point maps built once per detection (Remap: what a
-/// video loop could do; the rest of the framebuffer stays black from the first frame).
+/// video loop could do; the rest of the framebuffer stays black from the first frame), or by
+/// projsurf's KeystoneWarper built once per detection (Warper: what `projsurf correct` does
+/// for a video; warpToFramebuffer builds one per call), the same with its plain C++ blend
+/// instead of SSSE3 (WarperPlain).
 class KeystoneWarp {
 public:
-    enum class Kind { Projsurf, Bare, Remap };
+    enum class Kind { Projsurf, Bare, Remap, Warper, WarperPlain };
     explicit KeystoneWarp(const Projector &projector, Kind kind = Kind::Projsurf);
     void run();
     const cv::Mat &output() const { return out_; }
@@ -82,6 +86,7 @@ private:
     cv::Mat map1_, map2_;  ///< Remap: CV_16SC2 + CV_16UC1 over roi_
     cv::Rect roi_;
     std::shared_ptr<const Keystone> keystone_;
+    std::shared_ptr<KeystoneWarper> warper_;  ///< Warper, WarperPlain
 };
 
 }  // namespace projsurf::bench

@@ -19,9 +19,11 @@
 
 #include <opencv2/imgproc.hpp>
 
-#if defined(__SSE2__) || defined(_M_X64)
+#if defined(__SSE2__)
 #include <emmintrin.h>
-#define PROJSURF_WARP_SSE2 1
+#endif
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+#include <tmmintrin.h>
 #endif
 
 namespace projsurf {
@@ -48,95 +50,131 @@ void blendSlow(const cv::Mat &src, int sx, int sy, int fx, int fy, uchar *out) {
     }
 }
 
-/// Plain C++ for `CN` channels (the reference for the SIMD versions below). `idx` is the
-/// top-left neighbour's pixel index in the continuous picture, `row` its row length in bytes.
+/// Per fast pixel, the bilinear weights as bytes: 32 - fx, fx, 32 - fy, fy (fx, fy in 1/32 px).
+std::uint32_t packWeights(int fx, int fy) {
+    return static_cast<std::uint32_t>((kSteps - fx) | fx << 8 | (kSteps - fy) << 16 | fy << 24);
+}
+
+/// Plain C++ for `CN` channels (0: `cn` at run time); the reference for the SIMD versions.
+/// `idx` is the top-left neighbour's pixel index in the continuous picture, `row` the
+/// picture's row length in bytes.
 template <int CN>
-void gatherScalar(const uchar *src, std::size_t row, const std::int32_t *idx, const std::uint16_t *fxy, uchar *dst,
+void gatherScalar(const uchar *src, std::size_t row, const std::int32_t *idx, const std::uint32_t *wts, uchar *dst,
                   int n, int cn_runtime = CN) {
     const int cn = CN > 0 ? CN : cn_runtime;
     for (int i = 0; i < n; ++i) {
         const uchar *p = src + static_cast<std::size_t>(idx[i]) * cn;
-        const int fx = fxy[i] & 0xff, fy = fxy[i] >> 8;
+        const std::uint32_t w = wts[i];
+        const int wx0 = w & 0xff, wx1 = (w >> 8) & 0xff, wy0 = (w >> 16) & 0xff, wy1 = w >> 24;
         for (int c = 0; c < cn; ++c) {
-            const int top = p[c] * (kSteps - fx) + p[c + cn] * fx;
-            const int bottom = p[row + c] * (kSteps - fx) + p[row + c + cn] * fx;
-            dst[c] = static_cast<uchar>((top * (kSteps - fy) + bottom * fy + kRound) >> (2 * kBits));
+            const int top = p[c] * wx0 + p[c + cn] * wx1;
+            const int bottom = p[row + c] * wx0 + p[row + c + cn] * wx1;
+            dst[c] = static_cast<uchar>((top * wy0 + bottom * wy1 + kRound) >> (2 * kBits));
         }
         dst += cn;
     }
 }
 
-#ifdef PROJSURF_WARP_SSE2
-/// Broadcast weights per 1/32 px fraction: 16-bit (32 - f) and f for the vertical blend,
-/// 16-bit pairs (32 - f, f) for the horizontal one (_mm_madd_epi16).
-struct Sse2Weights {
-    __m128i top[kSteps], bottom[kSteps], pair[kSteps];
-};
-const Sse2Weights &sse2Weights() {
-    static const Sse2Weights w = [] {
-        Sse2Weights t;
-        for (int f = 0; f < kSteps; ++f) {
-            t.top[f] = _mm_set1_epi16(static_cast<short>(kSteps - f));
-            t.bottom[f] = _mm_set1_epi16(static_cast<short>(f));
-            t.pair[f] = _mm_set1_epi32((f << 16) | (kSteps - f));
-        }
-        return t;
-    }();
-    return w;
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+// SSSE3 (pshufb, pmaddubsw), chosen at run time: the library is built for generic x86-64
+// (SSE2), and SSSE3 halves the instructions per pixel (CPUs without it take the plain path).
+#define PROJSURF_WARP_SSSE3 1
+
+bool haveSsse3() {
+    static const bool have = __builtin_cpu_supports("ssse3");
+    return have;
 }
 
-/// One pixel of 3 or 4 channels: `a`, `b` hold the left and right neighbours of the top and
-/// bottom rows as 16-bit lanes (left in lanes 0..CN-1, right from lane CN). Returns the
-/// blended pixel in the low CN bytes.
-template <int CN>
-inline std::uint32_t blendSse2(__m128i a, __m128i b, const Sse2Weights &w, int fx, int fy) {
-    // Vertical: at most 255 * 32, fits 16 bits.
-    const __m128i v = _mm_add_epi16(_mm_mullo_epi16(a, w.top[fy]), _mm_mullo_epi16(b, w.bottom[fy]));
-    // Horizontal: (left, right) 16-bit pairs per channel -> 32-bit sums.
-    const __m128i pairs = _mm_unpacklo_epi16(v, _mm_srli_si128(v, 2 * CN));
-    __m128i s = _mm_madd_epi16(pairs, w.pair[fx]);
+/// One pixel of 3 or 4 channels. `ab`: the top row's two neighbours in bytes 0..7 and the
+/// bottom row's in bytes 8..15 (where `order` expects them). Horizontal blend of byte pairs
+/// (left, right) with pmaddubsw, then vertical of 16-bit pairs (top, bottom) with pmaddwd:
+/// the same integer sum as the scalar path. Returns the pixel in the low 3 or 4 bytes (the
+/// 4th byte is 0 for 3 channels).
+__attribute__((target("ssse3"), always_inline)) inline std::uint32_t blendSsse3(__m128i ab, __m128i order, std::uint32_t w) {
+    const __m128i wv = _mm_cvtsi32_si128(static_cast<int>(w));
+    const __m128i wx = _mm_shuffle_epi8(wv, _mm_setr_epi8(0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1));
+    const __m128i wy = _mm_shuffle_epi8(wv, _mm_setr_epi8(2, -1, 3, -1, 2, -1, 3, -1, 2, -1, 3, -1, 2, -1, 3, -1));
+    const __m128i h = _mm_maddubs_epi16(_mm_shuffle_epi8(ab, order), wx);  // <= 255 * 32 per lane
+    __m128i s = _mm_madd_epi16(h, wy);
     s = _mm_srli_epi32(_mm_add_epi32(s, _mm_set1_epi32(kRound)), 2 * kBits);
     s = _mm_packs_epi32(s, s);
-    s = _mm_packus_epi16(s, s);
-    return static_cast<std::uint32_t>(_mm_cvtsi128_si32(s));
+    return static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_packus_epi16(s, s)));
 }
 
-void gather3Sse2(const uchar *src, std::size_t row, const std::int32_t *idx, const std::uint16_t *fxy, uchar *dst,
-                 int n, const Sse2Weights &w) {
-    const __m128i zero = _mm_setzero_si128();
-    auto pixel = [&](int i) {
-        const uchar *p = src + static_cast<std::size_t>(idx[i]) * 3;
-        // 8-byte loads: the top row from p (a full row follows it, so no overrun); the bottom
-        // row from 2 bytes early (its 6 wanted bytes may end the picture), shifted back.
-        const __m128i a = _mm_unpacklo_epi8(_mm_loadl_epi64(reinterpret_cast<const __m128i *>(p)), zero);
-        const __m128i b = _mm_srli_si128(
-            _mm_unpacklo_epi8(_mm_loadl_epi64(reinterpret_cast<const __m128i *>(p + row - 2)), zero), 4);
-        return blendSse2<3>(a, b, w, fxy[i] & 0xff, fxy[i] >> 8);
-    };
+/// Pixel i of a 3-channel run. The top row is loaded from the pixel (8 bytes: a full row
+/// follows, no overrun); the bottom row from 2 bytes early (its 6 wanted bytes may end the
+/// picture), so its B0 is byte 10.
+__attribute__((target("ssse3"), always_inline)) inline std::uint32_t pixel3Ssse3(const uchar *src, std::size_t row,
+                                                                                const std::int32_t *idx,
+                                                                                const std::uint32_t *wts, int i) {
+    // Pairs (top left, top right), (bottom left, bottom right) per channel.
+    const __m128i order = _mm_setr_epi8(0, 3, 10, 13, 1, 4, 11, 14, 2, 5, 12, 15, -1, -1, -1, -1);
+    const uchar *p = src + static_cast<std::size_t>(idx[i]) * 3;
+    const __m128i ab = _mm_unpacklo_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i *>(p)),
+                                          _mm_loadl_epi64(reinterpret_cast<const __m128i *>(p + row - 2)));
+    return blendSsse3(ab, order, wts[i]);
+}
+
+__attribute__((target("ssse3"))) void gather3Ssse3(const uchar *src, std::size_t row, const std::int32_t *idx,
+                                                   const std::uint32_t *wts, uchar *dst, int n) {
     // 4-byte stores (the 4th byte is overwritten by the next pixel), 3 bytes for the last.
-    for (int i = 0; i + 1 < n; ++i, dst += 3) {
-        const std::uint32_t px = pixel(i);
+    // (No lambdas in here: they would not inherit the SSSE3 target.)
+    int i = 0;
+    for (; i + 1 < n; ++i, dst += 3) {
+        const std::uint32_t px = pixel3Ssse3(src, row, idx, wts, i);
         std::memcpy(dst, &px, 4);
     }
-    if (n > 0) {
-        const std::uint32_t px = pixel(n - 1);
+    if (i < n) {
+        const std::uint32_t px = pixel3Ssse3(src, row, idx, wts, i);
         std::memcpy(dst, &px, 3);
     }
 }
 
-void gather4Sse2(const uchar *src, std::size_t row, const std::int32_t *idx, const std::uint16_t *fxy, uchar *dst,
-                 int n, const Sse2Weights &w) {
-    const __m128i zero = _mm_setzero_si128();
-    for (int i = 0; i < n; ++i) {
+__attribute__((target("ssse3"))) void gather4Ssse3(const uchar *src, std::size_t row, const std::int32_t *idx,
+                                                   const std::uint32_t *wts, uchar *dst, int n) {
+    const __m128i order = _mm_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15);
+    for (int i = 0; i < n; ++i, dst += 4) {
         const uchar *p = src + static_cast<std::size_t>(idx[i]) * 4;
-        const __m128i a = _mm_unpacklo_epi8(_mm_loadl_epi64(reinterpret_cast<const __m128i *>(p)), zero);
-        const __m128i b = _mm_unpacklo_epi8(_mm_loadl_epi64(reinterpret_cast<const __m128i *>(p + row)), zero);
-        const std::uint32_t px = blendSse2<4>(a, b, w, fxy[i] & 0xff, fxy[i] >> 8);
+        const __m128i ab = _mm_unpacklo_epi64(_mm_loadl_epi64(reinterpret_cast<const __m128i *>(p)),
+                                              _mm_loadl_epi64(reinterpret_cast<const __m128i *>(p + row)));
+        const std::uint32_t px = blendSsse3(ab, order, wts[i]);
         std::memcpy(dst, &px, 4);
-        dst += 4;
     }
 }
 #endif
+
+/// Source positions (1/32 px) of framebuffer pixels x0 .. x0 + n - 1 of row y, computed as
+/// cv::warpPerspective does: M (framebuffer -> source) in double, cvRound of 32 X / W, and
+/// W == 0 giving position 0.
+void rowPositions(const cv::Matx33d &M, int y, int x0, int n, int *X, int *Y) {
+    const double X0 = M(0, 1) * y + M(0, 2), Y0 = M(1, 1) * y + M(1, 2), W0 = M(2, 1) * y + M(2, 2);
+    const double lo = static_cast<double>(INT_MIN), hi = static_cast<double>(INT_MAX);
+    int i = 0;
+#ifdef __SSE2__
+    // Two pixels at a time; the same IEEE operations as the scalar loop below, and
+    // _mm_cvtpd_epi32 rounds like cvRound (to nearest, ties to even).
+    const __m128d m00 = _mm_set1_pd(M(0, 0)), m10 = _mm_set1_pd(M(1, 0)), m20 = _mm_set1_pd(M(2, 0));
+    const __m128d vx0 = _mm_set1_pd(X0), vy0 = _mm_set1_pd(Y0), vw0 = _mm_set1_pd(W0);
+    const __m128d steps = _mm_set1_pd(kSteps), zero = _mm_setzero_pd(), two = _mm_set1_pd(2.0);
+    const __m128d vlo = _mm_set1_pd(lo), vhi = _mm_set1_pd(hi);
+    __m128d xs = _mm_setr_pd(x0, x0 + 1.0);
+    for (; i + 2 <= n; i += 2, xs = _mm_add_pd(xs, two)) {
+        const __m128d w = _mm_add_pd(vw0, _mm_mul_pd(m20, xs));
+        const __m128d iw = _mm_and_pd(_mm_cmpneq_pd(w, zero), _mm_div_pd(steps, w));
+        const __m128d fx = _mm_max_pd(vlo, _mm_min_pd(vhi, _mm_mul_pd(_mm_add_pd(vx0, _mm_mul_pd(m00, xs)), iw)));
+        const __m128d fy = _mm_max_pd(vlo, _mm_min_pd(vhi, _mm_mul_pd(_mm_add_pd(vy0, _mm_mul_pd(m10, xs)), iw)));
+        _mm_storel_epi64(reinterpret_cast<__m128i *>(X + i), _mm_cvtpd_epi32(fx));
+        _mm_storel_epi64(reinterpret_cast<__m128i *>(Y + i), _mm_cvtpd_epi32(fy));
+    }
+#endif
+    for (; i < n; ++i) {
+        const double x = x0 + i;
+        double iw = W0 + M(2, 0) * x;
+        iw = iw != 0.0 ? kSteps / iw : 0.0;
+        X[i] = cvRound(std::max(lo, std::min(hi, (X0 + M(0, 0) * x) * iw)));
+        Y[i] = cvRound(std::max(lo, std::min(hi, (Y0 + M(1, 0) * x) * iw)));
+    }
+}
 
 }  // namespace
 
@@ -196,9 +234,18 @@ KeystoneWarper::KeystoneWarper(const Keystone &keystone) : keystone_(keystone) {
 
     span_begin_.assign(H, 0);
     span_end_.assign(H, 0);
-    const std::size_t guess = static_cast<std::size_t>(W) * H / 2;
-    fast_idx_.reserve(guess);
-    fast_fxy_.reserve(guess);
+    if (bounded) {  // room for the quad's pixels (shoelace area) and its edges
+        double area = 0.0, perimeter = 0.0;
+        for (int i = 0; i < 4; ++i) {
+            const int j = (i + 1) % 4;
+            area += 0.5 * (qx[i] * qy[j] - qx[j] * qy[i]);
+            perimeter += std::hypot(qx[j] - qx[i], qy[j] - qy[i]);
+        }
+        const double guess = std::min(static_cast<double>(W) * H, std::abs(area) + 2.0 * perimeter + 64.0);
+        fast_idx_.reserve(static_cast<std::size_t>(guess));
+        fast_w_.reserve(static_cast<std::size_t>(guess));
+    }
+    std::vector<int> X(W), Y(W);  // one row's source positions, 1/32 px
     for (int y = 0; y < H; ++y) {
         int x_first = 0, x_last = W - 1;
         if (bounded) {
@@ -217,55 +264,74 @@ KeystoneWarper::KeystoneWarper(const Keystone &keystone) : keystone_(keystone) {
             x_first = static_cast<int>(std::clamp(std::floor(xa) - 2.0, 0.0, W - 1.0));
             x_last = static_cast<int>(std::clamp(std::ceil(xb) + 2.0, 0.0, W - 1.0));
         }
-        // Source positions exactly as cv::warpPerspective computes them.
-        const double X0 = M(0, 1) * y + M(0, 2), Y0 = M(1, 1) * y + M(1, 2), W0 = M(2, 1) * y + M(2, 2);
-        int lit_begin = -1, lit_end = -1;
-        int run_start = -1;
-        const std::size_t slow_row_start = slow_.size();
-        auto closeRun = [&](int x_end) {
-            if (run_start < 0) return;
-            const int count = x_end - run_start;
-            runs_.push_back({y, run_start, count, static_cast<int>(fast_idx_.size()) - count});
-            run_start = -1;
+        const int n = x_last - x_first + 1;
+        rowPositions(M, y, x_first, n, X.data(), Y.data());
+        // Lit: the bilinear footprint touches the picture (top-left neighbour in [-1, w-1]).
+        // Fast: all four neighbours inside (top-left in [0, w-2] x [0, h-2]).
+        auto lit = [&](int i) {
+            const int sx = X[i] >> kBits, sy = Y[i] >> kBits;  // arithmetic shift: floor
+            return sx >= -1 && sx <= w - 1 && sy >= -1 && sy <= h - 1;
         };
-        for (int x = x_first; x <= x_last; ++x) {
-            double iw = W0 + M(2, 0) * x;
-            iw = iw != 0.0 ? kSteps / iw : 0.0;
-            const double fX = std::max(static_cast<double>(INT_MIN), std::min(static_cast<double>(INT_MAX), (X0 + M(0, 0) * x) * iw));
-            const double fY = std::max(static_cast<double>(INT_MIN), std::min(static_cast<double>(INT_MAX), (Y0 + M(1, 0) * x) * iw));
-            const int X = cvRound(fX), Y = cvRound(fY);
-            const int sx = X >> kBits, sy = Y >> kBits;  // arithmetic shift: floor
-            const int fx = X & (kSteps - 1), fy = Y & (kSteps - 1);
-            const bool lit = sx >= -1 && sx <= w - 1 && sy >= -1 && sy <= h - 1;
-            const bool fast = sx >= 0 && sx <= w - 2 && sy >= 0 && sy <= h - 2;
-            if (lit) {
-                if (lit_begin < 0) lit_begin = x;
-                lit_end = x + 1;
+        auto fast = [&](int i) {
+            const int sx = X[i] >> kBits, sy = Y[i] >> kBits;
+            return sx >= 0 && sx <= w - 2 && sy >= 0 && sy <= h - 2;
+        };
+        auto addSlow = [&](int i) {
+            slow_.push_back({y, x_first + i, X[i] >> kBits, Y[i] >> kBits, static_cast<std::uint8_t>(X[i] & (kSteps - 1)),
+                             static_cast<std::uint8_t>(Y[i] & (kSteps - 1))});
+        };
+        // Fast pixels [begin, end) as one run; false (and nothing added) if one is not fast.
+        auto addRun = [&](int begin, int end) {
+            const std::size_t at = fast_idx_.size();
+            fast_idx_.resize(at + (end - begin));
+            fast_w_.resize(at + (end - begin));
+            std::int32_t *idx = fast_idx_.data() + at;
+            std::uint32_t *wts = fast_w_.data() + at;
+            unsigned outside = 0;
+            for (int i = begin; i < end; ++i) {
+                const int sx = X[i] >> kBits, sy = Y[i] >> kBits;
+                outside |= static_cast<unsigned>(sx > w - 2) | static_cast<unsigned>(sx < 0) |
+                           static_cast<unsigned>(sy > h - 2) | static_cast<unsigned>(sy < 0);
+                idx[i - begin] = sy * w + sx;
+                wts[i - begin] = packWeights(X[i] & (kSteps - 1), Y[i] & (kSteps - 1));
             }
-            if (fast) {
-                if (run_start < 0) run_start = x;
-                fast_idx_.push_back(sy * w + sx);
-                fast_fxy_.push_back(static_cast<std::uint16_t>(fx | fy << 8));
-            } else {
-                closeRun(x);
-                // Kept only when inside the lit span (trimmed below); an unlit pixel between
-                // lit ones (not expected: the positions are monotonic along a row) comes out black.
-                slow_.push_back({y, x, sx, sy, static_cast<std::uint8_t>(fx), static_cast<std::uint8_t>(fy)});
+            if (outside) {
+                fast_idx_.resize(at);
+                fast_w_.resize(at);
+                return false;
+            }
+            runs_.push_back({y, x_first + begin, end - begin, static_cast<int>(at)});
+            return true;
+        };
+        // The lit span from both ends, then the fast pixels inside it from both ends.
+        int lit_first = 0, lit_last = n - 1;
+        while (lit_first < n && !lit(lit_first)) ++lit_first;
+        if (lit_first == n) continue;
+        while (!lit(lit_last)) --lit_last;
+        span_begin_[y] = x_first + lit_first;
+        span_end_[y] = x_first + lit_last + 1;
+        int fast_first = lit_first, fast_last = lit_last;
+        while (fast_first <= lit_last && !fast(fast_first)) ++fast_first;
+        while (fast_last >= fast_first && !fast(fast_last)) --fast_last;
+        if (fast_first > fast_last || addRun(fast_first, fast_last + 1)) {
+            // The usual row: edge pixels, one run of fast ones, edge pixels.
+            for (int i = lit_first; i < fast_first; ++i) addSlow(i);
+            for (int i = std::max(fast_first, fast_last + 1); i <= lit_last; ++i) addSlow(i);
+        } else {
+            // Fast pixels in several runs (not expected: the positions are monotonic along a
+            // row); everything else in the lit span on the slow path, black where unlit.
+            int run_start = -1;
+            for (int i = lit_first; i <= lit_last + 1; ++i) {
+                const bool in_run = i <= lit_last && fast(i);
+                if (in_run && run_start < 0) run_start = i;
+                if (!in_run && run_start >= 0) {
+                    addRun(run_start, i);
+                    run_start = -1;
+                }
+                if (!in_run && i <= lit_last) addSlow(i);
             }
         }
-        closeRun(x_last + 1);
-        if (lit_begin < 0) {
-            slow_.resize(slow_row_start);
-            continue;
-        }
-        span_begin_[y] = lit_begin;
-        span_end_[y] = lit_end;
-        slow_.erase(std::remove_if(slow_.begin() + static_cast<std::ptrdiff_t>(slow_row_start), slow_.end(),
-                                   [&](const Slow &s) { return s.x < lit_begin || s.x >= lit_end; }),
-                    slow_.end());
     }
-    fast_idx_.shrink_to_fit();
-    fast_fxy_.shrink_to_fit();
 }
 
 void KeystoneWarper::warp(const cv::Mat &picture, cv::Mat &framebuffer) {
@@ -297,34 +363,35 @@ void KeystoneWarper::warp(const cv::Mat &picture, cv::Mat &framebuffer) {
     }
     const uchar *base = src->ptr<uchar>();
     const std::size_t row_bytes = static_cast<std::size_t>(src->cols) * cn;
-#ifdef PROJSURF_WARP_SSE2
-    const Sse2Weights &weights = sse2Weights();
+#ifdef PROJSURF_WARP_SSSE3
+    const bool simd = simd_ && haveSsse3();
 #endif
     for (const Run &r : runs_) {
         uchar *dst = framebuffer.ptr<uchar>(r.y) + static_cast<std::size_t>(r.x) * cn;
         const std::int32_t *idx = fast_idx_.data() + r.data;
-        const std::uint16_t *fxy = fast_fxy_.data() + r.data;
+        const std::uint32_t *wts = fast_w_.data() + r.data;
+#ifdef PROJSURF_WARP_SSSE3
+        if (simd && cn == 3) {
+            gather3Ssse3(base, row_bytes, idx, wts, dst, r.count);
+            continue;
+        }
+        if (simd && cn == 4) {
+            gather4Ssse3(base, row_bytes, idx, wts, dst, r.count);
+            continue;
+        }
+#endif
         switch (cn) {
         case 1:
-            gatherScalar<1>(base, row_bytes, idx, fxy, dst, r.count);
+            gatherScalar<1>(base, row_bytes, idx, wts, dst, r.count);
             break;
-#ifdef PROJSURF_WARP_SSE2
         case 3:
-            gather3Sse2(base, row_bytes, idx, fxy, dst, r.count, weights);
+            gatherScalar<3>(base, row_bytes, idx, wts, dst, r.count);
             break;
         case 4:
-            gather4Sse2(base, row_bytes, idx, fxy, dst, r.count, weights);
+            gatherScalar<4>(base, row_bytes, idx, wts, dst, r.count);
             break;
-#else
-        case 3:
-            gatherScalar<3>(base, row_bytes, idx, fxy, dst, r.count);
-            break;
-        case 4:
-            gatherScalar<4>(base, row_bytes, idx, fxy, dst, r.count);
-            break;
-#endif
         default:
-            gatherScalar<0>(base, row_bytes, idx, fxy, dst, r.count, cn);
+            gatherScalar<0>(base, row_bytes, idx, wts, dst, r.count, cn);
         }
     }
     for (const Slow &s : slow_)

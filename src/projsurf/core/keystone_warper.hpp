@@ -38,9 +38,13 @@ public:
     /// `picture`: 8-bit, any number of channels, of the keystone's picture size, else
     /// std::invalid_argument. `framebuffer` is (re)allocated to the keystone's framebuffer
     /// size and the picture's type, and every one of its pixels is written. Fast paths for 1,
-    /// 3 and 4 channels.
+    /// 3 and 4 channels (SSSE3 when the CPU has it; plain C++ otherwise).
     void warp(const cv::Mat &picture, cv::Mat &framebuffer);
     cv::Mat warp(const cv::Mat &picture);
+
+    /// For tests and benchmarks: false makes warp() blend with the plain C++ loop instead of
+    /// the SSSE3 one (used on x86 CPUs that have it, checked at run time). Same result.
+    void setSimd(bool on) { simd_ = on; }
 
     const Keystone &keystone() const { return keystone_; }
     /// Framebuffer pixels that sample the picture (the rest stay black).
@@ -61,11 +65,12 @@ private:
 
     Keystone keystone_;
     bool reduce_ = false;  ///< area-average the picture to source_ first
+    bool simd_ = true;
     cv::Size source_;      ///< the size the positions refer to (the picture, or its reduction)
     std::vector<int> span_begin_, span_end_;  ///< per framebuffer row: pixels [begin, end) may be lit
     std::vector<Run> runs_;
     std::vector<std::int32_t> fast_idx_;  ///< sy * source_.width + sx of the top-left neighbour
-    std::vector<std::uint16_t> fast_fxy_; ///< fx | fy << 8, 1/32 px
+    std::vector<std::uint32_t> fast_w_;   ///< weight bytes 32 - fx, fx, 32 - fy, fy (1/32 px)
     std::vector<Slow> slow_;
     cv::Mat reduced_, contiguous_;  ///< scratch: the area-averaged picture; a continuous copy
 };
