@@ -335,7 +335,9 @@ TEST(CliCorrect, VideoAndImageSequenceFrameByFrame) {
     for (int i = 0; i < 4; ++i) {
         char name[64];
         std::snprintf(name, sizeof name, "%03d.png", i);
-        cv::imwrite((dir / "frames" / name).string(), quadrantPicture(400, 300));
+        cv::Mat pic = quadrantPicture(400, 300);
+        pic(cv::Rect(60 * i, 0, 30, 300)).setTo(cv::Scalar(255, 255, 255));  // each frame different
+        cv::imwrite((dir / "frames" / name).string(), pic);
     }
     r = cli(base + " --video " + (dir / "frames" / "%03d.png").string() + " --out " +
                 (dir / "outframes" / "f%03d.png").string(),
@@ -347,6 +349,15 @@ TEST(CliCorrect, VideoAndImageSequenceFrameByFrame) {
         const cv::Mat o = cv::imread((dir / "outframes" / name).string());
         ASSERT_FALSE(o.empty()) << name;
         EXPECT_EQ(o.size(), cv::Size(1280, 800));
+        // The same framebuffer as correcting that frame alone (one warper for the whole
+        // sequence, its output buffer reused from frame to frame).
+        std::snprintf(name, sizeof name, "%03d.png", i);
+        const fs::path single = dir / ("single" + std::to_string(i) + ".png");
+        r = cli(base + " --image " + (dir / "frames" / name).string() + " --out " + single.string(), dir);
+        ASSERT_EQ(r.status, 0) << r.err;
+        const cv::Mat s = cv::imread(single.string());
+        ASSERT_EQ(s.size(), o.size());
+        EXPECT_EQ(cv::norm(o, s, cv::NORM_INF), 0.0) << "frame " << i;
     }
 
     // Refusals leave nothing behind.

@@ -12,6 +12,7 @@
 
 #include "cli/commands.hpp"
 #include "projsurf/core/keystone.hpp"
+#include "projsurf/core/keystone_warper.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -134,13 +135,15 @@ void runVideo(const CorrectOptions &o, const std::string &input, const Projector
     }
     Progress progress(total);
     long n = 0;
+    KeystoneWarper warper(k);  // one keystone for every frame: source positions worked out once
+    cv::Mat fb;
     do {
         if (frame.channels() == 1) cv::cvtColor(frame, frame, cv::COLOR_GRAY2BGR);
         if (frame.channels() == 4) cv::cvtColor(frame, frame, cv::COLOR_BGRA2BGR);
         if (frame.size() != k.picture)
             throw InputError(input, "frame " + std::to_string(n) + " has a different size from the first frame");
         if (frame.depth() != CV_8U) frame.convertTo(frame, CV_8U, 1.0 / 257.0);
-        const cv::Mat fb = warpToFramebuffer(frame, k);
+        warper.warp(frame, fb);
         if (sequence_out) {
             char name[4096];
             std::snprintf(name, sizeof name, o.out.c_str(), static_cast<int>(n));
