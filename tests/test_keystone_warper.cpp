@@ -138,7 +138,7 @@ TEST(KeystoneWarper, AgreesWithWarpPerspectiveMildAndStrong8UC3And8UC1) {
             EXPECT_EQ(c.lit_far_outside, 0);
             EXPECT_GT(c.lit, 200000);  // the picture is there
             EXPECT_EQ(cv::countNonZero(ref.reshape(1)) > 0, true);
-            // The same through warpToFramebuffer.
+            // The same through warpToFramebuffer (KeystoneWarper::warpOnce, row by row).
             EXPECT_EQ(cv::norm(warpToFramebuffer(pic, k), ours, cv::NORM_INF), 0.0);
             ++checked;
         }
@@ -176,6 +176,7 @@ TEST(KeystoneWarper, StrongShrinkUsesTheAreaPrepass) {
     ks.homography = source.homography;
     ks.picture = source.size;
     const cv::Mat ours = KeystoneWarper(k).warp(pic);
+    EXPECT_EQ(cv::norm(warpToFramebuffer(pic, k), ours, cv::NORM_INF), 0.0);  // row by row, same
     const Comparison c = compare(ours, reference(small, ks), ks);
     EXPECT_LE(c.max_diff, 2.0);
     EXPECT_LE(c.differing, 100);
@@ -238,6 +239,7 @@ TEST(KeystoneWarper, PlainAndSimdBlendsAgree) {
             warper.setSimd(false);
             const cv::Mat plain = warper.warp(pic);
             EXPECT_EQ(cv::norm(simd, plain, cv::NORM_INF), 0.0) << "type " << type;
+            EXPECT_EQ(cv::norm(KeystoneWarper::warpOnce(pic, k, false), plain, cv::NORM_INF), 0.0) << "type " << type;
             EXPECT_GT(cv::countNonZero(plain.reshape(1)), 100000);
         }
     }

@@ -125,7 +125,7 @@ KeystoneResult computeKeystone(const Projector &projector, const Rectangle &rect
 
 cv::Mat warpToFramebuffer(const cv::Mat &picture, const Keystone &k) {
     if (picture.empty()) return cv::Mat(k.framebuffer, picture.type(), cv::Scalar::all(0));
-    if (picture.depth() == CV_8U) return KeystoneWarper(k).warp(picture);
+    if (picture.depth() == CV_8U) return KeystoneWarper::warpOnce(picture, k);
     // Other depths: OpenCV's warp after the same area-averaging prepass.
     if (picture.size() != k.picture)
         throw std::invalid_argument("keystone warp: the picture's size differs from the keystone's");

@@ -204,15 +204,15 @@ WarpSource warpSourceFor(const Keystone &k, cv::Size picture) {
     return s;
 }
 
-KeystoneWarper::KeystoneWarper(const Keystone &keystone) : keystone_(keystone) {
+KeystoneWarper::KeystoneWarper(const Keystone &keystone, bool plan_all) : keystone_(keystone) {
     const int W = keystone_.framebuffer.width, H = keystone_.framebuffer.height;
     if (W < 1 || H < 1 || keystone_.picture.width < 1 || keystone_.picture.height < 1)
         throw std::invalid_argument("keystone warp: the keystone has an empty picture or framebuffer size");
     const WarpSource source = warpSourceFor(keystone_, keystone_.picture);
     reduce_ = source.reduce;
     source_ = source.size;
+    inverse_ = source.homography.inv();  // framebuffer -> source, as warpPerspective
     const int w = source_.width, h = source_.height;
-    const cv::Matx33d M = source.homography.inv();  // framebuffer -> source, as warpPerspective
 
     // Columns worth visiting per row: the framebuffer image of the source rectangle widened to
     // [-1 - 1/16, w + 1/16] x [-1 - 1/16, h + 1/16], which holds every pixel whose footprint
@@ -220,122 +220,131 @@ KeystoneWarper::KeystoneWarper(const Keystone &keystone) : keystone_(keystone) {
     // When that rectangle crosses the homography's line at infinity, every column is visited.
     const double lo = -1.0 - 1.0 / 16, hx = w + 1.0 / 16, hy = h + 1.0 / 16;
     const double cx[4] = {lo, hx, hx, lo}, cy[4] = {lo, lo, hy, hy};
-    double qx[4], qy[4];
-    bool bounded = true;
+    bounded_ = true;
+    const cv::Vec3d q0 = source.homography * cv::Vec3d(cx[0], cy[0], 1.0);
     for (int i = 0; i < 4; ++i) {
         const cv::Vec3d q = source.homography * cv::Vec3d(cx[i], cy[i], 1.0);
-        const cv::Vec3d q0 = source.homography * cv::Vec3d(cx[0], cy[0], 1.0);
-        if (!(std::abs(q[2]) > 1e-12) || (q[2] > 0) != (q0[2] > 0)) bounded = false;
-        qx[i] = q[0] / q[2];
-        qy[i] = q[1] / q[2];
+        if (!(std::abs(q[2]) > 1e-12) || (q[2] > 0) != (q0[2] > 0)) bounded_ = false;
+        quad_x_[i] = q[0] / q[2];
+        quad_y_[i] = q[1] / q[2];
     }
-    const double y_min = *std::min_element(qy, qy + 4), y_max = *std::max_element(qy, qy + 4);
-    bounded = bounded && std::isfinite(y_min) && std::isfinite(y_max);
+    quad_y_min_ = *std::min_element(quad_y_, quad_y_ + 4);
+    quad_y_max_ = *std::max_element(quad_y_, quad_y_ + 4);
+    bounded_ = bounded_ && std::isfinite(quad_y_min_) && std::isfinite(quad_y_max_);
 
     span_begin_.assign(H, 0);
     span_end_.assign(H, 0);
-    if (bounded) {  // room for the quad's pixels (shoelace area) and its edges
+    row_x_.resize(W);
+    row_y_.resize(W);
+    if (!plan_all) return;
+    if (bounded_) {  // room for the quad's pixels (shoelace area) and its edges
         double area = 0.0, perimeter = 0.0;
         for (int i = 0; i < 4; ++i) {
             const int j = (i + 1) % 4;
-            area += 0.5 * (qx[i] * qy[j] - qx[j] * qy[i]);
-            perimeter += std::hypot(qx[j] - qx[i], qy[j] - qy[i]);
+            area += 0.5 * (quad_x_[i] * quad_y_[j] - quad_x_[j] * quad_y_[i]);
+            perimeter += std::hypot(quad_x_[j] - quad_x_[i], quad_y_[j] - quad_y_[i]);
         }
         const double guess = std::min(static_cast<double>(W) * H, std::abs(area) + 2.0 * perimeter + 64.0);
         fast_idx_.reserve(static_cast<std::size_t>(guess));
         fast_w_.reserve(static_cast<std::size_t>(guess));
     }
-    std::vector<int> X(W), Y(W);  // one row's source positions, 1/32 px
-    for (int y = 0; y < H; ++y) {
-        int x_first = 0, x_last = W - 1;
-        if (bounded) {
-            if (y < y_min - 2 || y > y_max + 2) continue;
-            const double yc = std::clamp(static_cast<double>(y), y_min, y_max);
-            double xa = HUGE_VAL, xb = -HUGE_VAL;
-            for (int i = 0; i < 4; ++i) {
-                const int j = (i + 1) % 4;
-                if (yc < std::min(qy[i], qy[j]) || yc > std::max(qy[i], qy[j])) continue;
-                const double x = qy[i] == qy[j] ? qx[i] : qx[i] + (yc - qy[i]) * (qx[j] - qx[i]) / (qy[j] - qy[i]);
-                const double x2 = qy[i] == qy[j] ? qx[j] : x;
-                xa = std::min({xa, x, x2});
-                xb = std::max({xb, x, x2});
-            }
-            if (!(xa <= xb)) continue;
-            x_first = static_cast<int>(std::clamp(std::floor(xa) - 2.0, 0.0, W - 1.0));
-            x_last = static_cast<int>(std::clamp(std::ceil(xb) + 2.0, 0.0, W - 1.0));
+    for (int y = 0; y < H; ++y) planRow(y);
+}
+
+KeystoneWarper::KeystoneWarper(const Keystone &keystone) : KeystoneWarper(keystone, true) {}
+
+void KeystoneWarper::planRow(int y) {
+    const int W = keystone_.framebuffer.width;
+    const int w = source_.width, h = source_.height;
+    int x_first = 0, x_last = W - 1;
+    if (bounded_) {
+        if (y < quad_y_min_ - 2 || y > quad_y_max_ + 2) return;
+        const double yc = std::clamp(static_cast<double>(y), quad_y_min_, quad_y_max_);
+        const double *qx = quad_x_, *qy = quad_y_;
+        double xa = HUGE_VAL, xb = -HUGE_VAL;
+        for (int i = 0; i < 4; ++i) {
+            const int j = (i + 1) % 4;
+            if (yc < std::min(qy[i], qy[j]) || yc > std::max(qy[i], qy[j])) continue;
+            const double x = qy[i] == qy[j] ? qx[i] : qx[i] + (yc - qy[i]) * (qx[j] - qx[i]) / (qy[j] - qy[i]);
+            const double x2 = qy[i] == qy[j] ? qx[j] : x;
+            xa = std::min({xa, x, x2});
+            xb = std::max({xb, x, x2});
         }
-        const int n = x_last - x_first + 1;
-        rowPositions(M, y, x_first, n, X.data(), Y.data());
-        // Lit: the bilinear footprint touches the picture (top-left neighbour in [-1, w-1]).
-        // Fast: all four neighbours inside (top-left in [0, w-2] x [0, h-2]).
-        auto lit = [&](int i) {
-            const int sx = X[i] >> kBits, sy = Y[i] >> kBits;  // arithmetic shift: floor
-            return sx >= -1 && sx <= w - 1 && sy >= -1 && sy <= h - 1;
-        };
-        auto fast = [&](int i) {
+        if (!(xa <= xb)) return;
+        x_first = static_cast<int>(std::clamp(std::floor(xa) - 2.0, 0.0, W - 1.0));
+        x_last = static_cast<int>(std::clamp(std::ceil(xb) + 2.0, 0.0, W - 1.0));
+    }
+    const int n = x_last - x_first + 1;
+    const int *X = row_x_.data(), *Y = row_y_.data();
+    rowPositions(inverse_, y, x_first, n, row_x_.data(), row_y_.data());
+    // Lit: the bilinear footprint touches the picture (top-left neighbour in [-1, w-1]).
+    // Fast: all four neighbours inside (top-left in [0, w-2] x [0, h-2]).
+    auto lit = [&](int i) {
+        const int sx = X[i] >> kBits, sy = Y[i] >> kBits;  // arithmetic shift: floor
+        return sx >= -1 && sx <= w - 1 && sy >= -1 && sy <= h - 1;
+    };
+    auto fast = [&](int i) {
+        const int sx = X[i] >> kBits, sy = Y[i] >> kBits;
+        return sx >= 0 && sx <= w - 2 && sy >= 0 && sy <= h - 2;
+    };
+    auto addSlow = [&](int i) {
+        slow_.push_back({y, x_first + i, X[i] >> kBits, Y[i] >> kBits, static_cast<std::uint8_t>(X[i] & (kSteps - 1)),
+                         static_cast<std::uint8_t>(Y[i] & (kSteps - 1))});
+    };
+    // Fast pixels [begin, end) as one run; false (and nothing added) if one is not fast.
+    auto addRun = [&](int begin, int end) {
+        const std::size_t at = fast_idx_.size();
+        fast_idx_.resize(at + (end - begin));
+        fast_w_.resize(at + (end - begin));
+        std::int32_t *idx = fast_idx_.data() + at;
+        std::uint32_t *wts = fast_w_.data() + at;
+        unsigned outside = 0;
+        for (int i = begin; i < end; ++i) {
             const int sx = X[i] >> kBits, sy = Y[i] >> kBits;
-            return sx >= 0 && sx <= w - 2 && sy >= 0 && sy <= h - 2;
-        };
-        auto addSlow = [&](int i) {
-            slow_.push_back({y, x_first + i, X[i] >> kBits, Y[i] >> kBits, static_cast<std::uint8_t>(X[i] & (kSteps - 1)),
-                             static_cast<std::uint8_t>(Y[i] & (kSteps - 1))});
-        };
-        // Fast pixels [begin, end) as one run; false (and nothing added) if one is not fast.
-        auto addRun = [&](int begin, int end) {
-            const std::size_t at = fast_idx_.size();
-            fast_idx_.resize(at + (end - begin));
-            fast_w_.resize(at + (end - begin));
-            std::int32_t *idx = fast_idx_.data() + at;
-            std::uint32_t *wts = fast_w_.data() + at;
-            unsigned outside = 0;
-            for (int i = begin; i < end; ++i) {
-                const int sx = X[i] >> kBits, sy = Y[i] >> kBits;
-                outside |= static_cast<unsigned>(sx > w - 2) | static_cast<unsigned>(sx < 0) |
-                           static_cast<unsigned>(sy > h - 2) | static_cast<unsigned>(sy < 0);
-                idx[i - begin] = sy * w + sx;
-                wts[i - begin] = packWeights(X[i] & (kSteps - 1), Y[i] & (kSteps - 1));
+            outside |= static_cast<unsigned>(sx > w - 2) | static_cast<unsigned>(sx < 0) |
+                       static_cast<unsigned>(sy > h - 2) | static_cast<unsigned>(sy < 0);
+            idx[i - begin] = sy * w + sx;
+            wts[i - begin] = packWeights(X[i] & (kSteps - 1), Y[i] & (kSteps - 1));
+        }
+        if (outside) {
+            fast_idx_.resize(at);
+            fast_w_.resize(at);
+            return false;
+        }
+        runs_.push_back({y, x_first + begin, end - begin, static_cast<int>(at)});
+        return true;
+    };
+    // The lit span from both ends, then the fast pixels inside it from both ends.
+    int lit_first = 0, lit_last = n - 1;
+    while (lit_first < n && !lit(lit_first)) ++lit_first;
+    if (lit_first == n) return;
+    while (!lit(lit_last)) --lit_last;
+    span_begin_[y] = x_first + lit_first;
+    span_end_[y] = x_first + lit_last + 1;
+    int fast_first = lit_first, fast_last = lit_last;
+    while (fast_first <= lit_last && !fast(fast_first)) ++fast_first;
+    while (fast_last >= fast_first && !fast(fast_last)) --fast_last;
+    if (fast_first > fast_last || addRun(fast_first, fast_last + 1)) {
+        // The usual row: edge pixels, one run of fast ones, edge pixels.
+        for (int i = lit_first; i < fast_first; ++i) addSlow(i);
+        for (int i = std::max(fast_first, fast_last + 1); i <= lit_last; ++i) addSlow(i);
+    } else {
+        // Fast pixels in several runs (not expected: the positions are monotonic along a
+        // row); everything else in the lit span on the slow path, black where unlit.
+        int run_start = -1;
+        for (int i = lit_first; i <= lit_last + 1; ++i) {
+            const bool in_run = i <= lit_last && fast(i);
+            if (in_run && run_start < 0) run_start = i;
+            if (!in_run && run_start >= 0) {
+                addRun(run_start, i);
+                run_start = -1;
             }
-            if (outside) {
-                fast_idx_.resize(at);
-                fast_w_.resize(at);
-                return false;
-            }
-            runs_.push_back({y, x_first + begin, end - begin, static_cast<int>(at)});
-            return true;
-        };
-        // The lit span from both ends, then the fast pixels inside it from both ends.
-        int lit_first = 0, lit_last = n - 1;
-        while (lit_first < n && !lit(lit_first)) ++lit_first;
-        if (lit_first == n) continue;
-        while (!lit(lit_last)) --lit_last;
-        span_begin_[y] = x_first + lit_first;
-        span_end_[y] = x_first + lit_last + 1;
-        int fast_first = lit_first, fast_last = lit_last;
-        while (fast_first <= lit_last && !fast(fast_first)) ++fast_first;
-        while (fast_last >= fast_first && !fast(fast_last)) --fast_last;
-        if (fast_first > fast_last || addRun(fast_first, fast_last + 1)) {
-            // The usual row: edge pixels, one run of fast ones, edge pixels.
-            for (int i = lit_first; i < fast_first; ++i) addSlow(i);
-            for (int i = std::max(fast_first, fast_last + 1); i <= lit_last; ++i) addSlow(i);
-        } else {
-            // Fast pixels in several runs (not expected: the positions are monotonic along a
-            // row); everything else in the lit span on the slow path, black where unlit.
-            int run_start = -1;
-            for (int i = lit_first; i <= lit_last + 1; ++i) {
-                const bool in_run = i <= lit_last && fast(i);
-                if (in_run && run_start < 0) run_start = i;
-                if (!in_run && run_start >= 0) {
-                    addRun(run_start, i);
-                    run_start = -1;
-                }
-                if (!in_run && i <= lit_last) addSlow(i);
-            }
+            if (!in_run && i <= lit_last) addSlow(i);
         }
     }
 }
 
-void KeystoneWarper::warp(const cv::Mat &picture, cv::Mat &framebuffer) {
-    const cv::Mat in = picture;  // keeps the pixels alive even if `framebuffer` is the same Mat
+const cv::Mat &KeystoneWarper::prepare(const cv::Mat &in, cv::Mat &framebuffer) {
     if (in.depth() != CV_8U)
         throw std::invalid_argument("keystone warp: the picture must be 8-bit per channel");
     if (in.size() != keystone_.picture)
@@ -353,16 +362,19 @@ void KeystoneWarper::warp(const cv::Mat &picture, cv::Mat &framebuffer) {
     if (framebuffer.data && framebuffer.datastart < in.dataend && in.datastart < framebuffer.dataend)
         framebuffer.release();
     framebuffer.create(keystone_.framebuffer, in.type());
+    return *src;
+}
 
-    const int cn = in.channels();
+void KeystoneWarper::blend(const cv::Mat &src, cv::Mat &framebuffer, int y_begin, int y_end) const {
+    const int cn = src.channels();
     const int W = keystone_.framebuffer.width;
-    for (int y = 0; y < framebuffer.rows; ++y) {
+    for (int y = y_begin; y < y_end; ++y) {  // black outside the lit span
         uchar *row = framebuffer.ptr<uchar>(y);
         std::memset(row, 0, static_cast<std::size_t>(span_begin_[y]) * cn);
         std::memset(row + static_cast<std::size_t>(span_end_[y]) * cn, 0, static_cast<std::size_t>(W - span_end_[y]) * cn);
     }
-    const uchar *base = src->ptr<uchar>();
-    const std::size_t row_bytes = static_cast<std::size_t>(src->cols) * cn;
+    const uchar *base = src.ptr<uchar>();
+    const std::size_t row_bytes = static_cast<std::size_t>(src.cols) * cn;
 #ifdef PROJSURF_WARP_SSSE3
     const bool simd = simd_ && haveSsse3();
 #endif
@@ -395,13 +407,36 @@ void KeystoneWarper::warp(const cv::Mat &picture, cv::Mat &framebuffer) {
         }
     }
     for (const Slow &s : slow_)
-        blendSlow(*src, s.sx, s.sy, s.fx, s.fy, framebuffer.ptr<uchar>(s.y) + static_cast<std::size_t>(s.x) * cn);
+        blendSlow(src, s.sx, s.sy, s.fx, s.fy, framebuffer.ptr<uchar>(s.y) + static_cast<std::size_t>(s.x) * cn);
+}
+
+void KeystoneWarper::warp(const cv::Mat &picture, cv::Mat &framebuffer) {
+    const cv::Mat in = picture;  // keeps the pixels alive even if `framebuffer` is the same Mat
+    const cv::Mat &src = prepare(in, framebuffer);
+    blend(src, framebuffer, 0, framebuffer.rows);
 }
 
 cv::Mat KeystoneWarper::warp(const cv::Mat &picture) {
     cv::Mat out;
     warp(picture, out);
     return out;
+}
+
+cv::Mat KeystoneWarper::warpOnce(const cv::Mat &picture, const Keystone &keystone, bool simd) {
+    // Plan a row, blend it, forget it: no per-pixel tables for the whole framebuffer.
+    KeystoneWarper once(keystone, false);
+    once.simd_ = simd;
+    cv::Mat framebuffer;
+    const cv::Mat &src = once.prepare(picture, framebuffer);
+    for (int y = 0; y < framebuffer.rows; ++y) {
+        once.runs_.clear();
+        once.slow_.clear();
+        once.fast_idx_.clear();
+        once.fast_w_.clear();
+        once.planRow(y);
+        once.blend(src, framebuffer, y, y + 1);
+    }
+    return framebuffer;
 }
 
 }  // namespace projsurf

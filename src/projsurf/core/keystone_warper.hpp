@@ -46,6 +46,11 @@ public:
     /// the SSSE3 one (used on x86 CPUs that have it, checked at run time). Same result.
     void setSimd(bool on) { simd_ = on; }
 
+    /// One picture with a keystone used once: the same result as KeystoneWarper(keystone)
+    /// .warp(picture), but each row's source positions are blended as soon as they are worked
+    /// out (no tables for the whole framebuffer). warpToFramebuffer uses this.
+    static cv::Mat warpOnce(const cv::Mat &picture, const Keystone &keystone, bool simd = true);
+
     const Keystone &keystone() const { return keystone_; }
     /// Framebuffer pixels that sample the picture (the rest stay black).
     std::size_t pixelsInside() const { return fast_idx_.size() + slow_.size(); }
@@ -63,10 +68,22 @@ private:
         std::uint8_t fx, fy;  ///< position inside the cell, 1/32 px
     };
 
+    KeystoneWarper(const Keystone &keystone, bool plan_all);
+    void planRow(int y);  ///< appends row y's span, run and edge pixels
+    /// Checks the picture, reduces it or makes it continuous if needed, (re)allocates the
+    /// framebuffer; returns what to sample.
+    const cv::Mat &prepare(const cv::Mat &picture, cv::Mat &framebuffer);
+    /// Blends the planned runs and edge pixels; black outside the spans of rows [y_begin, y_end).
+    void blend(const cv::Mat &src, cv::Mat &framebuffer, int y_begin, int y_end) const;
+
     Keystone keystone_;
     bool reduce_ = false;  ///< area-average the picture to source_ first
     bool simd_ = true;
     cv::Size source_;      ///< the size the positions refer to (the picture, or its reduction)
+    cv::Matx33d inverse_;  ///< framebuffer -> source
+    bool bounded_ = true;  ///< the quad below is finite (else every column is visited)
+    double quad_x_[4] = {}, quad_y_[4] = {}, quad_y_min_ = 0, quad_y_max_ = 0;  ///< where lit pixels can be
+    std::vector<int> row_x_, row_y_;  ///< scratch: one row's source positions, 1/32 px
     std::vector<int> span_begin_, span_end_;  ///< per framebuffer row: pixels [begin, end) may be lit
     std::vector<Run> runs_;
     std::vector<std::int32_t> fast_idx_;  ///< sy * source_.width + sx of the top-left neighbour
