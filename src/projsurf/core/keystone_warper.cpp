@@ -81,7 +81,10 @@ void gatherScalar(const uchar *src, std::size_t row, const std::int32_t *idx, co
 #define PROJSURF_WARP_SSSE3 1
 
 bool haveSsse3() {
-    static const bool have = __builtin_cpu_supports("ssse3");
+    static const bool have = [] {
+        __builtin_cpu_init();  // in case the first warp runs before static constructors
+        return __builtin_cpu_supports("ssse3") != 0;
+    }();
     return have;
 }
 
