@@ -234,9 +234,11 @@ KeystoneWarp::KeystoneWarp(const Projector &projector, Kind kind) : kind_(kind) 
             }
         cv::convertMaps(mapx, mapy, map1_, map2_, CV_16SC2);
     }
-    if (kind_ == Kind::Warper || kind_ == Kind::WarperPlain) {
+    if (kind_ == Kind::Warper || kind_ == Kind::WarperPlain || kind_ == Kind::WarperSsse3) {
         warper_ = std::make_shared<KeystoneWarper>(*keystone_);
-        warper_->setSimd(kind_ == Kind::Warper);
+        warper_->setSimd(kind_ == Kind::Warper        ? KeystoneWarper::Simd::Best
+                         : kind_ == Kind::WarperSsse3 ? KeystoneWarper::Simd::Ssse3
+                                                      : KeystoneWarper::Simd::Plain);
     }
 }
 
@@ -256,6 +258,7 @@ void KeystoneWarp::run() {
     }
     case Kind::Warper:
     case Kind::WarperPlain:
+    case Kind::WarperSsse3:
         warper_->warp(in_, out_);
         break;
     }
@@ -267,8 +270,9 @@ std::string KeystoneWarp::what() const {
             : kind_ == Kind::Remap  ? "cv::remap, fixed-point maps over the quad's bounding box built once (experiment)"
             : kind_ == Kind::Warper ? "projsurf::KeystoneWarper built once per detection, warp per frame "
                                       "(keystone_warper.hpp; projsurf correct's video path)"
-            : kind_ == Kind::WarperPlain ? "the same KeystoneWarper with its plain C++ blend instead of SSSE3"
-                                    : "projsurf::warpToFramebuffer (keystone.hpp; builds a KeystoneWarper per call)")
+            : kind_ == Kind::WarperPlain ? "the same KeystoneWarper with its plain C++ blend instead of SIMD"
+            : kind_ == Kind::WarperSsse3 ? "the same KeystoneWarper with SSSE3 but not AVX2"
+                                    : "projsurf::warpToFramebuffer (keystone.hpp; source positions worked out in every call)")
         << ", " << in_.cols << "x" << in_.rows << " BGR picture -> " << out_.cols << "x" << out_.rows
         << " framebuffer";
     return out.str();

@@ -70,11 +70,11 @@ std::string cpuModel();
 /// picture's bounding box with fixed-point maps built once per detection (Remap: what a
 /// video loop could do; the rest of the framebuffer stays black from the first frame), or by
 /// projsurf's KeystoneWarper built once per detection (Warper: what `projsurf correct` does
-/// for a video; warpToFramebuffer builds one per call), the same with its plain C++ blend
-/// instead of SSSE3 (WarperPlain).
+/// for a video; warpToFramebuffer works one out per call), the same with its plain C++ blend
+/// instead of SIMD (WarperPlain) or with SSSE3 but not AVX2 (WarperSsse3).
 class KeystoneWarp {
 public:
-    enum class Kind { Projsurf, Bare, Remap, Warper, WarperPlain };
+    enum class Kind { Projsurf, Bare, Remap, Warper, WarperPlain, WarperSsse3 };
     explicit KeystoneWarp(const Projector &projector, Kind kind = Kind::Projsurf);
     void run();
     const cv::Mat &output() const { return out_; }
@@ -86,7 +86,7 @@ private:
     cv::Mat map1_, map2_;  ///< Remap: CV_16SC2 + CV_16UC1 over roi_
     cv::Rect roi_;
     std::shared_ptr<const Keystone> keystone_;
-    std::shared_ptr<KeystoneWarper> warper_;  ///< Warper, WarperPlain
+    std::shared_ptr<KeystoneWarper> warper_;  ///< Warper*
 };
 
 }  // namespace projsurf::bench

@@ -387,8 +387,8 @@ void reportKeystone(const Options &o, const Projector &projector) {
                  "per frame (the homography is computed once per detection). KeystoneWarper is the warp for a stream of "
                  "frames; warpToFramebuffer is one picture per keystone (it also works out the source positions).\n\n";
     std::cout << "| warp | median ms | p10–p90 ms | max ms | target |\n|---|---:|---:|---:|---:|\n";
-    for (const auto kind : {KeystoneWarp::Kind::Warper, KeystoneWarp::Kind::WarperPlain, KeystoneWarp::Kind::Projsurf,
-                            KeystoneWarp::Kind::Bare, KeystoneWarp::Kind::Remap}) {
+    for (const auto kind : {KeystoneWarp::Kind::Warper, KeystoneWarp::Kind::WarperSsse3, KeystoneWarp::Kind::WarperPlain,
+                            KeystoneWarp::Kind::Projsurf, KeystoneWarp::Kind::Bare, KeystoneWarp::Kind::Remap}) {
         KeystoneWarp warp(projector, kind);
         const int warmup = o.quick ? 0 : 10, reps = o.quick ? 1 : 300;
         for (int i = 0; i < warmup; ++i) warp.run();

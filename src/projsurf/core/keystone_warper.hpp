@@ -38,18 +38,21 @@ public:
     /// `picture`: 8-bit, any number of channels, of the keystone's picture size, else
     /// std::invalid_argument. `framebuffer` is (re)allocated to the keystone's framebuffer
     /// size and the picture's type, and every one of its pixels is written. Fast paths for 1,
-    /// 3 and 4 channels (SSSE3 when the CPU has it; plain C++ otherwise).
+    /// 3 and 4 channels (SIMD when the CPU has it, see Simd; plain C++ otherwise).
     void warp(const cv::Mat &picture, cv::Mat &framebuffer);
     cv::Mat warp(const cv::Mat &picture);
 
-    /// For tests and benchmarks: false makes warp() blend with the plain C++ loop instead of
-    /// the SSSE3 one (used on x86 CPUs that have it, checked at run time). Same result.
-    void setSimd(bool on) { simd_ = on; }
+    /// How the blend runs for 3- and 4-channel pictures. Best: AVX2 (two pixels per step, 3
+    /// channels) or SSSE3, whichever the CPU has (checked at run time; the library is built for
+    /// generic x86-64), else plain C++. The others are for tests and benchmarks: at most SSSE3,
+    /// or plain C++ only. Every choice gives the same pixels.
+    enum class Simd { Best, Ssse3, Plain };
+    void setSimd(Simd simd) { simd_ = simd; }
 
     /// One picture with a keystone used once: the same result as KeystoneWarper(keystone)
     /// .warp(picture), but each row's source positions are blended as soon as they are worked
     /// out (no tables for the whole framebuffer). warpToFramebuffer uses this.
-    static cv::Mat warpOnce(const cv::Mat &picture, const Keystone &keystone, bool simd = true);
+    static cv::Mat warpOnce(const cv::Mat &picture, const Keystone &keystone, Simd simd = Simd::Best);
 
     const Keystone &keystone() const { return keystone_; }
     /// Framebuffer pixels that sample the picture (the rest stay black).
@@ -78,7 +81,7 @@ private:
 
     Keystone keystone_;
     bool reduce_ = false;  ///< area-average the picture to source_ first
-    bool simd_ = true;
+    Simd simd_ = Simd::Best;
     cv::Size source_;      ///< the size the positions refer to (the picture, or its reduction)
     cv::Matx33d inverse_;  ///< framebuffer -> source
     bool bounded_ = true;  ///< the quad below is finite (else every column is visited)
