@@ -29,8 +29,9 @@ WarpSource warpSourceFor(const Keystone &keystone, cv::Size picture);
 ///
 /// Construction computes every framebuffer pixel's source position once (1/32 px fixed point,
 /// like OpenCV's remap), only for the pixels whose bilinear footprint touches the picture;
-/// the rest of the framebuffer is black. One object must not warp from two threads at once
-/// (it keeps a scratch image for the prepass).
+/// the rest of the framebuffer is black. The tables take 8 bytes per such pixel (about 5.5 MB
+/// for a picture filling most of a 1280x800 framebuffer). One object must not warp from two
+/// threads at once (it keeps a scratch image for the prepass).
 class KeystoneWarper {
 public:
     explicit KeystoneWarper(const Keystone &keystone);
