@@ -1,5 +1,6 @@
 #include "projsurf/core/camera.hpp"
 
+#include <cmath>
 #include <limits>
 
 namespace projsurf {
@@ -27,6 +28,51 @@ Cloud depthToCloud(const cv::Mat &depth, const CameraIntrinsics &camera) {
         }
     }
     return cloud;
+}
+
+std::optional<CameraIntrinsics> fitIntrinsics(const Cloud &cloud, const std::vector<int> &indices, double max_error_px) {
+    if (!cloud.organized()) return std::nullopt;
+    // pixel = f * ratio + c on each axis (ratio = x / z or y / z): two straight-line fits.
+    struct Line {
+        double n = 0, sr = 0, sp = 0, srr = 0, srp = 0, f = 0, c = 0;
+        void add(double r, double p) {
+            n += 1;
+            sr += r;
+            sp += p;
+            srr += r * r;
+            srp += r * p;
+        }
+        bool solve() {
+            const double det = n * srr - sr * sr;
+            if (!(std::abs(det) > 1e-12 * n * n)) return false;
+            f = (n * srp - sr * sp) / det;
+            c = (sp - f * sr) / n;
+            return f > 0.0;
+        }
+    } u, v;
+    auto usable = [&](int i) { return isFinite(cloud.points[i]) && cloud.points[i].z() > 0.0f; };
+    for (int i : indices) {
+        if (!usable(i)) continue;
+        const Point &p = cloud.points[i];
+        u.add(p.x() / p.z(), i % cloud.width);
+        v.add(p.y() / p.z(), i / cloud.width);
+    }
+    if (u.n < 10 || !u.solve() || !v.solve()) return std::nullopt;
+    for (int i : indices) {
+        if (!usable(i)) continue;
+        const Point &p = cloud.points[i];
+        if (std::abs(u.f * p.x() / p.z() + u.c - i % cloud.width) > max_error_px ||
+            std::abs(v.f * p.y() / p.z() + v.c - i / cloud.width) > max_error_px)
+            return std::nullopt;
+    }
+    CameraIntrinsics k;
+    k.width = cloud.width;
+    k.height = cloud.height;
+    k.fx = u.f;
+    k.cx = u.c;
+    k.fy = v.f;
+    k.cy = v.c;
+    return k;
 }
 
 }  // namespace projsurf

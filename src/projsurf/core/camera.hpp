@@ -2,6 +2,8 @@
 // Pinhole intrinsics of an RGB-D camera and the depth image <-> cloud conversion.
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
+#include <optional>
+#include <vector>
 
 #include "projsurf/core/cloud.hpp"
 
@@ -29,5 +31,12 @@ struct CameraIntrinsics {
 /// Organized cloud from a CV_16UC1 depth image; 0 means no reading and gives NaN.
 /// The image size must match the intrinsics (checked by the caller).
 Cloud depthToCloud(const cv::Mat &depth, const CameraIntrinsics &camera);
+
+/// The pinhole (fx, fy, cx, cy; size of the cloud) that maps the points `indices` of an
+/// organized cloud to their pixels, fitted by least squares; nullopt when the cloud is not
+/// organized, too few of those points are finite, or the fit leaves more than `max_error_px`
+/// (a cloud that is not a pinhole image, e.g. a resampled or merged one).
+std::optional<CameraIntrinsics> fitIntrinsics(const Cloud &cloud, const std::vector<int> &indices,
+                                              double max_error_px = 1.0);
 
 }  // namespace projsurf

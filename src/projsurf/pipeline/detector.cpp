@@ -3,11 +3,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <opencv2/imgproc.hpp>
 #include <random>
 
+#include "projsurf/core/camera.hpp"
 #include "projsurf/core/euler_rodrigues.hpp"
 #include "projsurf/core/hull.hpp"
+#include "projsurf/core/plane_observation.hpp"
+#include "projsurf/core/point_grid.hpp"
 #include "projsurf/core/raster.hpp"
 #include "projsurf/core/rectangle_search.hpp"
 #include "projsurf/core/vertical_ransac.hpp"
@@ -33,6 +38,7 @@ struct Candidate {
     std::vector<std::vector<Eigen::Vector3d>> outlines;
     std::vector<int> inlier_indices;
     cv::Rect image_box;  // organized clouds: the pixels where the plane is seen (empty = all)
+    PlaneObservation observed;  // default mode: what the camera saw of the plane, per raster cell
 };
 
 /// Pixels of an organized cloud where the candidate's sampled inliers lie, grown by `margin`.
@@ -48,6 +54,35 @@ cv::Rect imageBox(const Cloud &cloud, const std::vector<int> &indices, int margi
     }
     return cv::Rect(u0 - margin, v0 - margin, u1 - u0 + 1 + 2 * margin, v1 - v0 + 1 + 2 * margin) &
            cv::Rect(0, 0, cloud.width, cloud.height);
+}
+
+/// Pixels where everything that matters to the candidate's raster is seen: the raster itself
+/// (wall points, and points seen through holes in it) and the projector's beam between the
+/// lens and the raster from depth `near` on (whatever shadows it), grown by `margin`; empty
+/// (all pixels) when a corner of that volume is not in front of the camera.
+cv::Rect rasterImageBox(const CameraIntrinsics &camera, const Candidate &c, const Eigen::Vector3d &lens, double near,
+                        int margin) {
+    const RasterFrame &r = c.raster;
+    double u0 = 1e9, v0 = 1e9, u1 = -1e9, v1 = -1e9;
+    for (const Eigen::Vector2d &corner : {r.toPlane({0, 0}), r.toPlane({r.cols, 0}), r.toPlane({r.cols, r.rows}),
+                                         r.toPlane({0, r.rows})}) {
+        const Eigen::Vector3d x = c.frame.toCamera(corner);
+        // Where the beam towards this corner is at depth `near` (or the lens, if nearer).
+        const double s = x.z() - lens.z() > 1e-9 ? std::clamp((near - lens.z()) / (x.z() - lens.z()), 0.0, 1.0) : 0.0;
+        for (const Eigen::Vector3d &p : {x, Eigen::Vector3d(lens + s * (x - lens))}) {
+            if (p.z() < 1e-3) return {};
+            const Eigen::Vector2d px = camera.project(p);
+            u0 = std::min(u0, px.x());
+            v0 = std::min(v0, px.y());
+            u1 = std::max(u1, px.x());
+            v1 = std::max(v1, px.y());
+        }
+    }
+    const cv::Rect image(0, 0, camera.width, camera.height);
+    auto clampPx = [](double x) { return static_cast<int>(std::clamp(x, -1e6, 1e6)); };
+    const cv::Rect box(cv::Point(clampPx(std::floor(u0)) - margin, clampPx(std::floor(v0)) - margin),
+                       cv::Point(clampPx(std::ceil(u1)) + margin + 1, clampPx(std::ceil(v1)) + margin + 1));
+    return box & image;
 }
 
 /// The projector workspace on the plane: the corner rays meet it (paper eqs. 5-6).
@@ -257,63 +292,15 @@ double sampleSpacing(const Cloud &cloud, const Candidate &c, int step, const Dep
 /// Free space of one candidate from where its plane was observed: a cell is free when
 /// wall points were seen in it, nothing was seen through it, and no point in front of the
 /// wall shadows it from the projector.
-void observedFreeSpace(const Cloud &cloud, const Projector &projector, const DetectorConfig &cfg, Candidate &c) {
+void observedFreeSpace(const Cloud &cloud, const PointGrid &grid, const Projector &projector, const DetectorConfig &cfg,
+                       Candidate &c) {
     const cv::Size size(c.raster.cols, c.raster.rows);
-    cv::Mat support = cv::Mat::zeros(size, CV_16UC1), behind = cv::Mat::zeros(size, CV_16UC1),
-            shadow = cv::Mat::zeros(size, CV_8UC1);
-    const Eigen::Vector3f n = c.plane.normal.cast<float>(), o = projector.origin.cast<float>();
-    const float d = static_cast<float>(c.plane.d);
-    const Eigen::Vector3f fo = c.frame.origin.cast<float>(), right = c.frame.right.cast<float>(),
-                          up = c.frame.up.cast<float>();
-    const float inv_cell = static_cast<float>(1.0 / c.raster.cell);
-    const float u0 = static_cast<float>(c.raster.top_left.x()), v0 = static_cast<float>(c.raster.top_left.y());
-    const float proj_h = n.dot(o) + d;  // projector height above the plane
     const DepthTolerance tol = cfg.tolerance();
-    auto cellOf = [&](const Eigen::Vector3f &q, int &col, int &row) {
-        const Eigen::Vector3f r = q - fo;
-        col = static_cast<int>(std::floor((r.dot(right) - u0) * inv_cell));
-        row = static_cast<int>(std::floor((v0 - r.dot(up)) * inv_cell));
-        return col >= 0 && row >= 0 && col < size.width && row < size.height;
-    };
-    auto bump16 = [](cv::Mat &m, int row, int col) {
-        auto &v = m.at<std::uint16_t>(row, col);
-        if (v < 65535) ++v;
-    };
-    const int step = cloud.organized() ? std::max(1, cfg.support_stride) : 1;
-    int support_points = 0;
     // Organized clouds: only the pixels where this plane is seen (holes in it and things in
     // front of it are seen there too); unorganized: every point.
-    const int width = cloud.organized() ? cloud.width : static_cast<int>(cloud.points.size());
-    const cv::Rect box = c.image_box.area() > 0 ? c.image_box : cv::Rect(0, 0, width, cloud.organized() ? cloud.height : 1);
-    // DepthTolerance::band and ::margin, in float for the per-point loop.
-    const float band_k = static_cast<float>(tol.sigmas * tol.noise_k), band_min = static_cast<float>(tol.min_band),
-                band_max = static_cast<float>(tol.max_band), obstacle_bands = static_cast<float>(tol.obstacle_bands),
-                obstacle_min = static_cast<float>(tol.min_obstacle);
-    for (int y = box.y; y < box.y + box.height; y += step) {
-        const Point *row_pts = cloud.points.data() + static_cast<std::size_t>(y) * width;
-        for (int x = box.x; x < box.x + box.width; x += step) {
-            const Point &p = row_pts[x];
-            if (!isFinite(p)) continue;
-            const float h = n.dot(p) + d;
-            const float band = std::clamp(band_k * p.z() * p.z(), band_min, band_max);
-            const float margin = std::max(obstacle_bands * band, obstacle_min);
-            int col, row;
-            if (std::abs(h) <= band) {
-                if (cellOf(p - h * n, col, row)) {
-                    bump16(support, row, col);
-                    ++support_points;
-                }
-            } else if (h < -margin) {
-                // Seen through the plane (hole, door, window): where the camera ray crosses it.
-                const float t = -d / (h - d);
-                if (cellOf(t * p, col, row)) bump16(behind, row, col);
-            } else if (h > margin && h < proj_h) {
-                // Between projector and wall: its projector shadow on the wall.
-                const float t = proj_h / (proj_h - h);
-                if (cellOf(o + t * (p - o), col, row)) shadow.at<uchar>(row, col) = 1;
-            }
-        }
-    }
+    observePlane(grid, grid.gridBox(c.image_box), c.plane, c.frame, c.raster, projector.origin, tol, c.observed);
+    const cv::Mat &support = c.observed.support, &behind = c.observed.behind, &shadow = c.observed.shadow;
+    const int step = grid.step, support_points = c.observed.support_points;
     // Support: cells with wall points, the gaps between neighbouring samples closed.
     const int gap = std::clamp(static_cast<int>(std::ceil(sampleSpacing(cloud, c, step, tol, support_points) / c.raster.cell)), 1, 8);
     cv::Mat supported = support > 0;
@@ -413,6 +400,10 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         pts[i] = cloud.points[sample[i]];
         band[i] = tol.band(pts[i].z());
     }
+    // Organized clouds are pinhole images: their intrinsics tell where a volume is seen.
+    const std::optional<CameraIntrinsics> camera = fitIntrinsics(cloud, sample);
+    float near = std::numeric_limits<float>::infinity();  // m, the nearest sampled point
+    for (const Point &p : pts) near = std::min(near, p.z());
     det.timing_ms["sample"] = msSince(t);
     if (pts.size() < 3) {
         det.reason = "no points to search (empty or all-NaN cloud)";
@@ -512,11 +503,16 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         hi = hi.cwiseMin(ihi + Eigen::Vector2d::Constant(cfg.cell));
         if (!(lo.array() < hi.array()).all()) continue;
         c.raster = makeRasterFrame(lo, hi, cfg.cell);
+        // Organized clouds: look only where the raster and the beam towards it are seen (a
+        // margin for points off the plane at grazing angles and mixed pixels at edges).
+        if (camera) c.image_box = rasterImageBox(*camera, c, projector.origin, near, cloud.width / 64 + cfg.support_stride);
         const double h = std::min(hi.y() - lo.y(), (hi.x() - lo.x()) / aspect);
         bound[k] = aspect * h * h;
         usable.push_back(k);
     }
     std::sort(usable.begin(), usable.end(), [&](int a, int b) { return bound[a] > bound[b]; });
+    PointGrid grid;
+    if (!usable.empty()) fillPointGrid(cloud, cfg.support_stride, grid);
     double ms_free = msSince(t), ms_rect = 0.0, ms_check = 0.0;
 
     const Candidate *chosen = nullptr;
@@ -526,7 +522,7 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         if (chosen && bound[k] <= chosen->rectangle.area()) break;
         Candidate &c = candidates[k];
         t = Clock::now();
-        observedFreeSpace(cloud, projector, cfg, c);
+        observedFreeSpace(cloud, grid, projector, cfg, c);
         ms_free += msSince(t);
         t = Clock::now();
         const bool ok = placeRectangle(c, aspect);
@@ -538,9 +534,9 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         // Mixed pixels at depth edges along the border are not the surface's fault: the check
         // looks one raster cell inside the rectangle.
         t = Clock::now();
-        const SurfaceCheckResult check = checkSurface(cloud, c.frame, shrink(c.frame, c.rectangle, c.raster.cell), tol,
-                                                      cfg.max_outlier_fraction, cloud.organized() ? cfg.support_stride : 1,
-                                                      c.image_box);
+        const Rectangle inner = shrink(c.frame, c.rectangle, c.raster.cell);
+        const SurfaceCheckResult check = checkObservedSurface(c.observed, c.raster, c.frame.toPlane(inner.corners[3]),
+                                                              c.frame.toPlane(inner.corners[1]), cfg.max_outlier_fraction);
         ms_check += msSince(t);
         if (check.accepted || !chosen) last = check;
         if (check.accepted) chosen = &c;

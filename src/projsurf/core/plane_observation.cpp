@@ -1,0 +1,139 @@
+#include "projsurf/core/plane_observation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace projsurf {
+namespace {
+
+// The pass is compiled twice on x86-64 Linux, for AVX2 and for the baseline, and the loader
+// picks the one the CPU runs (GCC / Clang function multi-versioning). AVX2 brings 8-wide
+// floats, blends and 32-bit integer multiplies that SSE2 lacks: 0.99 -> 0.60 ms per pass on
+// a TUM frame (measured on this project's Xeon).
+#if defined(__x86_64__) && defined(__linux__) && (defined(__GNUC__) || defined(__clang__))
+#define PROJSURF_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define PROJSURF_CLONES
+#endif
+
+PROJSURF_CLONES
+void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane, const PlaneFrame &frame,
+                 const RasterFrame &raster, const Eigen::Vector3d &projector_origin, const DepthTolerance &tolerance,
+                 std::int32_t *bins, std::int32_t *seen,
+                 std::vector<std::pair<int, int>> &off_points, int &support_points) {
+    // Everything in float and as plain scalars, so that the per-point loop vectorises.
+    // Raster column of a point q of the plane: q . R + cr; row: q . U + cu.
+    const Eigen::Vector3d R = frame.right / raster.cell, U = -frame.up / raster.cell;
+    const double cr = -frame.origin.dot(R) - raster.top_left.x() / raster.cell;
+    const double cu = -frame.origin.dot(U) + raster.top_left.y() / raster.cell;
+    const float nx = static_cast<float>(plane.normal.x()), ny = static_cast<float>(plane.normal.y()),
+                nz = static_cast<float>(plane.normal.z()), d = static_cast<float>(plane.d);
+    const float rx = static_cast<float>(R.x()), ry = static_cast<float>(R.y()), rz = static_cast<float>(R.z());
+    const float ux = static_cast<float>(U.x()), uy = static_cast<float>(U.y()), uz = static_cast<float>(U.z());
+    const float col0 = static_cast<float>(cr), row0 = static_cast<float>(cu);
+    // The projector lens: its height above the plane and its raster position (unclipped).
+    const float proj_h = static_cast<float>(plane.signedDistance(projector_origin));
+    const float o_col = static_cast<float>(projector_origin.dot(R)), o_row = static_cast<float>(projector_origin.dot(U));
+    const float band_k = static_cast<float>(tolerance.sigmas * tolerance.noise_k),
+                band_min = static_cast<float>(tolerance.min_band), band_max = static_cast<float>(tolerance.max_band),
+                obstacle_bands = static_cast<float>(tolerance.obstacle_bands),
+                obstacle_min = static_cast<float>(tolerance.min_obstacle);
+    const float cols = static_cast<float>(raster.cols), rows = static_cast<float>(raster.rows);
+    const std::int32_t ncols = raster.cols, cells = raster.cols * raster.rows;
+
+    std::vector<std::int32_t> bin(area.width), ray(area.width), off(area.width);
+    off_points.resize(static_cast<std::size_t>(area.width) * area.height);
+    std::size_t n_off = 0;
+    std::int32_t on_plane = 0;
+    for (int gr = area.y; gr < area.y + area.height; ++gr) {
+        const std::size_t first = static_cast<std::size_t>(gr) * grid.cols + area.x;
+        const float *X = grid.x.data() + first, *Y = grid.y.data() + first, *Z = grid.z.data() + first;
+        // Classify and place every point of the row. Integer flags combined with &, and
+        // selects between values computed beforehand: the loop stays straight-line and
+        // vectorises (see CMakeLists.txt on trapping math). NaN points fail every test.
+        for (int i = 0; i < area.width; ++i) {
+            const float px = X[i], py = Y[i], pz = Z[i];
+            const float np = nx * px + ny * py + nz * pz;
+            const float h = np + d;
+            const float band = std::min(std::max(band_k * pz * pz, band_min), band_max);
+            const float margin = std::max(obstacle_bands * band, obstacle_min);
+            const float pc = rx * px + ry * py + rz * pz, pw = ux * px + uy * py + uz * pz;
+            // Camera ray: t * p lies on the plane.
+            const float t = -d / np;
+            const float tc = t * pc + col0, tw = t * pw + row0;
+            const std::int32_t ray_in = (std::abs(np) >= 1e-6f) & (t > 0.0f) & (tc >= 0.0f) & (tc < cols) &
+                                        (tw >= 0.0f) & (tw < rows);
+            // Projector ray through p: o + s * (p - o) lies on the plane.
+            const float s = proj_h / (proj_h - h);
+            const float sc = o_col + s * (pc - o_col) + col0, sw = o_row + s * (pw - o_row) + row0;
+            const std::int32_t on = std::abs(h) <= band, beyond = h < -margin, between = (h > margin) & (h < proj_h);
+            const float ac = pc + col0, aw = pw + row0;                // on the plane: its foot
+            const float fc = beyond ? tc : sc, fw = beyond ? tw : sw;  // off it: camera or projector ray
+            const float bc = on ? ac : fc, bw = on ? aw : fw;
+            const std::int32_t bin_in = (on | beyond | between) & (bc >= 0.0f) & (bc < cols) & (bw >= 0.0f) & (bw < rows);
+            // Truncation is floor here: both coordinates are known to be >= 0.
+            const std::int32_t bin_cell = static_cast<std::int32_t>(bw) * ncols + static_cast<std::int32_t>(bc) +
+                                          (beyond ? cells : 0) + (between ? 2 * cells : 0);
+            const std::int32_t ray_cell = static_cast<std::int32_t>(tw) * ncols + static_cast<std::int32_t>(tc);
+            bin[i] = bin_in ? bin_cell : 3 * cells;
+            ray[i] = ray_in ? ray_cell : cells;
+            off[i] = (std::abs(h) > margin) & ray_in;
+            on_plane += on & bin_in;
+        }
+        // Count them (a scatter: scalar, but without branches).
+        const int index0 = grid.cloudIndex(gr, area.x), index_step = grid.organized ? grid.step : 1;
+        for (int i = 0; i < area.width; ++i) {
+            ++bins[bin[i]];
+            ++seen[ray[i]];
+            off_points[n_off] = {index0 + i * index_step, ray[i]};
+            n_off += off[i];
+        }
+    }
+    off_points.resize(n_off);
+    support_points = on_plane;
+}
+
+}  // namespace
+
+void observePlane(const PointGrid &grid, const cv::Rect &box, const Plane &plane, const PlaneFrame &frame,
+                  const RasterFrame &raster, const Eigen::Vector3d &projector_origin, const DepthTolerance &tolerance,
+                  PlaneObservation &out) {
+    const int rows = raster.rows, cols = raster.cols;
+    out.bins.create(3 * rows + 1, cols, CV_32SC1);
+    out.rays.create(rows + 1, cols, CV_32SC1);
+    out.bins.setTo(0);
+    out.rays.setTo(0);
+    out.support = out.bins.rowRange(0, rows);
+    out.behind = out.bins.rowRange(rows, 2 * rows);
+    out.shadow = out.bins.rowRange(2 * rows, 3 * rows);
+    out.seen = out.rays.rowRange(0, rows);
+    const cv::Rect area = box & cv::Rect(0, 0, grid.cols, grid.rows);
+    observeRows(grid, area, plane, frame, raster, projector_origin, tolerance, out.bins.ptr<std::int32_t>(),
+                out.seen.ptr<std::int32_t>(), out.off_points, out.support_points);
+}
+
+SurfaceCheckResult checkObservedSurface(const PlaneObservation &observation, const RasterFrame &raster,
+                                        const Eigen::Vector2d &lo, const Eigen::Vector2d &hi, double max_fraction) {
+    // Cells whose centre (top_left + (col + 0.5, -(row + 0.5)) * cell) is inside [lo, hi].
+    const double cell = raster.cell;
+    const int c0 = std::max(0, static_cast<int>(std::ceil((lo.x() - raster.top_left.x()) / cell - 0.5)));
+    const int c1 = std::min(raster.cols - 1, static_cast<int>(std::floor((hi.x() - raster.top_left.x()) / cell - 0.5)));
+    const int r0 = std::max(0, static_cast<int>(std::ceil((raster.top_left.y() - hi.y()) / cell - 0.5)));
+    const int r1 = std::min(raster.rows - 1, static_cast<int>(std::floor((raster.top_left.y() - lo.y()) / cell - 0.5)));
+    SurfaceCheckResult r;
+    if (c0 > c1 || r0 > r1 || observation.seen.empty()) return r;
+    for (int row = r0; row <= r1; ++row) {
+        const auto *seen = observation.seen.ptr<std::int32_t>(row);
+        for (int col = c0; col <= c1; ++col) r.points += seen[col];
+    }
+    for (const auto &[index, cell_index] : observation.off_points) {
+        const int row = cell_index / raster.cols, col = cell_index % raster.cols;
+        if (row >= r0 && row <= r1 && col >= c0 && col <= c1) r.outlier_indices.push_back(index);
+    }
+    r.outliers = static_cast<int>(r.outlier_indices.size());
+    r.accepted = r.points > 0 && r.outliers <= max_fraction * r.points;
+    return r;
+}
+
+}  // namespace projsurf

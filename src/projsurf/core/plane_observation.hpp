@@ -1,0 +1,46 @@
+#pragma once
+// What the camera saw of one plane, cell by cell of a raster on it (the default method's
+// free space, paper 3.2.2, and its surface check, 3.2.3, read off one pass over the points).
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+#include <utility>
+#include <vector>
+
+#include "projsurf/core/plane.hpp"
+#include "projsurf/core/plane_frame.hpp"
+#include "projsurf/core/point_grid.hpp"
+#include "projsurf/core/raster.hpp"
+#include "projsurf/core/surface_check.hpp"
+
+namespace projsurf {
+
+/// Counts per raster cell (row-major, raster.rows x raster.cols). The
+/// matrices are row ranges of `bins` and `rays`, whose last rows absorb the points that count
+/// nowhere (so that the counting loop has no branches).
+struct PlaneObservation {
+    cv::Mat support;  ///< CV_32S: points on the plane (within the inlier band), at their foot on it
+    cv::Mat behind;   ///< CV_32S: points beyond the plane (a hole, a door), where their camera ray crosses it
+    cv::Mat shadow;   ///< CV_32S: points between the projector and the plane, where their shadow falls
+    cv::Mat seen;     ///< CV_32S: points whose camera ray crosses the plane in the cell (all of them)
+    int support_points = 0;
+    /// Cloud index and `seen` cell (row * cols + col) of every point of `seen` that is off the
+    /// plane by more than the tolerance margin.
+    std::vector<std::pair<int, int>> off_points;
+    cv::Mat bins, rays;  ///< CV_32S: support, behind, shadow, spare row; seen, spare row
+};
+
+/// One pass over the grid elements in `box` (grid coordinates): each finite point is on the
+/// plane (|h| <= band), beyond it (h < -margin), between the projector and the plane
+/// (margin < h < projector height), or in between (counted in `seen` only); h is its signed
+/// distance to the plane, positive towards the camera. Reuses `out`'s storage.
+void observePlane(const PointGrid &grid, const cv::Rect &box, const Plane &plane, const PlaneFrame &frame,
+                  const RasterFrame &raster, const Eigen::Vector3d &projector_origin, const DepthTolerance &tolerance,
+                  PlaneObservation &out);
+
+/// The default surface check (checkSurface's rule) read off an observation: the points whose
+/// camera ray crosses the plane in the cells whose centres lie in [lo, hi] (plane
+/// coordinates); rejected when more than `max_fraction` of them are off the plane.
+SurfaceCheckResult checkObservedSurface(const PlaneObservation &observation, const RasterFrame &raster,
+                                        const Eigen::Vector2d &lo, const Eigen::Vector2d &hi, double max_fraction);
+
+}  // namespace projsurf
