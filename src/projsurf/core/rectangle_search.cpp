@@ -24,15 +24,31 @@ struct BlockedSum {
     }
     int &at(int r, int c) { return s[static_cast<std::size_t>(r) * (cols + 1) + c]; }
     int at(int r, int c) const { return s[static_cast<std::size_t>(r) * (cols + 1) + c]; }
+    const int *row(int r) const { return s.data() + static_cast<std::size_t>(r) * (cols + 1); }
     int blocked(int r0, int c0, int nr, int nc) const {
         return at(r0 + nr, c0 + nc) - at(r0, c0 + nc) - at(r0 + nr, c0) + at(r0, c0);
     }
 };
 
+#if defined(__x86_64__) && defined(__linux__) && (defined(__GNUC__) || defined(__clang__))
+#define PROJSURF_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define PROJSURF_CLONES
+#endif
+
+/// Whether some placement of an nr x nc rectangle whose top row is `r` has no blocked cell;
+/// the whole row of placements is tested without an early exit, so that it vectorises.
+PROJSURF_CLONES
+bool rowFits(const BlockedSum &bs, int r, int nr, int nc) {
+    const int *top = bs.row(r), *bottom = bs.row(r + nr);
+    int found = 0;
+    for (int c = 0; c + nc <= bs.cols; ++c) found |= (bottom[c + nc] - top[c + nc] - bottom[c] + top[c]) == 0;
+    return found != 0;
+}
+
 bool anyFits(const BlockedSum &bs, int nr, int nc) {
     for (int r = 0; r + nr <= bs.rows; ++r)
-        for (int c = 0; c + nc <= bs.cols; ++c)
-            if (bs.blocked(r, c, nr, nc) == 0) return true;
+        if (rowFits(bs, r, nr, nc)) return true;
     return false;
 }
 
@@ -57,7 +73,8 @@ std::optional<GridRect> largestAspectRect(const cv::Mat &free_mask, double aspec
     const int nr = lo, nc = widthForRows(lo, aspect);
     GridRect best;
     double best_d = std::numeric_limits<double>::infinity();
-    for (int r = 0; r + nr <= bs.rows; ++r)
+    for (int r = 0; r + nr <= bs.rows; ++r) {
+        if (!rowFits(bs, r, nr, nc)) continue;
         for (int c = 0; c + nc <= bs.cols; ++c) {
             if (bs.blocked(r, c, nr, nc) != 0) continue;
             const double d = (Eigen::Vector2d(c + 0.5 * nc, r + 0.5 * nr) - prefer).squaredNorm();
@@ -66,6 +83,7 @@ std::optional<GridRect> largestAspectRect(const cv::Mat &free_mask, double aspec
                 best = {c, r, nc, nr};
             }
         }
+    }
     return best;
 }
 
