@@ -43,8 +43,8 @@ void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane
     const std::int32_t ncols = raster.cols, cells = raster.cols * raster.rows;
 
     std::vector<std::int32_t> bin(area.width), ray(area.width), off(area.width);
-    off_points.resize(static_cast<std::size_t>(area.width) * area.height);
-    std::size_t n_off = 0;
+    std::vector<std::pair<int, int>> row_off(area.width);
+    off_points.clear();
     std::int32_t on_plane = 0;
     for (int gr = area.y; gr < area.y + area.height; ++gr) {
         const std::size_t first = static_cast<std::size_t>(gr) * grid.cols + area.x;
@@ -83,14 +83,15 @@ void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane
         }
         // Count them (a scatter: scalar, but without branches).
         const int index0 = grid.cloudIndex(gr, area.x), index_step = grid.organized ? grid.step : 1;
+        std::size_t n_off = 0;
         for (int i = 0; i < area.width; ++i) {
             ++bins[bin[i]];
             ++seen[ray[i]];
-            off_points[n_off] = {index0 + i * index_step, ray[i]};
+            row_off[n_off] = {index0 + i * index_step, ray[i]};
             n_off += off[i];
         }
+        off_points.insert(off_points.end(), row_off.begin(), row_off.begin() + n_off);
     }
-    off_points.resize(n_off);
     support_points = on_plane;
 }
 

@@ -27,15 +27,20 @@ void fillPointGrid(const Cloud &cloud, int step, PointGrid &grid) {
     grid.y.resize(n);
     grid.z.resize(n);
     constexpr float nan = std::numeric_limits<float>::quiet_NaN();
-    std::size_t k = 0;
-    for (int r = 0; r < grid.rows; ++r)
-        for (int c = 0; c < grid.cols; ++c, ++k) {
-            const Point &p = cloud.points[grid.cloudIndex(r, c)];
-            const bool ok = isFinite(p);
-            grid.x[k] = ok ? p.x() : nan;
-            grid.y[k] = ok ? p.y() : nan;
-            grid.z[k] = ok ? p.z() : nan;
+    const int src_step = grid.organized ? grid.step : 1;
+    for (int r = 0; r < grid.rows; ++r) {
+        const Point *src = cloud.points.data() + grid.cloudIndex(r, 0);
+        const std::size_t k = static_cast<std::size_t>(r) * grid.cols;
+        float *x = grid.x.data() + k, *y = grid.y.data() + k, *z = grid.z.data() + k;
+        for (int c = 0; c < grid.cols; ++c) {
+            const Point &p = src[c * src_step];
+            // v - v is 0 for a finite v and NaN for an infinite or NaN one.
+            const bool ok = (p.x() - p.x() == 0.0f) & (p.y() - p.y() == 0.0f) & (p.z() - p.z() == 0.0f);
+            x[c] = ok ? p.x() : nan;
+            y[c] = ok ? p.y() : nan;
+            z[c] = ok ? p.z() : nan;
         }
+    }
 }
 
 }  // namespace projsurf

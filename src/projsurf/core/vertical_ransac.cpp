@@ -26,11 +26,15 @@ int countWithin(const float *x, const float *y, const float *z, const float *ban
 
 std::vector<int> planeInliers(const std::vector<Point> &points, const std::vector<int> &active,
                               const std::vector<float> &band, const Plane &plane) {
-    std::vector<int> out;
+    std::vector<int> out(active.size());
     const Eigen::Vector3f n = plane.normal.cast<float>();
     const float d = static_cast<float>(plane.d);
-    for (int i : active)
-        if (std::abs(n.dot(points[i]) + d) <= band[i]) out.push_back(i);
+    std::size_t kept = 0;
+    for (int i : active) {  // without a branch: inliers and outliers interleave unpredictably
+        out[kept] = i;
+        kept += std::abs(n.dot(points[i]) + d) <= band[i];
+    }
+    out.resize(kept);
     return out;
 }
 
@@ -41,10 +45,12 @@ std::optional<PlaneInliers> findVerticalPlane(const std::vector<Point> &points, 
     const Eigen::Vector3f g = gravity.normalized().cast<float>();
     const float max_sin_tilt = static_cast<float>(std::sin(options.max_tilt));
 
-    // Hypotheses are scored on a fixed random subset (all points when small).
+    // Hypotheses are scored on a fixed random subset (all points when small): the first
+    // score_subset places of a Fisher-Yates shuffle, which need no more draws than that.
     std::vector<int> subset = active;
     if (options.score_subset > 0 && static_cast<int>(subset.size()) > options.score_subset) {
-        std::shuffle(subset.begin(), subset.end(), rng);
+        for (std::size_t k = 0; k < static_cast<std::size_t>(options.score_subset); ++k)
+            std::swap(subset[k], subset[std::uniform_int_distribution<std::size_t>(k, subset.size() - 1)(rng)]);
         subset.resize(options.score_subset);
     }
     const int m = static_cast<int>(subset.size());
