@@ -1,5 +1,7 @@
 #include "bench_common.hpp"
 
+#include "projsurf/core/gravity.hpp"
+
 #include <sched.h>
 #include <sys/resource.h>
 #include <time.h>
@@ -47,6 +49,7 @@ std::vector<BenchFrame> loadRealFrames(const std::string &dir) {
             throw InputError(depth_path, "size differs from camera.yaml");
         f.cloud = depthToCloud(f.depth, f.camera);
         f.finite = countFinite(f.cloud);
+        if (const auto floor = estimateGravityFromFloor(f.cloud, f.gravity)) f.gravity = floor->gravity;
         frames.push_back(std::move(f));
     }
     return frames;
@@ -79,6 +82,7 @@ std::vector<BenchFrame> simulatorFrames(int max_frames) {
             f.depth = r.depth;
             f.cloud = std::move(r.cloud);
             f.finite = countFinite(f.cloud);
+            f.gravity = sc.gravity;
             frames.push_back(std::move(f));
         }
     return frames;
@@ -99,6 +103,7 @@ BenchFrame resizeFrame(const BenchFrame &frame, int width, int height) {
     cv::resize(frame.depth, f.depth, cv::Size(width, height), 0, 0, cv::INTER_NEAREST);
     f.cloud = depthToCloud(f.depth, f.camera);
     f.finite = countFinite(f.cloud);
+    f.gravity = frame.gravity;
     return f;
 }
 

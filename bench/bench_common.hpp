@@ -21,12 +21,17 @@ struct BenchFrame {
     cv::Mat depth;  ///< CV_16UC1
     Cloud cloud;    ///< organized, camera frame
     std::size_t finite = 0;
+    /// Camera frame. Simulated scenes: the scene's. Real frames are hand-held (rolled and
+    /// pitched), so: from the floor, as `projsurf detect --gravity auto` and the eval gallery
+    /// find it; a robot knows it from tf. Estimated once when loading, not timed.
+    Eigen::Vector3d gravity{0.0, 1.0, 0.0};
 };
 
 /// ../shared/data/real next to the source tree (the repository root's sibling).
 std::string defaultRealDir();
 
-/// Every sub-folder of `dir` holding depth.png and camera.yaml, sorted by name. Throws
+/// Every sub-folder of `dir` holding depth.png and camera.yaml, sorted by name, with gravity
+/// from the floor where one is seen (else the level camera's). Throws
 /// InputError when the folder is missing, holds no frame, or a frame is malformed.
 std::vector<BenchFrame> loadRealFrames(const std::string &dir);
 

@@ -48,16 +48,18 @@ struct StockStages {
     Rectangle rect;
     PclCloud::Ptr cropped;
     bool has_plane = false, has_raster = false, has_rect = false;
+    StockConfig config;  ///< with the frame's gravity
 };
 
 const std::vector<StockStages> &stockStages() {
     static const std::vector<StockStages> all = [] {
-        const StockConfig config;
         const Projector projector = sim::exampleProjector();
         std::vector<StockStages> out;
         for (const auto &f : frames()) {
             StockStages s;
             s.name = f.name;
+            s.config.gravity = f.gravity;
+            const StockConfig &config = s.config;
             s.cloud = toPcl(f.cloud);
             s.voxels = voxelGrid(s.cloud, config.voxel_leaf);
             s.sac = segmentVerticalPlane(s.voxels, config);
@@ -111,15 +113,20 @@ void setFrameCounters(benchmark::State &state, std::size_t used) {
 // --- ours ----------------------------------------------------------------------------------
 
 void detectBench(benchmark::State &state, Method method) {
-    DetectorConfig config;
-    config.method = method;
-    SurfaceDetector detector(sim::exampleProjector(), config);
     const auto &f = frames();
+    std::vector<SurfaceDetector> detectors;  // one per frame: each frame's gravity
+    for (const auto &frame : f) {
+        DetectorConfig config;
+        config.method = method;
+        config.gravity = frame.gravity;
+        detectors.emplace_back(sim::exampleProjector(), config);
+    }
     std::map<std::string, double> sums;
     double found = 0;
     std::size_t i = 0;
     for (auto _ : state) {
-        Detection d = detector.detect(f[i++ % f.size()].cloud);
+        const std::size_t k = i++ % f.size();
+        Detection d = detectors[k].detect(f[k].cloud);
         benchmark::DoNotOptimize(d);
         for (const auto &[key, ms] : d.timing_ms) sums[key] += ms;
         found += d.found;
@@ -153,9 +160,11 @@ void BM_StockVoxelGrid(benchmark::State &state) {
 }
 void BM_StockRansac(benchmark::State &state) {
     const auto s = reaching(nullptr);
-    const StockConfig config;
     std::size_t i = 0;
-    for (auto _ : state) benchmark::DoNotOptimize(segmentVerticalPlane(s[i++ % s.size()]->voxels, config));
+    for (auto _ : state) {
+        const StockStages *x = s[i++ % s.size()];
+        benchmark::DoNotOptimize(segmentVerticalPlane(x->voxels, x->config));
+    }
     setFrameCounters(state, s.size());
 }
 void BM_StockExtractProject(benchmark::State &state) {
@@ -223,11 +232,17 @@ void BM_StockOutliers(benchmark::State &state) {
 }
 void BM_StockTotal(benchmark::State &state) {
     const auto s = reaching(nullptr);
-    StockConfig config;
-    config.convex_too = false;  // the alternative hull is not part of the pipeline's time
-    const StockPipeline stock(sim::exampleProjector(), config);
+    std::vector<StockPipeline> stock;  // one per frame: each frame's gravity
+    for (const StockStages *x : s) {
+        StockConfig config = x->config;
+        config.convex_too = false;  // the alternative hull is not part of the pipeline's time
+        stock.emplace_back(sim::exampleProjector(), config);
+    }
     std::size_t i = 0;
-    for (auto _ : state) benchmark::DoNotOptimize(stock.run(s[i++ % s.size()]->cloud));
+    for (auto _ : state) {
+        const std::size_t k = i++ % s.size();
+        benchmark::DoNotOptimize(stock[k].run(s[k]->cloud));
+    }
     setFrameCounters(state, s.size());
 }
 
@@ -259,20 +274,35 @@ const std::vector<BenchFrame> &resized(int width, int height) {
 
 void BM_ScaleOursDefault(benchmark::State &state) {
     const auto &f = resized(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
-    SurfaceDetector detector(sim::exampleProjector(), DetectorConfig{});
+    std::vector<SurfaceDetector> detectors;
+    for (const auto &frame : f) {
+        DetectorConfig config;
+        config.gravity = frame.gravity;
+        detectors.emplace_back(sim::exampleProjector(), config);
+    }
     std::size_t i = 0;
-    for (auto _ : state) benchmark::DoNotOptimize(detector.detect(f[i++ % f.size()].cloud));
+    for (auto _ : state) {
+        const std::size_t k = i++ % f.size();
+        benchmark::DoNotOptimize(detectors[k].detect(f[k].cloud));
+    }
     state.SetComplexityN(state.range(0) * state.range(1));
 }
 void BM_ScaleStock(benchmark::State &state) {
     const auto &f = resized(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
     std::vector<PclCloud::Ptr> clouds;
-    for (const auto &fr : f) clouds.push_back(toPcl(fr.cloud));
-    StockConfig config;
-    config.convex_too = false;
-    const StockPipeline stock(sim::exampleProjector(), config);
+    std::vector<StockPipeline> stock;
+    for (const auto &fr : f) {
+        clouds.push_back(toPcl(fr.cloud));
+        StockConfig config;
+        config.convex_too = false;
+        config.gravity = fr.gravity;
+        stock.emplace_back(sim::exampleProjector(), config);
+    }
     std::size_t i = 0;
-    for (auto _ : state) benchmark::DoNotOptimize(stock.run(clouds[i++ % clouds.size()]));
+    for (auto _ : state) {
+        const std::size_t k = i++ % clouds.size();
+        benchmark::DoNotOptimize(stock[k].run(clouds[k]));
+    }
     state.SetComplexityN(state.range(0) * state.range(1));
 }
 

@@ -77,17 +77,23 @@ struct Pipeline {
 };
 
 Pipeline oursPipeline(const std::string &name, const Projector &projector, Method method) {
-    DetectorConfig config;
-    config.method = method;
-    auto detector = std::make_shared<SurfaceDetector>(projector, config);  // reused: a frame stream
+    // One detector reused over a frame stream, rebuilt (untimed) when gravity changes, as the
+    // ROS node does.
+    auto detector = std::make_shared<std::unique_ptr<SurfaceDetector>>();
     Pipeline p;
     p.name = name;
-    p.prepare = [](const BenchFrame &) {};
+    p.prepare = [detector, projector, method](const BenchFrame &frame) {
+        if (*detector && (*detector)->config().gravity == frame.gravity) return;
+        DetectorConfig config;
+        config.method = method;
+        config.gravity = frame.gravity;
+        *detector = std::make_unique<SurfaceDetector>(projector, config);
+    };
     p.run = [detector](const BenchFrame &frame, Outcome &out) {
         Run r;
         const double c0 = threadCpuMs();
         const auto t0 = Clock::now();
-        const Detection d = detector->detect(frame.cloud);
+        const Detection d = (*detector)->detect(frame.cloud);
         r.wall_ms = msSince(t0);
         r.cpu_ms = threadCpuMs() - c0;
         for (const auto &[key, ms] : d.timing_ms)
@@ -105,16 +111,21 @@ Pipeline oursPipeline(const std::string &name, const Projector &projector, Metho
 }
 
 Pipeline stockPipeline(const Projector &projector) {
-    auto stock = std::make_shared<StockPipeline>(projector, StockConfig{});
+    auto stock = std::make_shared<std::unique_ptr<StockPipeline>>();
     auto cloud = std::make_shared<PclCloud::Ptr>();
     Pipeline p;
     p.name = "stock PCL";
-    p.prepare = [cloud](const BenchFrame &frame) { *cloud = toPcl(frame.cloud); };
+    p.prepare = [stock, cloud, projector](const BenchFrame &frame) {
+        *cloud = toPcl(frame.cloud);
+        StockConfig config;
+        config.gravity = frame.gravity;
+        *stock = std::make_unique<StockPipeline>(projector, config);
+    };
     p.run = [stock, cloud](const BenchFrame &, Outcome &out) {
         Run r;
         const double c0 = threadCpuMs();
         const auto t0 = Clock::now();
-        const StockResult s = stock->run(*cloud);
+        const StockResult s = (*stock)->run(*cloud);
         r.wall_ms = msSince(t0);
         r.cpu_ms = threadCpuMs() - c0;
         for (const auto &[key, ms] : s.timing_ms)
