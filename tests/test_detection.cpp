@@ -67,6 +67,8 @@ TEST_P(DetectionScenes, DefaultFindsTheBestValidRectangle) {
             for (const auto &p : c) EXPECT_NEAR(o.det.plane.signedDistance(p), 0.0, 1e-9);
             EXPECT_TRUE(o.det.surface_check.accepted);
         }
+        // The outliers listed for the overlay are the ones the check counted.
+        EXPECT_EQ(o.det.debug.outliers.size(), static_cast<std::size_t>(o.det.surface_check.outliers)) << name;
     }
 }
 

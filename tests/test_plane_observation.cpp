@@ -114,12 +114,21 @@ TEST(PlaneObservation, SortsPointsIntoSupportHolesAndShadows) {
     const Eigen::Vector2d shadow = w.frame.toPlane(on_wall);
     EXPECT_EQ(cv::sum(obs.shadow)[0], 1);
     EXPECT_EQ(at(obs.shadow, w.cellOf(shadow.x(), shadow.y())), 1);
-    // Off the plane beyond the margin: the obstacle and the hole, not the point 2 cm off.
-    ASSERT_EQ(obs.off_points.size(), 2u);
-    std::vector<int> off;
-    for (const auto &[index, cell] : obs.off_points) off.push_back(index);
+    // Off the plane beyond the margin: the obstacle and the hole, not the point 2 cm off; where
+    // their camera rays cross the wall, and which points they are.
+    const Eigen::Vector2d obstacle_uv = w.uvOfPixel(10, 10) * (2.0 / 1.5);
+    EXPECT_EQ(cv::sum(obs.off)[0], 2);
+    EXPECT_EQ(at(obs.off, w.cellOf(hole.x(), hole.y())), 1);
+    EXPECT_EQ(at(obs.off, w.cellOf(obstacle_uv.x(), obstacle_uv.y())), 1);
+    std::vector<int> off = offPlanePoints(grid, grid.gridBox({}), w.plane, w.frame, w.raster, DepthTolerance{},
+                                          {-1.4, -1.1}, {1.4, 1.1});
     std::sort(off.begin(), off.end());
     EXPECT_EQ(off, (std::vector<int>{10 * 64 + 10, 30 * 64 + 40}));
+    // Only those whose camera ray crosses the wall inside the rectangle asked about.
+    const Eigen::Vector2d lo = hole - Eigen::Vector2d(0.2, 0.2), hi = hole + Eigen::Vector2d(0.2, 0.2);
+    EXPECT_EQ(offPlanePoints(grid, grid.gridBox({}), w.plane, w.frame, w.raster, DepthTolerance{}, lo, hi),
+              (std::vector<int>{30 * 64 + 40}));
+    EXPECT_EQ(checkObservedSurface(obs, w.raster, lo, hi, 0.03).outliers, 1);
 }
 
 TEST(PlaneObservation, LooksOnlyInsideTheBoxAndTheRaster) {
@@ -163,7 +172,8 @@ TEST(PlaneObservation, SurfaceCheckAgreesWithThePointByPointReference) {
             // differs along a 2.1 m perimeter, under 2 % of the points here.
             EXPECT_NEAR(got.points, ref.points, 0.02 * ref.points) << u << " " << v;
             EXPECT_NEAR(got.outliers, ref.outliers, 0.02 * ref.points + 2) << u << " " << v;
-            EXPECT_EQ(got.outliers, static_cast<int>(got.outlier_indices.size()));
+            EXPECT_EQ(got.outliers, static_cast<int>(offPlanePoints(grid, grid.gridBox({}), wall, pf, raster,
+                                                                    DepthTolerance{}, lo, hi).size()));
             if (std::abs(ref.outliers - 0.03 * ref.points) > 0.01 * ref.points) {
                 EXPECT_EQ(got.accepted, ref.accepted) << u << " " << v;
             }

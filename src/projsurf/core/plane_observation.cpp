@@ -20,8 +20,7 @@ namespace {
 PROJSURF_CLONES
 void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane, const PlaneFrame &frame,
                  const RasterFrame &raster, const Eigen::Vector3d &projector_origin, const DepthTolerance &tolerance,
-                 std::int32_t *bins, std::int32_t *seen,
-                 std::vector<std::pair<int, int>> &off_points, int &support_points) {
+                 std::int32_t *bins, std::int32_t *seen, std::int32_t *off_counts, int &support_points) {
     // Everything in float and as plain scalars, so that the per-point loop vectorises.
     // Raster column of a point q of the plane: q . R + cr; row: q . U + cu.
     const Eigen::Vector3d R = frame.right / raster.cell, U = -frame.up / raster.cell;
@@ -43,8 +42,6 @@ void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane
     const std::int32_t ncols = raster.cols, cells = raster.cols * raster.rows;
 
     std::vector<std::int32_t> bin(area.width), ray(area.width), off(area.width);
-    std::vector<std::pair<int, int>> row_off(area.width);
-    off_points.clear();
     std::int32_t on_plane = 0;
     for (int gr = area.y; gr < area.y + area.height; ++gr) {
         const std::size_t first = static_cast<std::size_t>(gr) * grid.cols + area.x;
@@ -82,15 +79,11 @@ void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane
             on_plane += on & bin_in;
         }
         // Count them (a scatter: scalar, but without branches).
-        const int index0 = grid.cloudIndex(gr, area.x), index_step = grid.organized ? grid.step : 1;
-        std::size_t n_off = 0;
         for (int i = 0; i < area.width; ++i) {
             ++bins[bin[i]];
             ++seen[ray[i]];
-            row_off[n_off] = {index0 + i * index_step, ray[i]};
-            n_off += off[i];
+            off_counts[ray[i]] += off[i];
         }
-        off_points.insert(off_points.end(), row_off.begin(), row_off.begin() + n_off);
     }
     support_points = on_plane;
 }
@@ -102,39 +95,86 @@ void observePlane(const PointGrid &grid, const cv::Rect &box, const Plane &plane
                   PlaneObservation &out) {
     const int rows = raster.rows, cols = raster.cols;
     out.bins.create(3 * rows + 1, cols, CV_32SC1);
-    out.rays.create(rows + 1, cols, CV_32SC1);
+    out.rays.create(2 * rows + 2, cols, CV_32SC1);
     out.bins.setTo(0);
     out.rays.setTo(0);
     out.support = out.bins.rowRange(0, rows);
     out.behind = out.bins.rowRange(rows, 2 * rows);
     out.shadow = out.bins.rowRange(2 * rows, 3 * rows);
     out.seen = out.rays.rowRange(0, rows);
+    out.off = out.rays.rowRange(rows + 1, 2 * rows + 1);
     const cv::Rect area = box & cv::Rect(0, 0, grid.cols, grid.rows);
     observeRows(grid, area, plane, frame, raster, projector_origin, tolerance, out.bins.ptr<std::int32_t>(),
-                out.seen.ptr<std::int32_t>(), out.off_points, out.support_points);
+                out.seen.ptr<std::int32_t>(), out.off.ptr<std::int32_t>(), out.support_points);
 }
+
+namespace {
+
+/// Cells [c0, c1] x [r0, r1] whose centre (top_left + (col + 0.5, -(row + 0.5)) * cell) is
+/// inside [lo, hi]; empty when c0 > c1 or r0 > r1.
+struct CellRange {
+    int c0, c1, r0, r1;
+    bool empty() const { return c0 > c1 || r0 > r1; }
+    bool contains(int row, int col) const { return row >= r0 && row <= r1 && col >= c0 && col <= c1; }
+};
+
+CellRange cellsInside(const RasterFrame &raster, const Eigen::Vector2d &lo, const Eigen::Vector2d &hi) {
+    const double cell = raster.cell;
+    return {std::max(0, static_cast<int>(std::ceil((lo.x() - raster.top_left.x()) / cell - 0.5))),
+            std::min(raster.cols - 1, static_cast<int>(std::floor((hi.x() - raster.top_left.x()) / cell - 0.5))),
+            std::max(0, static_cast<int>(std::ceil((raster.top_left.y() - hi.y()) / cell - 0.5))),
+            std::min(raster.rows - 1, static_cast<int>(std::floor((raster.top_left.y() - lo.y()) / cell - 0.5)))};
+}
+
+}  // namespace
 
 SurfaceCheckResult checkObservedSurface(const PlaneObservation &observation, const RasterFrame &raster,
                                         const Eigen::Vector2d &lo, const Eigen::Vector2d &hi, double max_fraction) {
-    // Cells whose centre (top_left + (col + 0.5, -(row + 0.5)) * cell) is inside [lo, hi].
-    const double cell = raster.cell;
-    const int c0 = std::max(0, static_cast<int>(std::ceil((lo.x() - raster.top_left.x()) / cell - 0.5)));
-    const int c1 = std::min(raster.cols - 1, static_cast<int>(std::floor((hi.x() - raster.top_left.x()) / cell - 0.5)));
-    const int r0 = std::max(0, static_cast<int>(std::ceil((raster.top_left.y() - hi.y()) / cell - 0.5)));
-    const int r1 = std::min(raster.rows - 1, static_cast<int>(std::floor((raster.top_left.y() - lo.y()) / cell - 0.5)));
+    const CellRange cells = cellsInside(raster, lo, hi);
     SurfaceCheckResult r;
-    if (c0 > c1 || r0 > r1 || observation.seen.empty()) return r;
-    for (int row = r0; row <= r1; ++row) {
-        const auto *seen = observation.seen.ptr<std::int32_t>(row);
-        for (int col = c0; col <= c1; ++col) r.points += seen[col];
+    if (cells.empty() || observation.seen.empty()) return r;
+    for (int row = cells.r0; row <= cells.r1; ++row) {
+        const auto *seen = observation.seen.ptr<std::int32_t>(row), *off = observation.off.ptr<std::int32_t>(row);
+        for (int col = cells.c0; col <= cells.c1; ++col) {
+            r.points += seen[col];
+            r.outliers += off[col];
+        }
     }
-    for (const auto &[index, cell_index] : observation.off_points) {
-        const int row = cell_index / raster.cols, col = cell_index % raster.cols;
-        if (row >= r0 && row <= r1 && col >= c0 && col <= c1) r.outlier_indices.push_back(index);
-    }
-    r.outliers = static_cast<int>(r.outlier_indices.size());
     r.accepted = r.points > 0 && r.outliers <= max_fraction * r.points;
     return r;
+}
+
+std::vector<int> offPlanePoints(const PointGrid &grid, const cv::Rect &box, const Plane &plane, const PlaneFrame &frame,
+                                const RasterFrame &raster, const DepthTolerance &tolerance, const Eigen::Vector2d &lo,
+                                const Eigen::Vector2d &hi) {
+    // The same float arithmetic as observeRows, one point at a time.
+    const CellRange cells = cellsInside(raster, lo, hi);
+    std::vector<int> out;
+    if (cells.empty()) return out;
+    const Eigen::Vector3d R = frame.right / raster.cell, U = -frame.up / raster.cell;
+    const float col0 = static_cast<float>(-frame.origin.dot(R) - raster.top_left.x() / raster.cell);
+    const float row0 = static_cast<float>(-frame.origin.dot(U) + raster.top_left.y() / raster.cell);
+    const Eigen::Vector3f n = plane.normal.cast<float>(), r = R.cast<float>(), u = U.cast<float>();
+    const float d = static_cast<float>(plane.d);
+    const cv::Rect area = box & cv::Rect(0, 0, grid.cols, grid.rows);
+    for (int gr = area.y; gr < area.y + area.height; ++gr)
+        for (int gc = area.x; gc < area.x + area.width; ++gc) {
+            const std::size_t k = static_cast<std::size_t>(gr) * grid.cols + gc;
+            const float px = grid.x[k], py = grid.y[k], pz = grid.z[k];
+            const float np = n.x() * px + n.y() * py + n.z() * pz, h = np + d;
+            const float band = std::min(std::max(static_cast<float>(tolerance.sigmas * tolerance.noise_k) * pz * pz,
+                                                 static_cast<float>(tolerance.min_band)),
+                                        static_cast<float>(tolerance.max_band));
+            const float margin = std::max(static_cast<float>(tolerance.obstacle_bands) * band,
+                                          static_cast<float>(tolerance.min_obstacle));
+            if (!(std::abs(h) > margin) || !(std::abs(np) >= 1e-6f)) continue;
+            const float t = -d / np;
+            const float tc = t * (r.x() * px + r.y() * py + r.z() * pz) + col0;
+            const float tw = t * (u.x() * px + u.y() * py + u.z() * pz) + row0;
+            if (!(t > 0.0f) || !(tc >= 0.0f) || !(tw >= 0.0f)) continue;
+            if (cells.contains(static_cast<int>(tw), static_cast<int>(tc))) out.push_back(grid.cloudIndex(gr, gc));
+        }
+    return out;
 }
 
 }  // namespace projsurf

@@ -22,11 +22,9 @@ struct PlaneObservation {
     cv::Mat behind;   ///< CV_32S: points beyond the plane (a hole, a door), where their camera ray crosses it
     cv::Mat shadow;   ///< CV_32S: points between the projector and the plane, where their shadow falls
     cv::Mat seen;     ///< CV_32S: points whose camera ray crosses the plane in the cell (all of them)
+    cv::Mat off;      ///< CV_32S: of `seen`, the points off the plane by more than the tolerance margin
     int support_points = 0;
-    /// Cloud index and `seen` cell (row * cols + col) of every point of `seen` that is off the
-    /// plane by more than the tolerance margin.
-    std::vector<std::pair<int, int>> off_points;
-    cv::Mat bins, rays;  ///< CV_32S: support, behind, shadow, spare row; seen, spare row
+    cv::Mat bins, rays;  ///< CV_32S: support, behind, shadow, spare row; seen, spare row, off, spare row
 };
 
 /// One pass over the grid elements in `box` (grid coordinates): each finite point is on the
@@ -39,8 +37,16 @@ void observePlane(const PointGrid &grid, const cv::Rect &box, const Plane &plane
 
 /// The default surface check (checkSurface's rule) read off an observation: the points whose
 /// camera ray crosses the plane in the cells whose centres lie in [lo, hi] (plane
-/// coordinates); rejected when more than `max_fraction` of them are off the plane.
+/// coordinates); rejected when more than `max_fraction` of them are off the plane. The counts
+/// only: outlier_indices stays empty (offPlanePoints lists them, for the rectangle kept).
 SurfaceCheckResult checkObservedSurface(const PlaneObservation &observation, const RasterFrame &raster,
                                         const Eigen::Vector2d &lo, const Eigen::Vector2d &hi, double max_fraction);
+
+/// Cloud indices of the points that checkObservedSurface counts as off the plane for [lo, hi],
+/// looked for among the grid elements in `box` (which must hold all of them: the pixels where
+/// the rectangle is seen).
+std::vector<int> offPlanePoints(const PointGrid &grid, const cv::Rect &box, const Plane &plane, const PlaneFrame &frame,
+                                const RasterFrame &raster, const DepthTolerance &tolerance, const Eigen::Vector2d &lo,
+                                const Eigen::Vector2d &hi);
 
 }  // namespace projsurf

@@ -85,6 +85,23 @@ cv::Rect rasterImageBox(const CameraIntrinsics &camera, const Candidate &c, cons
     return box & image;
 }
 
+/// Pixels where the camera sees a rectangle (its corners in front of the camera), grown by
+/// `margin`; empty (all pixels) otherwise.
+cv::Rect imageBoxOf(const CameraIntrinsics &camera, const Rectangle &rect, int margin) {
+    Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e6), hi = Eigen::Vector2d::Constant(-1e6);
+    for (const Eigen::Vector3d &corner : rect.corners) {
+        if (corner.z() < 1e-3) return {};
+        const Eigen::Vector2d px = camera.project(corner);
+        lo = lo.cwiseMin(px);
+        hi = hi.cwiseMax(px);
+    }
+    lo = lo.cwiseMax(-1e6);
+    hi = hi.cwiseMin(1e6);
+    const cv::Rect pixels(cv::Point(static_cast<int>(std::floor(lo.x())) - margin, static_cast<int>(std::floor(lo.y())) - margin),
+                          cv::Point(static_cast<int>(std::ceil(hi.x())) + margin + 1, static_cast<int>(std::ceil(hi.y())) + margin + 1));
+    return pixels & cv::Rect(0, 0, camera.width, camera.height);
+}
+
 /// The projector workspace on the plane: the corner rays meet it (paper eqs. 5-6).
 bool workspaceOnPlane(const Eigen::Vector3d &origin, const std::array<Eigen::Vector3d, 4> &rays, Candidate &c) {
     for (int i = 0; i < 4; ++i) {
@@ -517,6 +534,7 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
 
     const Candidate *chosen = nullptr;
     SurfaceCheckResult last;
+    int last_k = -1;  // the candidate `last` checked
     std::vector<int> placed;
     for (int k : usable) {
         if (chosen && bound[k] <= chosen->rectangle.area()) break;
@@ -538,9 +556,23 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         const SurfaceCheckResult check = checkObservedSurface(c.observed, c.raster, c.frame.toPlane(inner.corners[3]),
                                                               c.frame.toPlane(inner.corners[1]), cfg.max_outlier_fraction);
         ms_check += msSince(t);
-        if (check.accepted || !chosen) last = check;
+        if (check.accepted || !chosen) {
+            last = check;
+            last_k = k;
+        }
         if (check.accepted) chosen = &c;
     }
+    // The outliers of the check reported, by index (for overlays): looked for only where the
+    // camera sees that rectangle.
+    t = Clock::now();
+    if (last_k >= 0) {
+        const Candidate &c = candidates[last_k];
+        const Rectangle inner = shrink(c.frame, c.rectangle, c.raster.cell);
+        const cv::Rect box = camera ? imageBoxOf(*camera, inner, 2 + cfg.support_stride) : c.image_box;
+        last.outlier_indices = offPlanePoints(grid, grid.gridBox(box), c.plane, c.frame, c.raster, tol,
+                                              c.frame.toPlane(inner.corners[3]), c.frame.toPlane(inner.corners[1]));
+    }
+    ms_check += msSince(t);
     det.timing_ms["free_space"] = ms_free;
     det.timing_ms["rectangle"] = ms_rect;
     det.timing_ms["surface_check"] = ms_check;
