@@ -94,18 +94,19 @@ void observePlane(const PointGrid &grid, const cv::Rect &box, const Plane &plane
                   const RasterFrame &raster, const Eigen::Vector3d &projector_origin, const DepthTolerance &tolerance,
                   PlaneObservation &out) {
     const int rows = raster.rows, cols = raster.cols;
-    out.bins.create(3 * rows + 1, cols, CV_32SC1);
-    out.rays.create(2 * rows + 2, cols, CV_32SC1);
-    out.bins.setTo(0);
-    out.rays.setTo(0);
-    out.support = out.bins.rowRange(0, rows);
-    out.behind = out.bins.rowRange(rows, 2 * rows);
-    out.shadow = out.bins.rowRange(2 * rows, 3 * rows);
-    out.seen = out.rays.rowRange(0, rows);
-    out.off = out.rays.rowRange(rows + 1, 2 * rows + 1);
+    const std::size_t row_cells = static_cast<std::size_t>(cols), total = (3 * rows + 1 + 2 * rows + 2) * row_cells;
+    if (out.counts.size() < total) out.counts.resize(total);
+    std::fill_n(out.counts.data(), total, 0);
+    std::int32_t *bins = out.counts.data(), *rays = bins + (3 * rows + 1) * row_cells;
+    auto view = [&](std::int32_t *first) { return cv::Mat(rows, cols, CV_32SC1, first); };
+    out.support = view(bins);
+    out.behind = view(bins + rows * row_cells);
+    out.shadow = view(bins + 2 * rows * row_cells);
+    out.seen = view(rays);
+    out.off = view(rays + (rows + 1) * row_cells);
     const cv::Rect area = box & cv::Rect(0, 0, grid.cols, grid.rows);
-    observeRows(grid, area, plane, frame, raster, projector_origin, tolerance, out.bins.ptr<std::int32_t>(),
-                out.seen.ptr<std::int32_t>(), out.off.ptr<std::int32_t>(), out.support_points);
+    observeRows(grid, area, plane, frame, raster, projector_origin, tolerance, bins, rays, rays + (rows + 1) * row_cells,
+                out.support_points);
 }
 
 namespace {

@@ -2,6 +2,7 @@
 // What the camera saw of one plane, cell by cell of a raster on it (the default method's
 // free space, paper 3.2.2, and its surface check, 3.2.3, read off one pass over the points).
 #include <Eigen/Core>
+#include <cstdint>
 #include <opencv2/core.hpp>
 #include <utility>
 #include <vector>
@@ -14,17 +15,25 @@
 
 namespace projsurf {
 
-/// Counts per raster cell (row-major, raster.rows x raster.cols). The
-/// matrices are row ranges of `bins` and `rays`, whose last rows absorb the points that count
-/// nowhere (so that the counting loop has no branches).
+/// Counts per raster cell (row-major, raster.rows x raster.cols). The matrices are views into
+/// `counts`, which only grows, so that a stream of frames allocates nothing once warm (hence
+/// no copies: they would share the views); spare rows after each block absorb the points
+/// that count nowhere, so that the counting loop has no branches.
 struct PlaneObservation {
+    PlaneObservation() = default;
+    PlaneObservation(const PlaneObservation &) = delete;
+    PlaneObservation &operator=(const PlaneObservation &) = delete;
+    PlaneObservation(PlaneObservation &&) = default;  // the vector's buffer moves with it
+    PlaneObservation &operator=(PlaneObservation &&) = default;
+
     cv::Mat support;  ///< CV_32S: points on the plane (within the inlier band), at their foot on it
     cv::Mat behind;   ///< CV_32S: points beyond the plane (a hole, a door), where their camera ray crosses it
     cv::Mat shadow;   ///< CV_32S: points between the projector and the plane, where their shadow falls
     cv::Mat seen;     ///< CV_32S: points whose camera ray crosses the plane in the cell (all of them)
     cv::Mat off;      ///< CV_32S: of `seen`, the points off the plane by more than the tolerance margin
     int support_points = 0;
-    cv::Mat bins, rays;  ///< CV_32S: support, behind, shadow, spare row; seen, spare row, off, spare row
+    /// support, behind, shadow, spare row; seen, spare row, off, spare row
+    std::vector<std::int32_t> counts;
 };
 
 /// One pass over the grid elements in `box` (grid coordinates): each finite point is on the

@@ -24,6 +24,16 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
+}  // namespace
+
+/// Working buffers kept by a SurfaceDetector from one frame to the next.
+struct DetectorScratch {
+    PointGrid grid;
+    std::vector<PlaneObservation> observations;  ///< one per candidate plane
+};
+
+namespace {
+
 /// A vertical plane under consideration and what was found on it.
 struct Candidate {
     Plane plane;
@@ -38,7 +48,7 @@ struct Candidate {
     std::vector<std::vector<Eigen::Vector3d>> outlines;
     std::vector<int> inlier_indices;
     cv::Rect image_box;  // organized clouds: the pixels where the plane is seen (empty = all)
-    PlaneObservation observed;  // default mode: what the camera saw of the plane, per raster cell
+    PlaneObservation *observed = nullptr;  // default mode: what the camera saw of the plane, per raster cell
 };
 
 /// Pixels of an organized cloud where the candidate's sampled inliers lie, grown by `margin`.
@@ -315,9 +325,9 @@ void observedFreeSpace(const Cloud &cloud, const PointGrid &grid, const Projecto
     const DepthTolerance tol = cfg.tolerance();
     // Organized clouds: only the pixels where this plane is seen (holes in it and things in
     // front of it are seen there too); unorganized: every point.
-    observePlane(grid, grid.gridBox(c.image_box), c.plane, c.frame, c.raster, projector.origin, tol, c.observed);
-    const cv::Mat &support = c.observed.support, &behind = c.observed.behind, &shadow = c.observed.shadow;
-    const int step = grid.step, support_points = c.observed.support_points;
+    observePlane(grid, grid.gridBox(c.image_box), c.plane, c.frame, c.raster, projector.origin, tol, *c.observed);
+    const cv::Mat &support = c.observed->support, &behind = c.observed->behind, &shadow = c.observed->shadow;
+    const int step = grid.step, support_points = c.observed->support_points;
     // Support: cells with wall points, the gaps between neighbouring samples closed.
     const int gap = std::clamp(static_cast<int>(std::ceil(sampleSpacing(cloud, c, step, tol, support_points) / c.raster.cell)), 1, 8);
     cv::Mat supported = support > 0;
@@ -405,7 +415,8 @@ void refineRectangle(Candidate &c, double aspect) {
     c.rectangle = makeRectangle(c.frame, mid - half, mid + half);
 }
 
-Detection detectDefault(const Cloud &cloud, const Projector &projector, const DetectorConfig &cfg, double aspect) {
+Detection detectDefault(const Cloud &cloud, const Projector &projector, const DetectorConfig &cfg, double aspect,
+                        DetectorScratch &scratch) {
     Detection det;
     const auto t0 = Clock::now();
     auto t = Clock::now();
@@ -528,8 +539,10 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         usable.push_back(k);
     }
     std::sort(usable.begin(), usable.end(), [&](int a, int b) { return bound[a] > bound[b]; });
-    PointGrid grid;
+    PointGrid &grid = scratch.grid;
     if (!usable.empty()) fillPointGrid(cloud, cfg.support_stride, grid);
+    if (scratch.observations.size() < candidates.size()) scratch.observations.resize(candidates.size());
+    for (std::size_t k = 0; k < candidates.size(); ++k) candidates[k].observed = &scratch.observations[k];
     double ms_free = msSince(t), ms_rect = 0.0, ms_check = 0.0;
 
     const Candidate *chosen = nullptr;
@@ -553,7 +566,7 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         // looks one raster cell inside the rectangle.
         t = Clock::now();
         const Rectangle inner = shrink(c.frame, c.rectangle, c.raster.cell);
-        const SurfaceCheckResult check = checkObservedSurface(c.observed, c.raster, c.frame.toPlane(inner.corners[3]),
+        const SurfaceCheckResult check = checkObservedSurface(*c.observed, c.raster, c.frame.toPlane(inner.corners[3]),
                                                               c.frame.toPlane(inner.corners[1]), cfg.max_outlier_fraction);
         ms_check += msSince(t);
         if (check.accepted || !chosen) {
@@ -617,12 +630,15 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
 }  // namespace
 
 SurfaceDetector::SurfaceDetector(const Projector &projector, const DetectorConfig &config)
-    : projector_(projector), config_(config) {}
+    : projector_(projector), config_(config), scratch_(std::make_unique<DetectorScratch>()) {}
+SurfaceDetector::~SurfaceDetector() = default;
+SurfaceDetector::SurfaceDetector(SurfaceDetector &&) noexcept = default;
+SurfaceDetector &SurfaceDetector::operator=(SurfaceDetector &&) noexcept = default;
 
 Detection SurfaceDetector::detect(const Cloud &cloud) {
     const double aspect = config_.aspect > 0.0 ? config_.aspect : projector_.aspect();
     return config_.method == Method::Paper ? detectPaper(cloud, projector_, config_, aspect)
-                                           : detectDefault(cloud, projector_, config_, aspect);
+                                           : detectDefault(cloud, projector_, config_, aspect, *scratch_);
 }
 
 Detection detectSurface(const Cloud &cloud, const Projector &projector, const DetectorConfig &config) {

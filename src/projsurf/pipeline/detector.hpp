@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <map>
+#include <memory>
 #include <opencv2/core.hpp>
 #include <string>
 #include <vector>
@@ -84,11 +85,17 @@ struct Detection {
     DetectionDebug debug;
 };
 
-/// Runs detection with a fixed projector and configuration. Each call still allocates its
-/// own working buffers (samples, rasters); reusing them across frames is open work (issue 5).
+struct DetectorScratch;
+
+/// Runs detection with a fixed projector and configuration over a stream of frames, keeping
+/// the largest working buffers (the point grid, the per-plane counts) from one frame to the
+/// next.
 class SurfaceDetector {
 public:
     SurfaceDetector(const Projector &projector, const DetectorConfig &config);
+    ~SurfaceDetector();
+    SurfaceDetector(SurfaceDetector &&) noexcept;
+    SurfaceDetector &operator=(SurfaceDetector &&) noexcept;
     Detection detect(const Cloud &cloud);
     const DetectorConfig &config() const { return config_; }
     const Projector &projector() const { return projector_; }
@@ -96,6 +103,7 @@ public:
 private:
     Projector projector_;
     DetectorConfig config_;
+    std::unique_ptr<DetectorScratch> scratch_;
 };
 
 /// One-shot convenience.
