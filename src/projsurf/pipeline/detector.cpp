@@ -267,6 +267,7 @@ Detection detectPaper(const Cloud &cloud, const Projector &projector, const Dete
 /// Sampled point indices: a pixel grid on organized clouds, every k-th point otherwise.
 std::vector<int> samplePoints(const Cloud &cloud, int target) {
     std::vector<int> out;
+    out.reserve(static_cast<std::size_t>(target) * 5 / 4);
     const int n = static_cast<int>(cloud.points.size());
     if (cloud.organized()) {
         const int s = std::max(1, static_cast<int>(std::round(std::sqrt(static_cast<double>(n) / target))));
@@ -429,7 +430,10 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         band[i] = tol.band(pts[i].z());
     }
     // Organized clouds are pinhole images: their intrinsics tell where a volume is seen.
-    const std::optional<CameraIntrinsics> camera = fitIntrinsics(cloud, sample);
+    // (Every 8th sampled point is plenty for four parameters.)
+    std::vector<int> probe;
+    for (std::size_t i = 0; i < sample.size(); i += 8) probe.push_back(sample[i]);
+    const std::optional<CameraIntrinsics> camera = fitIntrinsics(cloud, probe);
     float near = std::numeric_limits<float>::infinity();  // m, the nearest sampled point
     for (const Point &p : pts) near = std::min(near, p.z());
     det.timing_ms["sample"] = msSince(t);
