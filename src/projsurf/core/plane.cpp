@@ -17,14 +17,21 @@ Plane makePlane(const Eigen::Vector3d &normal, double d) {
 
 std::optional<Plane> fitPlane(const std::vector<Point> &points, const std::vector<int> &indices) {
     if (indices.size() < 3) return std::nullopt;
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (int i : indices) mean += points[i].cast<double>();
-    mean /= static_cast<double>(indices.size());
-    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    // One pass: sums of p and p p^T about the first point (in double, so the shifted second
+    // moments lose nothing that matters at metre scale).
+    const Eigen::Vector3d origin = points[indices.front()].cast<double>();
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
     for (int i : indices) {
-        const Eigen::Vector3d q = points[i].cast<double>() - mean;
-        cov += q * q.transpose();
+        const Eigen::Vector3d q = points[i].cast<double>() - origin;
+        sum += q;
+        outer.selfadjointView<Eigen::Upper>().rankUpdate(q);
     }
+    const double count = static_cast<double>(indices.size());
+    const Eigen::Vector3d shift = sum / count;
+    const Eigen::Vector3d mean = origin + shift;
+    Eigen::Matrix3d cov = outer.selfadjointView<Eigen::Upper>();
+    cov -= count * shift * shift.transpose();
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
     const auto &ev = solver.eigenvalues();
     if (!(ev(1) > 1e-12 * std::max(1.0, ev(2)))) return std::nullopt;  // collinear
