@@ -1,4 +1,5 @@
 #include "projsurf/core/plane_observation.hpp"
+#include "projsurf/core/target_clones.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,16 +7,6 @@
 
 namespace projsurf {
 namespace {
-
-// The pass is compiled twice on x86-64 Linux, for AVX2 and for the baseline, and the loader
-// picks the one the CPU runs (GCC / Clang function multi-versioning). AVX2 brings 8-wide
-// floats, blends and 32-bit integer multiplies that SSE2 lacks: 0.99 -> 0.60 ms per pass on
-// a TUM frame (measured on this project's Xeon).
-#if defined(__x86_64__) && defined(__linux__) && (defined(__GNUC__) || defined(__clang__))
-#define PROJSURF_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define PROJSURF_CLONES
-#endif
 
 PROJSURF_CLONES
 void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane, const PlaneFrame &frame,

@@ -1,4 +1,5 @@
 #include "projsurf/core/rectangle_search.hpp"
+#include "projsurf/core/target_clones.hpp"
 
 #include <cmath>
 #include <limits>
@@ -29,12 +30,6 @@ struct BlockedSum {
         return at(r0 + nr, c0 + nc) - at(r0, c0 + nc) - at(r0 + nr, c0) + at(r0, c0);
     }
 };
-
-#if defined(__x86_64__) && defined(__linux__) && (defined(__GNUC__) || defined(__clang__))
-#define PROJSURF_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define PROJSURF_CLONES
-#endif
 
 /// Whether some placement of an nr x nc rectangle whose top row is `r` has no blocked cell;
 /// the whole row of placements is tested without an early exit, so that it vectorises.

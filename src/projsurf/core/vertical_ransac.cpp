@@ -1,16 +1,11 @@
 #include "projsurf/core/vertical_ransac.hpp"
+#include "projsurf/core/target_clones.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace projsurf {
 namespace {
-
-#if defined(__x86_64__) && defined(__linux__) && (defined(__GNUC__) || defined(__clang__))
-#define PROJSURF_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define PROJSURF_CLONES
-#endif
 
 /// Points whose distance to the plane n.x + d = 0 is within their band (x, y, z, band as
 /// separate arrays so that the loop vectorises; AVX2 where the CPU has it).
