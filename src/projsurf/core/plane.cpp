@@ -20,17 +20,24 @@ std::optional<Plane> fitPlane(const std::vector<Point> &points, const std::vecto
     // One pass: sums of p and p p^T about the first point (in double, so the shifted second
     // moments lose nothing that matters at metre scale).
     const Eigen::Vector3d origin = points[indices.front()].cast<double>();
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+    double sx = 0, sy = 0, sz = 0, sxx = 0, sxy = 0, sxz = 0, syy = 0, syz = 0, szz = 0;
     for (int i : indices) {
-        const Eigen::Vector3d q = points[i].cast<double>() - origin;
-        sum += q;
-        outer.selfadjointView<Eigen::Upper>().rankUpdate(q);
+        const double x = points[i].x() - origin.x(), y = points[i].y() - origin.y(), z = points[i].z() - origin.z();
+        sx += x;
+        sy += y;
+        sz += z;
+        sxx += x * x;
+        sxy += x * y;
+        sxz += x * z;
+        syy += y * y;
+        syz += y * z;
+        szz += z * z;
     }
     const double count = static_cast<double>(indices.size());
-    const Eigen::Vector3d shift = sum / count;
+    const Eigen::Vector3d shift = Eigen::Vector3d(sx, sy, sz) / count;
     const Eigen::Vector3d mean = origin + shift;
-    Eigen::Matrix3d cov = outer.selfadjointView<Eigen::Upper>();
+    Eigen::Matrix3d cov;
+    cov << sxx, sxy, sxz, sxy, syy, syz, sxz, syz, szz;
     cov -= count * shift * shift.transpose();
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(cov);
     const auto &ev = solver.eigenvalues();
