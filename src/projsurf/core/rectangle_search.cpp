@@ -1,6 +1,7 @@
 #include "projsurf/core/rectangle_search.hpp"
 #include "projsurf/core/target_clones.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -47,6 +48,24 @@ bool anyFits(const BlockedSum &bs, int nr, int nc) {
     return false;
 }
 
+/// Bounding box of the non-zero cells (empty when there is none). (cv::boundingRect would
+/// read a mask of two rows or columns as a list of points.)
+cv::Rect nonZeroBox(const cv::Mat &mask) {
+    int c0 = mask.cols, c1 = -1, r0 = mask.rows, r1 = -1;
+    for (int r = 0; r < mask.rows; ++r) {
+        const uchar *m = mask.ptr<uchar>(r);
+        int first = 0, last = mask.cols - 1;
+        while (first < mask.cols && !m[first]) ++first;
+        if (first == mask.cols) continue;
+        while (!m[last]) --last;
+        c0 = std::min(c0, first);
+        c1 = std::max(c1, last);
+        r0 = std::min(r0, r);
+        r1 = r;
+    }
+    return r1 < 0 ? cv::Rect() : cv::Rect(c0, r0, c1 - c0 + 1, r1 - r0 + 1);
+}
+
 }  // namespace
 
 int widthForRows(int rows, double aspect) { return static_cast<int>(std::ceil(aspect * rows - 1e-9)); }
@@ -54,6 +73,18 @@ int widthForRows(int rows, double aspect) { return static_cast<int>(std::ceil(as
 std::optional<GridRect> largestAspectRect(const cv::Mat &free_mask, double aspect, const Eigen::Vector2d &prefer) {
     CV_Assert(free_mask.type() == CV_8UC1);
     if (free_mask.empty() || !(aspect > 0.0)) return std::nullopt;
+    // Only the bounding box of the free cells can hold the rectangle (often a small part of
+    // the raster); searching it gives the same answer, placements in the same order.
+    const cv::Rect box = nonZeroBox(free_mask);
+    if (box.area() == 0) return std::nullopt;
+    if (box.size() != free_mask.size()) {
+        auto inner = largestAspectRect(free_mask(box), aspect, prefer - Eigen::Vector2d(box.x, box.y));
+        if (inner) {
+            inner->col += box.x;
+            inner->row += box.y;
+        }
+        return inner;
+    }
     const BlockedSum bs(free_mask);
     auto fits = [&](int nr) {
         const int nc = widthForRows(nr, aspect);
