@@ -43,9 +43,11 @@ struct DepthTolerance {
     }
 };
 
-/// Default: points seen through the rectangle (camera ray meets the plane inside it);
-/// outlier when farther from the plane than tolerance.margin(z); reject when the outlier
-/// share exceeds max_fraction. Independent of range and sensor resolution.
+/// The default method's rule, point by point: points seen through the rectangle (camera ray
+/// meets the plane inside it); outlier when farther from the plane than tolerance.margin(z);
+/// reject when the outlier share exceeds max_fraction. Independent of range and sensor
+/// resolution. The detector reads the same counts off its free-space pass
+/// (checkObservedSurface in plane_observation.hpp); this is the reference it is tested against.
 /// `step` checks every step-th point (every step-th row and column of an organized cloud);
 /// a non-empty `roi` limits an organized cloud to those pixels (where the plane is seen).
 SurfaceCheckResult checkSurface(const Cloud &cloud, const PlaneFrame &frame, const Rectangle &rect,
