@@ -175,14 +175,7 @@ __attribute__((target("avx2"))) void gather3Avx2(const uchar *src, std::size_t r
         std::memcpy(dst, &px0, 4);
         std::memcpy(dst + 3, &px1, 4);
     }
-    for (; i + 1 < n; ++i, dst += 3) {
-        const std::uint32_t px = pixel3Ssse3(src, row, idx, wts, i);
-        std::memcpy(dst, &px, 4);
-    }
-    if (i < n) {
-        const std::uint32_t px = pixel3Ssse3(src, row, idx, wts, i);
-        std::memcpy(dst, &px, 3);
-    }
+    gather3Ssse3(src, row, idx + i, wts + i, dst, n - i);  // the last one or two pixels
 }
 
 __attribute__((target("ssse3"))) void gather4Ssse3(const uchar *src, std::size_t row, const std::int32_t *idx,
