@@ -47,12 +47,12 @@ struct Candidate {
     Rectangle rectangle;
     std::vector<std::vector<Eigen::Vector3d>> outlines;
     std::vector<int> inlier_indices;
-    cv::Rect image_box;  // organized clouds: the pixels where the plane is seen (empty = all)
+    cv::Rect image_box;  // organized clouds: the pixels the free-space pass looks at (empty = all)
     PlaneObservation *observed = nullptr;  // default mode: what the camera saw of the plane, per raster cell
 };
 
 /// Pixels of an organized cloud where the candidate's sampled inliers lie, grown by `margin`.
-cv::Rect imageBox(const Cloud &cloud, const std::vector<int> &indices, int margin) {
+cv::Rect inlierImageBox(const Cloud &cloud, const std::vector<int> &indices, int margin) {
     if (!cloud.organized() || indices.empty()) return {};
     int u0 = cloud.width, v0 = cloud.height, u1 = -1, v1 = -1;
     for (int i : indices) {
@@ -66,50 +66,40 @@ cv::Rect imageBox(const Cloud &cloud, const std::vector<int> &indices, int margi
            cv::Rect(0, 0, cloud.width, cloud.height);
 }
 
-/// Pixels where everything that matters to the candidate's raster is seen: the raster itself
-/// (wall points, and points seen through holes in it) and the projector's beam between the
-/// lens and the raster from depth `near` on (whatever shadows it), grown by `margin`; empty
-/// (all pixels) when a corner of that volume is not in front of the camera.
-cv::Rect rasterImageBox(const CameraIntrinsics &camera, const Candidate &c, const Eigen::Vector3d &lens, double near,
-                        int margin) {
-    const RasterFrame &r = c.raster;
-    double u0 = 1e9, v0 = 1e9, u1 = -1e9, v1 = -1e9;
-    for (const Eigen::Vector2d &corner : {r.toPlane({0, 0}), r.toPlane({r.cols, 0}), r.toPlane({r.cols, r.rows}),
-                                         r.toPlane({0, r.rows})}) {
-        const Eigen::Vector3d x = c.frame.toCamera(corner);
-        // Where the beam towards this corner is at depth `near` (or the lens, if nearer).
-        const double s = x.z() - lens.z() > 1e-9 ? std::clamp((near - lens.z()) / (x.z() - lens.z()), 0.0, 1.0) : 0.0;
-        for (const Eigen::Vector3d &p : {x, Eigen::Vector3d(lens + s * (x - lens))}) {
-            if (p.z() < 1e-3) return {};
-            const Eigen::Vector2d px = camera.project(p);
-            u0 = std::min(u0, px.x());
-            v0 = std::min(v0, px.y());
-            u1 = std::max(u1, px.x());
-            v1 = std::max(v1, px.y());
-        }
-    }
-    const cv::Rect image(0, 0, camera.width, camera.height);
-    auto clampPx = [](double x) { return static_cast<int>(std::clamp(x, -1e6, 1e6)); };
-    const cv::Rect box(cv::Point(clampPx(std::floor(u0)) - margin, clampPx(std::floor(v0)) - margin),
-                       cv::Point(clampPx(std::ceil(u1)) + margin + 1, clampPx(std::ceil(v1)) + margin + 1));
-    return box & image;
-}
-
-/// Pixels where the camera sees a rectangle (its corners in front of the camera), grown by
-/// `margin`; empty (all pixels) otherwise.
-cv::Rect imageBoxOf(const CameraIntrinsics &camera, const Rectangle &rect, int margin) {
+/// Pixels where the camera sees all of `points`, grown by `margin` and clipped to the image;
+/// empty (all pixels) when one of them is not in front of the camera.
+cv::Rect pixelBox(const CameraIntrinsics &camera, const std::vector<Eigen::Vector3d> &points, int margin) {
     Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e6), hi = Eigen::Vector2d::Constant(-1e6);
-    for (const Eigen::Vector3d &corner : rect.corners) {
-        if (corner.z() < 1e-3) return {};
-        const Eigen::Vector2d px = camera.project(corner);
+    for (const Eigen::Vector3d &p : points) {
+        if (p.z() < 1e-3) return {};
+        const Eigen::Vector2d px = camera.project(p);
         lo = lo.cwiseMin(px);
         hi = hi.cwiseMax(px);
     }
     lo = lo.cwiseMax(-1e6);
     hi = hi.cwiseMin(1e6);
-    const cv::Rect pixels(cv::Point(static_cast<int>(std::floor(lo.x())) - margin, static_cast<int>(std::floor(lo.y())) - margin),
-                          cv::Point(static_cast<int>(std::ceil(hi.x())) + margin + 1, static_cast<int>(std::ceil(hi.y())) + margin + 1));
+    const cv::Rect pixels(
+        cv::Point(static_cast<int>(std::floor(lo.x())) - margin, static_cast<int>(std::floor(lo.y())) - margin),
+        cv::Point(static_cast<int>(std::ceil(hi.x())) + margin + 1, static_cast<int>(std::ceil(hi.y())) + margin + 1));
     return pixels & cv::Rect(0, 0, camera.width, camera.height);
+}
+
+/// Pixels where everything that matters to the candidate's raster is seen: the raster itself
+/// (wall points, and points seen through holes in it) and the projector's beam between the
+/// lens and the raster from depth `near` on (whatever shadows it), grown by `margin`.
+cv::Rect rasterImageBox(const CameraIntrinsics &camera, const Candidate &c, const Eigen::Vector3d &lens, double near,
+                        int margin) {
+    const RasterFrame &r = c.raster;
+    std::vector<Eigen::Vector3d> volume;
+    for (const Eigen::Vector2d &corner : {r.toPlane({0, 0}), r.toPlane({r.cols, 0}), r.toPlane({r.cols, r.rows}),
+                                         r.toPlane({0, r.rows})}) {
+        const Eigen::Vector3d x = c.frame.toCamera(corner);
+        // Where the beam towards this corner is at depth `near` (or the lens, if nearer).
+        const double s = x.z() - lens.z() > 1e-9 ? std::clamp((near - lens.z()) / (x.z() - lens.z()), 0.0, 1.0) : 0.0;
+        volume.push_back(x);
+        volume.push_back(lens + s * (x - lens));
+    }
+    return pixelBox(camera, volume, margin);
 }
 
 /// The projector workspace on the plane: the corner rays meet it (paper eqs. 5-6).
@@ -501,7 +491,6 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         c.inliers = static_cast<int>(members[k].size());
         c.frame = makePlaneFrame(c.plane, cfg.gravity, centroid(pts, members[k]));
         for (int i : members[k]) c.inlier_indices.push_back(sample[i]);
-        c.image_box = imageBox(cloud, c.inlier_indices, cloud.width / 16);
     }
     det.timing_ms["planes"] = msSince(t);
     for (const auto &c : candidates) det.debug.candidates.push_back(c.plane);
@@ -538,8 +527,10 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         if (!(lo.array() < hi.array()).all()) continue;
         c.raster = makeRasterFrame(lo, hi, cfg.cell);
         // Organized clouds: look only where the raster and the beam towards it are seen (a
-        // margin for points off the plane at grazing angles and mixed pixels at edges).
-        if (camera) c.image_box = rasterImageBox(*camera, c, projector.origin, near, cloud.width / 64 + cfg.support_stride);
+        // margin for points off the plane at grazing angles and mixed pixels at edges); without
+        // intrinsics, around where the plane's points are.
+        c.image_box = camera ? rasterImageBox(*camera, c, projector.origin, near, cloud.width / 64 + cfg.support_stride)
+                             : inlierImageBox(cloud, c.inlier_indices, cloud.width / 16);
         const double h = std::min(hi.y() - lo.y(), (hi.x() - lo.x()) / aspect);
         bound[k] = aspect * h * h;
         usable.push_back(k);
@@ -587,7 +578,8 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     if (last_k >= 0) {
         const Candidate &c = candidates[last_k];
         const Rectangle inner = shrink(c.frame, c.rectangle, c.raster.cell);
-        const cv::Rect box = camera ? imageBoxOf(*camera, inner, 2 + cfg.support_stride) : c.image_box;
+        const cv::Rect box = camera ? pixelBox(*camera, {inner.corners.begin(), inner.corners.end()}, 2 + cfg.support_stride)
+                                     : c.image_box;
         last.outlier_indices = offPlanePoints(grid, grid.gridBox(box), c.plane, c.frame, c.raster, tol,
                                               c.frame.toPlane(inner.corners[3]), c.frame.toPlane(inner.corners[1]));
     }
