@@ -77,23 +77,18 @@ struct Pipeline {
 };
 
 Pipeline oursPipeline(const std::string &name, const Projector &projector, Method method) {
-    // One detector reused over a frame stream, rebuilt (untimed) when gravity changes, as the
-    // ROS node does.
-    auto detector = std::make_shared<std::unique_ptr<SurfaceDetector>>();
+    // One detector reused over the frame stream (each frame with its gravity), as the ROS node does.
+    DetectorConfig config;
+    config.method = method;
+    auto detector = std::make_shared<SurfaceDetector>(projector, config);
     Pipeline p;
     p.name = name;
-    p.prepare = [detector, projector, method](const BenchFrame &frame) {
-        if (*detector && (*detector)->config().gravity == frame.gravity) return;
-        DetectorConfig config;
-        config.method = method;
-        config.gravity = frame.gravity;
-        *detector = std::make_unique<SurfaceDetector>(projector, config);
-    };
+    p.prepare = [](const BenchFrame &) {};
     p.run = [detector](const BenchFrame &frame, Outcome &out) {
         Run r;
         const double c0 = threadCpuMs();
         const auto t0 = Clock::now();
-        const Detection d = (*detector)->detect(frame.cloud);
+        const Detection d = detector->detect(frame.cloud, frame.gravity);
         r.wall_ms = msSince(t0);
         r.cpu_ms = threadCpuMs() - c0;
         for (const auto &[key, ms] : d.timing_ms)

@@ -30,10 +30,9 @@ Outcome runScene(const std::string &name, double distance, double angle, unsigne
     const sim::RgbdFrame frame = sim::renderFrame(sc.scene, sensor, seed);
     DetectorConfig cfg;
     cfg.method = method;
-    cfg.gravity = sc.gravity;
     cfg.seed = seed;
     Outcome o;
-    o.det = detectSurface(frame.cloud, projector, cfg);
+    o.det = detectSurface(frame.cloud, projector, cfg, sc.gravity);
     sim::TruthOptions topt;
     topt.cell = 0.01;
     o.truth = sim::computeGroundTruth(sc.scene, sensor, projector, sc.gravity, topt);
@@ -171,9 +170,7 @@ TEST(Detection, UnorganizedCloudGivesTheSameAnswer) {
     std::shuffle(loose.points.begin(), loose.points.end(), rng);
     loose.width = static_cast<int>(loose.points.size());
     ASSERT_FALSE(loose.organized());
-    DetectorConfig cfg;
-    cfg.gravity = sc.gravity;
-    const Detection det = detectSurface(loose, projector, cfg);
+    const Detection det = detectSurface(loose, projector, DetectorConfig{}, sc.gravity);
     const sim::GroundTruth truth = sim::computeGroundTruth(sc.scene, sim::SensorModel{}, projector, sc.gravity);
     const sim::Score score = sim::scoreDetection(det, truth, projector, sc.gravity, projector.aspect());
     EXPECT_TRUE(score.valid) << score.why;

@@ -22,13 +22,13 @@ Rectangle transformRectangle(const Rectangle &rect, const Eigen::Isometry3d &T) 
 }
 
 bool ContinuousMode::stillUsable(const Rectangle &rect, const Plane &plane, const Cloud &cloud,
-                                 const DetectorConfig &config) const {
+                                 const DetectorConfig &config, const Eigen::Vector3d &gravity) const {
     if (!fitsProjector(params_.projector, rect, params_.fit_margin_px)) return false;
     // Nothing may stand in front of it now: the default mode's surface check on this cloud.
-    const PlaneFrame frame = makePlaneFrame(plane, config.gravity, rect.center());
+    const PlaneFrame frame = makePlaneFrame(plane, gravity, rect.center());
     const int step = std::max<int>(1, static_cast<int>(cloud.size() / 40000));
     const SurfaceCheckResult check =
-        checkSurface(cloud, frame, rect, config.tolerance(), config.max_outlier_fraction, step);
+        checkSurface(cloud, frame, rect, config.tolerance, config.check.max_outlier_fraction, step);
     return check.accepted;
 }
 
@@ -44,7 +44,7 @@ ContinuousMode::Output ContinuousMode::update(const Detection &det, const Cloud 
     }
     if (tracker_.hasTarget()) {
         m.held_usable = stillUsable(transformRectangle(tracker_.target(), camera_from_fixed),
-                                    transformPlane(tracker_.plane(), camera_from_fixed), cloud, config);
+                                    transformPlane(tracker_.plane(), camera_from_fixed), cloud, config, det.gravity);
     }
     Output out;
     out.event = tracker_.update(m);

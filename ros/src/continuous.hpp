@@ -32,7 +32,8 @@ public:
     const SteadyTracker &tracker() const { return tracker_; }
 
 private:
-    bool stillUsable(const Rectangle &rect, const Plane &plane, const Cloud &cloud, const DetectorConfig &config) const;
+    bool stillUsable(const Rectangle &rect, const Plane &plane, const Cloud &cloud, const DetectorConfig &config,
+                     const Eigen::Vector3d &gravity) const;
 
     const NodeParams &params_;
     SteadyTracker tracker_;

@@ -36,7 +36,7 @@ std::string summary(const Detection &det) {
 }  // namespace
 
 ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams params)
-    : params_(std::move(params)), nh_(nh), pnh_(pnh) {
+    : params_(std::move(params)), nh_(nh), pnh_(pnh), detector_(params_.projector, params_.detector) {
     if (!params_.image.empty()) picture_ = readImage(params_.image, cv::IMREAD_COLOR);
     else picture_ = testCard({params_.projector.width, params_.projector.height});
     if (!params_.gravity_frame.empty() || !params_.fixed_frame.empty()) {
@@ -114,24 +114,21 @@ bool ProjsurfNode::lookup(const std::string &target, const std::string &source, 
     }
 }
 
-SurfaceDetector &ProjsurfNode::detectorFor(const std_msgs::Header &header, std::string &problem) {
-    DetectorConfig config = params_.detector;
+Eigen::Vector3d ProjsurfNode::gravityFor(const std_msgs::Header &header, std::string &problem) {
+    Eigen::Vector3d gravity = params_.gravity;
     if (!params_.gravity_frame.empty()) {
         Eigen::Isometry3d camera_from_gravity;
         if (lookup(header.frame_id, params_.gravity_frame, header.stamp, camera_from_gravity, problem)) {
-            config.gravity = camera_from_gravity.linear() * Eigen::Vector3d(0.0, 0.0, -1.0);  // -z of a z-up frame
+            gravity = camera_from_gravity.linear() * Eigen::Vector3d(0.0, 0.0, -1.0);  // -z of a z-up frame
         } else {
             problem += " (using ~gravity instead)";
         }
     }
     if (params_.gravity_auto && (params_.gravity_frame.empty() || !problem.empty())) {
         // No IMU and no tf: "down" from the floor when one is in view, else a level camera.
-        if (const auto g = estimateGravityFromFloor(cloud_, Eigen::Vector3d(0.0, 1.0, 0.0))) config.gravity = g->gravity;
+        if (const auto g = estimateGravityFromFloor(cloud_, Eigen::Vector3d(0.0, 1.0, 0.0))) gravity = g->gravity;
     }
-    // The detector keeps scratch buffers between frames: rebuild it only when gravity moved.
-    if (!detector_ || detector_->config().gravity.dot(config.gravity) < std::cos(1e-4))
-        detector_ = std::make_unique<SurfaceDetector>(params_.projector, config);
-    return *detector_;
+    return gravity;
 }
 
 void ProjsurfNode::publishBlack(const std_msgs::Header &header) {
@@ -168,11 +165,11 @@ ProjsurfNode::Outcome ProjsurfNode::detectOnce() {
         return out;
     }
     std::string tf_problem;
-    SurfaceDetector &detector = detectorFor(cloud_header_, tf_problem);
+    const Eigen::Vector3d gravity = gravityFor(cloud_header_, tf_problem);
     if (!tf_problem.empty()) ROS_WARN("projsurf_node: %s", tf_problem.c_str());
-    const Detection det = detector.detect(cloud_);
+    const Detection det = detector_.detect(cloud_, gravity);
     std_msgs::String json;
-    json.data = detectionToJson(det, detector.config()).dump();
+    json.data = detectionToJson(det, detector_.config()).dump();
     result_pub_.publish(json);
     markers_pub_.publish(toMarkers(det, nullptr, cloud_header_, params_.marker_ns));
     if (!det.found) {
@@ -215,23 +212,23 @@ void ProjsurfNode::runContinuous() {
         return;
     }
     std::string tf_problem;
-    SurfaceDetector &detector = detectorFor(header, tf_problem);
+    const Eigen::Vector3d gravity = gravityFor(header, tf_problem);
     if (!tf_problem.empty()) ROS_WARN_THROTTLE(5.0, "projsurf_node: %s", tf_problem.c_str());
     Detection det;
     try {
-        det = detector.detect(cloud_);
+        det = detector_.detect(cloud_, gravity);
     } catch (const std::exception &e) {
         ROS_ERROR_THROTTLE(5.0, "projsurf_node: detection failed: %s", e.what());
         return;
     }
-    const ContinuousMode::Output o = continuous_->update(det, cloud_, fixed_from_camera, detector.config());
+    const ContinuousMode::Output o = continuous_->update(det, cloud_, fixed_from_camera, detector_.config());
     // Re-warp every frame: the robot moved, so the same place on the wall has new pixels.
     Framebuffer fb;
     if (o.has_target) fb = renderFramebuffer(params_.projector, o.shown, picture_, params_.keystone_tolerance_px);
     if (fb.image.empty()) fb.image = cv::Mat(params_.projector.height, params_.projector.width, CV_8UC3, cv::Scalar::all(0));
     const double frame_ms = (ros::WallTime::now() - start).toSec() * 1e3;
 
-    nlohmann::json j = detectionToJson(det, detector.config());
+    nlohmann::json j = detectionToJson(det, detector_.config());
     j["continuous"] = {{"event", toString(o.event)},
                        {"showing", o.has_target && fb.problem.empty()},
                        {"stamp", header.stamp.toSec()},

@@ -42,8 +42,9 @@ private:
     void takeCloud(Cloud cloud, const std_msgs::Header &header);
     Outcome detectOnce();
     void runContinuous();
-    /// The detector for this cloud: gravity from tf2 when ~gravity_frame is set.
-    SurfaceDetector &detectorFor(const std_msgs::Header &header, std::string &problem);
+    /// Gravity for this cloud (camera frame): from tf2 when ~gravity_frame is set, from the
+    /// floor with ~gravity auto, else ~gravity.
+    Eigen::Vector3d gravityFor(const std_msgs::Header &header, std::string &problem);
     bool lookup(const std::string &target, const std::string &source, const ros::Time &stamp,
                 Eigen::Isometry3d &pose, std::string &problem);
     /// Warps the picture into `rect` (camera frame) and publishes it; empty string on success.
@@ -65,7 +66,7 @@ private:
     std_msgs::Header cloud_header_;
     bool have_cloud_ = false;
     sensor_msgs::CameraInfoConstPtr camera_info_;
-    std::unique_ptr<SurfaceDetector> detector_;
+    SurfaceDetector detector_;  ///< one for the stream: its buffers are reused frame to frame
     std::unique_ptr<ContinuousMode> continuous_;
     ros::WallTime last_file_write_;
     double rate_hz_ = 0.0;  ///< running estimate of the continuous-mode frame rate

@@ -107,28 +107,28 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
     }
     std::string gravity_text;
     if (pnh.getParam("gravity", gravity_text) && gravity_text == "auto") p.gravity_auto = true;
-    else if (pnh.hasParam("gravity")) c.gravity = parseGravity(pnh);
+    else if (pnh.hasParam("gravity")) p.gravity = parseGravity(pnh);
     std::string method = "default", hull = "concave";
     get(pnh, "method", method);
     get(pnh, "hull", hull);
     if (method == "default") c.method = Method::Default;
     else if (method == "paper") c.method = Method::Paper;
     else throw InputError(name(pnh, "method"), "expected 'default' or 'paper', got '" + method + "'");
-    if (hull == "concave") c.hull = HullKind::Concave;
-    else if (hull == "convex") c.hull = HullKind::Convex;
+    if (hull == "concave") c.paper.hull = HullKind::Concave;
+    else if (hull == "convex") c.paper.hull = HullKind::Convex;
     else throw InputError(name(pnh, "hull"), "expected 'concave' or 'convex', got '" + hull + "'");
     getPositive(pnh, "max_tilt", c.max_tilt);
     int seed = static_cast<int>(c.seed);
     getCount(pnh, "seed", seed, 0);
     c.seed = static_cast<unsigned>(seed);
     // The CLI's pipeline options (projsurf detect --voxel-leaf ... -> ~voxel_leaf ...).
-    getPositive(pnh, "voxel_leaf", c.voxel_leaf);
-    getPositive(pnh, "ransac_distance", c.ransac_distance);
-    getCount(pnh, "max_outliers", c.max_outliers, 0);
-    getPositive(pnh, "cell", c.cell);
-    getCount(pnh, "max_planes", c.max_planes, 1);
-    getNumber(pnh, "max_outlier_fraction", c.max_outlier_fraction);
-    if (c.max_outlier_fraction < 0.0 || c.max_outlier_fraction > 1.0)
+    getPositive(pnh, "voxel_leaf", c.paper.voxel_leaf);
+    getPositive(pnh, "ransac_distance", c.paper.ransac_distance);
+    getCount(pnh, "max_outliers", c.paper.max_outliers, 0);
+    getPositive(pnh, "cell", c.free_space.cell);
+    getCount(pnh, "max_planes", c.planes.max_planes, 1);
+    getNumber(pnh, "max_outlier_fraction", c.check.max_outlier_fraction);
+    if (c.check.max_outlier_fraction < 0.0 || c.check.max_outlier_fraction > 1.0)
         throw InputError(name(pnh, "max_outlier_fraction"), "must be within [0, 1]");
 
     // Frames and continuous mode.

@@ -25,6 +25,8 @@ struct NodeParams {
     /// ~gravity_frame: a frame whose -z is gravity (e.g. base_link or odom); when set, gravity
     /// in the camera frame comes from tf2 for every cloud and ~gravity is the fallback.
     std::string gravity_frame;
+    /// ~gravity: down in the camera frame (3 numbers; default a level camera).
+    Eigen::Vector3d gravity = Eigen::Vector3d::UnitY();
     /// ~gravity: auto -> down from the floor in each cloud (no IMU, no tf), as `detect --gravity auto`.
     bool gravity_auto = false;
     /// ~fixed_frame: a frame that does not move with the robot (odom, map); continuous mode

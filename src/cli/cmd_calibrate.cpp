@@ -122,6 +122,8 @@ void run(const CalibrateOptions &o) {
     switch (cal.failure) {
     case CalibrationFailure::None: break;
     case CalibrationFailure::NoDisc:
+        throw InputError(rgb_paths.at(cal.failed_capture),
+                         cal.message + (cal.message.find("threshold") != std::string::npos ? " (--threshold)" : ""));
     case CalibrationFailure::SizeMismatch: throw InputError(rgb_paths.at(cal.failed_capture), cal.message);
     case CalibrationFailure::NoDepth: throw InputError(depth_paths.at(cal.failed_capture), cal.message);
     default: throw InputError(o.captures, cal.message);

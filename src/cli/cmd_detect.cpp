@@ -29,14 +29,16 @@ struct DetectOptions {
 /// --bag: one detection per cloud of the topic, one JSON object per line (JSON Lines), each
 /// with a "bag" key (index, stamp, frame_id). With --json the file is written once all
 /// messages were read (never a partial file); without, lines go to stdout as they come.
-void runBag(const DetectOptions &o, const DetectorConfig &base, const Projector &projector, bool auto_gravity) {
+void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &projector, const Eigen::Vector3d &base_gravity,
+            bool auto_gravity) {
     std::string lines;
     std::size_t found = 0;
+    SurfaceDetector detector(projector, cfg);  // one for the whole bag: its buffers are reused
     const std::size_t n = forEachBagCloud(o.bag, o.topic, [&](const Cloud &cloud, const BagCloudInfo &info) {
-        DetectorConfig cfg = base;
+        Eigen::Vector3d gravity = base_gravity;
         if (auto_gravity)
-            if (const auto g = estimateGravityFromFloor(cloud, cfg.gravity)) cfg.gravity = g->gravity;
-        const Detection det = detectSurface(cloud, projector, cfg);
+            if (const auto g = estimateGravityFromFloor(cloud, gravity)) gravity = g->gravity;
+        const Detection det = detector.detect(cloud, gravity);
         nlohmann::json j = detectionToJson(det, cfg);
         j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", o.topic}};
         found += det.found ? 1 : 0;
@@ -65,17 +67,18 @@ void run(const DetectOptions &o) {
     if (o.method == "paper") cfg.method = Method::Paper;
     else if (o.method == "default") cfg.method = Method::Default;
     else throw InputError("--method", "expected 'default' or 'paper', got '" + o.method + "'");
-    if (o.hull == "concave") cfg.hull = HullKind::Concave;
-    else if (o.hull == "convex") cfg.hull = HullKind::Convex;
+    if (o.hull == "concave") cfg.paper.hull = HullKind::Concave;
+    else if (o.hull == "convex") cfg.paper.hull = HullKind::Convex;
     else throw InputError("--hull", "expected 'concave' or 'convex', got '" + o.hull + "'");
     const bool auto_gravity = o.gravity == "auto";
-    if (!o.gravity.empty() && !auto_gravity) cfg.gravity = parseVector3("--gravity", o.gravity);
+    Eigen::Vector3d gravity = SurfaceDetector::levelGravity();
+    if (!o.gravity.empty() && !auto_gravity) gravity = parseVector3("--gravity", o.gravity);
     if (!o.aspect.empty()) cfg.aspect = parseAspect("--aspect", o.aspect);
     for (const auto &out : {o.json, o.overlay})
         if (!out.empty()) requireWritableLocation(out);
 
     const Projector projector = readCalibration(o.calib);
-    if (!o.bag.empty()) return runBag(o, cfg, projector, auto_gravity);
+    if (!o.bag.empty()) return runBag(o, cfg, projector, gravity, auto_gravity);
     std::unique_ptr<CameraIntrinsics> camera;
     Cloud cloud;
     if (!o.cloud.empty()) {
@@ -94,10 +97,10 @@ void run(const DetectOptions &o) {
 
     if (auto_gravity) {
         // No IMU: take "down" from the floor when one is in view, else keep a level camera.
-        if (const auto g = estimateGravityFromFloor(cloud, cfg.gravity)) cfg.gravity = g->gravity;
+        if (const auto g = estimateGravityFromFloor(cloud, gravity)) gravity = g->gravity;
         else std::fprintf(stderr, "projsurf: note: --gravity auto found no floor; assuming a level camera\n");
     }
-    const Detection det = detectSurface(cloud, projector, cfg);
+    const Detection det = detectSurface(cloud, projector, cfg, gravity);
     const nlohmann::json j = detectionToJson(det, cfg);
     if (!o.json.empty()) writeFileAtomic(o.json, j.dump(2) + "\n");
     if (!o.overlay.empty()) writeImageAtomic(o.overlay, renderOverlay(cloud, det, cfg, camera.get(), color));
@@ -132,12 +135,12 @@ void addDetectCommand(CLI::App &app) {
     auto &c = o->config;
     sub->add_option("--max-tilt", c.max_tilt, "Vertical tolerance, rad (paper 3.2.1)")->check(CLI::Range(0.0, 1.5));
     sub->add_option("--seed", c.seed, "RANSAC random seed");
-    sub->add_option("--voxel-leaf", c.voxel_leaf, "paper: voxel side, m")->check(CLI::Range(0.001, 1.0));
-    sub->add_option("--ransac-distance", c.ransac_distance, "paper: RANSAC inlier distance, m")->check(CLI::Range(0.001, 1.0));
-    sub->add_option("--max-outliers", c.max_outliers, "paper: outliers that reject a surface")->check(CLI::NonNegativeNumber);
-    sub->add_option("--cell", c.cell, "default: free-space raster cell, m")->check(CLI::Range(0.002, 0.5));
-    sub->add_option("--max-planes", c.max_planes, "default: vertical planes considered")->check(CLI::Range(1, 20));
-    sub->add_option("--max-outlier-fraction", c.max_outlier_fraction, "default: outlier share that rejects an area")
+    sub->add_option("--voxel-leaf", c.paper.voxel_leaf, "paper: voxel side, m")->check(CLI::Range(0.001, 1.0));
+    sub->add_option("--ransac-distance", c.paper.ransac_distance, "paper: RANSAC inlier distance, m")->check(CLI::Range(0.001, 1.0));
+    sub->add_option("--max-outliers", c.paper.max_outliers, "paper: outliers that reject a surface")->check(CLI::NonNegativeNumber);
+    sub->add_option("--cell", c.free_space.cell, "default: free-space raster cell, m")->check(CLI::Range(0.002, 0.5));
+    sub->add_option("--max-planes", c.planes.max_planes, "default: vertical planes considered")->check(CLI::Range(1, 20));
+    sub->add_option("--max-outlier-fraction", c.check.max_outlier_fraction, "default: outlier share that rejects an area")
         ->check(CLI::Range(0.0, 1.0));
     sub->callback([o] { run(*o); });
 }

@@ -255,7 +255,7 @@ Calibration calibrateProjector(const std::vector<CaptureImages> &captures, const
         if (!disc)
             return fail(CalibrationFailure::NoDisc, k,
                         "no projected disc found (threshold " + std::to_string(config.disc.threshold) +
-                            "; try --threshold, check the calibration picture was projected)");
+                            "; a lower threshold finds a dimmer disc; check the calibration picture was projected)");
         r.disc = *disc;
         r.lifted = liftToDepth(c.depth, camera, disc->centroid, disc->radius_px, config.lift);
         if (!r.lifted.point)

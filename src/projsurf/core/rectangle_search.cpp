@@ -113,4 +113,14 @@ std::optional<GridRect> largestAspectRect(const cv::Mat &free_mask, double aspec
     return best;
 }
 
+std::optional<Rectangle> largestFreeRectangle(const cv::Mat &free_mask, const RasterFrame &raster,
+                                              const PlaneFrame &frame, double aspect, const Eigen::Vector2d &prefer) {
+    const auto rect = largestAspectRect(free_mask, aspect, raster.toCell(prefer));
+    if (!rect) return std::nullopt;
+    const double h = rect->rows * raster.cell, w = aspect * h;
+    const double u_mid = raster.top_left.x() + (rect->col + 0.5 * rect->cols) * raster.cell;
+    const double v_top = raster.top_left.y() - rect->row * raster.cell;
+    return makeRectangle(frame, {u_mid - 0.5 * w, v_top - h}, {u_mid + 0.5 * w, v_top});
+}
+
 }  // namespace projsurf

@@ -5,6 +5,9 @@
 #include <opencv2/core.hpp>
 #include <optional>
 
+#include "projsurf/core/plane_frame.hpp"
+#include "projsurf/core/raster.hpp"
+
 namespace projsurf {
 
 /// Cells [col, col + cols) x [row, row + rows) of a raster.
@@ -23,5 +26,10 @@ std::optional<GridRect> largestAspectRect(const cv::Mat &free_mask, double aspec
 
 /// Cells wide for a rectangle `rows` tall at the given aspect ratio.
 int widthForRows(int rows, double aspect);
+
+/// The same on a raster of a plane: the rectangle in plane coordinates, centred in the cells it
+/// occupies, the placement nearest `prefer` (plane coordinates); nullopt when none fits.
+std::optional<Rectangle> largestFreeRectangle(const cv::Mat &free_mask, const RasterFrame &raster,
+                                              const PlaneFrame &frame, double aspect, const Eigen::Vector2d &prefer);
 
 }  // namespace projsurf

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "projsurf/core/cloud.hpp"
+#include "projsurf/core/depth_tolerance.hpp"
 #include "projsurf/core/plane_frame.hpp"
 
 namespace projsurf {
@@ -20,28 +21,6 @@ struct SurfaceCheckResult {
 /// (z - mean z)^2 > threshold^2 in the plane-aligned frame; reject above max_outliers.
 SurfaceCheckResult checkSurfacePaper(const Cloud &cloud, const PlaneFrame &frame, const Rectangle &rect,
                                      double threshold, int max_outliers);
-
-/// How far off a plane a depth reading may be, as a function of its depth z (m).
-/// sigma_z = k z^2 (Khoshelham & Oude Elberink 2012, Kinect v1).
-struct DepthTolerance {
-    double noise_k = 1.425e-3;   ///< 1/m
-    double sigmas = 3.0;         ///< inlier band in sigmas
-    double min_band = 0.01;      ///< m
-    double max_band = 0.06;      ///< m
-    double obstacle_bands = 2.0; ///< beyond this many bands: an obstacle or a hole
-    double min_obstacle = 0.03;  ///< m, and at least this far
-
-    /// Within this distance a point is on the plane.
-    float band(float z) const {
-        const double b = sigmas * noise_k * static_cast<double>(z) * z;
-        return static_cast<float>(b < min_band ? min_band : (b > max_band ? max_band : b));
-    }
-    /// Beyond this distance a point is off the plane for sure (obstacle in front, hole behind).
-    float margin(float z) const {
-        const float m = static_cast<float>(obstacle_bands) * band(z);
-        return m > min_obstacle ? m : static_cast<float>(min_obstacle);
-    }
-};
 
 /// The default method's rule, point by point: points seen through the rectangle (camera ray
 /// meets the plane inside it); outlier when farther from the plane than tolerance.margin(z);

@@ -45,7 +45,7 @@ nlohmann::json detectionToJson(const Detection &det, const DetectorConfig &confi
     nlohmann::json timing = nlohmann::json::object();
     for (const auto &[k, v] : det.timing_ms) timing[k] = std::round(v * 1000.0) / 1000.0;
     j["timing_ms"] = timing;
-    j["gravity"] = vec(config.gravity.normalized());
+    j["gravity"] = vec(det.gravity);
     return j;
 }
 

@@ -126,8 +126,8 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
         if (outlier[i]) {
             px = cv::Vec3b(40, 40, 255);
         } else if (det.inliers > 0) {
-            const float band = config.method == Method::Paper ? static_cast<float>(config.ransac_distance)
-                                                              : config.tolerance().band(p.z());
+            const float band = config.method == Method::Paper ? static_cast<float>(config.paper.ransac_distance)
+                                                              : config.tolerance.band(p.z());
             if (std::abs(n.dot(p) + d) <= band)
                 px = cv::Vec3b(static_cast<uchar>(px[0] * 0.5 + 40), static_cast<uchar>(px[1] * 0.5 + 100),
                                static_cast<uchar>(px[2] * 0.5 + 40));

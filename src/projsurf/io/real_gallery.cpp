@@ -56,9 +56,9 @@ GalleryEntry detectRealFrame(const std::string &folder, const Projector &project
     g.read = true;
     // These recordings have no IMU: take "down" from the floor when one is in view
     // (as `projsurf detect --gravity auto` does).
-    DetectorConfig cfg = config;
-    if (const auto gravity = estimateGravityFromFloor(cloud, cfg.gravity)) cfg.gravity = gravity->gravity;
-    const Detection det = detectSurface(cloud, projector, cfg);
+    Eigen::Vector3d gravity = SurfaceDetector::levelGravity();
+    if (const auto floor = estimateGravityFromFloor(cloud, gravity)) gravity = floor->gravity;
+    const Detection det = detectSurface(cloud, projector, config, gravity);
     g.found = det.found;
     g.reason = det.reason;
     if (det.found) {
@@ -72,7 +72,7 @@ GalleryEntry detectRealFrame(const std::string &folder, const Projector &project
     g.outliers = det.surface_check.outliers;
     const auto total = det.timing_ms.find("total");
     g.time_ms = total != det.timing_ms.end() ? total->second : 0.0;
-    g.overlay = renderOverlay(cloud, det, cfg, &camera, color);
+    g.overlay = renderOverlay(cloud, det, config, &camera, color);
     return g;
 }
 

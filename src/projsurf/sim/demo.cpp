@@ -39,11 +39,10 @@ DemoResult runDemo(const DemoOptions &o) {
 
     // 3. Detect with the calibrated projector, and score against ground truth.
     res.config = o.config;
-    res.config.gravity = res.scenario.gravity;
     res.config.seed = o.seed;
     res.picture = o.picture.empty() ? testCard(cv::Size(real.width, real.height)) : o.picture;
     res.config.aspect = static_cast<double>(res.picture.cols) / res.picture.rows;
-    res.detection = detectSurface(res.frame.cloud, believed, res.config);
+    res.detection = detectSurface(res.frame.cloud, believed, res.config, res.scenario.gravity);
     res.stage_ms.emplace_back("detect", res.detection.timing_ms.count("total") ? res.detection.timing_ms.at("total") : 0.0);
     t = Clock::now();
     TruthOptions topt;

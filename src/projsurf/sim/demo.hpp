@@ -26,7 +26,7 @@ struct DemoOptions {
     unsigned seed = 1;
     int captures = 5;          ///< calibration captures (paper 3.1.1: 5 positions)
     cv::Mat picture;           ///< BGR; empty = the test card at the projector's resolution
-    DetectorConfig config;     ///< default method; gravity and seed are set from the scene
+    DetectorConfig config;     ///< default method; the seed is set from the scene
     cv::Size audience_size{960, 600};  ///< px of each audience view
     double audience_hfov_deg = 50.0;   ///< horizontal field of view of the audience view
 };

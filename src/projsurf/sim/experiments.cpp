@@ -56,7 +56,7 @@ MethodVariant paperVariant(HullKind hull) {
     MethodVariant v;
     v.name = hull == HullKind::Concave ? "paper-concave" : "paper-convex";
     v.config.method = Method::Paper;
-    v.config.hull = hull;
+    v.config.paper.hull = hull;
     return v;
 }
 
@@ -301,10 +301,9 @@ EvalResults runEval(const EvalPlan &plan, const Progress &progress) {
             const RgbdFrame frame = renderFrame(sc.scene, sensor, seed);
             for (const MethodVariant &v : job.variants) {
                 DetectorConfig cfg = v.config;
-                cfg.gravity = sc.gravity;
                 cfg.seed = seed;
                 if (!job.keystone) {
-                    const Detection det = detectSurface(frame.cloud, projector, cfg);
+                    const Detection det = detectSurface(frame.cloud, projector, cfg, sc.gravity);
                     Trial t = scoreTrial(det, truth, projector, sc.gravity, projector.aspect());
                     t.scenario = job.scenario;
                     t.distance = job.distance;
@@ -327,7 +326,7 @@ EvalResults runEval(const EvalPlan &plan, const Progress &progress) {
                     res.keystone.push_back(k);
                     continue;
                 }
-                const Detection det = detectSurface(frame.cloud, cal.projector, cfg);
+                const Detection det = detectSurface(frame.cloud, cal.projector, cfg, sc.gravity);
                 k.found = det.found;
                 if (!det.found) {
                     k.problem = "not found: " + det.reason;

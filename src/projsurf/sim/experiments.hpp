@@ -29,7 +29,7 @@ constexpr double kFramebufferSlackPx = 40.0;
 /// A way of detecting that the evaluation compares.
 struct MethodVariant {
     std::string name;       ///< "paper-concave", "paper-convex", "default"
-    DetectorConfig config;  ///< gravity and seed are set per trial
+    DetectorConfig config;  ///< the seed is set per trial (gravity is the scene's)
 };
 MethodVariant paperVariant(HullKind hull);
 MethodVariant defaultVariant();

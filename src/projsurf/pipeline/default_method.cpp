@@ -1,0 +1,259 @@
+#include "projsurf/pipeline/default_method.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <opencv2/imgproc.hpp>
+#include <random>
+
+#include "projsurf/core/camera.hpp"
+#include "projsurf/core/image_boxes.hpp"
+#include "projsurf/core/observed_free_space.hpp"
+#include "projsurf/core/point_sampling.hpp"
+#include "projsurf/core/rectangle_growth.hpp"
+#include "projsurf/core/rectangle_search.hpp"
+#include "projsurf/core/vertical_planes.hpp"
+#include "projsurf/pipeline/candidate.hpp"
+#include "projsurf/pipeline/stage_timer.hpp"
+
+namespace projsurf {
+namespace {
+
+/// The points the planes are searched on.
+struct CloudSample {
+    std::vector<int> indices;              ///< into the cloud
+    std::vector<Point> points;             ///< cloud.points[indices]
+    std::vector<float> band;               ///< inlier band of each point, m
+    std::optional<CameraIntrinsics> camera;///< organized clouds are pinhole images: where a volume is seen
+    float near = std::numeric_limits<float>::infinity();  ///< m, depth of the nearest point
+};
+
+/// A candidate with what the default method needs to search it.
+struct PlaneCandidate : Candidate {
+    cv::Rect image_box;                  ///< organized clouds: the pixels that matter to it (empty = all)
+    double bound = 0.0;                  ///< m^2, the largest rectangle its raster could hold
+    double spread_area = 0.0;            ///< m^2, the bounding box of its inliers on the plane
+    PlaneObservation *observed = nullptr;///< what the camera saw of it, per raster cell
+};
+
+CloudSample sampleCloud(const Cloud &cloud, const DetectorConfig &cfg) {
+    CloudSample s;
+    s.indices = samplePoints(cloud, cfg.planes.target_samples);
+    s.points.resize(s.indices.size());
+    s.band.resize(s.indices.size());
+    for (std::size_t i = 0; i < s.indices.size(); ++i) {
+        s.points[i] = cloud.points[s.indices[i]];
+        s.band[i] = cfg.tolerance.band(s.points[i].z());
+        s.near = std::min(s.near, s.points[i].z());
+    }
+    // Every 8th sampled point is plenty for the four parameters.
+    std::vector<int> probe;
+    for (std::size_t i = 0; i < s.indices.size(); i += 8) probe.push_back(s.indices[i]);
+    s.camera = fitIntrinsics(cloud, probe);
+    return s;
+}
+
+/// 3.2.1: every vertical plane of the sample, with its frame (upright by gravity).
+std::vector<PlaneCandidate> findCandidates(const CloudSample &s, const DetectorConfig &cfg, const Eigen::Vector3d &gravity) {
+    VerticalPlaneOptions opt;
+    opt.ransac.max_tilt = cfg.max_tilt;
+    opt.ransac.max_iterations = cfg.planes.ransac_iterations;
+    opt.ransac.score_subset = cfg.planes.score_subset;
+    opt.ransac.max_sample_span = cfg.planes.max_sample_span;
+    opt.max_planes = cfg.planes.max_planes;
+    opt.min_points = std::min<int>(cfg.planes.min_plane_points, static_cast<int>(s.points.size()) / 20 + 3);
+    opt.refine_rounds = cfg.planes.refine_rounds;
+    opt.merge_angle = cfg.planes.merge_angle;
+    std::mt19937 rng(cfg.seed);
+    std::vector<PlaneCandidate> out;
+    for (const PlaneInliers &p : findVerticalPlanes(s.points, s.band, gravity, cfg.tolerance, opt, rng)) {
+        PlaneCandidate c;
+        c.plane = p.plane;
+        c.inliers = static_cast<int>(p.inliers.size());
+        c.frame = makePlaneFrame(c.plane, gravity, centroid(s.points, p.inliers));
+        for (int i : p.inliers) c.inlier_indices.push_back(s.indices[i]);
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
+/// The projector's footprint on the candidate and the raster over the part of it where the
+/// plane was seen; false when the projector does not reach the plane or the two do not meet.
+bool frameCandidate(const Cloud &cloud, const CloudSample &s, const Projector &projector, const DetectorConfig &cfg,
+                    double aspect, PlaneCandidate &c) {
+    const auto footprint = footprintOnPlane(c.plane, c.frame, projector.origin, projector.cornerRays());
+    if (!footprint) return false;
+    c.footprint = *footprint;
+    Eigen::Vector2d lo = c.footprint.uv[0], hi = c.footprint.uv[0];
+    for (const auto &w : c.footprint.uv) {
+        lo = lo.cwiseMin(w);
+        hi = hi.cwiseMax(w);
+    }
+    // Only where the plane was seen can the picture go: clip to its inliers' extent.
+    Eigen::Vector2d ilo = Eigen::Vector2d::Constant(1e9), ihi = Eigen::Vector2d::Constant(-1e9);
+    for (int i : c.inlier_indices) {
+        const Eigen::Vector2d uv = c.frame.toPlane(cloud.points[i].cast<double>());
+        ilo = ilo.cwiseMin(uv);
+        ihi = ihi.cwiseMax(uv);
+    }
+    c.spread_area = std::max(0.0, (ihi - ilo).prod());
+    const double cell = cfg.free_space.cell;
+    lo = lo.cwiseMax(ilo - Eigen::Vector2d::Constant(cell));
+    hi = hi.cwiseMin(ihi + Eigen::Vector2d::Constant(cell));
+    if (!(lo.array() < hi.array()).all()) return false;
+    c.raster = makeRasterFrame(lo, hi, cell);
+    // Organized clouds: only where the raster and the beam towards it are seen, with a margin
+    // for points off the plane at grazing angles and mixed pixels at edges; without
+    // intrinsics, around where the plane's points are.
+    const int width = cloud.width;
+    c.image_box = s.camera ? beamImageBox(*s.camera, c.frame, c.raster, projector.origin, s.near,
+                                          static_cast<int>(width * cfg.free_space.image_margin) + cfg.free_space.stride)
+                           : indexImageBox(cloud, c.inlier_indices, static_cast<int>(width * cfg.free_space.inlier_box_margin));
+    const double h = std::min(hi.y() - lo.y(), (hi.x() - lo.x()) / aspect);
+    c.bound = aspect * h * h;
+    return true;
+}
+
+/// 3.2.2: the free surface of the candidate from one pass over the points where it is seen.
+void observeFreeSpace(const Cloud &cloud, const PointGrid &grid, const Projector &projector, const DetectorConfig &cfg,
+                      PlaneCandidate &c) {
+    observePlane(grid, grid.gridBox(c.image_box), c.plane, c.frame, c.raster, projector.origin, cfg.tolerance, *c.observed);
+    // The gaps between neighbouring samples on the wall are closed, up to a limit.
+    const double spacing = sampleSpacing(cloud, c.inlier_indices, c.plane, grid.step, cfg.tolerance, c.spread_area,
+                                         c.observed->support_points);
+    const double gap = std::ceil(spacing / c.raster.cell);
+    const int gap_cells = std::isfinite(gap) ? static_cast<int>(std::clamp(gap, 1.0, double(cfg.free_space.max_gap_cells))) : 1;
+    SurfaceCells cells = observedFreeSurface(*c.observed, gap_cells, cfg.free_space.min_blocked_neighbours);
+    c.surface = cells.free;
+    c.cell_state = cells.state;
+    c.free = c.surface & footprintCells(c.raster, c.footprint.uv);
+}
+
+/// The largest rectangle on the candidate's free cells, grown against the exact footprint.
+bool placeRectangle(double aspect, PlaneCandidate &c) {
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    for (const auto &w : c.footprint.uv) centre += 0.25 * w;
+    const auto rect = largestFreeRectangle(c.free, c.raster, c.frame, aspect, centre);
+    if (!rect) return false;
+    c.rectangle = growRectangle(*rect, c.frame, c.raster, c.surface, c.footprint.uv, aspect);
+    return true;
+}
+
+/// 3.2.3, read off the free-space pass. Mixed pixels at depth edges along the border are not
+/// the surface's fault: the check looks one raster cell inside the rectangle.
+SurfaceCheckResult checkRectangle(const DetectorConfig &cfg, const PlaneCandidate &c) {
+    const Rectangle inner = shrinkRectangle(c.frame, c.rectangle, c.raster.cell);
+    return checkObservedSurface(*c.observed, c.raster, c.frame.toPlane(inner.corners[3]), c.frame.toPlane(inner.corners[1]),
+                                cfg.check.max_outlier_fraction);
+}
+
+/// Cloud indices of the points the check counted as off the wall (for overlays), looked for
+/// only where the camera sees the rectangle.
+std::vector<int> checkOutliers(const CloudSample &s, const PointGrid &grid, const DetectorConfig &cfg,
+                               const PlaneCandidate &c) {
+    const Rectangle inner = shrinkRectangle(c.frame, c.rectangle, c.raster.cell);
+    const cv::Rect box = s.camera ? pixelBox(*s.camera, {inner.corners.begin(), inner.corners.end()}, 2 + grid.step)
+                                  : c.image_box;
+    return offPlanePoints(grid, grid.gridBox(box), c.plane, c.frame, c.raster, cfg.tolerance,
+                          c.frame.toPlane(inner.corners[3]), c.frame.toPlane(inner.corners[1]));
+}
+
+/// Outlines of the free cells, camera frame (for overlays).
+std::vector<std::vector<Eigen::Vector3d>> freeOutlines(const PlaneCandidate &c) {
+    std::vector<std::vector<cv::Point>> contours;
+    cv::findContours(c.free.clone(), contours, cv::RETR_LIST, cv::CHAIN_APPROX_SIMPLE);
+    std::vector<std::vector<Eigen::Vector3d>> out;
+    for (const auto &contour : contours) {
+        std::vector<Eigen::Vector3d> outline;
+        for (const auto &p : contour) outline.push_back(c.frame.toCamera(c.raster.toPlane({p.x + 0.5, p.y + 0.5})));
+        out.push_back(outline);
+    }
+    return out;
+}
+
+}  // namespace
+
+Detection detectDefault(const Cloud &cloud, const Projector &projector, const DetectorConfig &cfg,
+                        const Eigen::Vector3d &gravity, double aspect, DefaultScratch &scratch) {
+    Detection det;
+    StageTimer time(det);
+    // 1. A sample of the cloud to search planes on.
+    const CloudSample sample = sampleCloud(cloud, cfg);
+    time.lap("sample");
+    if (sample.points.size() < 3) return time.fail("no points to search (empty or all-NaN cloud)");
+
+    // 2. Every vertical plane in view, biggest first (3.2.1).
+    std::vector<PlaneCandidate> candidates = findCandidates(sample, cfg, gravity);
+    for (const auto &c : candidates) det.debug.candidates.push_back(c.plane);
+    time.lap("planes");
+    if (candidates.empty()) return time.fail("no vertical plane in view");
+
+    // 3. Those the projector reaches, the largest rectangle they could hold first.
+    std::vector<int> usable;
+    for (int k = 0; k < static_cast<int>(candidates.size()); ++k)
+        if (frameCandidate(cloud, sample, projector, cfg, aspect, candidates[k])) usable.push_back(k);
+    std::sort(usable.begin(), usable.end(), [&](int a, int b) { return candidates[a].bound > candidates[b].bound; });
+    if (!usable.empty()) fillPointGrid(cloud, cfg.free_space.stride, scratch.grid);
+    if (scratch.observations.size() < candidates.size()) scratch.observations.resize(candidates.size());
+    for (std::size_t k = 0; k < candidates.size(); ++k) candidates[k].observed = &scratch.observations[k];
+    time.lap("free_space");
+
+    // 4. Free space (3.2.2), rectangle and surface check (3.2.3), candidate by candidate; one
+    // that could not hold a bigger rectangle than the one accepted is not looked at.
+    const PlaneCandidate *chosen = nullptr, *checked = nullptr;  // accepted; the check reported
+    SurfaceCheckResult check;
+    std::vector<int> placed;
+    for (int k : usable) {
+        PlaneCandidate &c = candidates[k];
+        if (chosen && c.bound <= chosen->rectangle.area()) break;
+        observeFreeSpace(cloud, scratch.grid, projector, cfg, c);
+        time.lap("free_space");
+        const bool ok = placeRectangle(aspect, c);
+        time.lap("rectangle");
+        if (!ok) continue;
+        placed.push_back(k);
+        if (chosen && c.rectangle.area() <= chosen->rectangle.area()) continue;
+        const SurfaceCheckResult result = checkRectangle(cfg, c);
+        if (result.accepted || !chosen) {
+            check = result;
+            checked = &c;
+        }
+        if (result.accepted) chosen = &c;
+        time.lap("surface_check");
+    }
+    if (checked) check.outlier_indices = checkOutliers(sample, scratch.grid, cfg, *checked);
+    time.lap("surface_check");
+
+    // 5. The answer, and the plane shown with it.
+    std::sort(placed.begin(), placed.end(),
+              [&](int a, int b) { return candidates[a].rectangle.area() > candidates[b].rectangle.area(); });
+    const PlaneCandidate &shown = chosen ? *chosen : candidates[!placed.empty() ? placed[0] : (usable.empty() ? 0 : usable[0])];
+    det.plane = shown.plane;
+    det.inliers = shown.inliers;
+    det.orientation_deg = orientationDeg(shown.plane);
+    if (!shown.free.empty()) {
+        describeCandidate(shown, det.debug);
+        const auto outlines = freeOutlines(shown);
+        det.debug.hull.insert(det.debug.hull.end(), outlines.begin(), outlines.end());
+    }
+    det.debug.inliers = shown.inlier_indices;
+    if (chosen) {
+        det.found = true;
+        det.rectangle = chosen->rectangle;
+        det.surface_check = check;
+    } else if (usable.empty()) {
+        det.reason = "the projector workspace does not reach any vertical plane in view";
+    } else if (placed.empty()) {
+        det.reason = "no free area for the picture on any vertical plane";
+    } else {
+        det.rectangle = candidates[placed[0]].rectangle;
+        det.surface_check = check;
+        det.surface_check.accepted = false;
+        det.reason = "the surface check rejected every candidate area";
+    }
+    det.debug.outliers = det.surface_check.outlier_indices;
+    return time.finish();
+}
+
+}  // namespace projsurf

@@ -1,0 +1,26 @@
+#pragma once
+// The default detection: every vertical plane, free space where the wall was seen, the
+// picture upright with respect to gravity, a surface check relative to the depth noise.
+#include <memory>
+#include <vector>
+
+#include "projsurf/core/cloud.hpp"
+#include "projsurf/core/plane_observation.hpp"
+#include "projsurf/core/point_grid.hpp"
+#include "projsurf/core/projector.hpp"
+#include "projsurf/pipeline/detection.hpp"
+#include "projsurf/pipeline/detector_config.hpp"
+
+namespace projsurf {
+
+/// Working buffers kept from one frame to the next (the point grid, the per-plane counts).
+struct DefaultScratch {
+    PointGrid grid;
+    std::vector<PlaneObservation> observations;  ///< one per candidate plane
+};
+
+/// `gravity` in the camera frame; aspect = width / height.
+Detection detectDefault(const Cloud &cloud, const Projector &projector, const DetectorConfig &config,
+                        const Eigen::Vector3d &gravity, double aspect, DefaultScratch &scratch);
+
+}  // namespace projsurf

@@ -1,0 +1,44 @@
+#pragma once
+// What a detection found (paper section 3.2's output), and what it looked at on the way.
+#include <Eigen/Core>
+#include <array>
+#include <map>
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+#include "projsurf/core/plane.hpp"
+#include "projsurf/core/plane_frame.hpp"
+#include "projsurf/core/surface_check.hpp"
+
+namespace projsurf {
+
+/// Intermediate results of the plane shown, for overlays and diagnostics.
+struct DetectionDebug {
+    std::vector<int> inliers;                        ///< indices into the input cloud (sampled)
+    std::vector<std::vector<Eigen::Vector3d>> hull;  ///< hull / free-space outlines on the plane
+    std::array<Eigen::Vector3d, 4> workspace{};      ///< projector footprint on the plane
+    bool has_workspace = false;
+    std::vector<int> outliers;                       ///< indices into the input cloud
+    std::vector<Plane> candidates;                   ///< vertical planes considered
+    PlaneFrame frame;                                ///< frame of the chosen plane
+    cv::Mat free_space;                              ///< CV_8U, 255 = free, rows go down from max v
+    cv::Mat cell_state;                              ///< CV_8U CellState per cell (default method), else empty
+    Eigen::Vector2d grid_origin = Eigen::Vector2d::Zero();  ///< plane coords of the top-left cell corner
+    double grid_cell = 0.0;
+};
+
+struct Detection {
+    bool found = false;
+    std::string reason;           ///< why not found (empty when found)
+    Plane plane;
+    double orientation_deg = 0.0;
+    int inliers = 0;
+    Rectangle rectangle;
+    SurfaceCheckResult surface_check;
+    Eigen::Vector3d gravity = Eigen::Vector3d::UnitY();  ///< the down direction used (camera frame, unit)
+    std::map<std::string, double> timing_ms;  ///< "total" and per stage
+    DetectionDebug debug;
+};
+
+}  // namespace projsurf

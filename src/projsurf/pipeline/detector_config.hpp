@@ -1,0 +1,66 @@
+#pragma once
+// Every setting of projection surface detection, one source per default, each with its unit
+// and where it comes from (paper section, datasheet, or a measurement of this project).
+#include "projsurf/core/depth_tolerance.hpp"
+
+namespace projsurf {
+
+enum class Method {
+    Default,  ///< every vertical plane, observed free space, gravity-upright, relative check
+    Paper,    ///< the paper's steps, one by one (for reproduction)
+};
+enum class HullKind { Concave, Convex };
+
+/// The paper's method (section 3.2), step by step.
+struct PaperConfig {
+    HullKind hull = HullKind::Concave;  ///< hull of the inliers (paper 4.1 keeps concave)
+    double voxel_leaf = 0.05;           ///< m, voxel-grid side (paper 3.2.1)
+    double ransac_distance = 0.05;      ///< m, inlier band; not given in the paper, = voxel side
+    int ransac_iterations = 1000;       ///< PCL SACSegmentation's default max iterations
+    double concave_alpha = 0.1;         ///< m, alpha of the concave hull (2 voxels)
+    double cell = 0.02;                 ///< m, raster cell of the free-space matrices (paper 3.2.2)
+    double outlier_distance = 0.05;     ///< m, |z - mean z| above this is an outlier (paper 3.2.3)
+    int max_outliers = 5000;            ///< more outliers reject the surface (paper 4.3)
+};
+
+/// Default method, stage 1: the vertical planes in view (sequential RANSAC on a sample).
+struct PlaneSearchConfig {
+    int target_samples = 12000;   ///< points kept for the search (pixel stride / every k-th), measured
+    int max_planes = 4;           ///< vertical planes tried, biggest first
+    int min_plane_points = 150;   ///< sampled inliers for a plane to count
+    int ransac_iterations = 300;  ///< hypotheses per plane (adaptive stop usually earlier), measured
+    int score_subset = 1500;      ///< points a hypothesis is scored on, measured (same planes as all 12000)
+    double max_sample_span = 1.5; ///< m, the 2nd and 3rd point of a hypothesis within this of the 1st
+    int refine_rounds = 2;        ///< least-squares refits of each plane on its inliers
+    double merge_angle = 0.05;    ///< rad, a plane this parallel to a found one, within its margin, is a slice of it
+};
+
+/// Default method, stage 2: where on a plane the camera saw free wall (paper 3.2.2).
+struct FreeSpaceConfig {
+    double cell = 0.01;            ///< m, raster cell (area error < 0.05 m^2 at 3 m, measured)
+    int stride = 2;                ///< pixel step of the pass on organized clouds (3 lost 7 % of the area behind a person)
+    int max_gap_cells = 8;         ///< largest gap between wall samples closed, cells (sensor holes up to 8 cm)
+    int min_blocked_neighbours = 2;///< a blocked cell needs this many blocked cells in its 3x3: single cells are noise
+    double image_margin = 1.0 / 64;///< of the image width: margin around where a plane is seen (mixed pixels, grazing angles)
+    double inlier_box_margin = 1.0 / 16; ///< of the image width, when the cloud has no fitted intrinsics
+};
+
+/// Default method, stage 4: the surface check on the rectangle (paper 3.2.3).
+struct SurfaceCheckConfig {
+    double max_outlier_fraction = 0.03;  ///< share of checked points off the wall that rejects an area, measured
+};
+
+struct DetectorConfig {
+    Method method = Method::Default;
+    double aspect = 0.0;    ///< picture width / height; 0 = the projector framebuffer's
+    double max_tilt = 0.1;  ///< rad, normal vs horizontal (contract; paper 3.2.1)
+    unsigned seed = 42;     ///< RANSAC random seed (runs are deterministic)
+
+    DepthTolerance tolerance;  ///< how far off a plane a reading may be (default method)
+    PlaneSearchConfig planes;
+    FreeSpaceConfig free_space;
+    SurfaceCheckConfig check;
+    PaperConfig paper;
+};
+
+}  // namespace projsurf

@@ -1,0 +1,169 @@
+// The default method's stages, one by one, on inputs whose answer is known.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "projsurf/core/image_boxes.hpp"
+#include "projsurf/core/observed_free_space.hpp"
+#include "projsurf/core/point_sampling.hpp"
+#include "projsurf/core/projector_footprint.hpp"
+#include "projsurf/core/rectangle_growth.hpp"
+#include "projsurf/core/vertical_planes.hpp"
+
+using namespace projsurf;
+
+namespace {
+
+const float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+/// An organized cloud of a frontal wall at depth z, seen by `camera`, with NaN where `hole`.
+Cloud wallImage(const CameraIntrinsics &camera, double z, const cv::Rect &hole = {}) {
+    Cloud c;
+    c.width = camera.width;
+    c.height = camera.height;
+    for (int v = 0; v < camera.height; ++v)
+        for (int u = 0; u < camera.width; ++u)
+            c.points.push_back(hole.contains({u, v}) ? Point(kNaN, kNaN, kNaN)
+                                                     : camera.backProject(u, v, z).cast<float>());
+    return c;
+}
+
+/// Counts views of an observation whose cells are set by hand.
+PlaneObservation observation(int rows, int cols) {
+    PlaneObservation o;
+    for (cv::Mat *m : {&o.support, &o.behind, &o.shadow, &o.seen, &o.off}) *m = cv::Mat::zeros(rows, cols, CV_32SC1);
+    return o;
+}
+
+}  // namespace
+
+TEST(PointSampling, OrganizedCloudIsSampledOnAPixelGridOfFinitePoints) {
+    CameraIntrinsics cam;
+    const Cloud cloud = wallImage(cam, 2.0, cv::Rect(0, 0, 320, 480));  // left half missing
+    const std::vector<int> s = samplePoints(cloud, 12000);
+    // 640 x 480 / 12000 -> every 5th pixel; only the right half is finite.
+    EXPECT_NEAR(static_cast<double>(s.size()), 64.0 * 96.0, 200.0);
+    for (int i : s) {
+        EXPECT_TRUE(isFinite(cloud.points[i]));
+        EXPECT_GE(i % cloud.width, 320);
+    }
+}
+
+TEST(PointSampling, UnorganizedCloudKeepsEveryKthFinitePoint) {
+    Cloud cloud;
+    for (int i = 0; i < 10000; ++i) cloud.points.emplace_back(i % 7 == 0 ? kNaN : 0.001f * i, 0.0f, 2.0f);
+    cloud.width = static_cast<int>(cloud.points.size());
+    const std::vector<int> s = samplePoints(cloud, 1000);
+    EXPECT_NEAR(static_cast<double>(s.size()), 1000.0, 100.0);
+    for (int i : s) EXPECT_TRUE(isFinite(cloud.points[i]));
+}
+
+TEST(PointSampling, SpacingOfAWallIsTheDistanceBetweenNeighbouringPixels) {
+    CameraIntrinsics cam;
+    const Cloud cloud = wallImage(cam, 2.0);
+    std::vector<int> inliers;
+    for (int v = 10; v < 470; v += 7)
+        for (int u = 10; u < 630; u += 7) inliers.push_back(v * cam.width + u);
+    const Plane wall = makePlane({0, 0, -1}, 2.0);
+    // 2 px apart at 2 m with f = 525 px.
+    EXPECT_NEAR(sampleSpacing(cloud, inliers, wall, 2, DepthTolerance{}, 0.0, 1), 2.0 * 2.0 / cam.fx, 1e-4);
+}
+
+TEST(VerticalPlanes, FindsBothWallsButNotTheFloorAndMergesASlice) {
+    std::vector<Point> pts;
+    std::mt19937 rng(1);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    for (int i = 0; i < 3000; ++i) pts.emplace_back(u(rng), u(rng), i % 2 ? 3.0f : 3.02f);  // back wall, two 2 cm slices
+    for (int i = 0; i < 1500; ++i) pts.emplace_back(1.5f, u(rng), 2.0f + u(rng));            // side wall
+    for (int i = 0; i < 3000; ++i) pts.emplace_back(u(rng), 1.0f, 2.0f + u(rng));            // floor (y down)
+    std::vector<float> band(pts.size(), 0.015f);  // narrower than the slices are apart: RANSAC takes one at a time
+    VerticalPlaneOptions opt;
+    opt.min_points = 200;
+    std::mt19937 ransac(7);
+    const auto planes = findVerticalPlanes(pts, band, Eigen::Vector3d::UnitY(), DepthTolerance{}, opt, ransac);
+    ASSERT_EQ(planes.size(), 2u);
+    EXPECT_GT(std::abs(planes[0].plane.normal.z()), 0.99);  // the back wall, both slices
+    EXPECT_NEAR(std::abs(planes[0].plane.d), 3.01, 0.02);
+    EXPECT_GE(planes[0].inliers.size(), 2900u);
+    EXPECT_GT(std::abs(planes[1].plane.normal.x()), 0.99);  // the side wall
+    for (const auto &p : planes) EXPECT_LT(std::abs(p.plane.normal.y()), 0.1);  // never the floor
+}
+
+TEST(ObservedFreeSurface, ClosesSampleGapsIgnoresLoneNoiseAndSaysWhyCellsAreNotFree) {
+    PlaneObservation o = observation(40, 60);
+    for (int r = 0; r < 40; ++r)
+        for (int c = 0; c < 60; c += 2) o.support.at<int>(r, c) = 3;  // every other column sampled
+    for (int r = 10; r < 40; ++r)
+        for (int c = 30; c < 40; ++c) o.support.at<int>(r, c) = 0;    // no reading here
+    o.shadow.at<int>(5, 5) = 1;                                      // a lone noisy point
+    for (int r = 20; r < 26; ++r)
+        for (int c = 5; c < 15; ++c) o.shadow.at<int>(r, c) = 2;     // something in front
+    for (int r = 2; r < 6; ++r)
+        for (int c = 45; c < 55; ++c) o.behind.at<int>(r, c) = 9;    // seen through
+    const SurfaceCells cells = observedFreeSurface(o, 1, 2);
+    auto state = [&](int r, int c) { return static_cast<CellState>(cells.state.at<uchar>(r, c)); };
+    EXPECT_EQ(state(5, 5), CellState::Free);  // the lone point is noise, the gap is closed
+    EXPECT_EQ(state(5, 6), CellState::Free);
+    EXPECT_EQ(state(22, 10), CellState::InFront);
+    EXPECT_EQ(state(3, 50), CellState::SeenThrough);
+    EXPECT_EQ(state(30, 35), CellState::NoReading);
+    EXPECT_EQ(state(0, 20), CellState::Edge);  // the raster's border is trimmed
+    EXPECT_EQ(cells.free.at<uchar>(22, 10), 0);
+    EXPECT_EQ(cells.free.at<uchar>(15, 20), 255);
+}
+
+TEST(RectangleGrowth, GrowsAgainstTheExactFootprintAndStopsAtWhatIsNotFree) {
+    const Plane wall = makePlane({0, 0, -1}, 2.0);
+    const PlaneFrame frame = makePlaneFrame(wall, Eigen::Vector3d::UnitY(), {0, 0, 2});
+    const RasterFrame raster = makeRasterFrame({-1.0, -1.0}, {1.0, 1.0}, 0.01);
+    cv::Mat surface(raster.rows, raster.cols, CV_8UC1, cv::Scalar(255));
+    const std::array<Eigen::Vector2d, 4> footprint{Eigen::Vector2d(-0.503, 0.4), Eigen::Vector2d(0.503, 0.4),
+                                                   Eigen::Vector2d(0.503, -0.4), Eigen::Vector2d(-0.503, -0.4)};
+    const Rectangle start = makeRectangle(frame, {-0.2, -0.1}, {0.2, 0.1});  // 2:1, inside
+    const Rectangle grown = growRectangle(start, frame, raster, surface, footprint, 2.0);
+    EXPECT_NEAR(grown.width, 1.006, 0.002);  // limited by the footprint's width, to a fraction of a cell
+    EXPECT_NEAR(grown.height, 0.503, 0.001);
+    // An obstacle above the start: the rectangle slides down and grows below it.
+    surface(cv::Rect(0, 0, raster.cols, raster.toCell({0, 0.15}).y())).setTo(0);
+    const Rectangle blocked = growRectangle(start, frame, raster, surface, footprint, 2.0);
+    EXPECT_LE(frame.toPlane(blocked.corners[0]).y(), 0.15 + 1e-9);
+    EXPECT_GT(blocked.height, 0.3 + 0.05);  // more than fits about the start (0.3), by sliding down
+}
+
+TEST(ProjectorFootprint, CornerRaysMeetTheWallAndMissAPlaneBehindTheLens) {
+    const Plane wall = makePlane({0, 0, -1}, 2.0);
+    const PlaneFrame frame = makePlaneFrame(wall, Eigen::Vector3d::UnitY(), {0, 0, 2});
+    const std::array<Eigen::Vector3d, 4> rays{Eigen::Vector3d(-0.5, -0.3, 1), Eigen::Vector3d(0.5, -0.3, 1),
+                                              Eigen::Vector3d(0.5, 0.3, 1), Eigen::Vector3d(-0.5, 0.3, 1)};
+    const auto f = footprintOnPlane(wall, frame, Eigen::Vector3d::Zero(), rays);
+    ASSERT_TRUE(f.has_value());
+    EXPECT_NEAR(f->uv[0].x(), -1.0, 1e-9);  // top-left: left of and above the centre
+    EXPECT_NEAR(f->uv[0].y(), 0.6, 1e-9);
+    EXPECT_TRUE(insideConvex(f->uv, {0.9, -0.5}));
+    EXPECT_FALSE(insideConvex(f->uv, {1.1, 0.0}));
+    EXPECT_FALSE(footprintOnPlane(makePlane({0, 0, 1}, 2.0), frame, Eigen::Vector3d::Zero(), rays).has_value());
+}
+
+TEST(ImageBoxes, BoxesHoldWhatTheyAreAboutAndSayAllWhenAPointIsBehindTheCamera) {
+    CameraIntrinsics cam;
+    const cv::Rect box = pixelBox(cam, {{-0.2, -0.1, 2.0}, {0.3, 0.2, 2.5}}, 3);
+    const Eigen::Vector2d a = cam.project({-0.2, -0.1, 2.0}), b = cam.project({0.3, 0.2, 2.5});
+    EXPECT_TRUE(box.contains({static_cast<int>(a.x()), static_cast<int>(a.y())}));
+    EXPECT_TRUE(box.contains({static_cast<int>(b.x()), static_cast<int>(b.y())}));
+    EXPECT_LT(box.area(), 640 * 480 / 4);
+    EXPECT_TRUE(pixelBox(cam, {{0, 0, 2}, {0, 0, -1}}, 0).empty());
+    EXPECT_TRUE(pixelBox(cam, {{0, 0, 2}, {kNaN, 0, 2}}, 0).empty());
+    // The beam from a lens below the camera towards a raster on a wall is seen below the raster.
+    const Plane wall = makePlane({0, 0, -1}, 3.0);
+    const PlaneFrame frame = makePlaneFrame(wall, Eigen::Vector3d::UnitY(), {0, 0, 3});
+    const RasterFrame raster = makeRasterFrame({-0.2, -0.2}, {0.2, 0.2}, 0.01);
+    const cv::Rect beam = beamImageBox(cam, frame, raster, {0, 0.3, 0}, 1.0, 0);
+    const cv::Rect wall_only = pixelBox(cam, {frame.toCamera({-0.2, -0.2}), frame.toCamera({0.2, 0.2})}, 0);
+    EXPECT_EQ(beam & wall_only, wall_only);
+    EXPECT_GT(beam.br().y, wall_only.br().y + 30);
+    // Index boxes: where the points lie in the image.
+    const Cloud cloud = wallImage(cam, 2.0);
+    EXPECT_EQ(indexImageBox(cloud, {5 * 640 + 7, 9 * 640 + 20}, 1), cv::Rect(6, 4, 16, 7));
+}
