@@ -8,10 +8,29 @@
 namespace projsurf {
 namespace {
 
+/// The wall shape's height as a quadratic in raster (column, row) coordinates, in float.
+struct RasterShape {
+    float k[6];  ///< 1, col, row, col^2, col row, row^2
+    RasterShape(const WallShape &s, const RasterFrame &raster) {
+        // u = a + e col, v = b - e row about the shape's centre.
+        const double a = raster.top_left.x() - s.centre.x(), b = raster.top_left.y() - s.centre.y(), e = raster.cell;
+        const auto &c = s.c;
+        const double k0 = c[0] + c[1] * a + c[2] * b + c[3] * a * a + c[4] * a * b + c[5] * b * b;
+        const double k1 = (c[1] + 2.0 * c[3] * a + c[4] * b) * e, k2 = -(c[2] + c[4] * a + 2.0 * c[5] * b) * e;
+        const double k3 = c[3] * e * e, k4 = -c[4] * e * e, k5 = c[5] * e * e;
+        const double all[6] = {k0, k1, k2, k3, k4, k5};
+        for (int i = 0; i < 6; ++i) k[i] = static_cast<float>(all[i]);
+    }
+    float at(float col, float row) const {
+        return k[0] + col * (k[1] + k[3] * col + k[4] * row) + row * (k[2] + k[5] * row);
+    }
+};
+
 PROJSURF_CLONES
 void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane, const PlaneFrame &frame,
                  const RasterFrame &raster, const Eigen::Vector3d &projector_origin, const DepthTolerance &tolerance,
-                 std::int32_t *bins, std::int32_t *seen, std::int32_t *off_counts, int &support_points) {
+                 const RasterShape &shape, std::int32_t *bins, std::int32_t *seen, std::int32_t *off_counts,
+                 int &support_points) {
     // Everything in float and as plain scalars, so that the per-point loop vectorises.
     // Raster column of a point q of the plane: q . R + cr; row: q . U + cu.
     const Eigen::Vector3d R = frame.right / raster.cell, U = -frame.up / raster.cell;
@@ -55,8 +74,9 @@ void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane
             // Projector ray through p: o + s * (p - o) lies on the plane.
             const float s = proj_h / (proj_h - h);
             const float sc = o_col + s * (pc - o_col) + col0, sw = o_row + s * (pw - o_row) + row0;
-            const std::int32_t on = std::abs(h) <= band, beyond = h < -margin, between = (h > margin) & (h < proj_h);
             const float ac = pc + col0, aw = pw + row0;                // on the plane: its foot
+            const float r = h - shape.at(ac, aw);                       // off the wall's shape
+            const std::int32_t on = std::abs(r) <= band, beyond = r < -margin, between = (r > margin) & (h < proj_h);
             const float fc = beyond ? tc : sc, fw = beyond ? tw : sw;  // off it: camera or projector ray
             const float bc = on ? ac : fc, bw = on ? aw : fw;
             const std::int32_t bin_in = (on | beyond | between) & (bc >= 0.0f) & (bc < cols) & (bw >= 0.0f) & (bw < rows);
@@ -66,7 +86,7 @@ void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane
             const std::int32_t ray_cell = static_cast<std::int32_t>(tw) * ncols + static_cast<std::int32_t>(tc);
             bin[i] = bin_in ? bin_cell : 3 * cells;
             ray[i] = ray_in ? ray_cell : cells;
-            off[i] = (std::abs(h) > margin) & ray_in;
+            off[i] = (std::abs(r) > margin) & ray_in;
             on_plane += on & bin_in;
         }
         // Count them (a scatter: scalar, but without branches).
@@ -83,7 +103,7 @@ void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane
 
 void observePlane(const PointGrid &grid, const cv::Rect &box, const Plane &plane, const PlaneFrame &frame,
                   const RasterFrame &raster, const Eigen::Vector3d &projector_origin, const DepthTolerance &tolerance,
-                  PlaneObservation &out) {
+                  PlaneObservation &out, const WallShape &shape) {
     const int rows = raster.rows, cols = raster.cols;
     const std::size_t row_cells = static_cast<std::size_t>(cols), total = (3 * rows + 1 + 2 * rows + 2) * row_cells;
     if (out.counts.size() < total) out.counts.resize(total);
@@ -96,8 +116,8 @@ void observePlane(const PointGrid &grid, const cv::Rect &box, const Plane &plane
     out.seen = view(rays);
     out.off = view(rays + (rows + 1) * row_cells);
     const cv::Rect area = box & cv::Rect(0, 0, grid.cols, grid.rows);
-    observeRows(grid, area, plane, frame, raster, projector_origin, tolerance, bins, rays, rays + (rows + 1) * row_cells,
-                out.support_points);
+    observeRows(grid, area, plane, frame, raster, projector_origin, tolerance, RasterShape(shape, raster), bins, rays,
+                rays + (rows + 1) * row_cells, out.support_points);
 }
 
 namespace {
@@ -138,7 +158,7 @@ SurfaceCheckResult checkObservedSurface(const PlaneObservation &observation, con
 
 std::vector<int> offPlanePoints(const PointGrid &grid, const cv::Rect &box, const Plane &plane, const PlaneFrame &frame,
                                 const RasterFrame &raster, const DepthTolerance &tolerance, const Eigen::Vector2d &lo,
-                                const Eigen::Vector2d &hi) {
+                                const Eigen::Vector2d &hi, const WallShape &wall_shape) {
     // The same float arithmetic as observeRows, one point at a time.
     const CellRange cells = cellsInside(raster, lo, hi);
     std::vector<int> out;
@@ -148,6 +168,7 @@ std::vector<int> offPlanePoints(const PointGrid &grid, const cv::Rect &box, cons
     const float row0 = static_cast<float>(-frame.origin.dot(U) + raster.top_left.y() / raster.cell);
     const Eigen::Vector3f n = plane.normal.cast<float>(), r = R.cast<float>(), u = U.cast<float>();
     const float d = static_cast<float>(plane.d);
+    const RasterShape shape(wall_shape, raster);
     const cv::Rect area = box & cv::Rect(0, 0, grid.cols, grid.rows);
     for (int gr = area.y; gr < area.y + area.height; ++gr)
         for (int gc = area.x; gc < area.x + area.width; ++gc) {
@@ -159,7 +180,8 @@ std::vector<int> offPlanePoints(const PointGrid &grid, const cv::Rect &box, cons
                                         static_cast<float>(tolerance.max_band));
             const float margin = std::max(static_cast<float>(tolerance.obstacle_bands) * band,
                                           static_cast<float>(tolerance.min_obstacle));
-            if (!(std::abs(h) > margin) || !(std::abs(np) >= 1e-6f)) continue;
+            const float ac = r.dot(Eigen::Vector3f(px, py, pz)) + col0, aw = u.dot(Eigen::Vector3f(px, py, pz)) + row0;
+            if (!(std::abs(h - shape.at(ac, aw)) > margin) || !(std::abs(np) >= 1e-6f)) continue;
             const float t = -d / np;
             const float tc = t * (r.x() * px + r.y() * py + r.z() * pz) + col0;
             const float tw = t * (u.x() * px + u.y() * py + u.z() * pz) + row0;

@@ -12,6 +12,7 @@
 #include "projsurf/core/point_grid.hpp"
 #include "projsurf/core/raster.hpp"
 #include "projsurf/core/surface_check.hpp"
+#include "projsurf/core/wall_shape.hpp"
 
 namespace projsurf {
 
@@ -37,12 +38,13 @@ struct PlaneObservation {
 };
 
 /// One pass over the grid elements in `box` (grid coordinates): each finite point is on the
-/// plane (|h| <= band), beyond it (h < -margin), between the projector and the plane
-/// (margin < h < projector height), or in between (counted in `seen` only); h is its signed
-/// distance to the plane, positive towards the camera. Reuses `out`'s storage.
+/// wall (|r| <= band), beyond it (r < -margin), between the projector and the wall
+/// (margin < r, h < projector height), or in between (counted in `seen` only); h is its signed
+/// distance to the plane, positive towards the camera, and r = h - shape's height at its foot.
+/// Reuses `out`'s storage.
 void observePlane(const PointGrid &grid, const cv::Rect &box, const Plane &plane, const PlaneFrame &frame,
                   const RasterFrame &raster, const Eigen::Vector3d &projector_origin, const DepthTolerance &tolerance,
-                  PlaneObservation &out);
+                  PlaneObservation &out, const WallShape &shape = {});
 
 /// The default surface check (checkSurface's rule) read off an observation: the points whose
 /// camera ray crosses the plane in the cells whose centres lie in [lo, hi] (plane
@@ -56,6 +58,6 @@ SurfaceCheckResult checkObservedSurface(const PlaneObservation &observation, con
 /// the rectangle is seen).
 std::vector<int> offPlanePoints(const PointGrid &grid, const cv::Rect &box, const Plane &plane, const PlaneFrame &frame,
                                 const RasterFrame &raster, const DepthTolerance &tolerance, const Eigen::Vector2d &lo,
-                                const Eigen::Vector2d &hi);
+                                const Eigen::Vector2d &hi, const WallShape &shape = {});
 
 }  // namespace projsurf

@@ -4,12 +4,15 @@
 #include <cmath>
 #include <cstdio>
 #include <opencv2/imgproc.hpp>
+#include "projsurf/core/observed_free_space.hpp"
 
 namespace projsurf {
 namespace {
 
 const cv::Scalar kInlier(80, 200, 80), kFree(0, 220, 255), kWorkspace(255, 160, 40), kRect(255, 0, 255),
-    kOutlier(40, 40, 255), kText(255, 255, 255);
+    kOutlier(40, 40, 255), kText(255, 255, 255), kInFront(0, 130, 255), kSeenThrough(220, 80, 200),
+    kNoReading(150, 150, 150);
+
 
 /// Where camera-frame points land in the picture.
 struct View {
@@ -31,6 +34,24 @@ void polyline(cv::Mat &img, const View &view, const std::vector<Eigen::Vector3d>
         px.emplace_back(cvRound(q.x * 16), cvRound(q.y * 16));
     }
     cv::polylines(img, std::vector<std::vector<cv::Point>>{px}, closed, color, thickness, cv::LINE_AA, 4);
+}
+
+/// The raster cells in `state` painted on the picture, translucent, where they lie on the wall.
+void paintCells(cv::Mat &img, const View &view, const DetectionDebug &debug, CellState state, const cv::Scalar &color) {
+    if (debug.cell_state.empty() || debug.grid_cell <= 0) return;
+    std::vector<std::vector<cv::Point>> contours;
+    cv::findContours(debug.cell_state == static_cast<int>(state), contours, cv::RETR_CCOMP, cv::CHAIN_APPROX_SIMPLE);
+    if (contours.empty()) return;
+    for (auto &contour : contours)
+        for (cv::Point &p : contour) {
+            const Eigen::Vector2d uv(debug.grid_origin.x() + (p.x + 0.5) * debug.grid_cell,
+                                     debug.grid_origin.y() - (p.y + 0.5) * debug.grid_cell);
+            const cv::Point2f q = view(debug.frame.toCamera(uv));
+            p = {cvRound(q.x), cvRound(q.y)};
+        }
+    cv::Mat layer = img.clone();
+    cv::fillPoly(layer, contours, color, cv::LINE_8);
+    cv::addWeighted(layer, 0.45, img, 0.55, 0.0, img);
 }
 
 /// Appends a panel below the picture: status lines, then the colour key in two columns.
@@ -126,9 +147,12 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
         if (outlier[i]) {
             px = cv::Vec3b(40, 40, 255);
         } else if (det.inliers > 0) {
-            const float band = config.method == Method::Paper ? static_cast<float>(config.paper.ransac_distance)
-                                                              : config.tolerance.band(p.z());
-            if (std::abs(n.dot(p) + d) <= band)
+            const bool paper = config.method == Method::Paper;
+            const float band = paper ? static_cast<float>(config.paper.ransac_distance) : det.debug.tolerance.band(p.z());
+            const float bend = paper ? 0.0f
+                                     : static_cast<float>(det.debug.wall_shape.height(
+                                           det.debug.frame.toPlane(p.cast<double>())));
+            if (std::abs(n.dot(p) + d - bend) <= band)
                 px = cv::Vec3b(static_cast<uchar>(px[0] * 0.5 + 40), static_cast<uchar>(px[1] * 0.5 + 100),
                                static_cast<uchar>(px[2] * 0.5 + 40));
         }
@@ -136,6 +160,9 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
     cv::Mat img;
     cv::resize(base, img, {}, view.scale, view.scale, cv::INTER_NEAREST);
 
+    paintCells(img, view, det.debug, CellState::InFront, kInFront);
+    paintCells(img, view, det.debug, CellState::SeenThrough, kSeenThrough);
+    paintCells(img, view, det.debug, CellState::NoReading, kNoReading);
     for (const auto &outline : det.debug.hull) polyline(img, view, outline, outline.size() > 2, kFree, 2);
     if (det.debug.has_workspace) polyline(img, view, {det.debug.workspace.begin(), det.debug.workspace.end()}, true, kWorkspace, 2);
     if (det.rectangle.area() > 0) {
@@ -164,13 +191,18 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
                   config.method == Method::Paper ? "paper" : "default",
                   det.timing_ms.count("total") ? det.timing_ms.at("total") : 0.0);
     lines.emplace_back(line);
-    return withLegend(img,
-           {{kInlier, "wall points (plane inliers)"},
-            {kFree, config.method == Method::Paper ? "plane hull" : "free space on the wall"},
-            {kWorkspace, "projector workspace"},
-            {kRect, "picture rectangle"},
-            {kOutlier, "surface-check outliers"}},
-           lines);
+    std::vector<std::pair<cv::Scalar, std::string>> key{
+        {kInlier, "wall points (on the wall as fitted)"},
+        {kFree, config.method == Method::Paper ? "plane hull" : "free space on the wall"},
+        {kWorkspace, "projector workspace"},
+        {kRect, "picture rectangle"},
+        {kOutlier, "surface-check outliers"}};
+    if (!det.debug.cell_state.empty()) {
+        key.push_back({kInFront, "not free: something in front (its shadow)"});
+        key.push_back({kSeenThrough, "not free: seen through (hole, door, glass)"});
+        key.push_back({kNoReading, "not free: no wall reading"});
+    }
+    return withLegend(img, key, lines);
 }
 
 }  // namespace projsurf

@@ -10,6 +10,7 @@
 #include "projsurf/core/camera.hpp"
 #include "projsurf/core/image_boxes.hpp"
 #include "projsurf/core/observed_free_space.hpp"
+#include "projsurf/core/planar_regions.hpp"
 #include "projsurf/core/point_sampling.hpp"
 #include "projsurf/core/rectangle_growth.hpp"
 #include "projsurf/core/rectangle_search.hpp"
@@ -35,6 +36,8 @@ struct PlaneCandidate : Candidate {
     double bound = 0.0;                  ///< m^2, the largest rectangle its raster could hold
     double spread_area = 0.0;            ///< m^2, the bounding box of its inliers on the plane
     PlaneObservation *observed = nullptr;///< what the camera saw of it, per raster cell
+    WallShape shape;                     ///< how the seen wall departs from the plane
+    DepthTolerance tolerance;            ///< the band about the shape (the noise measured on it)
 };
 
 CloudSample sampleCloud(const Cloud &cloud, const DetectorConfig &cfg) {
@@ -54,6 +57,32 @@ CloudSample sampleCloud(const Cloud &cloud, const DetectorConfig &cfg) {
     return s;
 }
 
+PlaneCandidate makeCandidate(const CloudSample &s, const Plane &plane, const std::vector<int> &inliers,
+                             const Eigen::Vector3d &gravity) {
+    PlaneCandidate c;
+    c.plane = plane;
+    c.inliers = static_cast<int>(inliers.size());
+    c.frame = makePlaneFrame(c.plane, gravity, centroid(s.points, inliers));
+    for (int i : inliers) c.inlier_indices.push_back(s.indices[i]);
+    return c;
+}
+
+/// 3.2.1 on a depth image: its planar regions, biggest first, each with the sampled points on it.
+std::vector<PlaneCandidate> findRegionCandidates(const CloudSample &s, const PointGrid &grid, const DetectorConfig &cfg,
+                                                 const Eigen::Vector3d &gravity) {
+    PlanarRegionOptions opt = cfg.planes.regions;
+    opt.max_tilt = cfg.max_tilt;
+    std::vector<int> all(s.points.size());
+    for (std::size_t i = 0; i < s.points.size(); ++i) all[i] = static_cast<int>(i);
+    std::vector<PlaneCandidate> out;
+    for (const PlanarRegion &r : findVerticalRegions(grid, gravity, cfg.tolerance, opt)) {
+        if (static_cast<int>(out.size()) >= cfg.planes.max_planes) break;
+        const std::vector<int> inliers = planeInliers(s.points, all, s.band, r.plane);
+        if (inliers.size() >= 3) out.push_back(makeCandidate(s, r.plane, inliers, gravity));
+    }
+    return out;
+}
+
 /// 3.2.1: every vertical plane of the sample, with its frame (upright by gravity).
 std::vector<PlaneCandidate> findCandidates(const CloudSample &s, const DetectorConfig &cfg, const Eigen::Vector3d &gravity) {
     VerticalPlaneOptions opt;
@@ -67,15 +96,27 @@ std::vector<PlaneCandidate> findCandidates(const CloudSample &s, const DetectorC
     opt.merge_angle = cfg.planes.merge_angle;
     std::mt19937 rng(cfg.seed);
     std::vector<PlaneCandidate> out;
-    for (const PlaneInliers &p : findVerticalPlanes(s.points, s.band, gravity, cfg.tolerance, opt, rng)) {
-        PlaneCandidate c;
-        c.plane = p.plane;
-        c.inliers = static_cast<int>(p.inliers.size());
-        c.frame = makePlaneFrame(c.plane, gravity, centroid(s.points, p.inliers));
-        for (int i : p.inliers) c.inlier_indices.push_back(s.indices[i]);
-        out.push_back(std::move(c));
-    }
+    for (const PlaneInliers &p : findVerticalPlanes(s.points, s.band, gravity, cfg.tolerance, opt, rng))
+        out.push_back(makeCandidate(s, p.plane, p.inliers, gravity));
     return out;
+}
+
+/// Each wall's bend and noise as the camera saw them, and its sampled points on that shape.
+void shapeWall(const CloudSample &s, const DetectorConfig &cfg, PlaneCandidate &c) {
+    c.tolerance = cfg.tolerance;
+    if (!cfg.wall.fit_shape) return;
+    const auto shape = fitWallShape(s.points, s.band, c.plane, c.frame, cfg.wall.shape);
+    if (!shape) return;
+    c.shape = *shape;
+    c.tolerance = toleranceFor(c.shape, cfg.tolerance, cfg.wall.noise_min, cfg.wall.noise_max);
+    // The wall's points are those on its shape (the plane's band misses where the camera bends it).
+    c.inlier_indices.clear();
+    for (std::size_t i = 0; i < s.points.size(); ++i) {
+        const Eigen::Vector3d p = s.points[i].cast<double>();
+        if (std::abs(c.plane.signedDistance(p) - c.shape.height(c.frame.toPlane(p))) <= c.tolerance.band(s.points[i].z()))
+            c.inlier_indices.push_back(s.indices[i]);
+    }
+    c.inliers = static_cast<int>(c.inlier_indices.size());
 }
 
 /// The projector's footprint on the candidate and the raster over the part of it where the
@@ -118,9 +159,10 @@ bool frameCandidate(const Cloud &cloud, const CloudSample &s, const Projector &p
 /// 3.2.2: the free surface of the candidate from one pass over the points where it is seen.
 void observeFreeSpace(const Cloud &cloud, const PointGrid &grid, const Projector &projector, const DetectorConfig &cfg,
                       PlaneCandidate &c) {
-    observePlane(grid, grid.gridBox(c.image_box), c.plane, c.frame, c.raster, projector.origin, cfg.tolerance, *c.observed);
+    observePlane(grid, grid.gridBox(c.image_box), c.plane, c.frame, c.raster, projector.origin, c.tolerance, *c.observed,
+                 c.shape);
     // The gaps between neighbouring samples on the wall are closed, up to a limit.
-    const double spacing = sampleSpacing(cloud, c.inlier_indices, c.plane, grid.step, cfg.tolerance, c.spread_area,
+    const double spacing = sampleSpacing(cloud, c.inlier_indices, c.plane, grid.step, c.tolerance, c.spread_area,
                                          c.observed->support_points);
     const double gap = std::ceil(spacing / c.raster.cell);
     const int gap_cells = std::isfinite(gap) ? static_cast<int>(std::clamp(gap, 1.0, double(cfg.free_space.max_gap_cells))) : 1;
@@ -150,13 +192,12 @@ SurfaceCheckResult checkRectangle(const DetectorConfig &cfg, const PlaneCandidat
 
 /// Cloud indices of the points the check counted as off the wall (for overlays), looked for
 /// only where the camera sees the rectangle.
-std::vector<int> checkOutliers(const CloudSample &s, const PointGrid &grid, const DetectorConfig &cfg,
-                               const PlaneCandidate &c) {
+std::vector<int> checkOutliers(const CloudSample &s, const PointGrid &grid, const PlaneCandidate &c) {
     const Rectangle inner = shrinkRectangle(c.frame, c.rectangle, c.raster.cell);
     const cv::Rect box = s.camera ? pixelBox(*s.camera, {inner.corners.begin(), inner.corners.end()}, 2 + grid.step)
                                   : c.image_box;
-    return offPlanePoints(grid, grid.gridBox(box), c.plane, c.frame, c.raster, cfg.tolerance,
-                          c.frame.toPlane(inner.corners[3]), c.frame.toPlane(inner.corners[1]));
+    return offPlanePoints(grid, grid.gridBox(box), c.plane, c.frame, c.raster, c.tolerance,
+                          c.frame.toPlane(inner.corners[3]), c.frame.toPlane(inner.corners[1]), c.shape);
 }
 
 /// Outlines of the free cells, camera frame (for overlays).
@@ -184,22 +225,28 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     if (sample.points.size() < 3) return time.fail("no points to search (empty or all-NaN cloud)");
 
     // 2. Every vertical plane in view, biggest first (3.2.1).
-    std::vector<PlaneCandidate> candidates = findCandidates(sample, cfg, gravity);
+    fillPointGrid(cloud, cfg.free_space.stride, scratch.grid);
+    const bool image = cfg.planes.image_regions && scratch.grid.organized;
+    std::vector<PlaneCandidate> candidates = image ? findRegionCandidates(sample, scratch.grid, cfg, gravity)
+                                                   : findCandidates(sample, cfg, gravity);
     for (const auto &c : candidates) det.debug.candidates.push_back(c.plane);
     time.lap("planes");
     if (candidates.empty()) return time.fail("no vertical plane in view");
 
-    // 3. Those the projector reaches, the largest rectangle they could hold first.
+    // 3. How each wall departs from its plane (the depth camera's bend) and its noise.
+    for (PlaneCandidate &c : candidates) shapeWall(sample, cfg, c);
+    time.lap("wall_shape");
+
+    // 4. Those the projector reaches, the largest rectangle they could hold first.
     std::vector<int> usable;
     for (int k = 0; k < static_cast<int>(candidates.size()); ++k)
         if (frameCandidate(cloud, sample, projector, cfg, aspect, candidates[k])) usable.push_back(k);
     std::sort(usable.begin(), usable.end(), [&](int a, int b) { return candidates[a].bound > candidates[b].bound; });
-    if (!usable.empty()) fillPointGrid(cloud, cfg.free_space.stride, scratch.grid);
     if (scratch.observations.size() < candidates.size()) scratch.observations.resize(candidates.size());
     for (std::size_t k = 0; k < candidates.size(); ++k) candidates[k].observed = &scratch.observations[k];
     time.lap("free_space");
 
-    // 4. Free space (3.2.2), rectangle and surface check (3.2.3), candidate by candidate; one
+    // 5. Free space (3.2.2), rectangle and surface check (3.2.3), candidate by candidate; one
     // that could not hold a bigger rectangle than the one accepted is not looked at.
     const PlaneCandidate *chosen = nullptr, *checked = nullptr;  // accepted; the check reported
     SurfaceCheckResult check;
@@ -222,10 +269,10 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         if (result.accepted) chosen = &c;
         time.lap("surface_check");
     }
-    if (checked) check.outlier_indices = checkOutliers(sample, scratch.grid, cfg, *checked);
+    if (checked) check.outlier_indices = checkOutliers(sample, scratch.grid, *checked);
     time.lap("surface_check");
 
-    // 5. The answer, and the plane shown with it.
+    // 6. The answer, and the plane shown with it.
     std::sort(placed.begin(), placed.end(),
               [&](int a, int b) { return candidates[a].rectangle.area() > candidates[b].rectangle.area(); });
     const PlaneCandidate &shown = chosen ? *chosen : candidates[!placed.empty() ? placed[0] : (usable.empty() ? 0 : usable[0])];
@@ -234,6 +281,8 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     det.orientation_deg = orientationDeg(shown.plane);
     if (!shown.free.empty()) {
         describeCandidate(shown, det.debug);
+        det.debug.wall_shape = shown.shape;
+        det.debug.tolerance = shown.tolerance;
         const auto outlines = freeOutlines(shown);
         det.debug.hull.insert(det.debug.hull.end(), outlines.begin(), outlines.end());
     }

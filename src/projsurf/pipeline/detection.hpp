@@ -10,6 +10,7 @@
 #include "projsurf/core/plane.hpp"
 #include "projsurf/core/plane_frame.hpp"
 #include "projsurf/core/surface_check.hpp"
+#include "projsurf/core/wall_shape.hpp"
 
 namespace projsurf {
 
@@ -24,6 +25,8 @@ struct DetectionDebug {
     PlaneFrame frame;                                ///< frame of the chosen plane
     cv::Mat free_space;                              ///< CV_8U, 255 = free, rows go down from max v
     cv::Mat cell_state;                              ///< CV_8U CellState per cell (default method), else empty
+    WallShape wall_shape;                            ///< how the wall departs from the plane (default method)
+    DepthTolerance tolerance;                        ///< the band the wall's points were judged with
     Eigen::Vector2d grid_origin = Eigen::Vector2d::Zero();  ///< plane coords of the top-left cell corner
     double grid_cell = 0.0;
 };

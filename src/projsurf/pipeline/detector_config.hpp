@@ -2,6 +2,8 @@
 // Every setting of projection surface detection, one source per default, each with its unit
 // and where it comes from (paper section, datasheet, or a measurement of this project).
 #include "projsurf/core/depth_tolerance.hpp"
+#include "projsurf/core/planar_regions.hpp"
+#include "projsurf/core/wall_shape.hpp"
 
 namespace projsurf {
 
@@ -23,8 +25,11 @@ struct PaperConfig {
     int max_outliers = 5000;            ///< more outliers reject the surface (paper 4.3)
 };
 
-/// Default method, stage 1: the vertical planes in view (sequential RANSAC on a sample).
+/// Default method, stage 1: the vertical planes in view: on depth images, planar regions of the
+/// image (deterministic); on unorganized clouds, sequential RANSAC on a sample.
 struct PlaneSearchConfig {
+    bool image_regions = true;    ///< organized clouds: planar regions instead of RANSAC
+    PlanarRegionOptions regions;
     int target_samples = 12000;   ///< points kept for the search (pixel stride / every k-th), measured
     int max_planes = 4;           ///< vertical planes tried, biggest first
     int min_plane_points = 150;   ///< sampled inliers for a plane to count
@@ -35,7 +40,15 @@ struct PlaneSearchConfig {
     double merge_angle = 0.05;    ///< rad, a plane this parallel to a found one, within its margin, is a slice of it
 };
 
-/// Default method, stage 2: where on a plane the camera saw free wall (paper 3.2.2).
+/// Default method, stage 2: how each wall departs from its plane (core/wall_shape.hpp).
+struct WallConfig {
+    bool fit_shape = true;        ///< follow the smooth bend real depth cameras give a flat wall
+    WallShapeOptions shape;
+    double noise_min = 0.5;       ///< the band follows the noise measured on the wall, within these
+    double noise_max = 4.0;       ///< multiples of the model's (K&OE Kinect v1; ToF is better, stereo worse)
+};
+
+/// Default method, stage 3: where on a plane the camera saw free wall (paper 3.2.2).
 struct FreeSpaceConfig {
     double cell = 0.01;            ///< m, raster cell (area error < 0.05 m^2 at 3 m, measured)
     int stride = 2;                ///< pixel step of the pass on organized clouds (3 lost 7 % of the area behind a person)
@@ -45,7 +58,7 @@ struct FreeSpaceConfig {
     double inlier_box_margin = 1.0 / 16; ///< of the image width, when the cloud has no fitted intrinsics
 };
 
-/// Default method, stage 4: the surface check on the rectangle (paper 3.2.3).
+/// Default method, stage 5: the surface check on the rectangle (paper 3.2.3).
 struct SurfaceCheckConfig {
     double max_outlier_fraction = 0.03;  ///< share of checked points off the wall that rejects an area, measured
 };
@@ -58,6 +71,7 @@ struct DetectorConfig {
 
     DepthTolerance tolerance;  ///< how far off a plane a reading may be (default method)
     PlaneSearchConfig planes;
+    WallConfig wall;
     FreeSpaceConfig free_space;
     SurfaceCheckConfig check;
     PaperConfig paper;
