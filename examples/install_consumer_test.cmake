@@ -72,4 +72,14 @@ step("ldd core_consumer" ldd ${WORK_DIR}/core/core_consumer)
 if(step_output MATCHES "libpcl|yaml-cpp|libprojsurf_io|libprojsurf_sim")
   message(FATAL_ERROR "install test: the core-only program loads more than the core:\n${step_output}")
 endif()
+# 4. The installed Python module imports from the prefix and reads the example calibration.
+if(PYTHON)
+  set(ENV{PYTHONPATH} ${prefix}/lib/python3/dist-packages)
+  step("import the installed Python module" ${PYTHON} -c
+    "import projsurf, sys\np = projsurf.read_calibration(sys.argv[1])\nprint(projsurf.__file__, p.width, p.height)"
+    ${calib})
+  if(NOT step_output MATCHES "^${prefix}/lib/python3/dist-packages/projsurf[^ ]*\\.so 1280 800")
+    message(FATAL_ERROR "install test: the installed module did not come from the prefix: ${step_output}")
+  endif()
+endif()
 message(STATUS "install test: all steps passed")
