@@ -234,3 +234,14 @@ def test_the_example_script_runs(tmp_path):
     assert run.returncode == 2
     assert run.stderr.startswith("detect_and_correct: error: " + str(tmp_path / "none.yaml") + ": ")
     assert run.stderr.count("\n") == 1
+
+
+def test_an_open3d_cloud_is_taken_as_it_is(projector):
+    o3d = pytest.importorskip("open3d")  # Debian's python3-open3d; projsurf does not need it
+    flat = wall_and_floor().reshape(-1, 3)
+    flat = flat[np.isfinite(flat).all(axis=1)]
+    cloud = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(flat.astype(np.float64)))
+    det = projsurf.detect(cloud, projector)
+    reference = projsurf.detect(flat, projector)
+    assert det["found"]
+    np.testing.assert_array_equal(det["rectangle"]["corners"], reference["rectangle"]["corners"])
