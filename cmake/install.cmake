@@ -34,6 +34,11 @@ install(FILES ${PROJECT_BINARY_DIR}/projsurf-config.cmake ${PROJECT_BINARY_DIR}/
 set(PROJSURF_PKGCONFIG_DIR ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 file(RELATIVE_PATH PROJSURF_PC_TO_PREFIX /prefix/${PROJSURF_PKGCONFIG_DIR} /prefix)
 string(REGEX REPLACE "/$" "" PROJSURF_PC_TO_PREFIX "${PROJSURF_PC_TO_PREFIX}")
+# Static libraries: a program links what projsurf_io uses inside too (pkg-config --static).
+set(PROJSURF_PC_IO_PRIVATE "")
+if(NOT PROJSURF_SHARED_LIBS)
+  set(PROJSURF_PC_IO_PRIVATE yaml-cpp)
+endif()
 set(PROJSURF_PC_FILES projsurf-core)
 if(TARGET projsurf_io)
   list(APPEND PROJSURF_PC_FILES projsurf)

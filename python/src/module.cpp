@@ -50,7 +50,7 @@ Projector makeProjector(std::pair<int, int> resolution, std::pair<double, double
 }
 
 /// One picture -> framebuffer with a detection: what `projsurf correct` does for an image.
-Keystone keystoneFor(const Projector &projector, const py::handle &detection, cv::Size picture, double tolerance_px) {
+Keystone keystoneFor(const Projector &projector, const py::object &detection, cv::Size picture, double tolerance_px) {
     const Rectangle rect = rectangleFromDetection(detection);
     const KeystoneResult r = computeKeystone(projector, rect, picture, tolerance_px);
     if (!r.keystone) throw InputError("detection", r.problem);
@@ -70,7 +70,7 @@ class Detector {
 public:
     Detector(const Projector &projector, DetectorOptions options) : projector_(projector), options_(std::move(options)) {}
 
-    py::dict detect(const py::handle &points) {
+    py::dict detect(const py::object &points) {
         const Cloud cloud = cloudFromPoints(points);
         DetectorConfig config = options_.config;
         Detection det;
@@ -160,7 +160,7 @@ PYBIND11_MODULE(projsurf, m) {
         .def_property_readonly("projector", &Detector::projector);
 
     m.def("detect",
-          [](const py::handle &points, const Projector &projector, const py::object &aspect, const py::object &gravity,
+          [](const py::object &points, const Projector &projector, const py::object &aspect, const py::object &gravity,
              const std::string &method, const std::string &hull, unsigned seed) {
               Detector detector(projector, detectorOptions(aspect, gravity, method, hull, seed));
               return detector.detect(points);
@@ -173,7 +173,7 @@ PYBIND11_MODULE(projsurf, m) {
           "surface_check, timing_ms, gravity (numpy arrays for vectors). Raises InputError for bad points or options.");
 
     m.def("keystone",
-          [](const Projector &projector, const py::handle &detection, std::pair<int, int> picture_size,
+          [](const Projector &projector, const py::object &detection, std::pair<int, int> picture_size,
              double tolerance_px) {
               const Keystone k = keystoneFor(projector, detection, {picture_size.first, picture_size.second}, tolerance_px);
               Eigen::Matrix3d h;
@@ -189,7 +189,7 @@ PYBIND11_MODULE(projsurf, m) {
           "when the detection found nothing or its rectangle cannot be shown.");
 
     m.def("correct",
-          [](const py::array &image, const Projector &projector, const py::handle &detection, double tolerance_px) {
+          [](const py::array &image, const Projector &projector, const py::object &detection, double tolerance_px) {
               py::object keep;
               const cv::Mat picture = matFromArray(image, "image", keep);
               const Keystone k = keystoneFor(projector, detection, picture.size(), tolerance_px);
