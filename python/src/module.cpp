@@ -14,6 +14,7 @@
 #include "detector_options.hpp"
 #include "image_array.hpp"
 #include "points_array.hpp"
+#include "projsurf/core/camera.hpp"
 #include "projsurf/core/keystone.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
@@ -136,6 +137,23 @@ PYBIND11_MODULE(projsurf, m) {
           "depth_png"_a, "camera_yaml"_a,
           "A 16-bit depth PNG and the camera YAML as an organized (H, W, 3) float32 cloud. Raises InputError.");
 
+    m.def("depth_to_cloud",
+          [](const py::array &depth, double fx, double fy, double cx, double cy, double depth_scale) {
+              py::object keep;
+              const cv::Mat d = matFromArray(depth, "depth", keep);
+              if (d.type() != CV_16UC1) throw InputError("depth", "expected an (H, W) uint16 depth image (0 = no reading)");
+              if (!(fx > 0 && fy > 0 && std::isfinite(cx) && std::isfinite(cy) && depth_scale > 0 &&
+                    std::isfinite(fx + fy + depth_scale)))
+                  throw InputError("camera", "fx, fy and depth_scale must be positive, cx and cy finite");
+              CameraIntrinsics camera;
+              camera.width = d.cols;
+              camera.height = d.rows;
+              camera.fx = fx, camera.fy = fy, camera.cx = cx, camera.cy = cy, camera.depth_scale = depth_scale;
+              return arrayFromCloud(depthToCloud(d, camera));
+          },
+          "depth"_a, py::kw_only(), "fx"_a, "fy"_a, "cx"_a, "cy"_a, "depth_scale"_a = 1000.0,
+          "An (H, W) uint16 depth image (depth_scale units per metre, 0 = no reading) and its pinhole\n"
+          "(px) as an organized (H, W, 3) float32 cloud, NaN where there is no reading. Raises InputError.");
     m.def("read_image", [](const std::string &path) { return arrayFromMat(readImage(path, cv::IMREAD_UNCHANGED)); },
           "path"_a,
           "Reads an image file as OpenCV does (channels in B, G, R order; 8 or 16 bits). Raises InputError.");

@@ -245,3 +245,20 @@ def test_an_open3d_cloud_is_taken_as_it_is(projector):
     reference = projsurf.detect(flat, projector)
     assert det["found"]
     np.testing.assert_array_equal(det["rectangle"]["corners"], reference["rectangle"]["corners"])
+
+
+def test_depth_to_cloud_matches_the_depth_png_reader(tmp_path):
+    depth = np.full((48, 64), 2500, np.uint16)
+    depth[0, 0] = 0  # no reading
+    cloud = projsurf.depth_to_cloud(depth, fx=52.5, fy=52.5, cx=31.5, cy=23.5)
+    assert cloud.shape == (48, 64, 3) and cloud.dtype == np.float32
+    assert np.isnan(cloud[0, 0]).all()
+    np.testing.assert_allclose(cloud[1:, :, 2], 2.5)
+    np.testing.assert_allclose(cloud[23, 63], [(63 - 31.5) * 2.5 / 52.5, (23 - 23.5) * 2.5 / 52.5, 2.5], rtol=1e-6)
+    png, camera = str(tmp_path / "d.png"), tmp_path / "camera.yaml"
+    projsurf.write_image(png, depth)
+    camera.write_text("camera:\n  width: 64\n  height: 48\n  fx: 52.5\n  fy: 52.5\n  cx: 31.5\n  cy: 23.5\n"
+                      "  depth_scale: 1000.0\n")
+    np.testing.assert_array_equal(projsurf.read_depth_cloud(png, str(camera)), cloud)
+    with pytest.raises(projsurf.InputError, match="^depth: expected an \\(H, W\\) uint16 depth image"):
+        projsurf.depth_to_cloud(depth.astype(np.float32), fx=52.5, fy=52.5, cx=31.5, cy=23.5)
