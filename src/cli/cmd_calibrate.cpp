@@ -196,7 +196,8 @@ void run(const CalibrateOptions &o) {
 
 void addCalibrateCommand(CLI::App &app) {
     auto opts = std::make_shared<CalibrateOptions>();
-    auto *sub = app.add_subcommand("calibrate", "find the projector's axis from captures of the calibration picture");
+    auto *sub = app.add_subcommand(
+        "calibrate", "find the projector's axis from captures of the calibration picture (--write-picture: write that picture)");
     sub->add_option("--captures", opts->captures,
                     "folder with camera.yaml and capture_k_rgb.png / capture_k_depth.png, k = 0..N-1 (N >= 3); "
                     "required unless --write-picture");
