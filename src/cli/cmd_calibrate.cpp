@@ -1,5 +1,6 @@
 // projsurf calibrate: find the projector's central axis from captures of the calibration
-// picture (paper 3.1) and write the calibration YAML (contract keys + fit report).
+// picture (paper 3.1) and write the calibration YAML (contract keys + fit report); or, with
+// --write-picture, write that picture (black, one white disc in the centre).
 #include <cmath>
 #include <ctime>
 #include <filesystem>
@@ -15,6 +16,7 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/yaml_files.hpp"
+#include "projsurf/sim/render.hpp"
 
 namespace fs = std::filesystem;
 
@@ -26,6 +28,7 @@ constexpr double kDeg = 3.14159265358979323846 / 180.0;
 struct CalibrateOptions {
     std::string captures;
     std::string out;
+    std::string write_picture;
     std::string fov = "39.3,24.0";     // deg, Aaxa P300 (paper 3.1.2)
     std::string resolution = "1280,800";  // px, Aaxa P300
     int threshold = 50;                // paper 3.1.1
@@ -57,15 +60,43 @@ std::string fmt(const char *format, double a, double b = 0, double c = 0, double
     return buf;
 }
 
+std::pair<int, int> parseResolution(const std::string &text) {
+    const auto [res_w, res_h] = parseTwo("--resolution", text);
+    if (res_w < 2 || res_h < 2 || res_w > 16384 || res_h > 16384 || res_w != std::floor(res_w) ||
+        res_h != std::floor(res_h))
+        throw InputError("--resolution", "must be two whole numbers between 2 and 16384");
+    return {static_cast<int>(res_w), static_cast<int>(res_h)};
+}
+
+/// The calibration picture at the projector's resolution. The disc's radius is H / 8 (100 px
+/// at 1280x800): the picture the simulated calibrations are made and tested with; see
+/// docs/calibration.md for why that size.
+void writePicture(const CalibrateOptions &o) {
+    if (!o.captures.empty() || !o.out.empty())
+        throw InputError("--write-picture", "only writes the calibration picture; run calibrate --captures DIR --out "
+                                            "calib.yaml separately");
+    const auto [w, h] = parseResolution(o.resolution);
+    requireWritableLocation(o.write_picture);
+    if (!cv::haveImageWriter(o.write_picture))
+        throw InputError(o.write_picture, "cannot write an image with this extension (use .png)");
+    const double radius = h / 8.0;
+    writeImageAtomic(o.write_picture, sim::calibrationPicture(w, h, radius));
+    std::cout << "projsurf calibrate: calibration picture " << w << "x" << h
+              << fmt(", white disc of radius %.1f px at (%.1f, %.1f) -> ", radius, 0.5 * (w - 1), 0.5 * (h - 1))
+              << o.write_picture << "\n"
+              << "  show it full screen on the projector (projsurf show --image " << o.write_picture
+              << "), capture it from 3 or more robot positions; see docs/calibration.md\n";
+}
+
 void run(const CalibrateOptions &o) {
+    if (!o.write_picture.empty()) return writePicture(o);
+    if (o.captures.empty()) throw CLI::RequiredError("--captures");
+    if (o.out.empty()) throw CLI::RequiredError("--out");
     // Arguments first, then every input, before any work; the output only at the end.
     const auto [fov_h, fov_v] = parseTwo("--fov-deg", o.fov);
     if (!(fov_h > 0 && fov_h < 170 && fov_v > 0 && fov_v < 170))
         throw InputError("--fov-deg", "angles must be between 0 and 170 degrees");
-    const auto [res_w, res_h] = parseTwo("--resolution", o.resolution);
-    if (res_w < 2 || res_h < 2 || res_w > 16384 || res_h > 16384 || res_w != std::floor(res_w) ||
-        res_h != std::floor(res_h))
-        throw InputError("--resolution", "must be two whole numbers between 2 and 16384");
+    const auto [res_w, res_h] = parseResolution(o.resolution);
     if (o.threshold < 0 || o.threshold > 254) throw InputError("--threshold", "must be between 0 and 254");
     std::error_code ec;
     if (!fs::is_directory(o.captures, ec)) throw InputError(o.captures, "not a directory");
@@ -167,11 +198,15 @@ void run(const CalibrateOptions &o) {
 
 void addCalibrateCommand(CLI::App &app) {
     auto opts = std::make_shared<CalibrateOptions>();
-    auto *sub = app.add_subcommand("calibrate", "find the projector's axis from captures of the calibration picture");
+    auto *sub = app.add_subcommand(
+        "calibrate", "find the projector's axis from captures of the calibration picture (--write-picture: write that picture)");
     sub->add_option("--captures", opts->captures,
-                    "folder with camera.yaml and capture_k_rgb.png / capture_k_depth.png, k = 0..N-1 (N >= 3)")
-        ->required();
-    sub->add_option("--out", opts->out, "calibration YAML to write")->required();
+                    "folder with camera.yaml and capture_k_rgb.png / capture_k_depth.png, k = 0..N-1 (N >= 3); "
+                    "required unless --write-picture");
+    sub->add_option("--out", opts->out, "calibration YAML to write; required unless --write-picture");
+    sub->add_option("--write-picture", opts->write_picture,
+                    "write the calibration picture (black, one white disc in the centre) at --resolution "
+                    "to this PNG, and nothing else");
     sub->add_option("--fov-deg", opts->fov, "projector's full horizontal,vertical field of view, deg")
         ->capture_default_str();
     sub->add_option("--resolution", opts->resolution, "projector framebuffer width,height, px")->capture_default_str();

@@ -1,0 +1,49 @@
+# Install rules and the exported package: `cmake --install build --prefix P` gives
+#   P/include/projsurf/{core,pipeline,sim,io}/*.hpp
+#   P/lib/libprojsurf_{core,sim,io}.so*          P/bin/projsurf
+#   P/lib/cmake/projsurf/  find_package(projsurf [COMPONENTS core sim io]) -> projsurf::<component>
+#   P/lib/pkgconfig/       projsurf-core.pc (the core), projsurf.pc (core, sim, io)
+# Each component has its own export file, so find_package(projsurf COMPONENTS core) looks up
+# only what the core's headers need (Eigen, OpenCV core): no nlohmann-json, PCL or CLI11.
+# Every path in these files is relative to where they are installed (a tree can be moved).
+include(CMakePackageConfigHelpers)
+set(PROJSURF_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/projsurf)
+
+set(PROJSURF_COMPONENTS core sim)
+if(TARGET projsurf_io)
+  list(APPEND PROJSURF_COMPONENTS io)
+endif()
+foreach(component ${PROJSURF_COMPONENTS})
+  install(TARGETS projsurf_${component} EXPORT projsurf-${component}-targets
+    LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT runtime NAMELINK_COMPONENT devel
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT devel
+    RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
+  install(EXPORT projsurf-${component}-targets NAMESPACE projsurf:: DESTINATION ${PROJSURF_CMAKE_DIR}
+    COMPONENT devel)
+endforeach()
+
+configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/projsurf-config.cmake.in
+  ${PROJECT_BINARY_DIR}/projsurf-config.cmake INSTALL_DESTINATION ${PROJSURF_CMAKE_DIR})
+# 0.x: minor versions may change the API.
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/projsurf-config-version.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/projsurf-config.cmake ${PROJECT_BINARY_DIR}/projsurf-config-version.cmake
+  DESTINATION ${PROJSURF_CMAKE_DIR} COMPONENT devel)
+
+# pkg-config: the prefix is found from the .pc file's own folder.
+set(PROJSURF_PKGCONFIG_DIR ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
+file(RELATIVE_PATH PROJSURF_PC_TO_PREFIX /prefix/${PROJSURF_PKGCONFIG_DIR} /prefix)
+string(REGEX REPLACE "/$" "" PROJSURF_PC_TO_PREFIX "${PROJSURF_PC_TO_PREFIX}")
+# Static libraries: a program links what projsurf_io uses inside too (pkg-config --static).
+set(PROJSURF_PC_IO_PRIVATE "")
+if(NOT PROJSURF_SHARED_LIBS)
+  set(PROJSURF_PC_IO_PRIVATE yaml-cpp)
+endif()
+set(PROJSURF_PC_FILES projsurf-core)
+if(TARGET projsurf_io)
+  list(APPEND PROJSURF_PC_FILES projsurf)
+endif()
+foreach(pc ${PROJSURF_PC_FILES})
+  configure_file(${CMAKE_CURRENT_LIST_DIR}/${pc}.pc.in ${PROJECT_BINARY_DIR}/${pc}.pc @ONLY)
+  install(FILES ${PROJECT_BINARY_DIR}/${pc}.pc DESTINATION ${PROJSURF_PKGCONFIG_DIR} COMPONENT devel)
+endforeach()

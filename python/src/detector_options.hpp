@@ -1,0 +1,30 @@
+#pragma once
+// The detector's settings from Python keyword arguments, checked as the CLI checks its options
+// (InputError("<option>", problem) -> projsurf.InputError with the same line).
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+
+#include <pybind11/pybind11.h>
+
+#include "projsurf/core/cloud.hpp"
+#include "projsurf/pipeline/detector.hpp"
+
+namespace projsurf::python {
+
+struct DetectorOptions {
+    DetectorConfig config;  ///< gravity: the given one, or the level camera's [0, 1, 0]
+    bool auto_gravity = false;  ///< gravity="auto": from the floor of each cloud, else level
+};
+
+/// aspect: None (the framebuffer's), a number (width / height) or "W:H"; gravity: None (level
+/// camera), 3 numbers (camera frame, pointing down; any length but zero) or "auto"; method:
+/// "default" | "paper"; hull: "concave" | "convex" (paper method); seed: RANSAC seed.
+DetectorOptions detectorOptions(const pybind11::object &aspect, const pybind11::object &gravity,
+                                const std::string &method, const std::string &hull, unsigned seed);
+
+/// The gravity to detect `cloud` with: the options' own, or with "auto" the floor's (prior:
+/// the options' gravity), else that prior.
+Eigen::Vector3d gravityFor(const DetectorOptions &options, const Cloud &cloud);
+
+}  // namespace projsurf::python

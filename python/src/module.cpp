@@ -1,0 +1,228 @@
+// The Python module `projsurf`: a thin layer over the C++ library (python/README.md).
+// Frames and units as everywhere in projsurf: camera optical frame (x right, y down,
+// z forward), metres, radians except where a name says _deg.
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <opencv2/imgcodecs.hpp>
+#include <optional>
+
+#include "detection_dict.hpp"
+#include "detector_options.hpp"
+#include "image_array.hpp"
+#include "points_array.hpp"
+#include "projsurf/core/camera.hpp"
+#include "projsurf/core/keystone.hpp"
+#include "projsurf/io/cloud_io.hpp"
+#include "projsurf/io/errors.hpp"
+#include "projsurf/io/files.hpp"
+#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/pipeline/detector.hpp"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace projsurf::python {
+namespace {
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+/// The contract's projector, from keyword arguments with the example calibration's defaults.
+Projector makeProjector(std::pair<int, int> resolution, std::pair<double, double> fov_deg,
+                        const Eigen::Vector3d &origin, const Eigen::Vector3d &direction) {
+    Projector p;
+    p.width = resolution.first;
+    p.height = resolution.second;
+    if (p.width < 2 || p.height < 2 || p.width > 16384 || p.height > 16384)
+        throw InputError("resolution", "must be two whole numbers between 2 and 16384");
+    if (!(fov_deg.first > 0 && fov_deg.first < 170 && fov_deg.second > 0 && fov_deg.second < 170))
+        throw InputError("fov_deg", "angles must be between 0 and 170 degrees");
+    p.fov_h = fov_deg.first * kDeg;
+    p.fov_v = fov_deg.second * kDeg;
+    if (!origin.allFinite()) throw InputError("origin", "is not finite");
+    p.origin = origin;
+    p.direction = direction.norm() > 0 ? direction.normalized() : direction;
+    if (!isValidProjector(p))
+        throw InputError("direction", "the axis must be finite, non-zero and not parallel to the camera's y axis");
+    return p;
+}
+
+/// One picture -> framebuffer with a detection: what `projsurf correct` does for an image.
+Keystone keystoneFor(const Projector &projector, const py::object &detection, cv::Size picture, double tolerance_px) {
+    const Rectangle rect = rectangleFromDetection(detection);
+    const KeystoneResult r = computeKeystone(projector, rect, picture, tolerance_px);
+    if (!r.keystone) throw InputError("detection", r.problem);
+    return *r.keystone;
+}
+
+py::array corners2(const Corners2 &c) {
+    py::array_t<double> a({4, 2});
+    auto w = a.mutable_unchecked<2>();
+    for (int i = 0; i < 4; ++i) w(i, 0) = c[i].x(), w(i, 1) = c[i].y();
+    return a;
+}
+
+/// A detector for a stream of clouds: keeps the C++ SurfaceDetector (and its buffers) while
+/// the gravity stays the same.
+class Detector {
+public:
+    Detector(const Projector &projector, DetectorOptions options) : projector_(projector), options_(std::move(options)) {}
+
+    py::dict detect(const py::object &points) {
+        const Cloud cloud = cloudFromPoints(points);
+        DetectorConfig config = options_.config;
+        Detection det;
+        {
+            py::gil_scoped_release unlocked;
+            config.gravity = gravityFor(options_, cloud);
+            if (!detector_ || detector_->config().gravity != config.gravity) detector_.emplace(projector_, config);
+            det = detector_->detect(cloud);
+        }
+        return detectionToDict(det, config);
+    }
+    const Projector &projector() const { return projector_; }
+
+private:
+    Projector projector_;
+    DetectorOptions options_;
+    std::optional<SurfaceDetector> detector_;
+};
+
+}  // namespace
+}  // namespace projsurf::python
+
+PYBIND11_MODULE(projsurf, m) {
+    using namespace projsurf;
+    using namespace projsurf::python;
+    m.doc() = "projsurf: where a robot's projector can show a picture on a wall, and its keystone correction.\n"
+              "Camera optical frame (x right, y down, z forward), metres; degrees only where a name says _deg.";
+
+    // Same one-line messages as the CLI's "projsurf: error: <file>: <problem>" (without the prefix).
+    py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+
+    py::class_<Projector>(m, "Projector",
+                          "The contract's projector: a pinhole, principal point at the framebuffer centre, zero roll.")
+        .def(py::init(&makeProjector), "resolution"_a = std::make_pair(1280, 800),
+             "fov_deg"_a = std::make_pair(39.3, 24.0), "origin"_a = Eigen::Vector3d(0.0, 0.12, 0.0),
+             "direction"_a = Eigen::Vector3d(0.0, -0.05, 1.0),
+             "Defaults: the example calibration (examples/calib/example_calib.yaml).")
+        .def_readonly("width", &Projector::width, "framebuffer width, px")
+        .def_readonly("height", &Projector::height, "framebuffer height, px")
+        .def_property_readonly("fov_deg", [](const Projector &p) { return std::make_pair(p.fov_h / kDeg, p.fov_v / kDeg); },
+                               "full horizontal, vertical field of view, deg")
+        .def_property_readonly("origin", [](const Projector &p) { return p.origin; }, "lens centre, camera frame, m")
+        .def_property_readonly("direction", [](const Projector &p) { return p.direction; }, "central axis, unit")
+        .def("to_pixel", [](const Projector &p, const Eigen::Vector3d &point) { return p.toPixel(point); }, "point"_a,
+             "framebuffer pixel (u, v) that lights a camera-frame point; None behind the lens")
+        .def("__repr__", [](const Projector &p) {
+            return py::str("Projector(resolution=({}, {}), fov_deg=({:.3f}, {:.3f}), origin={}, direction={})")
+                .format(p.width, p.height, p.fov_h / kDeg, p.fov_v / kDeg,
+                        py::str(py::cast(std::vector<double>{p.origin.x(), p.origin.y(), p.origin.z()})),
+                        py::str(py::cast(std::vector<double>{p.direction.x(), p.direction.y(), p.direction.z()})));
+        });
+
+    m.def("read_calibration", &readCalibration, "path"_a,
+          "Reads a calibration YAML (the contract's keys; others are ignored). Raises InputError.");
+    m.def("write_calibration", &writeCalibration, "path"_a, "projector"_a,
+          "Writes a calibration YAML with the contract's keys (atomically). Raises InputError.");
+    m.def("read_cloud", [](const std::string &path) { return arrayFromCloud(readCloud(path)); }, "path"_a,
+          "Reads a PCD or PLY file: float32 (H, W, 3) when organized, else (N, 3). Raises InputError.");
+    m.def("read_depth_cloud",
+          [](const std::string &depth_png, const std::string &camera_yaml) {
+              return arrayFromCloud(readDepthCloud(depth_png, camera_yaml));
+          },
+          "depth_png"_a, "camera_yaml"_a,
+          "A 16-bit depth PNG and the camera YAML as an organized (H, W, 3) float32 cloud. Raises InputError.");
+
+    m.def("depth_to_cloud",
+          [](const py::array &depth, double fx, double fy, double cx, double cy, double depth_scale) {
+              py::object keep;
+              const cv::Mat d = matFromArray(depth, "depth", keep);
+              if (d.type() != CV_16UC1) throw InputError("depth", "expected an (H, W) uint16 depth image (0 = no reading)");
+              if (!(fx > 0 && fy > 0 && std::isfinite(cx) && std::isfinite(cy) && depth_scale > 0 &&
+                    std::isfinite(fx + fy + depth_scale)))
+                  throw InputError("camera", "fx, fy and depth_scale must be positive, cx and cy finite");
+              CameraIntrinsics camera;
+              camera.width = d.cols;
+              camera.height = d.rows;
+              camera.fx = fx, camera.fy = fy, camera.cx = cx, camera.cy = cy, camera.depth_scale = depth_scale;
+              return arrayFromCloud(depthToCloud(d, camera));
+          },
+          "depth"_a, py::kw_only(), "fx"_a, "fy"_a, "cx"_a, "cy"_a, "depth_scale"_a = 1000.0,
+          "An (H, W) uint16 depth image (depth_scale units per metre, 0 = no reading) and its pinhole\n"
+          "(px) as an organized (H, W, 3) float32 cloud, NaN where there is no reading. Raises InputError.");
+    m.def("read_image", [](const std::string &path) { return arrayFromMat(readImage(path, cv::IMREAD_UNCHANGED)); },
+          "path"_a,
+          "Reads an image file as OpenCV does (channels in B, G, R order; 8 or 16 bits). Raises InputError.");
+    m.def("write_image",
+          [](const std::string &path, const py::array &image) {
+              py::object keep;
+              writeImageAtomic(path, matFromArray(image, "image", keep));
+          },
+          "path"_a, "image"_a,
+          "Writes an image by the path's extension (channels taken as B, G, R), atomically. Raises InputError.");
+
+    py::class_<Detector>(m, "Detector", "Detection over a stream of clouds (reuses its buffers from frame to frame).")
+        .def(py::init([](const Projector &projector, const py::object &aspect, const py::object &gravity,
+                         const std::string &method, const std::string &hull, unsigned seed) {
+                 return Detector(projector, detectorOptions(aspect, gravity, method, hull, seed));
+             }),
+             "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(), "method"_a = "default",
+             "hull"_a = "concave", "seed"_a = 42u)
+        .def("detect", &Detector::detect, "points"_a,
+             "points: (H, W, 3) or (N, 3) array (camera frame, m; NaN = no reading) or an object with .points.\n"
+             "Returns the detection as a dict with the keys of the detection JSON.")
+        .def_property_readonly("projector", &Detector::projector);
+
+    m.def("detect",
+          [](const py::object &points, const Projector &projector, const py::object &aspect, const py::object &gravity,
+             const std::string &method, const std::string &hull, unsigned seed) {
+              Detector detector(projector, detectorOptions(aspect, gravity, method, hull, seed));
+              return detector.detect(points);
+          },
+          "points"_a, "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(),
+          "method"_a = "default", "hull"_a = "concave", "seed"_a = 42u,
+          "The biggest upright rectangle of the aspect ratio (None: the framebuffer's, a number, or 'W:H') that the\n"
+          "projector can light on a vertical surface. gravity: camera frame, pointing down (None: a level camera\n"
+          "[0, 1, 0]; 'auto': from the floor). Returns a dict: found, reason, method, plane, rectangle,\n"
+          "surface_check, timing_ms, gravity (numpy arrays for vectors). Raises InputError for bad points or options.");
+
+    m.def("keystone",
+          [](const Projector &projector, const py::object &detection, std::pair<int, int> picture_size,
+             double tolerance_px) {
+              const Keystone k = keystoneFor(projector, detection, {picture_size.first, picture_size.second}, tolerance_px);
+              Eigen::Matrix3d h;
+              for (int r = 0; r < 3; ++r)
+                  for (int c = 0; c < 3; ++c) h(r, c) = k.homography(r, c);
+              return py::dict("homography"_a = h, "rectangle_px"_a = corners2(k.rectangle_px),
+                              "picture_px"_a = corners2(k.picture_px),
+                              "framebuffer_size"_a = std::make_pair(k.framebuffer.width, k.framebuffer.height));
+          },
+          "projector"_a, "detection"_a, "picture_size"_a, "tolerance_px"_a = 0.5,
+          "picture_size: (width, height) px. homography maps picture pixels to framebuffer pixels (centres at\n"
+          "integers); rectangle_px / picture_px: (4, 2) framebuffer positions (TL, TR, BR, BL). Raises InputError\n"
+          "when the detection found nothing or its rectangle cannot be shown.");
+
+    m.def("correct",
+          [](const py::array &image, const Projector &projector, const py::object &detection, double tolerance_px) {
+              py::object keep;
+              const cv::Mat picture = matFromArray(image, "image", keep);
+              const Keystone k = keystoneFor(projector, detection, picture.size(), tolerance_px);
+              cv::Mat framebuffer;
+              {
+                  py::gil_scoped_release unlocked;
+                  framebuffer = warpToFramebuffer(picture, k);
+              }
+              return arrayFromMat(framebuffer);
+          },
+          "image"_a, "projector"_a, "detection"_a, "tolerance_px"_a = 0.5,
+          "Keystone correction: the projector framebuffer (the calibration's resolution, black around) showing\n"
+          "`image` ((H, W) or (H, W, C), uint8, uint16 or float32; channels kept in their order) whole and\n"
+          "undistorted in the detected rectangle (letterboxed, never stretched). The image is read in place.\n"
+          "detection: the dict of detect(), or (4, 3) corners. Raises InputError.");
+
+    m.attr("__version__") = PROJSURF_VERSION;
+}

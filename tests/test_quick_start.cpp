@@ -1,0 +1,103 @@
+// The quick start's pieces: the example calibration in the repository is the simulator's
+// example projector, and `calibrate --write-picture` writes a picture whose disc the
+// calibration's own disc finder locates at the principal point.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "projsurf/core/calibration.hpp"
+#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/sim/scenarios.hpp"
+
+namespace fs = std::filesystem;
+using namespace projsurf;
+
+namespace {
+
+struct CliRun {
+    int status = -1;
+    std::string out, err;
+};
+
+std::string slurp(const fs::path &path) {
+    std::ifstream in(path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+CliRun cli(const std::string &args, const fs::path &dir) {
+    const fs::path o = dir / "stdout.txt", e = dir / "stderr.txt";
+    const std::string cmd = "timeout 60 " + std::string(PROJSURF_CLI) + " " + args + " >" + o.string() + " 2>" + e.string();
+    const int s = std::system(cmd.c_str());
+    return {WIFEXITED(s) ? WEXITSTATUS(s) : -1, slurp(o), slurp(e)};
+}
+
+fs::path freshDir(const std::string &name) {
+    const fs::path d = fs::temp_directory_path() / ("projsurf_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+}
+
+}  // namespace
+
+TEST(QuickStart, ExampleCalibrationIsTheSimulatorsExampleProjector) {
+    const Projector file = readCalibration(std::string(PROJSURF_SOURCE_DIR) + "/examples/calib/example_calib.yaml");
+    const Projector sim = sim::exampleProjector();
+    EXPECT_EQ(file.width, sim.width);
+    EXPECT_EQ(file.height, sim.height);
+    EXPECT_NEAR(file.fov_h, sim.fov_h, 1e-12);
+    EXPECT_NEAR(file.fov_v, sim.fov_v, 1e-12);
+    EXPECT_LT((file.origin - sim.origin).norm(), 1e-12);
+    EXPECT_LT((file.direction - sim.direction).norm(), 1e-12);
+}
+
+TEST(QuickStart, WritePictureGivesTheDiscAtThePrincipalPoint) {
+    const fs::path dir = freshDir("write_picture");
+    for (const auto &[w, h] : {std::pair<int, int>{1280, 800}, {1920, 1080}, {854, 480}}) {
+        const fs::path png = dir / ("disc_" + std::to_string(w) + ".png");
+        const CliRun r = cli("calibrate --write-picture " + png.string() + " --resolution " + std::to_string(w) + "," +
+                              std::to_string(h),
+                          dir);
+        ASSERT_EQ(r.status, 0) << r.err;
+        EXPECT_NE(r.out.find("calibration picture"), std::string::npos) << r.out;
+        const cv::Mat picture = cv::imread(png.string(), cv::IMREAD_UNCHANGED);
+        ASSERT_EQ(picture.cols, w);
+        ASSERT_EQ(picture.rows, h);
+        const auto disc = findDisc(picture);
+        ASSERT_TRUE(disc.has_value());
+        EXPECT_EQ(disc->candidates, 1);
+        EXPECT_NEAR(disc->centroid.x(), 0.5 * (w - 1), 0.05);
+        EXPECT_NEAR(disc->centroid.y(), 0.5 * (h - 1), 0.05);
+        EXPECT_NEAR(disc->radius_px, h / 8.0, 1.0);
+        // Black around the disc: the corners of the picture.
+        EXPECT_EQ(picture.at<cv::Vec3b>(0, 0), cv::Vec3b(0, 0, 0));
+        EXPECT_EQ(picture.at<cv::Vec3b>(h - 1, w - 1), cv::Vec3b(0, 0, 0));
+    }
+    fs::remove_all(dir);
+}
+
+TEST(QuickStart, CalibrateStillNeedsCapturesWithoutWritePicture) {
+    const fs::path dir = freshDir("calibrate_args");
+    CliRun r = cli("calibrate --out " + (dir / "c.yaml").string(), dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--captures is required"), std::string::npos) << r.err;
+    r = cli("calibrate --write-picture " + (dir / "d.png").string() + " --captures " + dir.string(), dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("projsurf: error: --write-picture: only writes the calibration picture"), std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(dir / "d.png"));
+    r = cli("calibrate --write-picture " + (dir / "no_such_dir" / "d.png").string(), dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    fs::remove_all(dir);
+}
