@@ -39,7 +39,7 @@ py::dict detectionToDict(const Detection &det, const DetectorConfig &config) {
     d["surface_check"] = py::dict("points"_a = det.surface_check.points, "outliers"_a = det.surface_check.outliers,
                                   "accepted"_a = det.surface_check.accepted);
     d["timing_ms"] = py::cast(det.timing_ms);
-    const Eigen::Vector3d g = config.gravity.normalized();
+    const Eigen::Vector3d g = det.gravity;
     d["gravity"] = py::array_t<double>(3, g.data());
     return d;
 }

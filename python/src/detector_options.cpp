@@ -44,8 +44,8 @@ DetectorOptions detectorOptions(const py::object &aspect, const py::object &grav
     if (method == "paper") o.config.method = Method::Paper;
     else if (method == "default") o.config.method = Method::Default;
     else throw InputError("method", "expected 'default' or 'paper', got '" + method + "'");
-    if (hull == "concave") o.config.hull = HullKind::Concave;
-    else if (hull == "convex") o.config.hull = HullKind::Convex;
+    if (hull == "concave") o.config.paper.hull = HullKind::Concave;
+    else if (hull == "convex") o.config.paper.hull = HullKind::Convex;
     else throw InputError("hull", "expected 'concave' or 'convex', got '" + hull + "'");
     o.config.seed = seed;
     if (py::isinstance<py::str>(gravity) && gravity.cast<std::string>() == "auto") {
@@ -62,15 +62,15 @@ DetectorOptions detectorOptions(const py::object &aspect, const py::object &grav
         const Eigen::Vector3d v(g.data()[0], g.data()[1], g.data()[2]);
         if (!v.allFinite()) throw InputError("gravity", "the vector is not finite");
         if (v.norm() < 1e-9) throw InputError("gravity", "the vector is zero");
-        o.config.gravity = v;
+        o.gravity = v;
     }
     return o;
 }
 
 Eigen::Vector3d gravityFor(const DetectorOptions &options, const Cloud &cloud) {
     if (options.auto_gravity)
-        if (const auto g = estimateGravityFromFloor(cloud, options.config.gravity)) return g->gravity;
-    return options.config.gravity;
+        if (const auto g = estimateGravityFromFloor(cloud, options.gravity)) return g->gravity;
+    return options.gravity;
 }
 
 }  // namespace projsurf::python

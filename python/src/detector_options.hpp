@@ -13,7 +13,8 @@
 namespace projsurf::python {
 
 struct DetectorOptions {
-    DetectorConfig config;  ///< gravity: the given one, or the level camera's [0, 1, 0]
+    DetectorConfig config;
+    Eigen::Vector3d gravity = Eigen::Vector3d::UnitY();  ///< the given one, or the level camera's
     bool auto_gravity = false;  ///< gravity="auto": from the floor of each cloud, else level
 };
 

@@ -65,30 +65,26 @@ py::array corners2(const Corners2 &c) {
     return a;
 }
 
-/// A detector for a stream of clouds: keeps the C++ SurfaceDetector (and its buffers) while
-/// the gravity stays the same.
+/// A detector for a stream of clouds: keeps the C++ SurfaceDetector (and its buffers).
 class Detector {
 public:
-    Detector(const Projector &projector, DetectorOptions options) : projector_(projector), options_(std::move(options)) {}
+    Detector(const Projector &projector, DetectorOptions options)
+        : options_(std::move(options)), detector_(projector, options_.config) {}
 
     py::dict detect(const py::object &points) {
         const Cloud cloud = cloudFromPoints(points);
-        DetectorConfig config = options_.config;
         Detection det;
         {
             py::gil_scoped_release unlocked;
-            config.gravity = gravityFor(options_, cloud);
-            if (!detector_ || detector_->config().gravity != config.gravity) detector_.emplace(projector_, config);
-            det = detector_->detect(cloud);
+            det = detector_.detect(cloud, gravityFor(options_, cloud));
         }
-        return detectionToDict(det, config);
+        return detectionToDict(det, options_.config);
     }
-    const Projector &projector() const { return projector_; }
+    const Projector &projector() const { return detector_.projector(); }
 
 private:
-    Projector projector_;
     DetectorOptions options_;
-    std::optional<SurfaceDetector> detector_;
+    SurfaceDetector detector_;
 };
 
 }  // namespace
