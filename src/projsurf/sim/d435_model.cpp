@@ -54,7 +54,8 @@ cv::Mat measureD435(const Scene &scene, const ExactDepth &e, const D435Model &m,
         }
         return lo;
     };
-    const double t_speckle = threshold(m.speckle_share), t_black = threshold(m.black_speckle_share);
+    const double t_speckle = threshold(m.speckle_share), t_black = threshold(m.black_speckle_share),
+                 t_glossy = threshold(m.glossy_speckle_share);
     NormalSource gauss(rng);
     const double cos_max = std::cos(m.grazing_max_deg * M_PI / 180.0);
     const double fb = c.fx * m.baseline;
@@ -72,7 +73,8 @@ cv::Mat measureD435(const Scene &scene, const ExactDepth &e, const D435Model &m,
             if (q >= 0) {
                 if (hidden.at<uchar>(v, u)) continue;
                 if (e.cos_incidence.at<float>(v, u) < cos_max) continue;
-                const double t = scene.quads[q].material == Material::Black ? t_black : t_speckle;
+                const Material mat = scene.quads[q].material;
+                const double t = mat == Material::Black ? t_black : mat == Material::Glossy ? t_glossy : t_speckle;
                 if (speckle.at<float>(v, u) > t) continue;
             }
             const double sigma = m.rms_at_2m * (zz / 2.0) * (zz / 2.0);

@@ -7,7 +7,7 @@
 //  - RMS error growing with z^2, spatially correlated: a per-frame field correlated over the
 //    matching window, a per-unit smooth field (calibration), a small independent part; the
 //    total is `rms_at_2m` (Intel: <= 2 % of depth at 2 m);
-//  - speckle holes (small blobs where matching fails), more on black surfaces;
+//  - speckle holes (small blobs where matching fails), more on black and glossy surfaces;
 //  - edges fattened: beside a foreground edge the background reads the foreground's depth over
 //    a few pixels (the matching window straddles the edge);
 //  - an invalid band beside near objects (left of them) and along the left image border:
@@ -39,7 +39,8 @@ struct D435Model {
     double unit_cell_px = 200.0;      ///< px, feature size of the per-unit field
     double speckle_share = 0.02;      ///< share of pixels in speckle holes
     double speckle_sigma_px = 1.2;    ///< px, hole blob size
-    double black_speckle_share = 0.5; ///< share of holes on black surfaces
+    double black_speckle_share = 0.5; ///< share of holes on black surfaces (the projector's dots hardly show)
+    double glossy_speckle_share = 0.6; ///< share of holes on glossy surfaces (the dots are mirrored away)
     double glass_through = 0.8;       ///< probability of reading through glass, else nothing
     int fatten_px = 3;                ///< px, edge fattening horizontally (1 px vertically)
     double edge_jump = 0.05;          ///< m, depth difference that makes a depth edge

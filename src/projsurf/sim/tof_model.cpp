@@ -103,6 +103,7 @@ cv::Mat measureTof(const Scene &scene, const ExactDepth &e, const TofModel &m, c
             if (q < 0) continue;
             if (scene.quads[e.quad.at<int>(v, u)].material == Material::Glass && uniform(rng) >= m.glass_through) continue;
             if (scene.quads[q].material == Material::Black && uniform(rng) < m.black_dropout) continue;
+            if (scene.quads[q].material == Material::Glossy && uniform(rng) < m.glossy_dropout) continue;
             if (e.cos_incidence.at<float>(v, u) < cos_max) continue;
             const Eigen::Vector3d d((u - c.cx) / c.fx, (v - c.cy) / c.fy, 1.0);
             const double dn = d.norm();

@@ -6,7 +6,7 @@
 //  - multipath: light that bounces off another surface first arrives late, so points near a
 //    concave corner (wall-floor, wall-wall, a box against a wall) read too far, by a few cm;
 //  - strong flying pixels: pixels on a depth edge mix both depths (anywhere in between);
-//  - no reading on black (too little light back) and on glass (mostly);
+//  - no reading on black (too little light back), glass and glossy surfaces (mostly);
 //  - per unit: a depth offset and a "wiggling" error (periodic in range) of a few mm.
 #include <opencv2/core.hpp>
 
@@ -34,7 +34,8 @@ struct TofModel {
     double flying_probability = 0.9;  ///< share of depth-edge pixels that read a mix
     int flying_radius_px = 1;      ///< px either side of a depth edge
     double edge_jump = 0.03;       ///< m, depth difference that makes a depth edge
-    double black_dropout = 0.95;
+    double black_dropout = 0.95;   ///< probability of no reading on black (too little light comes back)
+    double glossy_dropout = 0.7;   ///< probability of no reading on glossy surfaces (light mirrored away or saturating)
     double glass_through = 0.3;    ///< probability of reading through glass, else nothing
     double offset_sigma = 3e-3;    ///< m, per-unit depth offset (a few mm)
     double wiggle_amplitude = 3e-3;  ///< m, per-unit periodic error amplitude
