@@ -401,6 +401,16 @@ TEST(SensorModels, SimulateWritesATofCloudOfTheRightSize) {
                               " >/dev/null 2>&1";
     ASSERT_EQ(std::system(other.c_str()), 0);
     EXPECT_GT(cv::norm(depth, cv::imread(dir + "/depth.png", cv::IMREAD_UNCHANGED), cv::NORM_INF), 0.0);
+    // The paper experiments' independent-noise Kinect stays available, frame for frame.
+    ASSERT_EQ(std::system(("timeout 120 " + std::string(PROJSURF_CLI) +
+                           " simulate --scenario wall --distance 2.0 --seed 5 --sensor kinect1-independent --out " + dir +
+                           "/ind >/dev/null 2>&1")
+                              .c_str()),
+              0);
+    const cv::Mat ind = cv::imread(dir + "/ind/depth.png", cv::IMREAD_UNCHANGED);
+    const RgbdFrame old = renderFrame(makeScenario("wall", 2.0, 0.0).scene, SensorModel(), 5);
+    ASSERT_EQ(ind.size(), old.depth.size());
+    EXPECT_EQ(cv::norm(ind, old.depth, cv::NORM_INF), 0.0);
     // A bad sensor name: exit 2 with one error line.
     const int bad = std::system(("timeout 60 " + std::string(PROJSURF_CLI) + " simulate --scenario wall --sensor kinect9 --out " +
                                  dir + "/bad >/dev/null 2>&1")
