@@ -143,7 +143,8 @@ std::string realisticSuiteMarkdown(const RealisticSuiteResult &result) {
            << fmt("%.1f %%", t.rounds ? 100.0 * t.success / t.rounds : 0.0) << " | " << t.scenes_ok << " / " << t.scenes
            << " |\n";
     }
-    md << "\nPer scene: success % (rounds found / valid / successful), and the most frequent failure.\n\n";
+    md << "\nPer scene and sensor: success % (rounds found / valid / successful), mean found area (m²); and the "
+          "most frequent failure.\n\n";
     md << "| scene | distance | angle | best area |";
     for (SensorKind k : kinds) md << " " << sensorName(k) << " |";
     md << " failures |\n|---|---|---|---|";
@@ -159,7 +160,8 @@ std::string realisticSuiteMarkdown(const RealisticSuiteResult &result) {
                result.rows[j].scene.distance == c.distance && result.rows[j].scene.angle_deg == c.angle_deg;
              ++j) {
             const RealisticRow &r = result.rows[j];
-            md << " " << fmt("%.0f", r.successPct()) << " (" << r.found << "/" << r.valid << "/" << r.success << ") |";
+            md << " " << fmt("%.0f", r.successPct()) << " (" << r.found << "/" << r.valid << "/" << r.success << "), "
+               << fmt("%.2f", r.mean_area) << " |";
             if (!r.failure.empty()) failures += (failures.empty() ? "" : "; ") + sensorName(r.sensor) + ": " + r.failure;
         }
         md << " " << failures << " |\n";
