@@ -35,11 +35,7 @@ namespace {
 
 std::string realFrame(const std::string &name) { return std::string(PROJSURF_SHARED_DIR) + "/data/real/" + name; }
 
-WallStatsOptions statsOptions() {
-    WallStatsOptions o;
-    o.smooth_px = 15;  // ~6.8 cm at 2.6 m on a VGA Kinect: keeps the per-pixel noise out of the smooth part
-    return o;
-}
+WallStatsOptions statsOptions() { return WallStatsOptions{}; }  // the same on real and simulated frames
 
 /// Mean statistic over units 0..n-1 of a plain wall seen through `kind`.
 WallResidualStats meanSimStats(SensorKind kind, const Scenario &sc, const cv::Rect &region, int units) {
