@@ -62,9 +62,10 @@ DepthSensor makeDepthSensor(SensorKind kind, int unit) {
     return s;
 }
 
-cv::Mat measureDepth(const Scene &scene, const ExactDepth &exact, const DepthSensor &s, unsigned seed) {
+cv::Mat measureDepth(const Scene &scene, const ExactDepth &exact, const DepthSensor &s, unsigned seed,
+                     const cv::Mat &tof_multipath) {
     switch (s.kind) {
-        case SensorKind::Tof: return measureTof(scene, exact, s.tof, *s.tof_unit, seed);
+        case SensorKind::Tof: return measureTof(scene, exact, s.tof, *s.tof_unit, seed, tof_multipath);
         case SensorKind::D435: return measureD435(scene, exact, s.d435, *s.d435_unit, seed);
         default: return measureKinect1(scene, exact, s.kinect1, *s.kinect1_unit, seed);
     }

@@ -44,7 +44,9 @@ struct DepthSensor {
 DepthSensor makeDepthSensor(SensorKind kind, int unit);
 
 /// Depth readings (CV_64F, m, 0 = none) of a scene's exact geometry through the sensor.
-cv::Mat measureDepth(const Scene &scene, const ExactDepth &exact, const DepthSensor &sensor, unsigned seed);
+/// `tof_multipath`: for Tof, the scene's multipathBias if already computed (frames of one scene).
+cv::Mat measureDepth(const Scene &scene, const ExactDepth &exact, const DepthSensor &sensor, unsigned seed,
+                     const cv::Mat &tof_multipath = cv::Mat());
 
 /// A full frame through the sensor: depth, cloud and quad from measureDepth; the colour image
 /// (rendered noise-free at the same intrinsics, with the projection) only when `colour`.

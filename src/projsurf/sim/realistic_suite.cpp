@@ -56,6 +56,7 @@ RealisticSuiteResult runRealisticSuite(const RealisticSuiteOptions &o, const Det
             const GroundTruth truth = computeGroundTruth(sc.scene, any.truthModel(), projector, sc.gravity, topt);
             row.best_area = truth.found ? truth.best.rectangle.area() : 0.0;
             const ExactDepth exact = castExactDepth(sc.scene, any.camera());
+            const cv::Mat multipath = kind == SensorKind::Tof ? multipathBias(sc.scene, exact, any.tof) : cv::Mat();
             std::map<std::string, int> reasons;
             std::vector<double> times;
             double area_sum = 0.0;
@@ -65,7 +66,7 @@ RealisticSuiteResult runRealisticSuite(const RealisticSuiteOptions &o, const Det
                 if (it == units.end()) it = units.emplace(std::make_pair(static_cast<int>(kind), unit), makeDepthSensor(kind, unit)).first;
                 const unsigned seed = o.seed + 1000u * static_cast<unsigned>(ci) + static_cast<unsigned>(r);
                 RgbdFrame frame;
-                fillFrameDepth(measureDepth(sc.scene, exact, it->second, seed), exact.camera, frame);
+                fillFrameDepth(measureDepth(sc.scene, exact, it->second, seed, multipath), exact.camera, frame);
                 DetectorConfig cfg = config;
                 cfg.gravity = sc.gravity;
                 cfg.seed = seed;

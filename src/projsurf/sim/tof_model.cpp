@@ -85,12 +85,13 @@ cv::Mat multipathBias(const Scene &scene, const ExactDepth &e, const TofModel &m
     return bias(cv::Rect(0, 0, c.width, c.height)).clone();
 }
 
-cv::Mat measureTof(const Scene &scene, const ExactDepth &e, const TofModel &m, const TofUnit &unit, unsigned seed) {
+cv::Mat measureTof(const Scene &scene, const ExactDepth &e, const TofModel &m, const TofUnit &unit, unsigned seed,
+                   const cv::Mat &multipath) {
     const CameraIntrinsics &c = e.camera;
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     NormalSource gauss(rng);
-    const cv::Mat bias = multipathBias(scene, e, m);
+    const cv::Mat bias = multipath.empty() ? multipathBias(scene, e, m) : multipath;
     const cv::Mat edges = depthEdgeMask(e.z, m.edge_jump, m.flying_radius_px);
     const double cos_max = std::cos(m.grazing_max_deg * M_PI / 180.0);
     const double r2_corner = c.cx * c.cx + c.cy * c.cy;

@@ -53,8 +53,9 @@ TofUnit makeTofUnit(const TofModel &model, int unit);
 /// Range bias (m, positive = reads farther) from one-bounce multipath, per pixel (CV_64F).
 cv::Mat multipathBias(const Scene &scene, const ExactDepth &exact, const TofModel &model);
 
-/// Depth readings (CV_64F, m, 0 = none), per-frame noise from `seed`.
+/// Depth readings (CV_64F, m, 0 = none), per-frame noise from `seed`. `multipath`: the scene's
+/// multipathBias when already known (it depends on the scene and the model only), else computed.
 cv::Mat measureTof(const Scene &scene, const ExactDepth &exact, const TofModel &model, const TofUnit &unit,
-                   unsigned seed);
+                   unsigned seed, const cv::Mat &multipath = cv::Mat());
 
 }  // namespace projsurf::sim
