@@ -337,6 +337,19 @@ TEST(SensorModels, MaterialsBlackAndGlass) {
     EXPECT_GT(on_glass, 5000);
     EXPECT_GT(through, 0.2 * on_glass);
     EXPECT_LT(at_glass, 0.01 * on_glass);
+    // Glass with nothing behind it: no reading at all, on every sensor.
+    Scene pane;
+    Quad g;
+    g.corner = Eigen::Vector3d(-2.0, -2.0, 2.0);
+    g.edge_a = Eigen::Vector3d(4.0, 0.0, 0.0);
+    g.edge_b = Eigen::Vector3d(0.0, 4.0, 0.0);
+    g.material = Material::Glass;
+    pane.quads.push_back(g);
+    for (SensorKind kind : sensorKinds()) {
+        const RgbdFrame fp = renderSensorFrame(pane, makeDepthSensor(kind, 0), 2, std::nullopt, false);
+        EXPECT_GT(cv::countNonZero(fp.quad >= 0), fp.quad.total() / 2) << sensorName(kind);
+        EXPECT_EQ(cv::countNonZero(fp.depth), 0) << sensorName(kind);
+    }
 }
 
 TEST(SensorModels, TruthFlushIsFreeProudIsAnObstacleGlassIsNoSurface) {

@@ -44,6 +44,7 @@ ExactDepth castExactDepth(const Scene &scene, const CameraIntrinsics &camera) {
         behind = castView(opaque, view, 0.05);
         e.behind_z = cv::Mat(camera.height, camera.width, CV_64F, cv::Scalar(0));
         e.behind_quad = cv::Mat(camera.height, camera.width, CV_32S, cv::Scalar(-1));
+        e.on_glass = cv::Mat::zeros(camera.height, camera.width, CV_8U);
     }
     for (int v = 0; v < camera.height; ++v)
         for (int u = 0; u < camera.width; ++u) {
@@ -53,6 +54,7 @@ ExactDepth castExactDepth(const Scene &scene, const CameraIntrinsics &camera) {
             e.z.at<double>(v, u) = bowedDepth(scene.quads[qi], d, buf.z.at<double>(v, u));
             int qs = qi;
             if (e.any_glass && scene.quads[qi].material == Material::Glass) {
+                e.on_glass.at<uchar>(v, u) = 1;
                 const int bi = behind.quad.at<int>(v, u);
                 if (bi >= 0) {
                     qs = index[bi];
