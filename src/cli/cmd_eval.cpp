@@ -15,6 +15,7 @@
 #include "projsurf/io/real_gallery.hpp"
 #include "projsurf/io/report.hpp"
 #include "projsurf/sim/experiments.hpp"
+#include "projsurf/sim/realistic_suite.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
 namespace fs = std::filesystem;
@@ -80,12 +81,18 @@ void run(const EvalOptions &o, const std::string &command) {
     const double load_before = loadAverage();
     const sim::Progress progress = o.no_progress ? sim::Progress() : sim::Progress(progressBar);
     const sim::EvalResults results = sim::runEval(plan, progress);
+    // The realistic suite (realistic sensors and scenes, issue 11), the default method.
+    sim::RealisticSuiteOptions ropt = o.quick ? sim::quickRealisticSuite() : sim::RealisticSuiteOptions{};
+    if (!o.quick) ropt.rounds = rounds;
+    ropt.seed = o.seed;
+    const sim::RealisticSuiteResult realistic = sim::runRealisticSuite(ropt, sim::defaultVariant().config, progress);
 
     // Real frames: default method, the contract's example calibration, the default gravity.
     std::vector<GalleryEntry> gallery;
     ReportInfo info;
     info.command = command;
     info.quick = o.quick;
+    info.realistic_markdown = sim::realisticSuiteMarkdown(realistic);
     const auto t0 = std::chrono::steady_clock::now();
     const std::string real_dir = o.real_dir_given ? o.real_dir : defaultRealDir(o.real_dir);
     const std::vector<std::string> frames = real_dir.empty() ? std::vector<std::string>{} : listFrameFolders(real_dir);
@@ -111,6 +118,7 @@ void run(const EvalOptions &o, const std::string &command) {
     std::printf("eval: %zu detections in %.1f s (%d rounds%s), %zu real frames; wrote %s/report.md\n",
                 results.trials.size() + results.keystone.size(), results.seconds, rounds, o.quick ? ", quick" : "",
                 gallery.size(), o.out.c_str());
+    std::printf("%s\n", sim::realisticSuiteSummary(realistic).c_str());
 }
 
 }  // namespace

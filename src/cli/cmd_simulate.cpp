@@ -1,6 +1,8 @@
-// projsurf simulate: render a Kinect-class RGB-D frame of a test scene (paper section 4 and
-// more), optionally with a picture projected on it, and write the contract's files plus the
-// ground truth; or the calibration captures of the white disc (paper 3.1.1).
+// projsurf simulate: render an RGB-D frame of a test scene (paper section 4, the realistic
+// scenes, more) through a realistic sensor model (--sensor kinect1 | tof | d435, --unit N) or
+// the paper experiments' independent-noise Kinect (--sensor kinect1-independent), optionally
+// with a picture projected on it, and write the contract's files plus the ground truth; or the
+// calibration captures of the white disc (paper 3.1.1).
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -16,9 +18,11 @@
 #include "projsurf/io/truth_json.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/calibration_captures.hpp"
+#include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenarios_realistic.hpp"
 
 namespace fs = std::filesystem;
 
@@ -38,8 +42,12 @@ struct SimulateOptions {
     std::string picture;
     bool noise_free = false;
     int captures = 0;
+    std::string sensor = "kinect1";  // kinect1 | tof | d435 | kinect1-independent
+    int unit = 0;                    // sensor unit: its fixed systematic errors
     std::string out;
 };
+
+constexpr const char *kIndependent = "kinect1-independent";
 
 double parseAspectText(const std::string &text) {
     std::stringstream ss(text);
@@ -55,7 +63,8 @@ double parseAspectText(const std::string &text) {
 sim::Scenario buildScenario(const std::string &name, double distance, double angle_deg, double roll_deg,
                             double pitch_deg) {
     try {
-        sim::Scenario s = sim::makeScenario(name, distance, angle_deg);
+        sim::Scenario s = sim::isRealisticScenario(name) ? sim::makeRealisticScenario(name, distance, angle_deg)
+                                                         : sim::makeScenario(name, distance, angle_deg);
         if (pitch_deg != 0.0) sim::pitchCamera(s, pitch_deg);
         if (roll_deg != 0.0) sim::rollCamera(s, roll_deg);
         return s;
@@ -74,6 +83,8 @@ void run(const SimulateOptions &o) {
     if (o.list) {
         for (const auto &name : sim::scenarioNames())
             std::cout << name << "\t" << sim::makeScenario(name, 2.0, 0.0).description << "\n";
+        for (const auto &name : sim::realisticScenarioNames())
+            std::cout << name << "\t" << sim::makeRealisticScenario(name, 2.0, 0.0).description << "\n";
         return;
     }
     // Arguments and inputs first; nothing is written until everything is rendered.
@@ -96,7 +107,23 @@ void run(const SimulateOptions &o) {
             cv::resize(picture, picture, cv::Size(projector.width, projector.height), 0, 0, cv::INTER_AREA);
         projection = sim::Projection{projector, picture};
     }
-    const sim::SensorModel sensor = o.noise_free ? sim::SensorModel::ideal() : sim::SensorModel();
+    const bool independent = o.sensor == kIndependent;
+    const auto kind = sim::parseSensorKind(o.sensor);
+    if (!independent && !kind)
+        throw InputError("--sensor", "expected kinect1, tof, d435 or kinect1-independent, got '" + o.sensor + "'");
+    if (o.unit < 0 || o.unit > 1000000) throw InputError("--unit", "must be between 0 and 1000000");
+    const std::optional<sim::DepthSensor> realistic =
+        independent || o.noise_free ? std::nullopt : std::optional<sim::DepthSensor>(sim::makeDepthSensor(*kind, o.unit));
+    // The independent model at the chosen sensor's camera and range (exact with --noise-free):
+    // the frame when there is no realistic sensor, the ground truth's limits, the captures.
+    sim::SensorModel sensor = o.noise_free ? sim::SensorModel::ideal() : sim::SensorModel();
+    if (!independent) {
+        const sim::SensorModel limits = sim::makeDepthSensor(*kind, o.unit).truthModel();
+        sensor.camera = limits.camera;
+        sensor.min_depth = limits.min_depth;
+        sensor.max_depth = limits.max_depth;
+        sensor.grazing_max_deg = limits.grazing_max_deg;
+    }
     std::optional<sim::Scenario> scenario;
     if (!o.scenario.empty()) scenario = buildScenario(o.scenario, o.distance, o.angle_deg, o.roll_deg, o.pitch_deg);
     const fs::path out(o.out);
@@ -108,7 +135,8 @@ void run(const SimulateOptions &o) {
     sim::GroundTruth truth;
     cv::Mat audience;
     if (scenario) {
-        frame = sim::renderFrame(scenario->scene, sensor, o.seed, projection);
+        frame = realistic ? sim::renderSensorFrame(scenario->scene, *realistic, o.seed, projection)
+                          : sim::renderFrame(scenario->scene, sensor, o.seed, projection);
         sim::TruthOptions topt;
         topt.aspect = aspect;
         truth = sim::computeGroundTruth(scenario->scene, sensor, projector, scenario->gravity, topt);
@@ -148,6 +176,9 @@ void run(const SimulateOptions &o) {
         if (!scenario) writeCalibration((out / "calib.yaml").string(), projector);  // the truth to compare with
     }
     if (scenario) {
+        std::cout << "sensor " << (independent ? std::string(kIndependent) : o.sensor)
+                  << (realistic ? " unit " + std::to_string(o.unit) : std::string()) << " ("
+                  << sensor.camera.width << "x" << sensor.camera.height << "), ";
         std::cout << "scenario " << scenario->name << " at " << scenario->distance << " m, " << scenario->angle_deg
                   << " deg: ";
         if (truth.found)
@@ -174,7 +205,11 @@ void addSimulateCommand(CLI::App &app) {
     sub->add_option("--calib", opts->calib, "Projector calibration YAML (default: the contract's example)");
     sub->add_option("--aspect", opts->aspect, "Aspect ratio W:H of the true rectangle (default: the framebuffer's)");
     sub->add_option("--picture", opts->picture, "Image to project (scaled to the framebuffer), shown in rgb.png and audience.png (a frontal view)");
-    sub->add_flag("--noise-free", opts->noise_free, "Exact depth: no noise, quantisation or random dropouts");
+    sub->add_flag("--noise-free", opts->noise_free, "Exact depth at the sensor's camera: no noise, quantisation or random dropouts");
+    sub->add_option("--sensor", opts->sensor,
+                    "Depth sensor model: kinect1 (default), tof (Kinect v2 class), d435 (RealSense), or "
+                    "kinect1-independent (the paper experiments' independent-noise Kinect)");
+    sub->add_option("--unit", opts->unit, "Sensor unit: its fixed distortions (default 0)");
     sub->add_option("--captures", opts->captures, "Also write N calibration captures to OUT/captures");
     sub->add_option("--out", opts->out, "Output directory (created if missing)");
     sub->callback([opts] { run(*opts); });

@@ -659,6 +659,7 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
           "over all rounds (a round that found nothing counts the whole best area).\n";
     md << "- Table 3 uses the wall scenario at 1, 2, 3 m and 27.5°, 17.19°, −12.06° with a picture of the framebuffer's "
           "aspect (letterbox = the whole rectangle).\n";
+    if (!info.realistic_markdown.empty()) md << "\n## Realistic simulated suite (issue 11)\n\n" << info.realistic_markdown;
     return md.str();
 }
 

@@ -19,6 +19,7 @@ struct ReportInfo {
     std::string real_dir;    ///< where the real frames came from ("" = none)
     double real_seconds = 0; ///< time spent on the gallery
     std::string load;        ///< machine load while it ran (e.g. "1-min load average 7.4 -> 6.5 on 2 cores")
+    std::string realistic_markdown;  ///< the realistic suite's section body (sim::realisticSuiteMarkdown), "" = none
 };
 
 /// The report's Markdown (links plots and gallery pictures by relative path).

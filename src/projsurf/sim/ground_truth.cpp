@@ -16,6 +16,7 @@ bool segmentBlocked(const Scene &scene, const Eigen::Vector3d &from, const Eigen
     if (!(length > tolerance)) return false;
     const double t_max = 1.0 - tolerance / length;
     for (const auto &q : scene.quads) {
+        if (q.material == Material::Glass) continue;  // transparent: neither a surface nor a blocker
         const auto t = intersectQuad(q, from, dir, 1e-9);
         if (t && *t < t_max) return true;
     }

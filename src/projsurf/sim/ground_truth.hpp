@@ -4,6 +4,14 @@
 // at a grazing angle, not hidden) and lit by the projector (in its frustum, not in an
 // obstacle's shadow); then the largest free upright rectangle of the wanted aspect ratio
 // (core/rectangle_search.hpp). The best surface's rectangle is the ground truth.
+//
+// What is free (TruthOptions::tolerance, 1 cm): a thing standing at most 1 cm proud of the
+// surface does not hide it, anything farther out does. So flush things (posters, whiteboards,
+// <= 3 mm) and a bowed wall's few mm are free; frames, TVs (2-5 cm) are obstacles; of the 1-2
+// cm things, switches, sockets and skirting boards modelled 1.5 cm proud are obstacles (a
+// picture on them is visibly broken), anything 1 cm proud or less is free. Glass (Material::
+// Glass) is neither a surface nor an obstacle: a window is a hole in the wall. A bowed wall's
+// truth is its flat plane (Quad::bow is ignored here).
 #include <Eigen/Core>
 #include <array>
 #include <opencv2/core.hpp>
@@ -57,8 +65,8 @@ struct GroundTruth {
 GroundTruth computeGroundTruth(const Scene &scene, const SensorModel &sensor, const Projector &projector,
                                const Eigen::Vector3d &gravity, const TruthOptions &options = {});
 
-/// True when the segment from `from` to `to` is blocked by a quad more than `tolerance`
-/// before `to`.
+/// True when the segment from `from` to `to` is blocked by a quad (not glass) more than
+/// `tolerance` before `to`.
 bool segmentBlocked(const Scene &scene, const Eigen::Vector3d &from, const Eigen::Vector3d &to, double tolerance);
 
 }  // namespace projsurf::sim

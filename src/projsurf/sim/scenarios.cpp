@@ -1,5 +1,7 @@
 #include "projsurf/sim/scenarios.hpp"
 
+#include "projsurf/sim/wall_frame.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -8,9 +10,8 @@ namespace projsurf::sim {
 namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
-constexpr double kCameraHeight = 1.0;  // m above the floor (robot 1.15 m tall, paper section 5)
-constexpr double kWallWidth = 8.0;     // m
-constexpr double kWallHeight = 2.6;    // m
+constexpr double kWallWidth = kScenarioWallWidth;
+constexpr double kWallHeight = kScenarioWallHeight;
 
 // Colours, BGR reflectance.
 const cv::Vec3f kWallPaint{0.82f, 0.85f, 0.86f};
@@ -20,27 +21,6 @@ const cv::Vec3f kCardboard{0.35f, 0.55f, 0.70f};
 const cv::Vec3f kPoster{0.25f, 0.22f, 0.75f};
 const cv::Vec3f kClothes{0.45f, 0.25f, 0.15f};
 const cv::Vec3f kSkin{0.55f, 0.65f, 0.85f};
-
-/// Places things relative to the main wall (see scenarios.hpp): s along, h up, out towards the camera.
-struct WallFrame {
-    Eigen::Vector3d origin, right, up, normal;
-    WallFrame(double distance, double angle_deg) {
-        const double a = angle_deg * kDeg;
-        origin = Eigen::Vector3d(0.0, kCameraHeight, distance);  // on the floor below the axis point
-        right = Eigen::Vector3d(std::cos(a), 0.0, std::sin(a));
-        up = Eigen::Vector3d(0.0, -1.0, 0.0);
-        normal = Eigen::Vector3d(std::sin(a), 0.0, -std::cos(a));
-    }
-    Eigen::Vector3d at(double s, double h, double out) const { return origin + s * right + h * up + out * normal; }
-    /// Perpendicular distance from the camera to the wall.
-    double cameraOut() const { return -origin.dot(normal); }
-};
-
-/// A box against / in front of the wall: s in [s0, s1], h in [h0, h1], out in [o0, o1].
-std::array<int, 6> wallBox(Scene &scene, const WallFrame &w, double s0, double s1, double h0, double h1, double o0,
-                           double o1, const cv::Vec3f &albedo, const std::string &label) {
-    return addBox(scene, w.at(s0, h0, o0), (s1 - s0) * w.right, (h1 - h0) * w.up, (o1 - o0) * w.normal, albedo, label);
-}
 
 /// The visible vertical faces of a piece of furniture (front and both sides) are flat
 /// vertical surfaces a picture could go on, like the wall: each becomes a surface of its own.

@@ -5,6 +5,28 @@
 
 namespace projsurf::sim {
 
+double Bow::at(const Eigen::Vector3d &p) const {
+    if (amplitude == 0.0) return 0.0;
+    constexpr double kPi = 3.14159265358979323846;
+    const Eigen::Vector3d r = p - origin;
+    return amplitude * std::sin(kPi * r.dot(axis_x)) * std::sin(kPi * r.dot(axis_y));
+}
+
+void bowSurface(Scene &scene, int surface, const Eigen::Vector3d &origin, const Eigen::Vector3d &right,
+                const Eigen::Vector3d &up, double half_wave, double height, double amplitude) {
+    Bow b;
+    b.amplitude = amplitude;
+    b.origin = origin;
+    b.axis_x = right.normalized() / half_wave;
+    b.axis_y = up.normalized() / height;
+    for (auto &q : scene.quads) {
+        if (q.surface != surface) continue;
+        b.towards = q.normal();
+        if (b.towards.dot(q.center()) > 0.0) b.towards = -b.towards;  // the camera is at the origin
+        q.bow = b;
+    }
+}
+
 std::optional<double> intersectQuad(const Quad &q, const Eigen::Vector3d &origin, const Eigen::Vector3d &direction,
                                     double t_min) {
     // Moeller-Trumbore style: solve origin + t d = corner + a A + b B.
@@ -116,6 +138,10 @@ Scene transformed(const Scene &scene, const Eigen::Isometry3d &transform) {
         q.corner = transform * q.corner;
         q.edge_a = r * q.edge_a;
         q.edge_b = r * q.edge_b;
+        q.bow.origin = transform * q.bow.origin;
+        q.bow.axis_x = r * q.bow.axis_x;
+        q.bow.axis_y = r * q.bow.axis_y;
+        q.bow.towards = r * q.bow.towards;
     }
     return out;
 }

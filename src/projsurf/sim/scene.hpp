@@ -11,6 +11,28 @@
 
 namespace projsurf::sim {
 
+/// How a surface answers an active depth sensor (sensor models react; the old independent-
+/// noise SensorModel ignores it). Ground truth: glass is not a surface and blocks nothing.
+enum class Material {
+    Matte,   ///< paint, paper, wood, cardboard: a normal reading
+    Black,   ///< black / very dark (absorbs near infrared): no or few readings
+    Glossy,  ///< glossy / specular (lacquer, screens): the pattern is mirrored away, holes
+    Glass,   ///< transparent: the sensor reads through it (or not at all)
+};
+
+/// A smooth out-of-plane deviation of a quad (a wall that is not flat): a point p of the quad
+/// is displaced by amplitude * sin(pi x) * sin(pi y) along `towards` (unit, towards the
+/// camera side), x = (p - origin).dot(axis_x), y = (p - origin).dot(axis_y): axis_x and
+/// axis_y are scaled so that one half-wave (one bulge) spans 1.
+struct Bow {
+    double amplitude = 0.0;  ///< m; 0 = flat
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+    Eigen::Vector3d axis_x = Eigen::Vector3d::Zero(), axis_y = Eigen::Vector3d::Zero();  ///< 1/m
+    Eigen::Vector3d towards = Eigen::Vector3d::Zero();
+    /// Displacement (m, along `towards`) at a point of the flat quad.
+    double at(const Eigen::Vector3d &p) const;
+};
+
 /// The parallelogram corner + a * edge_a + b * edge_b, a, b in [0, 1].
 struct Quad {
     Eigen::Vector3d corner = Eigen::Vector3d::Zero();
@@ -21,6 +43,9 @@ struct Quad {
     /// Quads with the same id >= 0 lie on one plane and form one projection surface (a wall
     /// with a hole is several quads of one surface); -1 = not a place to project on.
     int surface = -1;
+    Material material = Material::Matte;
+    Bow bow;  ///< flat by default; the renderer and the sensor models see the bowed surface
+
 
     Eigen::Vector3d normal() const { return edge_a.cross(edge_b).normalized(); }
     Eigen::Vector3d center() const { return corner + 0.5 * (edge_a + edge_b); }
@@ -63,6 +88,11 @@ struct WallHole {
 std::vector<int> addWall(Scene &scene, const Eigen::Vector3d &origin, const Eigen::Vector3d &right,
                          const Eigen::Vector3d &up, double width, double height, const std::vector<WallHole> &holes,
                          const cv::Vec3f &albedo, const std::string &label, int surface);
+
+/// Sets a bow on every quad of `surface`: one bulge every `half_wave` m along `right` and one
+/// over `height` along `up`, starting at `origin` (the wall's lower-left corner).
+void bowSurface(Scene &scene, int surface, const Eigen::Vector3d &origin, const Eigen::Vector3d &right,
+                const Eigen::Vector3d &up, double half_wave, double height, double amplitude);
 
 /// The scene moved by a rigid transform (e.g. into a rolled camera's frame).
 Scene transformed(const Scene &scene, const Eigen::Isometry3d &transform);
