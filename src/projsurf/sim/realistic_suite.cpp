@@ -68,10 +68,9 @@ RealisticSuiteResult runRealisticSuite(const RealisticSuiteOptions &o, const Det
                 RgbdFrame frame;
                 fillFrameDepth(measureDepth(sc.scene, exact, it->second, seed, multipath), exact.camera, frame);
                 DetectorConfig cfg = config;
-                cfg.gravity = sc.gravity;
                 cfg.seed = seed;
                 const auto d0 = std::chrono::steady_clock::now();
-                const Detection det = detectSurface(frame.cloud, projector, cfg);
+                const Detection det = detectSurface(frame.cloud, projector, cfg, sc.gravity);
                 times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - d0).count());
                 const Score s = scoreDetection(det, truth, projector, sc.gravity, projector.aspect());
                 ++row.rounds;
