@@ -27,11 +27,11 @@ int main(int argc, char **argv) {
         config.aspect = 16.0 / 9.0;       // the picture's width / height
         // Gravity in the camera frame, pointing down: the robot's IMU or tf if it has one;
         // here from the floor, with a level camera's [0, 1, 0] as the guess.
-        if (const auto floor = projsurf::estimateGravityFromFloor(cloud, config.gravity))
-            config.gravity = floor->gravity;
+        Eigen::Vector3d gravity(0.0, 1.0, 0.0);
+        if (const auto floor = projsurf::estimateGravityFromFloor(cloud, gravity)) gravity = floor->gravity;
 
         projsurf::SurfaceDetector detector(projector, config);  // keep it: it reuses its buffers
-        const projsurf::Detection det = detector.detect(cloud);
+        const projsurf::Detection det = detector.detect(cloud, gravity);
         if (!det.found) {
             std::cout << "no surface: " << det.reason << "\n";
             return 0;
