@@ -32,7 +32,8 @@ std::vector<std::string> listFrameFolders(const std::string &dir) {
     return out;
 }
 
-GalleryEntry detectRealFrame(const std::string &folder, const Projector &projector, const DetectorConfig &config) {
+GalleryEntry detectRealFrame(const std::string &folder, const Projector &projector, const DetectorConfig &config,
+                             bool gravity_from_floor) {
     GalleryEntry g;
     g.name = fs::path(folder).filename().string();
     const std::string depth = (fs::path(folder) / "depth.png").string();
@@ -57,7 +58,9 @@ GalleryEntry detectRealFrame(const std::string &folder, const Projector &project
     // These recordings have no IMU: take "down" from the floor when one is in view
     // (as `projsurf detect --gravity auto` does).
     DetectorConfig cfg = config;
-    if (const auto gravity = estimateGravityFromFloor(cloud, cfg.gravity)) cfg.gravity = gravity->gravity;
+    if (gravity_from_floor)
+        if (const auto gravity = estimateGravityFromFloor(cloud, cfg.gravity)) cfg.gravity = gravity->gravity;
+    g.gravity = cfg.gravity;
     const Detection det = detectSurface(cloud, projector, cfg);
     g.found = det.found;
     g.reason = det.reason;
@@ -67,6 +70,7 @@ GalleryEntry detectRealFrame(const std::string &folder, const Projector &project
         g.area = det.rectangle.area();
         g.distance = det.plane.d;
         g.orientation_deg = det.orientation_deg;
+        g.rectangle = det.rectangle;
     }
     g.points = det.surface_check.points;
     g.outliers = det.surface_check.outliers;

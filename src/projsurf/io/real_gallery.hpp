@@ -21,6 +21,8 @@ struct GalleryEntry {
     double orientation_deg = 0;
     int points = 0, outliers = 0;  ///< surface check
     double time_ms = 0;      ///< detection, in-process
+    Rectangle rectangle;     ///< camera frame (when found)
+    Eigen::Vector3d gravity{0, 1, 0};  ///< the gravity detection used
     cv::Mat overlay;         ///< BGR
 };
 
@@ -29,8 +31,11 @@ struct GalleryEntry {
 std::vector<std::string> listFrameFolders(const std::string &dir);
 
 /// Reads one frame folder and runs detection; a frame that cannot be read gives read = false
-/// and the problem (it does not throw).
-GalleryEntry detectRealFrame(const std::string &folder, const Projector &projector, const DetectorConfig &config);
+/// and the problem (it does not throw). With `gravity_from_floor`, gravity is estimated from
+/// the floor with config.gravity as the prior (as `detect --gravity auto`); without it,
+/// config.gravity is used as given (as `detect --gravity gx,gy,gz`).
+GalleryEntry detectRealFrame(const std::string &folder, const Projector &projector, const DetectorConfig &config,
+                             bool gravity_from_floor = true);
 
 /// Thumbnails of the overlays in a grid, each labelled with its name and result.
 cv::Mat contactSheet(const std::vector<GalleryEntry> &entries, int columns = 3, int thumb_width = 480);
