@@ -5,6 +5,9 @@
 //          --holes N: replace the "no reading" obstacles by the holes of >= N pixels in the surfaces
 //          --aim u,v: aim the projector at the surface point seen at pixel (u, v)
 //          then fits the surfaces, recomputes the reference best rectangle and writes the label.
+//   baseline <real_dir> <labels_dir> [margin]  prints the regression baseline (labels/baseline.yaml):
+//          today's detector per frame, right or not, and its area ratio minus `margin` (default 0.05)
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,6 +19,7 @@
 #include "projsurf/core/gravity.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/label_overlay.hpp"
+#include "projsurf/io/labelled_eval.hpp"
 #include "projsurf/io/label_reference.hpp"
 #include "projsurf/io/real_labels.hpp"
 #include "projsurf/io/yaml_files.hpp"
@@ -94,6 +98,22 @@ int main(int argc, char **argv) {
         return 2;
     }
     try {
+        if (std::string(argv[1]) == "baseline") {
+            const double margin = argc > 4 ? std::stod(argv[4]) : 0.05;
+            std::printf("# Regression floor of the labelled real-frame suite, checked by tests/test_real_labels.cpp.\n"
+                        "# Per frame: whether today's default detector is right (valid, or nothing found where the\n"
+                        "# label has no usable surface) and its area ratio to the label's best minus %.2f.\n"
+                        "# Made by: build/tests/projsurf_label_tool baseline %s %s %.2f\n"
+                        "# Raise it as the detector improves.\nframes:\n",
+                        margin, argv[2], argv[3], margin);
+            for (const auto &path : listLabelFiles(argv[3])) {
+                const LabelledFrame f = evaluateLabelledFrame(path, argv[2], DetectorConfig{}, {});
+                std::printf("  %s: {right: %s, min_ratio: %.2f}  # ratio %.3f\n", f.name.c_str(),
+                            f.score.right ? "true" : "false", std::max(0.0, std::floor((f.score.ratio - margin) * 100) / 100),
+                            f.score.ratio);
+            }
+            return 0;
+        }
         const std::string cmd = argv[1], file = argv[3];
         std::string dir = argv[2];
         while (dir.size() > 1 && dir.back() == '/') dir.pop_back();

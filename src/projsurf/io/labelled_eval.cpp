@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "projsurf/io/cloud_io.hpp"
+#include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/label_overlay.hpp"
 #include "projsurf/io/plot.hpp"
@@ -48,33 +49,21 @@ LabelledFrame evaluateLabelledFrame(const std::string &label_path, const std::st
     LabelledFrame f;
     f.label_path = label_path;
     f.name = fs::path(label_path).stem().string();
-    CameraIntrinsics camera;
-    cv::Mat background;
-    const fs::path folder = fs::path(real_dir) / f.name;
-    try {
-        f.label = readRealLabel(label_path);
-        f.name = f.label.frame;
-        const fs::path dir = fs::path(real_dir) / f.label.frame;
-        const std::string cam_yaml = (dir / "camera.yaml").string();
-        camera = readCamera(cam_yaml);
-        const Cloud cloud = readDepthCloud((dir / "depth.png").string(), cam_yaml);
-        const fs::path rgb = dir / "rgb.png";
-        std::error_code ec;
-        if (fs::exists(rgb, ec)) background = readImage(rgb.string(), cv::IMREAD_COLOR);
-        if (background.cols != cloud.width || background.rows != cloud.height) background = depthColour(cloud);
-    } catch (const std::exception &e) {
-        f.problem = e.what();
-        return f;
-    }
+    f.label = readRealLabel(label_path);
+    f.name = f.label.frame;
     const std::string dir = (fs::path(real_dir) / f.label.frame).string();
+    const std::string cam_yaml = dir + "/camera.yaml";
+    const CameraIntrinsics camera = readCamera(cam_yaml);
+    const Cloud cloud = readDepthCloud(dir + "/depth.png", cam_yaml);
+    cv::Mat background;
+    std::error_code ec;
+    if (fs::exists(dir + "/rgb.png", ec)) background = readImage(dir + "/rgb.png", cv::IMREAD_COLOR);
+    if (background.cols != cloud.width || background.rows != cloud.height) background = depthColour(cloud);
+
     DetectorConfig cfg = config;
     cfg.gravity = f.label.gravity;
     f.detection = detectRealFrame(dir, f.label.projector, cfg, false);
-    if (!f.detection.read) {
-        f.problem = f.detection.problem;
-        return f;
-    }
-    f.read = true;
+    if (!f.detection.read) throw InputError(f.detection.problem);
     f.command = "projsurf detect --depth " + dir + "/depth.png --camera " + dir + "/camera.yaml --calib " + label_path +
                 " --gravity " + vec(f.label.gravity) + " --seed " + std::to_string(cfg.seed);
     f.score = scoreRealRectangle(f.label, camera, f.detection.found, f.detection.rectangle);
@@ -112,7 +101,6 @@ LabelledSummary summariseLabelled(const std::vector<LabelledFrame> &frames) {
     std::vector<double> ratios;
     for (const auto &f : frames) {
         ++s.frames;
-        if (!f.read) continue;
         if (f.score.right) ++s.right;
         if (f.score.has_best) {
             ++s.with_best;
@@ -159,10 +147,6 @@ std::string labelledReportMarkdown(const std::vector<LabelledFrame> &frames, con
           "centre moves (m) |\n|---|---:|---:|---:|---|---:|---|---|---:|---:|\n";
     for (const auto &f : frames) {
         md << "| [" << f.name << "](" << pictures << "/" << f.name << ".png) | ";
-        if (!f.read) {
-            md << " | | | no | | " << f.problem << " | | | |\n";
-            continue;
-        }
         md << (f.label.best.found ? fmt("%.3f", f.label.best.area()) : "none") << " | "
            << (f.score.found ? fmt("%.3f", f.score.area) : "—") << " | "
            << (f.score.has_best ? fmt("%.2f", f.score.ratio) : "") << " | " << (f.score.right ? "yes" : "**no**") << " | "

@@ -25,8 +25,6 @@ struct SeedRun {
 struct LabelledFrame {
     std::string name;        ///< frame folder name
     std::string label_path;
-    bool read = false;       ///< label and frame could be read
-    std::string problem;     ///< why not
     RealLabel label;
     GalleryEntry detection;  ///< at the configuration's seed
     RealScore score;
@@ -49,8 +47,8 @@ struct LabelledSummary {
 /// Seeds for the stability check: 1-5 and 42 (the default).
 std::vector<unsigned> stabilitySeeds();
 
-/// Evaluates one label file; the frame is real_dir/<label.frame>. Never throws: problems are
-/// recorded in `problem`.
+/// Evaluates one label file; the frame is real_dir/<label.frame>. Throws InputError when the
+/// label or its frame cannot be read.
 LabelledFrame evaluateLabelledFrame(const std::string &label_path, const std::string &real_dir,
                                     const DetectorConfig &config, const std::vector<unsigned> &seeds);
 
