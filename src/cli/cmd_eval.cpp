@@ -80,6 +80,11 @@ void run(const EvalOptions &o, const std::string &command) {
         throw InputError(o.real_dir, "is not a directory (--real-dir)");
     if (o.labels_dir_given && !o.labels_dir.empty() && !fs::is_directory(o.labels_dir, ec))
         throw InputError(o.labels_dir, "is not a directory (--labels)");
+    // Bad label files are reported before the long simulation runs.
+    const std::string labels_dir = o.labels_dir_given ? o.labels_dir : defaultRealDir(o.labels_dir);
+    const std::vector<std::string> labels = labels_dir.empty() ? std::vector<std::string>{} : listLabelFiles(labels_dir);
+    std::vector<std::string> label_frames;
+    for (const std::string &l : labels) label_frames.push_back(readRealLabel(l).frame);
 
     const int rounds = o.quick ? std::min(o.rounds, 2) : o.rounds;
     const sim::EvalPlan plan = sim::paperEvalPlan(rounds, o.quick, o.seed);
@@ -105,18 +110,17 @@ void run(const EvalOptions &o, const std::string &command) {
 
     // Labelled real frames: each label's projector and gravity, scored against the label.
     std::vector<LabelledFrame> labelled;
-    const std::string labels_dir = o.labels_dir_given ? o.labels_dir : defaultRealDir(o.labels_dir);
-    const std::vector<std::string> labels =
-        frames.empty() || labels_dir.empty() ? std::vector<std::string>{} : listLabelFiles(labels_dir);
-    for (std::size_t i = 0; i < labels.size(); ++i) {
+    for (std::size_t i = 0; i < labels.size() && !frames.empty(); ++i) {
+        // The default labels go with the default frames: a --real-dir of other frames skips them.
+        if (!o.labels_dir_given && !fs::is_directory(fs::path(real_dir) / label_frames[i], ec)) continue;
         if (progress) progress(static_cast<int>(i), static_cast<int>(labels.size()), "labelled " + fs::path(labels[i]).stem().string());
         labelled.push_back(evaluateLabelledFrame(labels[i], real_dir, DetectorConfig{}, stabilitySeeds()));
     }
-    if (progress && !labels.empty()) {
+    if (progress && !labelled.empty()) {
         progress(static_cast<int>(labels.size()), static_cast<int>(labels.size()), "labelled frames");
         std::fprintf(stderr, "\n");
     }
-    if (!labels.empty()) {
+    if (!labelled.empty()) {
         info.labelled = &labelled;
         info.labels_dir = labels_dir;
     }
