@@ -163,9 +163,24 @@ std::string labelledReportMarkdown(const std::vector<LabelledFrame> &frames, con
     return md.str();
 }
 
+std::string labelledCsv(const std::vector<LabelledFrame> &frames) {
+    std::ostringstream csv;
+    csv << "frame,best_m2,area_m2,ratio,right,free,why,seed_areas_m2,seed_spread\n";
+    for (const auto &f : frames) {
+        csv << f.name << "," << (f.label.best.found ? fmt("%.4f", f.label.best.area()) : "") << ","
+            << (f.score.found ? fmt("%.4f", f.score.area) : "") << "," << fmt("%.4f", f.score.ratio) << ","
+            << (f.score.right ? "yes" : "no") << "," << fmt("%.3f", f.score.free_fraction) << ",\"" << f.score.why << "\",";
+        for (std::size_t i = 0; i < f.seeds.size(); ++i)
+            csv << (i ? " " : "") << f.seeds[i].seed << ":" << fmt("%.4f", f.seeds[i].area);
+        csv << "," << fmt("%.4f", f.seed_spread) << "\n";
+    }
+    return csv.str();
+}
+
 void writeLabelledPictures(const std::string &dir, const std::vector<LabelledFrame> &frames) {
     std::error_code ec;
     fs::create_directories(dir, ec);
+    writeFileAtomic((fs::path(dir) / "results.csv").string(), labelledCsv(frames));
     std::vector<cv::Mat> panels;
     for (const auto &f : frames) {
         if (f.overlay.empty()) continue;

@@ -60,7 +60,10 @@ std::string labelledSummaryLine(const LabelledSummary &summary);
 /// The report section (Markdown); pictures are linked as `<pictures>/<frame>.png`.
 std::string labelledReportMarkdown(const std::vector<LabelledFrame> &frames, const std::string &labels_dir,
                                    const std::string &pictures);
-/// Writes dir/<frame>.png per frame and dir/contact_sheet.png; `dir` is created.
+/// One line per frame: frame, label best, detector area, ratio, right, free share, seed areas,
+/// spread (CSV with a header line).
+std::string labelledCsv(const std::vector<LabelledFrame> &frames);
+/// Writes dir/<frame>.png per frame, dir/contact_sheet.png and dir/results.csv; `dir` is created.
 void writeLabelledPictures(const std::string &dir, const std::vector<LabelledFrame> &frames);
 
 }  // namespace projsurf
