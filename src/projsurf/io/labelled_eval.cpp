@@ -136,7 +136,7 @@ std::string labelledReportMarkdown(const std::vector<LabelledFrame> &frames, con
           "the obstacles (red) and the reference's best rectangle (blue; the projector's footprint in yellow). "
           "The detector (default method, its rectangle in magenta) runs with the label's projector and gravity, "
           "as the command in each frame's picture link would. **Valid** = upright (sides within 2° of gravity), "
-          "within 5 cm of a labelled surface's plane and at least 95 % of its area free by the labels; a frame "
+          "within max(5 cm, 3 % of the range) of a labelled surface's plane and at least 95 % of its area free by the labels (so a valid answer may exceed the label's best by a few percent); a frame "
           "whose label has no usable surface is right when nothing is found. *Ratio* = area / label best for a "
           "valid answer, 0 otherwise. Seeds 1-5 and 42: area spread (max − min) / max, and how far the "
           "rectangle's centre moves.\n\n";

@@ -15,8 +15,9 @@ struct RealScoreRules {
     double min_free = 0.95;        ///< share of the rectangle's area free by the labels (issue 11)
     double on_surface = 0.05;      ///< m, |distance| to the surface's labelled plane (paper 3.2.3's outlier distance) ...
     double on_surface_share = 0.03;  ///< ... or this share of the range if larger (1.5 x Intel's 2 % RMS for the D4xx)
-    double max_upright_deg = 2.0;  ///< deg, its sides vs gravity as seen on its plane
-    int samples_u = 64, samples_v = 40;  ///< sample grid over the rectangle (cell centres)
+    double max_upright_deg = 2.0;  ///< deg, its sides vs gravity seen on its plane (the detector uses the same
+                                   ///< gravity: 0 up to rounding; 2 deg is visibly crooked on a 1 m picture)
+    int samples_u = 64, samples_v = 40;  ///< sample grid over the rectangle (cell centres; 1/64 of its width)
 };
 
 struct RealScore {
