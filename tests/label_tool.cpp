@@ -4,9 +4,13 @@
 //   update <frame_dir> <label.yaml> [--holes N] [--aim u,v] [--overlay out.png]
 //          --holes N: replace the "no reading" obstacles by the holes of >= N pixels in the surfaces
 //          --aim u,v: aim the projector at the surface point seen at pixel (u, v)
+//          --refine "name;name": shrink every obstacle drawn as a box, except those named, to what the
+//                   depth shows inside it: readings more than 2.5 cm in front of the nearest surface
+//                   plane, or no reading (closed 5x5, grown by 3 px within the box, pieces of >= 20 px)
 //          then fits the surfaces, recomputes the reference best rectangle and writes the label.
 //   baseline <real_dir> <labels_dir> [margin]  prints the regression baseline (labels/baseline.yaml):
-//          today's detector per frame, right or not, and its area ratio minus `margin` (default 0.05)
+//          today's detector per frame, right or not, and its area ratio minus `margin` (default 0.05),
+//          at most 0.90 (the target)
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +18,7 @@
 #include <iostream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
+#include <sstream>
 #include <string>
 
 #include "projsurf/core/gravity.hpp"
@@ -90,6 +95,61 @@ void holes(RealLabel &l, const Cloud &cloud, int min_pixels) {
     }
 }
 
+/// See --refine above. Needs the surfaces' planes (run after a fit).
+void refineObstacles(RealLabel &l, const Cloud &cloud, const std::string &keep_list) {
+    std::vector<std::string> keep;
+    std::stringstream ss(keep_list);
+    for (std::string k; std::getline(ss, k, ';');)
+        if (!k.empty()) keep.push_back(k);
+    auto pts = [](const LabelPolygon &p) {
+        std::vector<cv::Point> out;
+        for (const auto &q : p.pixels) out.emplace_back(static_cast<int>(std::lround(q.x())), static_cast<int>(std::lround(q.y())));
+        return std::vector<std::vector<cv::Point>>{out};
+    };
+    cv::Mat proud(cloud.height, cloud.width, CV_8U, cv::Scalar(0));
+    for (int v = 0; v < cloud.height; ++v)
+        for (int u = 0; u < cloud.width; ++u) {
+            const Point &p = cloud.points[static_cast<std::size_t>(v) * cloud.width + u];
+            if (!isFinite(p)) {
+                proud.at<uchar>(v, u) = 255;
+                continue;
+            }
+            double r = 1e9;
+            for (const auto &s : l.surfaces)
+                if (s.has_plane) {
+                    const double d = s.plane.signedDistance(p.cast<double>());
+                    if (std::abs(d) < std::abs(r)) r = d;
+                }
+            if (r > 0.025) proud.at<uchar>(v, u) = 255;
+        }
+    std::vector<LabelPolygon> out;
+    for (const auto &o : l.obstacles) {
+        if (o.name == "no reading" || std::find(keep.begin(), keep.end(), o.name) != keep.end()) {
+            out.push_back(o);
+            continue;
+        }
+        cv::Mat box(cloud.height, cloud.width, CV_8U, cv::Scalar(0));
+        cv::fillPoly(box, pts(o), 255);
+        cv::Mat m = proud & box;
+        cv::morphologyEx(m, m, cv::MORPH_CLOSE, cv::getStructuringElement(cv::MORPH_RECT, {5, 5}));
+        cv::dilate(m, m, cv::getStructuringElement(cv::MORPH_RECT, {7, 7}));
+        m &= box;  // never larger than what was drawn
+        std::vector<std::vector<cv::Point>> contours;
+        cv::findContours(m, contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_SIMPLE);
+        for (auto &c : contours) {
+            if (cv::contourArea(c) < 20) continue;
+            std::vector<cv::Point> a;
+            cv::approxPolyDP(c, a, 1.0, true);
+            if (a.size() < 3) continue;
+            LabelPolygon p;
+            p.name = o.name;
+            for (const auto &q : a) p.pixels.emplace_back(q.x, q.y);
+            out.push_back(p);
+        }
+    }
+    l.obstacles = out;
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -102,14 +162,15 @@ int main(int argc, char **argv) {
             const double margin = argc > 4 ? std::stod(argv[4]) : 0.05;
             std::printf("# Regression floor of the labelled real-frame suite, checked by tests/test_real_labels.cpp.\n"
                         "# Per frame: whether today's default detector is right (valid, or nothing found where the\n"
-                        "# label has no usable surface) and its area ratio to the label's best minus %.2f.\n"
+                        "# label has no usable surface) and its area ratio to the label's best minus %.2f\n"
+                        "# (at most 0.90, the target: a valid answer may exceed the best, see labels/README.md).\n"
                         "# Made by: build/tests/projsurf_label_tool baseline %s %s %.2f\n"
                         "# Raise it as the detector improves.\nframes:\n",
                         margin, argv[2], argv[3], margin);
             for (const auto &path : listLabelFiles(argv[3])) {
                 const LabelledFrame f = evaluateLabelledFrame(path, argv[2], DetectorConfig{}, {});
                 std::printf("  %s: {right: %s, min_ratio: %.2f}  # ratio %.3f\n", f.name.c_str(),
-                            f.score.right ? "true" : "false", std::max(0.0, std::floor((f.score.ratio - margin) * 100) / 100),
+                            f.score.right ? "true" : "false", std::clamp(std::floor((f.score.ratio - margin) * 100) / 100, 0.0, 0.9),
                             f.score.ratio);
             }
             return 0;
@@ -145,12 +206,17 @@ int main(int argc, char **argv) {
             return 0;
         }
         l = readRealLabel(file);
-        std::string overlay, residual;
+        std::string overlay, residual, refine;
+        bool do_refine = false;
         for (int i = 4; i < argc; ++i) {
             const std::string a = argv[i];
             if (a == "--holes" && i + 1 < argc) holes(l, cloud, std::stoi(argv[++i]));
             else if (a == "--overlay" && i + 1 < argc) overlay = argv[++i];
             else if (a == "--residual" && i + 1 < argc) residual = argv[++i];
+            else if (a == "--refine" && i + 1 < argc) {
+                refine = argv[++i];
+                do_refine = true;
+            }
             else if (a == "--aim" && i + 1 < argc) {
                 double u = 0, v = 0;
                 if (std::sscanf(argv[++i], "%lf,%lf", &u, &v) != 2) throw std::runtime_error("--aim u,v");
@@ -167,6 +233,10 @@ int main(int argc, char **argv) {
             } else throw std::runtime_error("unknown option " + a);
         }
         l.best = referenceBest(cloud, cam, l);
+        if (do_refine) {
+            refineObstacles(l, cloud, refine);
+            l.best = referenceBest(cloud, cam, l);
+        }
         for (const auto &s : l.surfaces) {
             if (!s.has_plane) {
                 std::printf("surface %s: no plane\n", s.name.c_str());
