@@ -60,7 +60,6 @@ GalleryEntry detectRealFrame(const std::string &folder, const Projector &project
     DetectorConfig cfg = config;
     if (gravity_from_floor)
         if (const auto gravity = estimateGravityFromFloor(cloud, cfg.gravity)) cfg.gravity = gravity->gravity;
-    g.gravity = cfg.gravity;
     const Detection det = detectSurface(cloud, projector, cfg);
     g.found = det.found;
     g.reason = det.reason;

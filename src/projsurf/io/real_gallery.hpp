@@ -22,7 +22,6 @@ struct GalleryEntry {
     int points = 0, outliers = 0;  ///< surface check
     double time_ms = 0;      ///< detection, in-process
     Rectangle rectangle;     ///< camera frame (when found)
-    Eigen::Vector3d gravity{0, 1, 0};  ///< the gravity detection used
     cv::Mat overlay;         ///< BGR
 };
 

@@ -32,7 +32,7 @@ std::string evalReportMarkdown(const sim::EvalResults &results, const std::vecto
 std::vector<std::pair<std::string, cv::Mat>> evalPlots(const sim::EvalResults &results);
 
 /// Writes dir/report.md, the charts, dir/gallery/<name>.png and dir/gallery/contact_sheet.png,
-/// and for the labelled suite dir/labels/<name>.png and dir/labels/contact_sheet.png
+/// and for the labelled suite dir/labels/<name>.png, contact_sheet.png and results.csv
 /// (atomically, each file). `dir` must exist.
 void writeEvalReport(const std::string &dir, const sim::EvalResults &results, const std::vector<GalleryEntry> &gallery,
                      const ReportInfo &info);
