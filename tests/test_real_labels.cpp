@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 #include <unistd.h>
+#include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
 #include "projsurf/io/cloud_io.hpp"
@@ -336,6 +337,32 @@ TEST(RealLabelSuite, LabelsAndDetectorHoldTheBaseline) {
             << " m^2" << (f.score.why.empty() ? "" : ", " + f.score.why) << ") is below the baseline "
             << b->second.min_ratio;
     }
+}
+
+// The eval's detection is the one `projsurf detect` gives with the label's projector (the label
+// file as --calib) and gravity: the command it reports, run, gives the same rectangle.
+TEST(RealLabelSuite, EvalDetectsAsTheCliDoes) {
+    const std::string real = std::string(PROJSURF_SHARED_DIR) + "/data/real";
+    if (!fs::is_directory(real)) GTEST_SKIP() << real << " is not here (the real frames stay in ../shared)";
+    const fs::path dir = freshDir("cli_same");
+    for (const char *frame : {"chimso_classroom_whiteboard", "tum_o3d_fr3_office_partition"}) {
+        const std::string label = std::string(PROJSURF_SOURCE_DIR) + "/labels/real/" + frame + ".yaml";
+        const LabelledFrame f = evaluateLabelledFrame(label, real, DetectorConfig{}, {});
+        ASSERT_TRUE(f.detection.found) << frame;
+        ASSERT_EQ(f.command.rfind("projsurf detect ", 0), 0u) << f.command;
+        const fs::path json = dir / (std::string(frame) + ".json");
+        const std::string cmd = std::string(PROJSURF_CLI) + f.command.substr(std::string("projsurf").size()) +
+                                " --json " + json.string() + " >/dev/null 2>&1";
+        ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+        std::ifstream in(json);
+        const nlohmann::json j = nlohmann::json::parse(in);
+        ASSERT_TRUE(j["found"].get<bool>()) << frame;
+        for (int k = 0; k < 4; ++k)
+            for (int a = 0; a < 3; ++a)
+                EXPECT_NEAR(j["rectangle"]["corners"][k][a].get<double>(), f.detection.rectangle.corners[k][a], 1e-4)
+                    << frame << " corner " << k;
+    }
+    fs::remove_all(dir);
 }
 
 TEST(RealLabelSuite, EvalRefusesAMissingLabelsFolder) {
