@@ -5,8 +5,8 @@
 //          --holes N: replace the "no reading" obstacles by the holes of >= N pixels in the surfaces
 //          --aim u,v: aim the projector at the surface point seen at pixel (u, v)
 //          --refine "name;name": shrink every obstacle drawn as a box, except those named, to what the
-//                   depth shows inside it: readings more than 2.5 cm in front of the nearest surface
-//                   plane, or no reading (closed 5x5, grown by 3 px within the box, pieces of >= 20 px)
+//                   depth shows inside it: readings more than 2.5 cm in front of the plane of the
+//                   surface whose regions hold the pixel (else the nearest plane), or no reading (closed 5x5, grown by 3 px within the box, pieces of >= 20 px)
 //          then fits the surfaces, recomputes the reference best rectangle and writes the label.
 //   baseline <real_dir> <labels_dir> [margin]  prints the regression baseline (labels/baseline.yaml):
 //          today's detector per frame, right or not, and its area ratio minus `margin` (default 0.05),
@@ -114,12 +114,22 @@ void refineObstacles(RealLabel &l, const Cloud &cloud, const std::string &keep_l
                 proud.at<uchar>(v, u) = 255;
                 continue;
             }
+            // Against the plane of the surface whose regions hold the pixel, else the nearest.
             double r = 1e9;
-            for (const auto &s : l.surfaces)
-                if (s.has_plane) {
-                    const double d = s.plane.signedDistance(p.cast<double>());
-                    if (std::abs(d) < std::abs(r)) r = d;
+            bool held = false;
+            for (const auto &s : l.surfaces) {
+                if (!s.has_plane) continue;
+                const double d = s.plane.signedDistance(p.cast<double>());
+                const bool in = std::any_of(s.regions.begin(), s.regions.end(), [&](const LabelPolygon &g) {
+                    return insidePolygon(g.pixels, Eigen::Vector2d(u, v));
+                });
+                if (in && !held) {
+                    r = d;
+                    held = true;
+                } else if (!held && std::abs(d) < std::abs(r)) {
+                    r = d;
                 }
+            }
             if (r > 0.025) proud.at<uchar>(v, u) = 255;
         }
     std::vector<LabelPolygon> out;
