@@ -12,7 +12,9 @@
 
 #include "cli/commands.hpp"
 #include "projsurf/io/errors.hpp"
+#include "projsurf/io/labelled_eval.hpp"
 #include "projsurf/io/real_gallery.hpp"
+#include "projsurf/io/real_labels.hpp"
 #include "projsurf/io/report.hpp"
 #include "projsurf/sim/experiments.hpp"
 #include "projsurf/sim/realistic_suite.hpp"
@@ -30,6 +32,8 @@ struct EvalOptions {
     unsigned seed = 1;
     std::string real_dir = "../shared/data/real";  // relative to the repository root
     bool real_dir_given = false;
+    std::string labels_dir = "labels/real";  // label files of the real frames, relative to the repository root
+    bool labels_dir_given = false;
     bool no_progress = false;
 };
 
@@ -75,6 +79,13 @@ void run(const EvalOptions &o, const std::string &command) {
     if (fs::exists(out, ec) && !fs::is_directory(out, ec)) throw InputError(o.out, "exists and is not a directory");
     if (o.real_dir_given && !o.real_dir.empty() && !fs::is_directory(o.real_dir, ec))
         throw InputError(o.real_dir, "is not a directory (--real-dir)");
+    if (o.labels_dir_given && !o.labels_dir.empty() && !fs::is_directory(o.labels_dir, ec))
+        throw InputError(o.labels_dir, "is not a directory (--labels)");
+    // Bad label files are reported before the long simulation runs.
+    const std::string labels_dir = o.labels_dir_given ? o.labels_dir : defaultRealDir(o.labels_dir);
+    const std::vector<std::string> labels = labels_dir.empty() ? std::vector<std::string>{} : listLabelFiles(labels_dir);
+    std::vector<std::string> label_frames;
+    for (const std::string &l : labels) label_frames.push_back(readRealLabel(l).frame);
 
     const int rounds = o.quick ? std::min(o.rounds, 2) : o.rounds;
     const sim::EvalPlan plan = sim::paperEvalPlan(rounds, o.quick, o.seed);
@@ -103,6 +114,23 @@ void run(const EvalOptions &o, const std::string &command) {
     if (progress && !frames.empty()) progress(static_cast<int>(frames.size()), static_cast<int>(frames.size()), "real frames");
     if (progress) std::fprintf(stderr, "\n");
     info.real_dir = frames.empty() ? "" : real_dir;
+
+    // Labelled real frames: each label's projector and gravity, scored against the label.
+    std::vector<LabelledFrame> labelled;
+    for (std::size_t i = 0; i < labels.size() && !frames.empty(); ++i) {
+        // The default labels go with the default frames: a --real-dir of other frames skips them.
+        if (!o.labels_dir_given && !fs::is_directory(fs::path(real_dir) / label_frames[i], ec)) continue;
+        if (progress) progress(static_cast<int>(i), static_cast<int>(labels.size()), "labelled " + fs::path(labels[i]).stem().string());
+        labelled.push_back(evaluateLabelledFrame(labels[i], real_dir, DetectorConfig{}, stabilitySeeds()));
+    }
+    if (progress && !labelled.empty()) {
+        progress(static_cast<int>(labels.size()), static_cast<int>(labels.size()), "labelled frames");
+        std::fprintf(stderr, "\n");
+    }
+    if (!labelled.empty()) {
+        info.labelled = &labelled;
+        info.labels_dir = labels_dir;
+    }
     const double load_after = loadAverage();
     if (!std::isnan(load_before) && !std::isnan(load_after)) {
         char buf[160];
@@ -119,6 +147,7 @@ void run(const EvalOptions &o, const std::string &command) {
                 results.trials.size() + results.keystone.size(), results.seconds, rounds, o.quick ? ", quick" : "",
                 gallery.size(), o.out.c_str());
     std::printf("%s\n", sim::realisticSuiteSummary(realistic).c_str());
+    if (!labelled.empty()) std::printf("%s\n", labelledSummaryLine(summariseLabelled(labelled)).c_str());
 }
 
 }  // namespace
@@ -133,15 +162,20 @@ void addEvalCommand(CLI::App &app) {
     auto *real = sub->add_option("--real-dir", o->real_dir,
                                  "Folder of real frames (sub-folders with depth.png + camera.yaml); default "
                                  "../shared/data/real, skipped when missing; '' to skip");
+    auto *labels = sub->add_option("--labels", o->labels_dir,
+                                   "Folder of real-frame label files (<frame>.yaml); default labels/real of the "
+                                   "repository, skipped when missing; '' to skip");
     sub->add_flag("--no-progress", o->no_progress, "No progress bar on stderr");
-    sub->callback([o, real] {
+    sub->callback([o, real, labels] {
         EvalOptions opts = *o;
         opts.real_dir_given = real->count() > 0;
+        opts.labels_dir_given = labels->count() > 0;
         std::string command = "projsurf eval --out " + opts.out;
         if (opts.quick) command += " --quick";
         if (opts.rounds != 10) command += " --rounds " + std::to_string(opts.rounds);
         if (opts.seed != 1) command += " --seed " + std::to_string(opts.seed);
         if (opts.real_dir_given) command += " --real-dir '" + opts.real_dir + "'";
+        if (opts.labels_dir_given) command += " --labels '" + opts.labels_dir + "'";
         run(opts, command);
     });
 }

@@ -32,7 +32,8 @@ std::vector<std::string> listFrameFolders(const std::string &dir) {
     return out;
 }
 
-GalleryEntry detectRealFrame(const std::string &folder, const Projector &projector, const DetectorConfig &config) {
+GalleryEntry detectRealFrame(const std::string &folder, const Projector &projector, const DetectorConfig &config,
+                             const std::optional<Eigen::Vector3d> &gravity) {
     GalleryEntry g;
     g.name = fs::path(folder).filename().string();
     const std::string depth = (fs::path(folder) / "depth.png").string();
@@ -56,9 +57,10 @@ GalleryEntry detectRealFrame(const std::string &folder, const Projector &project
     g.read = true;
     // These recordings have no IMU: take "down" from the floor when one is in view
     // (as `projsurf detect --gravity auto` does).
-    Eigen::Vector3d gravity = SurfaceDetector::levelGravity();
-    if (const auto floor = estimateGravityFromFloor(cloud, gravity)) gravity = floor->gravity;
-    const Detection det = detectSurface(cloud, projector, config, gravity);
+    Eigen::Vector3d down = gravity.value_or(SurfaceDetector::levelGravity());
+    if (!gravity)
+        if (const auto floor = estimateGravityFromFloor(cloud, down)) down = floor->gravity;
+    const Detection det = detectSurface(cloud, projector, config, down);
     g.found = det.found;
     g.reason = det.reason;
     if (det.found) {
@@ -67,6 +69,7 @@ GalleryEntry detectRealFrame(const std::string &folder, const Projector &project
         g.area = det.rectangle.area();
         g.distance = det.plane.d;
         g.orientation_deg = det.orientation_deg;
+        g.rectangle = det.rectangle;
     }
     g.points = det.surface_check.points;
     g.outliers = det.surface_check.outliers;

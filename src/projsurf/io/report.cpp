@@ -644,6 +644,8 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
         md << "\n";
     }
 
+    if (info.labelled) md << labelledReportMarkdown(*info.labelled, info.labels_dir, "labels");
+
     md << "## How it was measured\n\n";
     md << "- Scenes: `sim::makeScenario` (wall, closet, small_obstacles, big_obstacle) at the paper's distances and "
           "angles (`sim::paperExperiments()`); camera 1.0 m above the floor, level; the contract's example projector "
@@ -675,6 +677,7 @@ void writeEvalReport(const std::string &dir, const sim::EvalResults &results, co
             if (!e.overlay.empty()) writeImageAtomic((g / (e.name + ".png")).string(), e.overlay);
         writeImageAtomic((g / "contact_sheet.png").string(), contactSheet(gallery));
     }
+    if (info.labelled && !info.labelled->empty()) writeLabelledPictures((out / "labels").string(), *info.labelled);
     writeFileAtomic((out / "report.md").string(), evalReportMarkdown(results, gallery, info));
 }
 

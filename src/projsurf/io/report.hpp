@@ -8,6 +8,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "projsurf/io/labelled_eval.hpp"
 #include "projsurf/io/real_gallery.hpp"
 #include "projsurf/sim/experiments.hpp"
 
@@ -20,6 +21,8 @@ struct ReportInfo {
     double real_seconds = 0; ///< time spent on the gallery
     std::string load;        ///< machine load while it ran (e.g. "1-min load average 7.4 -> 6.5 on 2 cores")
     std::string realistic_markdown;  ///< the realistic suite's section body (sim::realisticSuiteMarkdown), "" = none
+    const std::vector<LabelledFrame> *labelled = nullptr;  ///< labelled real-frame suite (nullptr = not run)
+    std::string labels_dir;  ///< where its label files came from
 };
 
 /// The report's Markdown (links plots and gallery pictures by relative path).
@@ -29,7 +32,8 @@ std::string evalReportMarkdown(const sim::EvalResults &results, const std::vecto
 /// The charts, as (file name, image).
 std::vector<std::pair<std::string, cv::Mat>> evalPlots(const sim::EvalResults &results);
 
-/// Writes dir/report.md, the charts, dir/gallery/<name>.png and dir/gallery/contact_sheet.png
+/// Writes dir/report.md, the charts, dir/gallery/<name>.png and dir/gallery/contact_sheet.png,
+/// and for the labelled suite dir/labels/<name>.png, contact_sheet.png and results.csv
 /// (atomically, each file). `dir` must exist.
 void writeEvalReport(const std::string &dir, const sim::EvalResults &results, const std::vector<GalleryEntry> &gallery,
                      const ReportInfo &info);

@@ -1,0 +1,90 @@
+#include "projsurf/io/label_overlay.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "projsurf/core/plane.hpp"
+
+namespace projsurf {
+namespace {
+
+std::vector<cv::Point> toPoints(const std::vector<Eigen::Vector2d> &px) {
+    std::vector<cv::Point> out;
+    for (const auto &p : px) out.emplace_back(static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y())));
+    return out;
+}
+
+/// Draws the camera-frame segment a-b, clipped to z > 5 cm, in pixels.
+void segment3(cv::Mat &img, const CameraIntrinsics &cam, Eigen::Vector3d a, Eigen::Vector3d b, const cv::Scalar &colour,
+              int thickness) {
+    const double zmin = 0.05;
+    if (a.z() < zmin && b.z() < zmin) return;
+    if (a.z() < zmin) a = a + (zmin - a.z()) / (b.z() - a.z()) * (b - a);
+    if (b.z() < zmin) b = b + (zmin - b.z()) / (a.z() - b.z()) * (a - b);
+    const Eigen::Vector2d pa = cam.project(a), pb = cam.project(b);
+    const auto clampPx = [](double v) { return static_cast<int>(std::clamp(v, -1e5, 1e5)); };
+    cv::line(img, {clampPx(pa.x()), clampPx(pa.y())}, {clampPx(pb.x()), clampPx(pb.y())}, colour, thickness, cv::LINE_AA);
+}
+
+void quad3(cv::Mat &img, const CameraIntrinsics &cam, const std::array<Eigen::Vector3d, 4> &c, const cv::Scalar &colour,
+           int thickness) {
+    for (int i = 0; i < 4; ++i) segment3(img, cam, c[i], c[(i + 1) % 4], colour, thickness);
+}
+
+}  // namespace
+
+cv::Mat depthColour(const Cloud &cloud) {
+    cv::Mat grey(cloud.height, cloud.width, CV_8U, cv::Scalar(0)), valid(cloud.height, cloud.width, CV_8U, cv::Scalar(0));
+    for (int v = 0; v < cloud.height; ++v)
+        for (int u = 0; u < cloud.width; ++u) {
+            const Point &p = cloud.points[static_cast<std::size_t>(v) * cloud.width + u];
+            if (!isFinite(p)) continue;
+            grey.at<uchar>(v, u) = static_cast<uchar>(std::clamp((p.z() - 0.5) / 4.5 * 255.0, 0.0, 255.0));
+            valid.at<uchar>(v, u) = 255;
+        }
+    cv::Mat out;
+    cv::applyColorMap(grey, out, cv::COLORMAP_TURBO);
+    out.setTo(cv::Scalar(0, 0, 0), valid == 0);
+    return out;
+}
+
+cv::Mat renderLabelOverlay(const cv::Mat &background, const RealLabel &label, const CameraIntrinsics &camera,
+                           const Rectangle *detected, double tint_alpha) {
+    cv::Mat img = background.clone();
+    cv::Mat tint = img.clone();
+    for (const auto &s : label.surfaces)
+        for (const auto &r : s.regions) cv::fillPoly(tint, std::vector<std::vector<cv::Point>>{toPoints(r.pixels)}, {60, 200, 60});
+    for (const auto &o : label.obstacles)
+        cv::fillPoly(tint, std::vector<std::vector<cv::Point>>{toPoints(o.pixels)}, {40, 40, 230});
+    cv::addWeighted(img, 1.0 - tint_alpha, tint, tint_alpha, 0.0, img);
+    for (const auto &s : label.surfaces)
+        for (const auto &r : s.regions) {
+            cv::polylines(img, std::vector<std::vector<cv::Point>>{toPoints(r.pixels)}, true, {0, 230, 0}, 1, cv::LINE_AA);
+            if (!r.pixels.empty())
+                cv::putText(img, s.name, toPoints({r.pixels[0]})[0] + cv::Point(3, 12), cv::FONT_HERSHEY_SIMPLEX, 0.4,
+                            {0, 255, 0}, 1, cv::LINE_AA);
+        }
+    for (const auto &o : label.obstacles)
+        cv::polylines(img, std::vector<std::vector<cv::Point>>{toPoints(o.pixels)}, true, {0, 0, 255}, 1, cv::LINE_AA);
+    // Projector footprint on the surface of the best rectangle.
+    for (const auto &s : label.surfaces) {
+        if (!s.has_plane || (label.best.found && s.name != label.best.surface)) continue;
+        std::array<Eigen::Vector3d, 4> foot;
+        bool ok = true;
+        int k = 0;
+        for (const auto &ray : label.projector.cornerRays()) {
+            const auto hit = intersectRay(s.plane, label.projector.origin, ray);
+            if (!hit) ok = false;
+            else foot[k] = *hit;
+            ++k;
+        }
+        if (ok) quad3(img, camera, foot, {0, 220, 255}, 1);
+        if (label.best.found) break;
+    }
+    if (label.best.found) quad3(img, camera, label.best.corners, {255, 120, 0}, 2);
+    if (detected) quad3(img, camera, detected->corners, {255, 0, 255}, 2);
+    return img;
+}
+
+}  // namespace projsurf

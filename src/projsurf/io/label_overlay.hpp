@@ -1,0 +1,23 @@
+#pragma once
+// A picture of a real frame's label, for a reader to check it: the usable surfaces (green),
+// the obstacles (red), the projector's footprint on the best surface (yellow), the label's
+// best rectangle (blue) and, when given, the detector's rectangle (magenta), drawn over the
+// registered colour image or, without one, the colour-mapped depth.
+#include <opencv2/core.hpp>
+
+#include "projsurf/core/camera.hpp"
+#include "projsurf/core/cloud.hpp"
+#include "projsurf/core/plane_frame.hpp"
+#include "projsurf/io/real_labels.hpp"
+
+namespace projsurf {
+
+/// Depth as a turbo colour map, 0.5 m blue to 5 m red, black where there is no reading.
+cv::Mat depthColour(const Cloud &cloud);
+
+/// `background`: BGR image of the depth image's size. `detected`: the detector's rectangle,
+/// or nullptr. `tint`: opacity of the polygons' fill (0 = outlines only).
+cv::Mat renderLabelOverlay(const cv::Mat &background, const RealLabel &label, const CameraIntrinsics &camera,
+                           const Rectangle *detected, double tint = 0.35);
+
+}  // namespace projsurf

@@ -1,0 +1,69 @@
+#pragma once
+// The labelled real-frame suite: the detector run on every labelled frame with the label's
+// projector and gravity (as `projsurf detect --depth <frame>/depth.png --camera
+// <frame>/camera.yaml --calib <label> --gravity gx,gy,gz` would), scored against the label,
+// once per seed for stability, with a picture of label and answer per frame.
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "projsurf/io/real_gallery.hpp"
+#include "projsurf/io/real_labels.hpp"
+#include "projsurf/io/real_scoring.hpp"
+
+namespace projsurf {
+
+struct SeedRun {
+    unsigned seed = 0;
+    bool found = false;
+    bool valid = false;
+    double area = 0.0;  ///< m^2
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+};
+
+struct LabelledFrame {
+    std::string name;        ///< frame folder name
+    std::string label_path;
+    RealLabel label;
+    GalleryEntry detection;  ///< at the configuration's seed
+    RealScore score;
+    std::vector<SeedRun> seeds;
+    double seed_spread = 0.0;  ///< (max - min) / max of the area over the seeds (0 when none found)
+    double seed_shift = 0.0;   ///< m, largest distance of a seed's rectangle centre from the main one
+    bool seed_same_validity = true;
+    std::string command;     ///< the equivalent `projsurf detect` command line
+    cv::Mat overlay;         ///< BGR: label polygons, label best (blue), detector (magenta)
+};
+
+struct LabelledSummary {
+    int frames = 0;
+    int right = 0;          ///< valid answers, or found: false where nothing is usable
+    int with_best = 0;      ///< frames whose label has a best rectangle
+    double median_ratio = 0.0, worst_ratio = 0.0;  ///< over frames with a best (invalid = 0)
+    int seed_stable = 0;    ///< spread <= 2 % and the same validity on every seed
+};
+
+/// Seeds for the stability check: 1-5 and 42 (the default).
+std::vector<unsigned> stabilitySeeds();
+
+/// Evaluates one label file; the frame is real_dir/<label.frame>. Throws InputError when the
+/// label or its frame cannot be read.
+LabelledFrame evaluateLabelledFrame(const std::string &label_path, const std::string &real_dir,
+                                    const DetectorConfig &config, const std::vector<unsigned> &seeds);
+
+LabelledSummary summariseLabelled(const std::vector<LabelledFrame> &frames);
+/// "labelled real frames: 17 of 23 right; area ratio median 0.81, worst 0.00 (20 with a best
+/// rectangle); seed-stable 19 of 23".
+std::string labelledSummaryLine(const LabelledSummary &summary);
+
+/// The report section (Markdown); pictures are linked as `<pictures>/<frame>.png`.
+std::string labelledReportMarkdown(const std::vector<LabelledFrame> &frames, const std::string &labels_dir,
+                                   const std::string &pictures);
+/// One line per frame: frame, label best, detector area, ratio, right, free share, seed areas,
+/// spread (CSV with a header line).
+std::string labelledCsv(const std::vector<LabelledFrame> &frames);
+/// Writes dir/<frame>.png per frame, dir/contact_sheet.png and dir/results.csv; `dir` is created.
+void writeLabelledPictures(const std::string &dir, const std::vector<LabelledFrame> &frames);
+
+}  // namespace projsurf

@@ -1,0 +1,208 @@
+#include "projsurf/io/real_labels.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <yaml-cpp/yaml.h>
+
+#include "projsurf/io/errors.hpp"
+#include "projsurf/io/files.hpp"
+#include "projsurf/io/yaml_files.hpp"
+
+namespace fs = std::filesystem;
+
+namespace projsurf {
+namespace {
+
+/// Reads keys of one file and names them in errors as "file: 'key.sub' ...".
+struct Reader {
+    std::string path;
+
+    [[noreturn]] void fail(const std::string &problem) const { throw InputError(path, problem); }
+
+    YAML::Node need(const YAML::Node &node, const std::string &key, const std::string &where) const {
+        if (!node.IsMap() || !node[key]) fail("missing key '" + where + key + "'");
+        return node[key];
+    }
+    double number(const YAML::Node &node, const std::string &what) const {
+        double v = 0;
+        try {
+            v = node.as<double>();
+        } catch (const YAML::Exception &) {
+            fail("'" + what + "' is not a number");
+        }
+        if (!std::isfinite(v)) fail("'" + what + "' is not finite");
+        return v;
+    }
+    std::string text(const YAML::Node &node, const std::string &what) const {
+        if (!node.IsScalar()) fail("'" + what + "' must be a string");
+        return node.as<std::string>();
+    }
+    Eigen::Vector3d vector3(const YAML::Node &node, const std::string &what) const {
+        if (!node.IsSequence() || node.size() != 3) fail("'" + what + "' must be a list of 3 numbers");
+        return {number(node[0], what), number(node[1], what), number(node[2], what)};
+    }
+    LabelPolygon polygon(const YAML::Node &node, const std::string &what) const {
+        LabelPolygon p;
+        p.name = node["name"] ? text(node["name"], what + ".name") : "";
+        const YAML::Node pts = need(node, "polygon", what + ".");
+        if (!pts.IsSequence() || pts.size() < 3) fail("'" + what + ".polygon' must be a list of at least 3 [x, y] pixels");
+        for (const auto &xy : pts) {
+            if (!xy.IsSequence() || xy.size() != 2) fail("'" + what + ".polygon' must be a list of [x, y] pixels");
+            p.pixels.emplace_back(number(xy[0], what + ".polygon"), number(xy[1], what + ".polygon"));
+        }
+        return p;
+    }
+};
+
+/// A number as a plain scalar with 7 significant digits (yaml-cpp would print 17).
+YAML::Node num(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.7g", v);
+    return YAML::Node(std::string(buf));
+}
+
+YAML::Node flow(std::initializer_list<double> v) {
+    YAML::Node n;
+    for (double x : v) n.push_back(num(x));
+    n.SetStyle(YAML::EmitterStyle::Flow);
+    return n;
+}
+
+YAML::Node polygonNode(const LabelPolygon &p) {
+    YAML::Node n;
+    if (!p.name.empty()) n["name"] = p.name;
+    YAML::Node pts;
+    for (const auto &xy : p.pixels) pts.push_back(flow({xy.x(), xy.y()}));
+    pts.SetStyle(YAML::EmitterStyle::Flow);
+    n["polygon"] = pts;
+    return n;
+}
+
+}  // namespace
+
+RealLabel readRealLabel(const std::string &path) {
+    requireReadable(path);
+    YAML::Node root;
+    try {
+        root = YAML::LoadFile(path);
+    } catch (const YAML::Exception &e) {
+        throw InputError(path, std::string("malformed YAML: ") + e.what());
+    }
+    const Reader r{path};
+    if (!root.IsMap()) r.fail("expected a YAML mapping at the top level");
+    RealLabel l;
+    l.frame = r.text(r.need(root, "frame", ""), "frame");
+    if (l.frame.empty()) r.fail("'frame' is empty");
+    if (root["note"]) l.note = r.text(root["note"], "note");
+
+    const YAML::Node g = r.need(root, "gravity", "");
+    l.gravity_source = r.text(r.need(g, "source", "gravity."), "gravity.source");
+    if (l.gravity_source != "auto" && l.gravity_source != "stated") r.fail("'gravity.source' must be 'auto' or 'stated'");
+    l.gravity = r.vector3(r.need(g, "vector", "gravity."), "gravity.vector");
+    if (l.gravity.norm() < 1e-6) r.fail("'gravity.vector' is the zero vector");
+    l.gravity.normalize();
+
+    l.projector = readCalibration(path);  // the `projector:` block, as in a calibration file
+
+    const YAML::Node surfaces = r.need(root, "surfaces", "");
+    if (!surfaces.IsSequence()) r.fail("'surfaces' must be a list (empty when no wall is usable)");
+    for (std::size_t i = 0; i < surfaces.size(); ++i) {
+        const std::string where = "surfaces[" + std::to_string(i) + "]";
+        LabelSurface s;
+        s.name = r.text(r.need(surfaces[i], "name", where + "."), where + ".name");
+        const YAML::Node regions = r.need(surfaces[i], "regions", where + ".");
+        if (!regions.IsSequence() || regions.size() == 0) r.fail("'" + where + ".regions' must be a non-empty list");
+        for (std::size_t k = 0; k < regions.size(); ++k)
+            s.regions.push_back(r.polygon(regions[k], where + ".regions[" + std::to_string(k) + "]"));
+        if (surfaces[i]["plane"]) {
+            const YAML::Node p = surfaces[i]["plane"];
+            if (!p.IsSequence() || p.size() != 4) r.fail("'" + where + ".plane' must be [nx, ny, nz, d]");
+            const Eigen::Vector3d n(r.number(p[0], where + ".plane"), r.number(p[1], where + ".plane"),
+                                    r.number(p[2], where + ".plane"));
+            if (n.norm() < 1e-6) r.fail("'" + where + ".plane' has a zero normal");
+            s.plane = makePlane(n, r.number(p[3], where + ".plane"));
+            s.has_plane = true;
+        }
+        for (const auto &other : l.surfaces)
+            if (other.name == s.name) r.fail("two surfaces are named '" + s.name + "'");
+        l.surfaces.push_back(std::move(s));
+    }
+    if (root["obstacles"]) {
+        const YAML::Node obstacles = root["obstacles"];
+        if (!obstacles.IsSequence()) r.fail("'obstacles' must be a list");
+        for (std::size_t i = 0; i < obstacles.size(); ++i)
+            l.obstacles.push_back(r.polygon(obstacles[i], "obstacles[" + std::to_string(i) + "]"));
+    }
+    if (root["best"]) {
+        const YAML::Node b = root["best"];
+        try {
+            l.best.found = r.need(b, "found", "best.").as<bool>();
+        } catch (const YAML::Exception &) {
+            r.fail("'best.found' must be true or false");
+        }
+        if (l.best.found) {
+            l.best.surface = r.text(r.need(b, "surface", "best."), "best.surface");
+            if (std::none_of(l.surfaces.begin(), l.surfaces.end(), [&](const LabelSurface &s) { return s.name == l.best.surface; }))
+                r.fail("'best.surface' names no surface: '" + l.best.surface + "'");
+            l.best.width = r.number(r.need(b, "width", "best."), "best.width");
+            l.best.height = r.number(r.need(b, "height", "best."), "best.height");
+            if (!(l.best.width > 0 && l.best.height > 0)) r.fail("'best.width' and 'best.height' must be positive");
+            const YAML::Node c = r.need(b, "corners", "best.");
+            if (!c.IsSequence() || c.size() != 4) r.fail("'best.corners' must be a list of 4 [x, y, z] points");
+            for (int k = 0; k < 4; ++k) l.best.corners[k] = r.vector3(c[k], "best.corners");
+        }
+    }
+    return l;
+}
+
+void writeRealLabel(const std::string &path, const RealLabel &l) {
+    YAML::Node root;
+    root["frame"] = l.frame;
+    if (!l.note.empty()) root["note"] = l.note;
+    root["gravity"]["source"] = l.gravity_source.empty() ? std::string("stated") : l.gravity_source;
+    root["gravity"]["vector"] = flow({l.gravity.x(), l.gravity.y(), l.gravity.z()});
+    const Projector &p = l.projector;
+    root["projector"]["resolution"] = flow({static_cast<double>(p.width), static_cast<double>(p.height)});
+    root["projector"]["fov_deg"] = flow({p.fov_h * 180.0 / M_PI, p.fov_v * 180.0 / M_PI});
+    root["projector"]["axis"]["origin"] = flow({p.origin.x(), p.origin.y(), p.origin.z()});
+    const Eigen::Vector3d d = p.direction.normalized();
+    root["projector"]["axis"]["direction"] = flow({d.x(), d.y(), d.z()});
+    YAML::Node surfaces(YAML::NodeType::Sequence);
+    for (const auto &s : l.surfaces) {
+        YAML::Node n;
+        n["name"] = s.name;
+        for (const auto &p : s.regions) n["regions"].push_back(polygonNode(p));
+        if (s.has_plane) n["plane"] = flow({s.plane.normal.x(), s.plane.normal.y(), s.plane.normal.z(), s.plane.d});
+        surfaces.push_back(n);
+    }
+    root["surfaces"] = surfaces;
+    YAML::Node obstacles(YAML::NodeType::Sequence);
+    for (const auto &p : l.obstacles) obstacles.push_back(polygonNode(p));
+    root["obstacles"] = obstacles;
+    root["best"]["found"] = l.best.found;
+    if (l.best.found) {
+        root["best"]["surface"] = l.best.surface;
+        root["best"]["width"] = num(l.best.width);
+        root["best"]["height"] = num(l.best.height);
+        root["best"]["area"] = num(l.best.area());  // for the reader's eye; not read back
+        for (const auto &c : l.best.corners) root["best"]["corners"].push_back(flow({c.x(), c.y(), c.z()}));
+    }
+    YAML::Emitter out;
+    out.SetDoublePrecision(6);
+    out << root;
+    writeFileAtomic(path, std::string(out.c_str()) + "\n");
+}
+
+std::vector<std::string> listLabelFiles(const std::string &dir) {
+    std::vector<std::string> out;
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) return out;
+    for (const auto &e : fs::directory_iterator(dir, ec))
+        if (e.is_regular_file(ec) && e.path().extension() == ".yaml") out.push_back(e.path().string());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+}  // namespace projsurf

@@ -1,0 +1,57 @@
+#pragma once
+// Hand-made labels of a real RGB-D frame (labels/real/<frame>.yaml): the gravity and the
+// virtual projector to test it with, the surfaces a projector could use and the obstacles on
+// them as polygons in depth-image pixels, and the reference best rectangle.
+#include <Eigen/Core>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "projsurf/core/plane.hpp"
+#include "projsurf/core/projector.hpp"
+
+namespace projsurf {
+
+/// A simple polygon in depth-image pixel coordinates (x right, y down; pixel centres are
+/// whole numbers, as in CameraIntrinsics::backProject).
+struct LabelPolygon {
+    std::string name;
+    std::vector<Eigen::Vector2d> pixels;
+};
+
+/// One flat vertical surface: the union of its polygons is where a picture may go.
+struct LabelSurface {
+    std::string name;
+    std::vector<LabelPolygon> regions;
+    bool has_plane = false;  ///< plane fitted by the reference (stored for checking)
+    Plane plane;             ///< camera frame, m
+};
+
+/// The reference's best upright rectangle for the label's projector and gravity.
+struct LabelBest {
+    bool found = false;
+    std::string surface;                   ///< name of the surface it lies on
+    double width = 0, height = 0;          ///< m
+    std::array<Eigen::Vector3d, 4> corners{};  ///< camera frame, TL, TR, BR, BL facing the wall
+    double area() const { return width * height; }
+};
+
+struct RealLabel {
+    std::string frame;           ///< folder name under the real-frame directory
+    std::string note;            ///< what was judged and why
+    std::string gravity_source;  ///< "auto" (the floor, as --gravity auto) or "stated"
+    Eigen::Vector3d gravity{0, 1, 0};  ///< unit, camera frame, down
+    Projector projector;         ///< `projector:` block in the calibration file's format
+    std::vector<LabelSurface> surfaces;   ///< empty: no usable wall in this frame
+    std::vector<LabelPolygon> obstacles;  ///< in front of / proud of the surfaces, or no reading
+    LabelBest best;
+};
+
+/// Reads a label file; throws InputError naming the file and the key on any problem.
+RealLabel readRealLabel(const std::string &path);
+/// Writes a label file (atomically) that readRealLabel reads back unchanged.
+void writeRealLabel(const std::string &path, const RealLabel &label);
+/// The label files (*.yaml) of a directory, sorted; empty when it is not a directory.
+std::vector<std::string> listLabelFiles(const std::string &dir);
+
+}  // namespace projsurf
