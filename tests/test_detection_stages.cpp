@@ -2,15 +2,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <random>
 
 #include "projsurf/core/image_boxes.hpp"
 #include "projsurf/core/observed_free_space.hpp"
+#include "projsurf/core/planar_regions.hpp"
 #include "projsurf/core/point_sampling.hpp"
 #include "projsurf/core/projector_footprint.hpp"
 #include "projsurf/core/rectangle_growth.hpp"
 #include "projsurf/core/vertical_planes.hpp"
+#include "projsurf/core/wall_shape.hpp"
 
 using namespace projsurf;
 
@@ -166,4 +169,85 @@ TEST(ImageBoxes, BoxesHoldWhatTheyAreAboutAndSayAllWhenAPointIsBehindTheCamera) 
     // Index boxes: where the points lie in the image.
     const Cloud cloud = wallImage(cam, 2.0);
     EXPECT_EQ(indexImageBox(cloud, {5 * 640 + 7, 9 * 640 + 20}, 1), cv::Rect(6, 4, 16, 7));
+}
+
+namespace {
+
+/// A frontal wall at depth z seen by `camera`, bent by `bend(x, y)` (m, towards the camera),
+/// with independent depth noise of `sigma` (m), and what `box` says stands proud of it.
+Cloud bentWall(const CameraIntrinsics &cam, double z, const std::function<double(double, double)> &bend, double sigma,
+               unsigned seed, const cv::Rect &box = {}, double box_height = 0.0) {
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> noise(0.0, sigma);
+    Cloud c;
+    c.width = cam.width;
+    c.height = cam.height;
+    for (int v = 0; v < cam.height; ++v)
+        for (int u = 0; u < cam.width; ++u) {
+            const Eigen::Vector3d ray = cam.backProject(u, v, 1.0);
+            const double x = ray.x() * z, y = ray.y() * z;
+            double depth = z - bend(x, y) - (box.contains({u, v}) ? box_height : 0.0);
+            depth += sigma > 0 ? noise(rng) : 0.0;
+            c.points.push_back((ray * depth).cast<float>());
+        }
+    return c;
+}
+
+}  // namespace
+
+TEST(WallShape, FollowsASmoothBendButNotWhatStandsProudOfTheWall) {
+    CameraIntrinsics cam;
+    auto bend = [](double x, double y) { return 0.012 * (x * x + y * y) - 0.01 * x; };  // 4 cm at the image corners
+    const Cloud cloud = bentWall(cam, 2.5, bend, 0.004, 3, cv::Rect(400, 100, 120, 120), 0.10);
+    const std::vector<int> sample = samplePoints(cloud, 12000);
+    std::vector<Point> pts;
+    std::vector<float> band;
+    DepthTolerance tol;
+    for (int i : sample) {
+        pts.push_back(cloud.points[i]);
+        band.push_back(tol.band(cloud.points[i].z()));
+    }
+    const Plane wall = makePlane({0, 0, -1}, 2.5);
+    const PlaneFrame frame = makePlaneFrame(wall, Eigen::Vector3d::UnitY(), {0, 0, 2.5});
+    const auto shape = fitWallShape(pts, band, wall, frame);
+    ASSERT_TRUE(shape.has_value());
+    // Plane coordinates: u = x (right), v = -y (up).
+    for (const Eigen::Vector2d uv : {Eigen::Vector2d(0, 0), Eigen::Vector2d(0.9, 0.6), Eigen::Vector2d(-1.0, -0.6)})
+        EXPECT_NEAR(shape->height(uv), bend(uv.x(), -uv.y()), 0.004) << uv.transpose();
+    // The noise about the shape is the sensor's, not the box's.
+    EXPECT_NEAR(shape->noise_k * 2.5 * 2.5, 0.004, 0.0015);
+    EXPECT_NEAR(localNoiseK(cloud, sample, band, wall, 2.5, 8) * 2.5 * 2.5, 0.004, 0.001);
+    // Too few points: no shape.
+    EXPECT_FALSE(fitWallShape({pts.begin(), pts.begin() + 10}, {band.begin(), band.begin() + 10}, wall, frame).has_value());
+}
+
+TEST(PlanarRegions, FindsEachWallOfACornerOnceAndNeverTheFloorWhateverTheOrder) {
+    // A room corner seen by a level camera: a back wall at z = 3, a side wall at x = 1, a floor at y = 1.
+    CameraIntrinsics cam;
+    Cloud c;
+    c.width = cam.width;
+    c.height = cam.height;
+    std::mt19937 rng(5);
+    std::normal_distribution<double> noise(0.0, 0.003);
+    for (int v = 0; v < cam.height; ++v)
+        for (int u = 0; u < cam.width; ++u) {
+            const Eigen::Vector3d r = cam.backProject(u, v, 1.0);
+            double t = 3.0 / r.z();
+            if (r.x() > 0) t = std::min(t, 1.0 / r.x());
+            if (r.y() > 0) t = std::min(t, 1.0 / r.y());
+            c.points.push_back((r * (t + noise(rng))).cast<float>());
+        }
+    PointGrid grid;
+    fillPointGrid(c, 2, grid);
+    const auto regions = findVerticalRegions(grid, Eigen::Vector3d::UnitY(), DepthTolerance{});
+    ASSERT_GE(regions.size(), 2u);
+    int back = 0, side = 0;
+    for (const auto &r : regions) {
+        EXPECT_LT(std::abs(r.plane.normal.y()), 0.1);  // never the floor
+        if (std::abs(r.plane.normal.z()) > 0.99 && std::abs(r.plane.d - 3.0) < 0.02) ++back;
+        if (std::abs(r.plane.normal.x()) > 0.99 && std::abs(r.plane.d - 1.0) < 0.02) ++side;
+    }
+    EXPECT_EQ(back, 1);
+    EXPECT_EQ(side, 1);
+    EXPECT_GT(regions[0].points, regions[1].points);  // biggest first
 }

@@ -71,4 +71,34 @@ DepthTolerance toleranceFor(const WallShape &shape, const DepthTolerance &model,
     return t;
 }
 
+double localNoiseK(const Cloud &cloud, const std::vector<int> &sample, const std::vector<float> &band, const Plane &plane,
+                   double capture_bands, int offset, int min_pairs) {
+    if (!cloud.organized() || offset < 1) return 0.0;
+    const Eigen::Vector3f n = plane.normal.cast<float>();
+    const float d = static_cast<float>(plane.d);
+    std::vector<double> diffs;  // |h_i - h_j| / z^2
+    for (std::size_t k = 0; k < sample.size(); ++k) {
+        const int i = sample[k];
+        const Point &p = cloud.points[i];
+        const float h = n.dot(p) + d, cap = static_cast<float>(capture_bands) * band[k];
+        if (!(std::abs(h) <= cap)) continue;
+        const int u = i % cloud.width, v = i / cloud.width;
+        for (const int j : {u + offset < cloud.width ? i + offset : -1, v + offset < cloud.height ? i + offset * cloud.width : -1}) {
+            if (j < 0) continue;
+            const Point &q = cloud.points[j];
+            const float hq = n.dot(q) + d;
+            if (!(std::abs(hq) <= cap)) continue;
+            diffs.push_back(std::abs(h - hq) / (static_cast<double>(p.z()) * p.z()));
+        }
+    }
+    if (static_cast<int>(diffs.size()) < min_pairs) return 0.0;
+    std::sort(diffs.begin(), diffs.end());
+    const std::size_t keep = diffs.size() * 9 / 10;
+    double sum = 0.0;
+    for (std::size_t k = 0; k < keep; ++k) sum += diffs[k];
+    // a - b ~ N(0, sqrt(2) sigma) for independent readings; the mean of the smallest 90 % of
+    // |N(0, s)| is 0.6573 s.
+    return sum / static_cast<double>(keep) / (0.6573 * std::sqrt(2.0));
+}
+
 }  // namespace projsurf

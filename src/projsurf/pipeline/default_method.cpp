@@ -102,12 +102,17 @@ std::vector<PlaneCandidate> findCandidates(const CloudSample &s, const DetectorC
 }
 
 /// Each wall's bend and noise as the camera saw them, and its sampled points on that shape.
-void shapeWall(const CloudSample &s, const DetectorConfig &cfg, PlaneCandidate &c) {
+void shapeWall(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cfg, PlaneCandidate &c) {
     c.tolerance = cfg.tolerance;
     if (!cfg.wall.fit_shape) return;
     const auto shape = fitWallShape(s.points, s.band, c.plane, c.frame, cfg.wall.shape);
     if (!shape) return;
     c.shape = *shape;
+    // The residual about the shape also counts what the shape cannot follow (a window recess, a
+    // box): on depth images it may exceed the noise measured between nearby readings only by
+    // what a smooth sensor error leaves (local_cap times).
+    const double local = localNoiseK(cloud, s.indices, s.band, c.plane, cfg.wall.shape.capture_bands, cfg.wall.noise_offset_px);
+    if (local > 0.0) c.shape.noise_k = std::min(c.shape.noise_k, cfg.wall.local_cap * std::max(local, cfg.tolerance.noise_k));
     c.tolerance = toleranceFor(c.shape, cfg.tolerance, cfg.wall.noise_min, cfg.wall.noise_max);
     // The wall's points are those on its shape (the plane's band misses where the camera bends it).
     c.inlier_indices.clear();
@@ -234,7 +239,7 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     if (candidates.empty()) return time.fail("no vertical plane in view");
 
     // 3. How each wall departs from its plane (the depth camera's bend) and its noise.
-    for (PlaneCandidate &c : candidates) shapeWall(sample, cfg, c);
+    for (PlaneCandidate &c : candidates) shapeWall(cloud, sample, cfg, c);
     time.lap("wall_shape");
 
     // 4. Those the projector reaches, the largest rectangle they could hold first.

@@ -46,6 +46,8 @@ struct WallConfig {
     WallShapeOptions shape;
     double noise_min = 0.5;       ///< the band follows the noise measured on the wall, within these
     double noise_max = 4.0;       ///< multiples of the model's (K&OE Kinect v1; ToF is better, stereo worse)
+    double local_cap = 1.0;       ///< the wall's noise is at most this many times the local noise (or the model's)
+    int noise_offset_px = 8;      ///< px between the readings whose differences measure the noise (stereo noise is correlated over ~4 px)
 };
 
 /// Default method, stage 3: where on a plane the camera saw free wall (paper 3.2.2).
