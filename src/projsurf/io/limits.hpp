@@ -31,6 +31,10 @@ constexpr std::uint64_t kMaxSequenceFrames = 100000;
 constexpr std::uint64_t kMaxBagMessages = 100000;
 constexpr std::uint64_t kMaxBagRecordBytes = std::uint64_t{512} << 20;
 constexpr std::uint64_t kMaxBagHeaderBytes = std::uint64_t{1} << 20;
+/// Calibration captures: numbered 0..99, at most 2^26 pixels in all (about 5 bytes each
+/// once decoded: 64 captures of 1280 x 720, 32 of 1920 x 1080).
+constexpr std::uint64_t kMaxCaptures = 100;
+constexpr std::uint64_t kMaxCapturePixels = std::uint64_t{1} << 26;
 /// Bytes of a YAML file (camera, calibration): 64 KiB; of a detection JSON file: 1 MiB;
 /// nesting depth of either: 64.
 constexpr std::uint64_t kMaxYamlBytes = std::uint64_t{64} << 10;
