@@ -40,7 +40,11 @@ private:
     bool onDetect(std_srvs::Trigger::Request &req, std_srvs::Trigger::Response &res);
 
     void takeCloud(Cloud cloud, const std_msgs::Header &header);
+    /// A cloud (or depth image) that cannot be used: kept out, and remembered for ~detect.
+    void rejectCloud(const std::string &what, const std::string &problem, const std_msgs::Header &header);
+    /// ~detect's answer; it says when the latest cloud was rejected (and answers from the last valid one).
     Outcome detectOnce();
+    Outcome detectOnValidCloud();
     void runContinuous();
     /// The detector for this cloud: gravity from tf2 when ~gravity_frame is set.
     SurfaceDetector &detectorFor(const std_msgs::Header &header, std::string &problem);
@@ -64,6 +68,7 @@ private:
     Cloud cloud_;                  ///< latest cloud
     std_msgs::Header cloud_header_;
     bool have_cloud_ = false;
+    std::string rejected_;         ///< why the latest cloud was rejected; empty when it was used
     sensor_msgs::CameraInfoConstPtr camera_info_;
     std::unique_ptr<SurfaceDetector> detector_;
     std::unique_ptr<ContinuousMode> continuous_;

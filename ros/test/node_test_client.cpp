@@ -248,6 +248,39 @@ TEST_F(NodeTest, DetectServiceSaysWhyWhenThereIsNoWall) {
     EXPECT_TRUE(std::all_of(fb.data.begin(), fb.data.end(), [](std::uint8_t b) { return b == 0; }));
 }
 
+TEST_F(NodeTest, DetectServiceSaysWhenTheLatestCloudWasRejected) {
+    const std::string ns = env("PROJSURF_ONESHOT_NS", "/oneshot");
+    ros::Publisher pub = nh_->advertise<sensor_msgs::PointCloud2>(ns + "/points", 1, true);
+    const std::string service = ns + "/projsurf/detect";
+    ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(60.0)));
+    ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0));
+    pub.publish(ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", ros::Time::now())));
+    std_srvs::Trigger call;
+    ASSERT_TRUE(waitFor([&] {
+        call = std_srvs::Trigger();
+        return ros::service::call(service, call) && call.response.success;
+    }, 20.0)) << call.response.message;
+    // A hostile cloud: its z field is gone (renamed), so it cannot be used.
+    sensor_msgs::PointCloud2 bad = ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", ros::Time(4242.5)));
+    for (auto &f : bad.fields)
+        if (f.name == "z") f.name = "q";
+    pub.publish(bad);
+    ASSERT_TRUE(waitFor([&] {
+        call = std_srvs::Trigger();
+        return ros::service::call(service, call) && call.response.message.find("rejected") != std::string::npos;
+    }, 20.0)) << "~detect never said the latest cloud was rejected: " << call.response.message;
+    EXPECT_NE(call.response.message.find("4242.500"), std::string::npos) << call.response.message;  // which one
+    EXPECT_NE(call.response.message.find("'z'"), std::string::npos) << "and why: " << call.response.message;
+    EXPECT_NE(call.response.message.find("last valid cloud"), std::string::npos) << call.response.message;
+    // A good cloud again: the answer is about it, nothing rejected.
+    pub.publish(ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", ros::Time::now())));
+    ASSERT_TRUE(waitFor([&] {
+        call = std_srvs::Trigger();
+        return ros::service::call(service, call) && call.response.message.find("rejected") == std::string::npos;
+    }, 20.0)) << call.response.message;
+    EXPECT_TRUE(call.response.success) << call.response.message;
+}
+
 TEST_F(NodeTest, DepthImageInputAndThePictureFromTheImageTopic) {
     const std::string ns = env("PROJSURF_ONESHOT_NS", "/oneshot");
     Inbox<sensor_msgs::Image> fbs;
