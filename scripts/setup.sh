@@ -8,6 +8,7 @@ PACKAGES=(
   cmake make g++ ccache pkg-config
   libeigen3-dev libopencv-dev libpcl-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev xvfb x11-apps
+  clang libclang-rt-14-dev libbz2-dev
 )
 # ROS 1 (Debian's packages) for the node in ros/; see ros/README.md.
 ROS_PACKAGES=(libroscpp-dev libstd-msgs-dev libstd-srvs-dev libsensor-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libtf2-ros-dev librosbag-storage-dev python3-rosmaster python3-roslaunch)
