@@ -10,6 +10,7 @@ PACKAGES=(
   libgtest-dev libbenchmark-dev xvfb x11-apps
   pybind11-dev python3-dev python3-numpy python3-pytest
   python3-open3d  # only for the Python test that passes an Open3D cloud; projsurf does not need it
+  clang libclang-rt-14-dev libbz2-dev
 )
 # ROS 1 (Debian's packages) for the node in ros/; see ros/README.md.
 ROS_PACKAGES=(libroscpp-dev libstd-msgs-dev libstd-srvs-dev libsensor-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libtf2-ros-dev librosbag-storage-dev python3-rosmaster python3-roslaunch)

@@ -79,7 +79,7 @@ void ProjsurfNode::onDepth(const sensor_msgs::ImageConstPtr &msg) {
     try {
         takeCloud(toCloud(*msg, *camera_info_), msg->header);
     } catch (const InputError &e) {
-        ROS_WARN_THROTTLE(5.0, "projsurf_node: ignoring depth image: %s", e.what());
+        rejectCloud("depth image", e.what(), msg->header);
     }
 }
 
@@ -87,14 +87,22 @@ void ProjsurfNode::onCloud(const sensor_msgs::PointCloud2ConstPtr &msg) {
     try {
         takeCloud(toCloud(*msg), msg->header);
     } catch (const InputError &e) {
-        ROS_WARN_THROTTLE(5.0, "projsurf_node: ignoring cloud: %s", e.what());
+        rejectCloud("cloud", e.what(), msg->header);
     }
+}
+
+void ProjsurfNode::rejectCloud(const std::string &what, const std::string &problem, const std_msgs::Header &header) {
+    ROS_WARN_THROTTLE(5.0, "projsurf_node: ignoring %s: %s", what.c_str(), problem.c_str());
+    char stamp[64];
+    std::snprintf(stamp, sizeof stamp, "%.3f", header.stamp.toSec());
+    rejected_ = "the latest " + what + " (stamp " + stamp + ") was rejected: " + problem;
 }
 
 void ProjsurfNode::takeCloud(Cloud cloud, const std_msgs::Header &header) {
     cloud_ = std::move(cloud);
     cloud_header_ = header;
     have_cloud_ = true;
+    rejected_.clear();
     if (continuous_) runContinuous();
 }
 
@@ -162,8 +170,21 @@ ProjsurfNode::Outcome ProjsurfNode::detectOnce() {
     Outcome out;
     if (!have_cloud_) {
         out.message = "no cloud received yet on " + cloud_sub_.getTopic() + " (or " + depth_sub_.getTopic() + ")";
+        if (!rejected_.empty()) out.message = "no valid cloud received yet: " + rejected_;
         return out;
     }
+    out = detectOnValidCloud();
+    // Say so when this answer is not about the latest cloud.
+    if (!rejected_.empty()) {
+        char stamp[64];
+        std::snprintf(stamp, sizeof stamp, "%.3f", cloud_header_.stamp.toSec());
+        out.message = rejected_ + "; this answer is from the last valid cloud (stamp " + stamp + "): " + out.message;
+    }
+    return out;
+}
+
+ProjsurfNode::Outcome ProjsurfNode::detectOnValidCloud() {
+    Outcome out;
     std::string tf_problem;
     const Eigen::Vector3d gravity = gravityFor(cloud_header_, tf_problem);
     if (!tf_problem.empty()) ROS_WARN("projsurf_node: %s", tf_problem.c_str());

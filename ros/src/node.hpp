@@ -40,7 +40,11 @@ private:
     bool onDetect(std_srvs::Trigger::Request &req, std_srvs::Trigger::Response &res);
 
     void takeCloud(Cloud cloud, const std_msgs::Header &header);
+    /// A cloud (or depth image) that cannot be used: kept out, and remembered for ~detect.
+    void rejectCloud(const std::string &what, const std::string &problem, const std_msgs::Header &header);
+    /// ~detect's answer; it says when the latest cloud was rejected (and answers from the last valid one).
     Outcome detectOnce();
+    Outcome detectOnValidCloud();
     void runContinuous();
     /// Gravity for this cloud (camera frame): from tf2 when ~gravity_frame is set, from the
     /// floor with ~gravity auto, else ~gravity.
@@ -65,6 +69,7 @@ private:
     Cloud cloud_;                  ///< latest cloud
     std_msgs::Header cloud_header_;
     bool have_cloud_ = false;
+    std::string rejected_;         ///< why the latest cloud was rejected; empty when it was used
     sensor_msgs::CameraInfoConstPtr camera_info_;
     SurfaceDetector detector_;  ///< one for the stream: its buffers are reused frame to frame
     std::unique_ptr<ContinuousMode> continuous_;

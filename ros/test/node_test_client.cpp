@@ -248,6 +248,39 @@ TEST_F(NodeTest, DetectServiceSaysWhyWhenThereIsNoWall) {
     EXPECT_TRUE(std::all_of(fb.data.begin(), fb.data.end(), [](std::uint8_t b) { return b == 0; }));
 }
 
+TEST_F(NodeTest, DetectServiceSaysWhenTheLatestCloudWasRejected) {
+    const std::string ns = env("PROJSURF_ONESHOT_NS", "/oneshot");
+    ros::Publisher pub = nh_->advertise<sensor_msgs::PointCloud2>(ns + "/points", 1, true);
+    const std::string service = ns + "/projsurf/detect";
+    ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(60.0)));
+    ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0));
+    pub.publish(ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", ros::Time::now())));
+    std_srvs::Trigger call;
+    ASSERT_TRUE(waitFor([&] {
+        call = std_srvs::Trigger();
+        return ros::service::call(service, call) && call.response.success;
+    }, 20.0)) << call.response.message;
+    // A hostile cloud: its z field is gone (renamed), so it cannot be used.
+    sensor_msgs::PointCloud2 bad = ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", ros::Time(4242.5)));
+    for (auto &f : bad.fields)
+        if (f.name == "z") f.name = "q";
+    pub.publish(bad);
+    ASSERT_TRUE(waitFor([&] {
+        call = std_srvs::Trigger();
+        return ros::service::call(service, call) && call.response.message.find("rejected") != std::string::npos;
+    }, 20.0)) << "~detect never said the latest cloud was rejected: " << call.response.message;
+    EXPECT_NE(call.response.message.find("4242.500"), std::string::npos) << call.response.message;  // which one
+    EXPECT_NE(call.response.message.find("'z'"), std::string::npos) << "and why: " << call.response.message;
+    EXPECT_NE(call.response.message.find("last valid cloud"), std::string::npos) << call.response.message;
+    // A good cloud again: the answer is about it, nothing rejected.
+    pub.publish(ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", ros::Time::now())));
+    ASSERT_TRUE(waitFor([&] {
+        call = std_srvs::Trigger();
+        return ros::service::call(service, call) && call.response.message.find("rejected") == std::string::npos;
+    }, 20.0)) << call.response.message;
+    EXPECT_TRUE(call.response.success) << call.response.message;
+}
+
 TEST_F(NodeTest, DepthImageInputAndThePictureFromTheImageTopic) {
     const std::string ns = env("PROJSURF_ONESHOT_NS", "/oneshot");
     Inbox<sensor_msgs::Image> fbs;
@@ -487,6 +520,31 @@ TEST_F(Bag, EveryCloudOfTheTopicComesBackInOrder) {
             same += (got[i].points[k] == clouds_[i].points[k]) ||
                     (!isFinite(got[i].points[k]) && !isFinite(clouds_[i].points[k]));
         EXPECT_EQ(same, got[i].size()) << "message " << i;
+    }
+}
+
+TEST_F(Bag, CompressedChunksReadTheSame) {
+    // projsurf's own bag reader decompresses bz2 and lz4 chunks (rosbag's writer makes them).
+    for (const auto compression : {rosbag::compression::BZ2, rosbag::compression::LZ4}) {
+        const std::string path = dir_ + "/compressed.bag";
+        {
+            rosbag::Bag bag(path, rosbag::bagmode::Write);
+            bag.setCompression(compression);
+            for (std::size_t i = 0; i < clouds_.size(); ++i) {
+                const ros::Time t(100.0 + i);
+                bag.write("/camera/points", t, ros_node::toPointCloud2(clouds_[i], header("camera_optical", t)));
+            }
+        }
+        std::vector<Cloud> got;
+        forEachBagCloud(path, "/camera/points", [&](const Cloud &c, const BagCloudInfo &) { got.push_back(c); });
+        ASSERT_EQ(got.size(), clouds_.size()) << "compression " << static_cast<int>(compression);
+        for (std::size_t i = 0; i < got.size(); ++i) {
+            ASSERT_EQ(got[i].size(), clouds_[i].size());
+            std::size_t same = 0;
+            for (std::size_t k = 0; k < got[i].size(); ++k)
+                same += (got[i].points[k] == clouds_[i].points[k]) || (!isFinite(got[i].points[k]) && !isFinite(clouds_[i].points[k]));
+            EXPECT_EQ(same, got[i].size()) << "message " << i << ", compression " << static_cast<int>(compression);
+        }
     }
 }
 

@@ -15,6 +15,7 @@
 #include "projsurf/io/calibration_report.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/limits.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/render.hpp"
 
@@ -110,9 +111,18 @@ void run(const CalibrateOptions &o) {
     for (const auto &entry : fs::directory_iterator(dir, ec)) {
         std::smatch m;
         const std::string name = entry.path().filename().string();
-        if (std::regex_match(name, m, pattern)) found[std::stoi(m[1])] = name;
+        if (!std::regex_match(name, m, pattern)) continue;
+        const std::string number = m[1];
+        if (number.size() > 6 || std::stoi(number) >= static_cast<int>(limits::kMaxCaptures))
+            throw InputError((dir / name).string(), "capture number out of range (captures are numbered 0.." +
+                                                        std::to_string(limits::kMaxCaptures - 1) + ")");
+        found[std::stoi(number)] = name;
     }
     const int n = static_cast<int>(found.size());
+    if (static_cast<std::uint64_t>(n) * camera.width * camera.height > limits::kMaxCapturePixels)
+        throw InputError(o.captures, std::to_string(n) + " captures of " + std::to_string(camera.width) + " x " +
+                                         std::to_string(camera.height) + " pixels exceed the limit of " +
+                                         std::to_string(limits::kMaxCapturePixels) + " pixels in all");
     for (int k = 0; k < n; ++k)
         if (!found.count(k))
             throw InputError((dir / ("capture_" + std::to_string(k) + "_rgb.png")).string(),
@@ -129,8 +139,9 @@ void run(const CalibrateOptions &o) {
         const std::string rgb = (dir / ("capture_" + std::to_string(k) + "_rgb.png")).string();
         const std::string dep = (dir / ("capture_" + std::to_string(k) + "_depth.png")).string();
         CaptureImages c;
-        c.color = readImage(rgb, cv::IMREAD_COLOR);
-        c.depth = readImage(dep, cv::IMREAD_UNCHANGED);
+        const std::uint64_t pixels = static_cast<std::uint64_t>(camera.width) * camera.height;  // as camera.yaml says
+        c.color = readImage(rgb, cv::IMREAD_COLOR, pixels);
+        c.depth = readImage(dep, cv::IMREAD_UNCHANGED, pixels);
         if (c.depth.type() != CV_16UC1) throw InputError(dep, "expected a 16-bit single-channel depth PNG");
         const std::string size = std::to_string(camera.width) + "x" + std::to_string(camera.height);
         if (c.color.cols != camera.width || c.color.rows != camera.height)

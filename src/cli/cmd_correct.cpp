@@ -16,6 +16,8 @@
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/limits.hpp"
+#include "projsurf/io/quiet_stderr.hpp"
 #include "projsurf/io/video_files.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
@@ -53,47 +55,46 @@ std::string keystoneJson(const Keystone &k, const std::string &method) {
     return j.dump(2) + "\n";
 }
 
-/// Progress on stderr: on a terminal one line redrawn in place, [#####.....] 50% 120/240 frames;
-/// in a log, a line every 10%.
+/// Progress. On a terminal: one stderr line redrawn in place, [#####.....] 50% 120/240
+/// frames, erased when the run fails (so the error is the one line left). In a log: a line
+/// every 10% on stdout (stderr holds only the failure's one line).
 class Progress {
   public:
     explicit Progress(long total) : total_(total), tty_(::isatty(2) != 0) {}
+    ~Progress() {
+        if (tty_ && drawn_ && !finished_) std::cerr << "\r" << std::string(60, ' ') << "\r" << std::flush;
+    }
     void update(long done) {
+        if (!tty_) {
+            if (total_ <= 0) return;
+            const int pct = static_cast<int>(std::min<long>(100, 100 * done / total_));
+            if (pct / 10 == last_ / 10 && last_ >= 0) return;
+            std::cout << "correct: " << pct << "% (" << done << "/" << total_ << " frames)\n";
+            last_ = pct;
+            return;
+        }
+        drawn_ = true;
         if (total_ <= 0) {
-            if (tty_ && done % 25 == 0) std::cerr << "\rcorrect: " << done << " frames" << std::flush;
+            if (done % 25 == 0) std::cerr << "\rcorrect: " << done << " frames" << std::flush;
             return;
         }
         const int pct = static_cast<int>(std::min<long>(100, 100 * done / total_));
-        if (tty_) {
-            if (pct == last_) return;
-            const int bar = pct / 4;
-            std::cerr << "\rcorrect: [" << std::string(bar, '#') << std::string(25 - bar, '.') << "] " << pct << "% "
-                      << done << "/" << total_ << " frames" << std::flush;
-        } else {
-            if (pct / 10 == last_ / 10 && last_ >= 0) return;
-            std::cerr << "correct: " << pct << "% (" << done << "/" << total_ << " frames)\n";
-        }
+        if (pct == last_) return;
+        const int bar = pct / 4;
+        std::cerr << "\rcorrect: [" << std::string(bar, '#') << std::string(25 - bar, '.') << "] " << pct << "% " << done
+                  << "/" << total_ << " frames" << std::flush;
         last_ = pct;
     }
     void finish(long done) {
+        finished_ = true;
         if (tty_) std::cerr << "\rcorrect: " << done << " frames done" << std::string(40, ' ') << "\n";
     }
 
   private:
     long total_;
     bool tty_;
+    bool drawn_ = false, finished_ = false;
     int last_ = -1;
-};
-
-/// Removes the temporary outputs unless released (never a partial output).
-struct TempFiles {
-    std::vector<std::string> paths;
-    bool keep = false;
-    ~TempFiles() {
-        if (keep) return;
-        std::error_code ec;
-        for (const auto &p : paths) fs::remove(p, ec);
-    }
 };
 
 Keystone keystoneFor(const Projector &projector, const DetectionFile &det, cv::Size picture,
@@ -105,78 +106,47 @@ Keystone keystoneFor(const Projector &projector, const DetectionFile &det, cv::S
 
 void runVideo(const CorrectOptions &o, const std::string &input, const Projector &projector,
               const DetectionFile &det) {
-    cv::VideoCapture cap = openVideoInput(input);
+    FrameSource source(input);
     cv::Mat frame;
-    bool first = false;
-    try {
-        first = cap.read(frame) && !frame.empty();
-    } catch (const cv::Exception &) {
-    }
-    if (!first) throw InputError(input, "no frame could be read");
-    if (frame.channels() == 1) cv::cvtColor(frame, frame, cv::COLOR_GRAY2BGR);
-    if (frame.channels() == 4) cv::cvtColor(frame, frame, cv::COLOR_BGRA2BGR);
+    if (!source.read(frame)) throw InputError(input, "no frame could be read");
     const Keystone k = keystoneFor(projector, det, frame.size(), o.detection);
-    double fps = o.fps > 0 ? o.fps : cap.get(cv::CAP_PROP_FPS);
+    double fps = o.fps > 0 ? o.fps : source.fps();
     if (!(fps > 0 && fps < 1000)) fps = 25.0;  // image sequences carry no rate
-    const long total = static_cast<long>(cap.get(cv::CAP_PROP_FRAME_COUNT));
 
-    TempFiles temps;
+    // Every output (the video or the frames, and the JSON) is written beside its target and
+    // renamed only when all of them are complete.
+    OutputGroup outputs;
     const bool sequence_out = isFramePattern(o.out);
     cv::VideoWriter writer;
-    std::string tmp_video;
-    std::vector<std::pair<std::string, std::string>> renames;  // tmp -> final
-    if (!sequence_out) {
-        const fs::path out(o.out);
-        tmp_video = (out.parent_path() / ("." + out.stem().string() + ".tmp-" + std::to_string(::getpid()) +
-                                          out.extension().string()))
-                        .string();
-        temps.paths.push_back(tmp_video);
-        writer = openVideoOutput(tmp_video, o.out, fps, k.framebuffer);
-    }
-    Progress progress(total);
+    if (!sequence_out) writer = openVideoOutput(outputs.reserve(o.out), o.out, fps, k.framebuffer);
+    Progress progress(source.count());
     long n = 0;
     KeystoneWarper warper(k);  // one keystone for every frame: source positions worked out once
     cv::Mat fb;
     do {
-        if (frame.channels() == 1) cv::cvtColor(frame, frame, cv::COLOR_GRAY2BGR);
-        if (frame.channels() == 4) cv::cvtColor(frame, frame, cv::COLOR_BGRA2BGR);
         if (frame.size() != k.picture)
-            throw InputError(input, "frame " + std::to_string(n) + " has a different size from the first frame");
-        if (frame.depth() != CV_8U) frame.convertTo(frame, CV_8U, 1.0 / 257.0);
+            throw InputError(source.current(), "frame " + std::to_string(n) + " has a different size from the first frame");
         warper.warp(frame, fb);
         if (sequence_out) {
+            if (static_cast<std::uint64_t>(n) >= limits::kMaxSequenceFrames)
+                throw InputError(input, "more than " + std::to_string(limits::kMaxSequenceFrames) + " frames");
             char name[4096];
             std::snprintf(name, sizeof name, o.out.c_str(), static_cast<int>(n));
-            const std::string tmp =
-                std::string(name) + ".tmp-" + std::to_string(::getpid()) + fs::path(name).extension().string();
-            temps.paths.push_back(tmp);
-            bool ok = false;
-            try {
-                ok = cv::imwrite(tmp, fb);
-            } catch (const cv::Exception &) {
-            }
-            if (!ok) throw InputError(name, "cannot write this frame");
-            renames.emplace_back(tmp, name);
+            outputs.addImage(name, fb);
         } else {
+            QuietStderr quiet;
             writer.write(fb);
         }
         ++n;
         progress.update(n);
-    } while (cap.read(frame) && !frame.empty());
-    progress.finish(n);
+    } while (source.read(frame));
     if (!sequence_out) {
+        QuietStderr quiet;
         writer.release();
-        renames.emplace_back(tmp_video, o.out);
     }
-    if (!o.json.empty()) {
-        writeFileAtomic(o.json, keystoneJson(k, "eq7"));
-    }
-    for (const auto &[tmp, final_path] : renames) {
-        std::error_code ec;
-        fs::rename(tmp, final_path, ec);
-        if (ec) throw InputError(final_path, "cannot write: " + ec.message());
-    }
-    temps.keep = true;
+    if (!o.json.empty()) outputs.addFile(o.json, keystoneJson(k, "eq7"));
+    outputs.commit();
+    progress.finish(n);
     std::cout << "projsurf correct: " << n << " frames -> " << o.out << "\n";
 }
 
@@ -194,24 +164,24 @@ void run(const CorrectOptions &o) {
         if (isFramePattern(o.out)) {
             if (!isValidFramePattern(o.out))
                 throw InputError(o.out, "an output pattern needs exactly one frame-number field such as %04d");
-            if (!cv::haveImageWriter(o.out)) throw InputError(o.out, "cannot write images with this extension");
+            requireImageWriter(o.out);
         } else if (videoFourcc(o.out) == 0) {
             throw InputError(o.out, "a corrected video needs a .avi, .mkv, .mp4 or .mov output (or a %04d.png pattern)");
         }
         runVideo(o, input, projector, det);
         return;
     }
-    bool can_write = false;
-    try {
-        can_write = cv::haveImageWriter(o.out);
-    } catch (const cv::Exception &) {
-    }
-    if (!can_write) throw InputError(o.out, "cannot write an image with this extension (use .png)");
+    requireWritableFile(o.out);
+    requireImageWriter(o.out);
+    if (!o.json.empty()) requireWritableFile(o.json);
     const cv::Mat picture = readImage(input, cv::IMREAD_COLOR);
     const Keystone k = keystoneFor(projector, det, picture.size(), o.detection);
     const cv::Mat fb = warpToFramebuffer(picture, k);
-    writeImageAtomic(o.out, fb);
-    if (!o.json.empty()) writeFileAtomic(o.json, keystoneJson(k, "eq7"));
+    // Both outputs, or neither.
+    OutputGroup outputs;
+    outputs.addImage(o.out, fb);
+    if (!o.json.empty()) outputs.addFile(o.json, keystoneJson(k, "eq7"));
+    outputs.commit();
 }
 
 }  // namespace

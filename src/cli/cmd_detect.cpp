@@ -26,6 +26,17 @@ struct DetectOptions {
     DetectorConfig config;
 };
 
+/// detectSurface, with a library failure on this cloud (an OpenCV assertion) reported as
+/// a problem of the input file, on one line.
+Detection detectChecked(SurfaceDetector &detector, const Cloud &cloud, const Eigen::Vector3d &gravity,
+                        const std::string &source) {
+    try {
+        return detector.detect(cloud, gravity);
+    } catch (const cv::Exception &e) {
+        throw InputError(source, "cannot be processed (" + e.func + ": " + e.err + ")");
+    }
+}
+
 /// --bag: one detection per cloud of the topic, one JSON object per line (JSON Lines), each
 /// with a "bag" key (index, stamp, frame_id). With --json the file is written once all
 /// messages were read (never a partial file); without, lines go to stdout as they come.
@@ -38,7 +49,7 @@ void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &
         Eigen::Vector3d gravity = base_gravity;
         if (auto_gravity)
             if (const auto g = estimateGravityFromFloor(cloud, gravity)) gravity = g->gravity;
-        const Detection det = detector.detect(cloud, gravity);
+        const Detection det = detectChecked(detector, cloud, gravity, o.bag + ":" + o.topic + "#" + std::to_string(info.index));
         nlohmann::json j = detectionToJson(det, cfg);
         j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", o.topic}};
         found += det.found ? 1 : 0;
@@ -46,7 +57,9 @@ void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &
         else lines += j.dump() + "\n";
     });
     if (!o.json.empty()) {
-        writeFileAtomic(o.json, lines);
+        OutputGroup outputs;
+        outputs.addFile(o.json, lines);
+        outputs.commit();
         std::printf("%zu clouds on %s: %zu with a surface, %zu without\n", n, o.topic.c_str(), found, n - found);
     }
 }
@@ -75,7 +88,8 @@ void run(const DetectOptions &o) {
     if (!o.gravity.empty() && !auto_gravity) gravity = parseVector3("--gravity", o.gravity);
     if (!o.aspect.empty()) cfg.aspect = parseAspect("--aspect", o.aspect);
     for (const auto &out : {o.json, o.overlay})
-        if (!out.empty()) requireWritableLocation(out);
+        if (!out.empty()) requireWritableFile(out);
+    if (!o.overlay.empty()) requireImageWriter(o.overlay);
 
     const Projector projector = readCalibration(o.calib);
     if (!o.bag.empty()) return runBag(o, cfg, projector, gravity, auto_gravity);
@@ -98,12 +112,16 @@ void run(const DetectOptions &o) {
     if (auto_gravity) {
         // No IMU: take "down" from the floor when one is in view, else keep a level camera.
         if (const auto g = estimateGravityFromFloor(cloud, gravity)) gravity = g->gravity;
-        else std::fprintf(stderr, "projsurf: note: --gravity auto found no floor; assuming a level camera\n");
+        else std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
     }
-    const Detection det = detectSurface(cloud, projector, cfg, gravity);
+    SurfaceDetector detector(projector, cfg);
+    const Detection det = detectChecked(detector, cloud, gravity, o.cloud.empty() ? o.depth : o.cloud);
     const nlohmann::json j = detectionToJson(det, cfg);
-    if (!o.json.empty()) writeFileAtomic(o.json, j.dump(2) + "\n");
-    if (!o.overlay.empty()) writeImageAtomic(o.overlay, renderOverlay(cloud, det, cfg, camera.get(), color));
+    // Both outputs, or neither: written beside their targets, renamed once both are there.
+    OutputGroup outputs;
+    if (!o.json.empty()) outputs.addFile(o.json, j.dump(2) + "\n");
+    if (!o.overlay.empty()) outputs.addImage(o.overlay, renderOverlay(cloud, det, cfg, camera.get(), color));
+    outputs.commit();
     if (o.json.empty()) {
         std::cout << j.dump(2) << "\n";
     } else if (det.found) {

@@ -1,6 +1,8 @@
 // projsurf: find where a robot's projector can show a picture on a wall, and warp the
 // picture so it appears undistorted there. See README.md and the contract (INTERFACE.md).
 #include <cstring>
+#include <new>
+#include <opencv2/core.hpp>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -28,6 +30,12 @@ std::vector<std::string> glueNegativeValues(int argc, char **argv) {
         out.push_back(a);
     }
     return out;
+}
+
+/// A message on one line: line breaks become "; ".
+std::string oneLine(std::string s) {
+    for (std::size_t i; (i = s.find_first_of("\r\n")) != std::string::npos;) s.replace(i, 1, "; ");
+    return s;
 }
 
 }  // namespace
@@ -58,8 +66,15 @@ int main(int argc, char **argv) {
     } catch (const projsurf::InputError &e) {
         std::cerr << "projsurf: error: " << e.what() << "\n";
         return 2;
+    } catch (const cv::Exception &e) {
+        // OpenCV's what() spans several lines: its one-line message only.
+        std::cerr << "projsurf: error: " << oneLine(e.func + ": " + e.err) << "\n";
+        return 2;
+    } catch (const std::bad_alloc &) {
+        std::cerr << "projsurf: error: out of memory\n";
+        return 2;
     } catch (const std::exception &e) {
-        std::cerr << "projsurf: error: " << e.what() << "\n";
+        std::cerr << "projsurf: error: " << oneLine(e.what()) << "\n";
         return 2;
     }
     return 0;

@@ -20,6 +20,10 @@ std::uint64_t key(const cv::Point2f &p) {
     return (static_cast<std::uint64_t>(x) << 32) | y;
 }
 
+/// Largest bounding-box side the concave hull works on, in the points' unit (metres): far
+/// beyond any wall a projector can reach, well inside float and int range.
+constexpr double kMaxConcaveExtent = 1e6;
+
 }  // namespace
 
 std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> pts) {
@@ -55,6 +59,9 @@ std::vector<Segment2> concaveHullEdges(const std::vector<Eigen::Vector2d> &point
         lo = lo.cwiseMin(p);
         hi = hi.cwiseMax(p);
     }
+    // Subdiv2D works in float, and in an int rectangle: beyond this extent (far or
+    // non-finite points) there is no usable concave hull (and the casts would overflow).
+    if (!((hi - lo).allFinite() && (hi - lo).maxCoeff() < kMaxConcaveExtent)) return {};
     // Subdiv2D works in float; shift to the bounding box so precision is kept.
     const cv::Rect2f box(0.0f, 0.0f, static_cast<float>(hi.x() - lo.x()) + 1.0f, static_cast<float>(hi.y() - lo.y()) + 1.0f);
     cv::Subdiv2D subdiv(cv::Rect(0, 0, static_cast<int>(std::ceil(box.width)) + 1, static_cast<int>(std::ceil(box.height)) + 1));

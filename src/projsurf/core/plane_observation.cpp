@@ -1,5 +1,6 @@
 #include "projsurf/core/plane_observation.hpp"
 #include "projsurf/core/target_clones.hpp"
+#include "projsurf/core/clamp_to_int.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -80,10 +81,14 @@ void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane
             const float fc = beyond ? tc : sc, fw = beyond ? tw : sw;  // off it: camera or projector ray
             const float bc = on ? ac : fc, bw = on ? aw : fw;
             const std::int32_t bin_in = (on | beyond | between) & (bc >= 0.0f) & (bc < cols) & (bw >= 0.0f) & (bw < rows);
-            // Truncation is floor here: both coordinates are known to be >= 0.
-            const std::int32_t bin_cell = static_cast<std::int32_t>(bw) * ncols + static_cast<std::int32_t>(bc) +
+            // Truncation is floor here: both coordinates are known to be >= 0 when used. They
+            // are clamped into the raster first (NaN -> 0), so that the conversion is defined
+            // for the points the selects below discard too (far, NaN); kept values are unchanged.
+            const float kbc = std::min(cols, std::max(0.0f, bc)), kbw = std::min(rows, std::max(0.0f, bw));
+            const float ktc = std::min(cols, std::max(0.0f, tc)), ktw = std::min(rows, std::max(0.0f, tw));
+            const std::int32_t bin_cell = static_cast<std::int32_t>(kbw) * ncols + static_cast<std::int32_t>(kbc) +
                                           (beyond ? cells : 0) + (between ? 2 * cells : 0);
-            const std::int32_t ray_cell = static_cast<std::int32_t>(tw) * ncols + static_cast<std::int32_t>(tc);
+            const std::int32_t ray_cell = static_cast<std::int32_t>(ktw) * ncols + static_cast<std::int32_t>(ktc);
             bin[i] = bin_in ? bin_cell : 3 * cells;
             ray[i] = ray_in ? ray_cell : cells;
             off[i] = (std::abs(r) > margin) & ray_in;
@@ -132,10 +137,10 @@ struct CellRange {
 
 CellRange cellsInside(const RasterFrame &raster, const Eigen::Vector2d &lo, const Eigen::Vector2d &hi) {
     const double cell = raster.cell;
-    return {std::max(0, static_cast<int>(std::ceil((lo.x() - raster.top_left.x()) / cell - 0.5))),
-            std::min(raster.cols - 1, static_cast<int>(std::floor((hi.x() - raster.top_left.x()) / cell - 0.5))),
-            std::max(0, static_cast<int>(std::ceil((raster.top_left.y() - hi.y()) / cell - 0.5))),
-            std::min(raster.rows - 1, static_cast<int>(std::floor((raster.top_left.y() - lo.y()) / cell - 0.5)))};
+    return {clampToInt(std::ceil((lo.x() - raster.top_left.x()) / cell - 0.5), 0, raster.cols),
+            clampToInt(std::floor((hi.x() - raster.top_left.x()) / cell - 0.5), -1, raster.cols - 1),
+            clampToInt(std::ceil((raster.top_left.y() - hi.y()) / cell - 0.5), 0, raster.rows),
+            clampToInt(std::floor((raster.top_left.y() - lo.y()) / cell - 0.5), -1, raster.rows - 1)};
 }
 
 }  // namespace
@@ -186,6 +191,7 @@ std::vector<int> offPlanePoints(const PointGrid &grid, const cv::Rect &box, cons
             const float tc = t * (r.x() * px + r.y() * py + r.z() * pz) + col0;
             const float tw = t * (u.x() * px + u.y() * py + u.z() * pz) + row0;
             if (!(t > 0.0f) || !(tc >= 0.0f) || !(tw >= 0.0f)) continue;
+            if (!(tc < static_cast<float>(raster.cols)) || !(tw < static_cast<float>(raster.rows))) continue;  // off the raster
             if (cells.contains(static_cast<int>(tw), static_cast<int>(tc))) out.push_back(grid.cloudIndex(gr, gc));
         }
     return out;

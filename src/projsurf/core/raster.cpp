@@ -3,14 +3,48 @@
 #include <algorithm>
 #include <cmath>
 
+#include "projsurf/core/clamp_to_int.hpp"
+
 namespace projsurf {
+namespace {
+
+/// Cells further than this from the grid's origin are clipped before drawing.
+constexpr double kFarCell = 1 << 20;
+
+/// Clips the segment a-b to the box [lo, hi] (Liang-Barsky); false when nothing is inside
+/// or an end is not finite.
+bool clipToBox(Eigen::Vector2d &a, Eigen::Vector2d &b, const Eigen::Vector2d &lo, const Eigen::Vector2d &hi) {
+    if (!a.allFinite() || !b.allFinite()) return false;
+    double t0 = 0.0, t1 = 1.0;
+    const Eigen::Vector2d d = b - a;
+    for (int k = 0; k < 2; ++k) {
+        const double p[2] = {-d[k], d[k]}, q[2] = {a[k] - lo[k], hi[k] - a[k]};
+        for (int s = 0; s < 2; ++s) {
+            if (p[s] == 0.0) {
+                if (q[s] < 0.0) return false;
+                continue;
+            }
+            const double r = q[s] / p[s];
+            if (p[s] < 0.0) t0 = std::max(t0, r);
+            else t1 = std::min(t1, r);
+        }
+    }
+    if (t0 > t1) return false;
+    const Eigen::Vector2d a0 = a;
+    a = a0 + t0 * d;
+    b = a0 + t1 * d;
+    return true;
+}
+
+}  // namespace
 
 RasterFrame makeRasterFrame(const Eigen::Vector2d &lo, const Eigen::Vector2d &hi, double cell, int max_cells) {
     RasterFrame f;
     f.cell = cell;
     f.top_left = {lo.x(), hi.y()};
-    f.cols = std::clamp(static_cast<int>(std::ceil((hi.x() - lo.x()) / cell)), 1, max_cells);
-    f.rows = std::clamp(static_cast<int>(std::ceil((hi.y() - lo.y()) / cell)), 1, max_cells);
+    // Clamped before converting: a far point (or NaN) must not overflow the int.
+    f.cols = clampToInt(std::ceil((hi.x() - lo.x()) / cell), 1, max_cells);
+    f.rows = clampToInt(std::ceil((hi.y() - lo.y()) / cell), 1, max_cells);
     return f;
 }
 
@@ -67,8 +101,8 @@ void fillPolygon(cv::Mat &grid, const RasterFrame &frame, const std::vector<Eige
         std::sort(xs.begin(), xs.end());
         uchar *row = grid.ptr<uchar>(r);
         for (std::size_t i = 0; i + 1 < xs.size(); i += 2) {
-            const int c0 = std::max(0, static_cast<int>(std::ceil(xs[i] - 0.5)));
-            const int c1 = std::min(grid.cols - 1, static_cast<int>(std::floor(xs[i + 1] - 0.5)));
+            const int c0 = clampToInt(std::ceil(xs[i] - 0.5), 0, grid.cols);
+            const int c1 = clampToInt(std::floor(xs[i + 1] - 0.5), -1, grid.cols - 1);
             for (int c = c0; c <= c1; ++c) row[c] = value;
         }
     }
@@ -104,11 +138,18 @@ std::vector<Eigen::Vector2d> insetConvexPolygon(const std::vector<Eigen::Vector2
 
 cv::Mat outlineMask(const RasterFrame &frame, const std::vector<Segment2> &edges) {
     cv::Mat grid = cv::Mat::zeros(frame.rows, frame.cols, CV_8UC1);
-    auto cellOf = [&](const Eigen::Vector2d &uv) {
-        const Eigen::Vector2d c = frame.toCell(uv);
+    auto cellOf = [&](const Eigen::Vector2d &c) {
         return Eigen::Vector2i(static_cast<int>(std::floor(c.x())), static_cast<int>(std::floor(c.y())));
     };
-    for (const auto &e : edges) drawLine(grid, cellOf(e[0]), cellOf(e[1]), 1);
+    for (const auto &e : edges) {
+        Eigen::Vector2d a = frame.toCell(e[0]), b = frame.toCell(e[1]);
+        // Edges far outside the grid (far points) are clipped to it first, so that the cell
+        // numbers fit an int and the line walk stays short; nearer ones are drawn as they are.
+        if (!(a.cwiseAbs().maxCoeff() <= kFarCell && b.cwiseAbs().maxCoeff() <= kFarCell) &&
+            !clipToBox(a, b, Eigen::Vector2d(-1.0, -1.0), Eigen::Vector2d(frame.cols + 1.0, frame.rows + 1.0)))
+            continue;
+        drawLine(grid, cellOf(a), cellOf(b), 1);
+    }
     fillOutsideRows(grid, 1);
     return grid;
 }

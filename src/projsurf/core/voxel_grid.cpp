@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <utility>
 
+#include "projsurf/core/clamp_to_int.hpp"
+
 namespace projsurf {
 
 std::vector<Point> voxelDownsample(const std::vector<Point> &points, double leaf) {
@@ -14,8 +16,12 @@ std::vector<Point> voxelDownsample(const std::vector<Point> &points, double leaf
     for (int i = 0; i < static_cast<int>(points.size()); ++i) {
         const Point &p = points[i];
         if (!isFinite(p)) continue;
-        // 21 bits per axis around an offset: +-1 M voxels, i.e. +-50 km at 5 cm.
-        auto k = [&](float v) { return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v * inv)) + (1 << 20)) & 0x1FFFFF; };
+        // 21 bits per axis around an offset: +-1 M voxels, i.e. +-50 km at 5 cm. The voxel
+        // number is clamped to +-2^40 before converting (a far point must not overflow).
+        auto k = [&](float v) {
+            const std::int64_t cell = clampToInt64(std::floor(v * inv), -(std::int64_t{1} << 40), std::int64_t{1} << 40);
+            return static_cast<std::uint64_t>(cell + (1 << 20)) & 0x1FFFFF;
+        };
         keyed.emplace_back((k(p.x()) << 42) | (k(p.y()) << 21) | k(p.z()), i);
     }
     std::sort(keyed.begin(), keyed.end());

@@ -16,6 +16,7 @@
 #include "projsurf/core/camera.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/limits.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace projsurf {
@@ -152,6 +153,9 @@ std::string readWholeFile(const std::string &path) {
     in.seekg(0, std::ios::end);
     const std::streamoff size = in.tellg();
     if (!in || size < 0) throw InputError(path, "cannot read the file");
+    if (static_cast<std::uint64_t>(size) > limits::kMaxCloudFileBytes)
+        throw InputError(path, "point-cloud file of " + std::to_string(size) + " bytes exceeds the limit of " +
+                                   std::to_string(limits::kMaxCloudFileBytes) + " bytes");
     in.seekg(0, std::ios::beg);
     std::string bytes(static_cast<std::size_t>(size), '\0');
     in.read(bytes.data(), size);
@@ -321,6 +325,9 @@ PcdHeader parsePcdHeader(const std::string &path, const std::string &bytes) {
         throw bad("POINTS " + std::to_string(points) + " does not match WIDTH x HEIGHT = " + std::to_string(h.width) + " x " +
                   std::to_string(h.height));
     h.points = wh;
+    if (h.points > limits::kMaxCloudPoints)
+        throw InputError(path, "cloud of " + std::to_string(h.points) + " points exceeds the limit of " +
+                                   std::to_string(limits::kMaxCloudPoints) + " points");
     return h;
 }
 
@@ -400,6 +407,10 @@ Cloud readPcd(const std::string &path, const std::string &bytes) {
             throw InputError(path, "corrupt binary_compressed data: uncompressed size " + std::to_string(raw) +
                                        " does not match " + std::to_string(h.points) + " points of " +
                                        std::to_string(point_size) + " bytes");
+        if (raw > limits::kMaxDecompressedBytes)
+            throw InputError(path, "binary_compressed data of " + std::to_string(raw) +
+                                       " uncompressed bytes exceeds the limit of " +
+                                       std::to_string(limits::kMaxDecompressedBytes) + " bytes");
         if (raw > compressed * kLzfMaxRatio)
             throw InputError(path, "corrupt binary_compressed data: " + std::to_string(compressed) +
                                        " compressed bytes cannot hold " + std::to_string(raw) + " bytes");
@@ -524,6 +535,9 @@ Cloud readPly(const std::string &path, const std::string &bytes) {
         xyz[a] = static_cast<int>(it - vertex.props.begin());
     }
     if (vertex.count == 0) throw InputError(path, "the cloud has zero points");
+    if (vertex.count > limits::kMaxCloudPoints)
+        throw InputError(path, "cloud of " + std::to_string(vertex.count) + " points exceeds the limit of " +
+                                   std::to_string(limits::kMaxCloudPoints) + " points");
     auto truncated = [&](const std::string &detail) {
         return InputError(path, "truncated data: the header promises " + std::to_string(vertex.count) + " vertices; " + detail);
     };
@@ -635,13 +649,14 @@ Cloud readCloud(const std::string &path) {
     if (bytes.empty()) throw InputError(path, "empty file");
     Cloud cloud = ext == ".pcd" ? readPcd(path, bytes) : readPly(path, bytes);
     if (cloud.points.empty()) throw InputError(path, "the cloud has zero points");
-    if (countFinite(cloud) == 0) throw InputError(path, "all points are NaN (no finite point in the cloud)");
+    // A cloud whose points are all NaN is a valid frame (NaN points are allowed): the
+    // detector answers found: false with its reason.
     return cloud;
 }
 
 Cloud readDepthCloud(const std::string &depth_png, const std::string &camera_yaml) {
     const CameraIntrinsics camera = readCamera(camera_yaml);
-    const cv::Mat depth = readImage(depth_png, cv::IMREAD_UNCHANGED);
+    const cv::Mat depth = readImage(depth_png, cv::IMREAD_UNCHANGED, limits::kMaxDepthPixels);
     if (depth.type() != CV_16UC1)
         throw InputError(depth_png, std::string("expected a 16-bit single-channel depth image, got ") + depthName(depth.depth()) +
                                         " with " + std::to_string(depth.channels()) + " channel(s)");

@@ -12,9 +12,11 @@ namespace projsurf {
 /// binary_little_endian, binary_big_endian) file chosen by extension (.pcd/.ply, any case).
 /// x, y, z may be stored as any numeric type (float32/64, signed/unsigned 8-64 bit ints).
 /// Keeps the organized width x height when the file has one (PCD HEIGHT > 1). NaN points
-/// are kept; the caller ignores them. Throws InputError(path, problem) for a missing file,
-/// unknown extension, malformed header, missing x/y/z, truncated data, zero points, or a
-/// cloud with no finite point. Every allocation is bounded by the file size.
+/// are kept (a cloud of NaN points only is returned too: the detector answers found: false);
+/// the caller ignores them. Throws InputError(path, problem) for a missing file, unknown
+/// extension, malformed header, missing x/y/z, truncated data, zero points, or a file over
+/// io/limits.hpp (points, bytes, decompressed bytes). Every allocation is bounded by the
+/// file size and those limits.
 Cloud readCloud(const std::string &path);
 
 /// Reads a 16-bit single-channel depth PNG and camera intrinsics (readCamera) into an

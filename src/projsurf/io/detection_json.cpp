@@ -6,6 +6,7 @@
 
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/limits.hpp"
 
 namespace projsurf {
 namespace {
@@ -50,11 +51,10 @@ nlohmann::json detectionToJson(const Detection &det, const DetectorConfig &confi
 }
 
 DetectionFile readDetectionJson(const std::string &path) {
-    requireReadable(path);
-    std::ifstream in(path);
+    const std::string text = readSmallTextFile(path, limits::kMaxJsonBytes, "JSON");
     nlohmann::json j;
     try {
-        in >> j;
+        j = nlohmann::json::parse(text);
     } catch (const nlohmann::json::exception &e) {
         throw InputError(path, std::string("malformed JSON: ") + e.what());
     }
@@ -83,7 +83,8 @@ DetectionFile readDetectionJson(const std::string &path) {
         }
         if (j.contains("plane") && j["plane"].is_object() && j["plane"].contains("coefficients")) {
             const auto &pc = j["plane"]["coefficients"];
-            if (pc.is_array() && pc.size() == 4 && pc[0].is_number())
+            if (pc.is_array() && pc.size() == 4 && pc[0].is_number() && pc[1].is_number() && pc[2].is_number() &&
+                pc[3].is_number())
                 out.plane = makePlane(Eigen::Vector3d(pc[0].get<double>(), pc[1].get<double>(), pc[2].get<double>()),
                                       pc[3].get<double>());
         }

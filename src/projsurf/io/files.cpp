@@ -1,5 +1,6 @@
 #include "projsurf/io/files.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -7,6 +8,8 @@
 #include <unistd.h>
 
 #include "projsurf/io/errors.hpp"
+#include "projsurf/io/image_header.hpp"
+#include "projsurf/io/quiet_stderr.hpp"
 
 namespace fs = std::filesystem;
 
@@ -46,6 +49,63 @@ void writeImageAtomic(const std::string &path, const cv::Mat &image) {
     writeFileAtomic(path, std::string(buf.begin(), buf.end()));
 }
 
+namespace {
+
+std::string encodeImage(const std::string &path, const cv::Mat &image) {
+    std::string ext = fs::path(path).extension().string();
+    if (ext.empty()) ext = ".png";
+    std::vector<uchar> buf;
+    bool ok = false;
+    try {
+        QuietStderr quiet;
+        ok = cv::imencode(ext, image, buf);
+    } catch (const cv::Exception &) {
+        ok = false;
+    }
+    if (!ok) throw InputError(path, "cannot encode an image with extension '" + ext + "'");
+    return std::string(buf.begin(), buf.end());
+}
+
+}  // namespace
+
+OutputGroup::~OutputGroup() {
+    std::error_code ec;
+    for (const auto &f : files_) fs::remove(f.first, ec);
+}
+
+std::string OutputGroup::reserve(const std::string &path) {
+    const fs::path p(path);
+    if (path.empty() || p.filename().empty()) throw InputError(path, "not a file name");
+    std::error_code ec;
+    if (fs::is_directory(p, ec)) throw InputError(path, "is a directory, expected a file name");
+    const std::string tmp = (p.parent_path() / ("." + p.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
+                                                 std::to_string(files_.size()) + p.extension().string()))
+                                .string();
+    files_.emplace_back(tmp, path);
+    return tmp;
+}
+
+void OutputGroup::addFile(const std::string &path, const std::string &bytes) {
+    const std::string tmp = reserve(path);
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError(path, "cannot open for writing");
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.flush();
+    if (!out) throw InputError(path, "write failed");
+}
+
+void OutputGroup::addImage(const std::string &path, const cv::Mat &image) { addFile(path, encodeImage(path, image)); }
+
+void OutputGroup::commit() {
+    for (std::size_t i = 0; i < files_.size(); ++i) {
+        std::error_code ec;
+        fs::rename(files_[i].first, files_[i].second, ec);
+        if (ec) throw InputError(files_[i].second, "cannot write: " + ec.message());
+        files_[i].first.clear();  // renamed: nothing to remove
+    }
+    files_.clear();
+}
+
 void requireReadable(const std::string &path) {
     std::error_code ec;
     if (!fs::exists(path, ec)) throw InputError(path, "no such file");
@@ -61,15 +121,88 @@ void requireWritableLocation(const std::string &path) {
     if (!fs::is_directory(dir, ec)) throw InputError(path, "output directory does not exist");
 }
 
-cv::Mat readImage(const std::string &path, int flags) {
+std::string readSmallTextFile(const std::string &path, std::uint64_t max_bytes, const char *kind) {
     requireReadable(path);
+    std::error_code ec;
+    const auto size = fs::file_size(path, ec);
+    if (ec) throw InputError(path, "cannot read the file");
+    if (size > max_bytes)
+        throw InputError(path, std::string(kind) + " file of " + std::to_string(size) + " bytes exceeds the limit of " +
+                                   std::to_string(max_bytes) + " bytes");
+    std::string text(static_cast<std::size_t>(size), '\0');
+    std::ifstream in(path, std::ios::binary);
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    if (static_cast<std::uintmax_t>(in.gcount()) != size) throw InputError(path, "cannot read the file");
+    // Nesting: brackets, and (YAML blocks) indentation steps; quotes and comments are not
+    // told apart, which only ever overcounts.
+    int depth = 0, max_depth = 0;
+    std::size_t line_start = 0;
+    for (std::size_t i = 0; i <= text.size(); ++i) {
+        if (i == text.size() || text[i] == '\n') {
+            std::size_t indent = 0;
+            while (line_start + indent < i && (text[line_start + indent] == ' ' || text[line_start + indent] == '-'))
+                ++indent;
+            max_depth = std::max(max_depth, static_cast<int>(std::min<std::size_t>(indent / 2, 1 << 20)));
+            line_start = i + 1;
+            continue;
+        }
+        const char c = text[i];
+        if (c == '[' || c == '{') max_depth = std::max(max_depth, ++depth);
+        else if ((c == ']' || c == '}') && depth > 0) --depth;
+    }
+    if (max_depth > limits::kMaxNesting)
+        throw InputError(path, std::string(kind) + " nested deeper than " + std::to_string(limits::kMaxNesting) + " levels");
+    return text;
+}
+
+void requireWritableFile(const std::string &path) {
+    requireWritableLocation(path);
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) throw InputError(path, "is a directory, expected a file name");
+}
+
+void requireImageWriter(const std::string &path) {
+    bool ok = false;
+    try {
+        ok = !fs::path(path).extension().empty() && cv::haveImageWriter(path);
+    } catch (const cv::Exception &) {
+    }
+    if (!ok) throw InputError(path, "cannot write an image with this extension (use .png)");
+}
+
+cv::Mat readImage(const std::string &path, int flags, std::uint64_t max_pixels) {
+    requireReadable(path);
+    std::error_code ec;
+    const auto size = fs::file_size(path, ec);
+    if (ec) throw InputError(path, "cannot read the file");
+    if (size > limits::kMaxImageFileBytes)
+        throw InputError(path, "image file of " + std::to_string(size) + " bytes exceeds the limit of " +
+                                   std::to_string(limits::kMaxImageFileBytes) + " bytes");
+    std::string bytes(static_cast<std::size_t>(size), '\0');
+    {
+        std::ifstream in(path, std::ios::binary);
+        in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        if (static_cast<std::uintmax_t>(in.gcount()) != size) throw InputError(path, "cannot read the file");
+    }
+    // The size from the header, before the decoder allocates anything.
+    const ImageHeader header = readImageHeader(bytes);
+    if (header.format.empty()) throw InputError(path, "not a readable image (expected PNG, JPEG, BMP or PNM)");
+    if (header.width == 0 || header.height == 0)
+        throw InputError(path, "not a readable image (" + header.format + " header gives a zero size)");
+    if (header.width * header.height > max_pixels)
+        throw InputError(path, header.format + " image of " + std::to_string(header.width) + " x " +
+                                   std::to_string(header.height) + " pixels exceeds the limit of " +
+                                   std::to_string(max_pixels) + " pixels");
     cv::Mat image;
     try {
-        image = cv::imread(path, flags);
+        QuietStderr quiet;  // libpng / libjpeg warnings
+        image = cv::imdecode(cv::Mat(1, static_cast<int>(bytes.size()), CV_8UC1, bytes.data()), flags);
     } catch (const cv::Exception &) {
         image.release();
     }
-    if (image.empty()) throw InputError(path, "not a readable image");
+    if (image.empty()) throw InputError(path, "not a readable image (corrupt " + header.format + " data)");
+    if (static_cast<std::uint64_t>(image.total()) > max_pixels)  // the header lied
+        throw InputError(path, "image exceeds the limit of " + std::to_string(max_pixels) + " pixels");
     return image;
 }
 

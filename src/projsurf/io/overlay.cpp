@@ -2,9 +2,13 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <opencv2/imgproc.hpp>
 #include "projsurf/core/observed_free_space.hpp"
+
+#include "projsurf/io/limits.hpp"
 
 namespace projsurf {
 namespace {
@@ -20,8 +24,10 @@ struct View {
     double scale = 1.0;  // picture pixels per camera pixel
     cv::Point2f operator()(const Eigen::Vector3d &p) const {
         const double z = std::max(p.z(), 1e-3);
-        return {static_cast<float>((cam.fx * p.x() / z + cam.cx + 0.5) * scale - 0.5),
-                static_cast<float>((cam.fy * p.y() / z + cam.cy + 0.5) * scale - 0.5)};
+        // Far off the picture is as good as anywhere off it: kept where the drawing code's
+        // int and fixed-point conversions are defined (NaN goes to the corner).
+        auto fit = [](double v) { return static_cast<float>(v >= -1e5 ? std::min(v, 1e5) : -1e5); };
+        return {fit((cam.fx * p.x() / z + cam.cx + 0.5) * scale - 0.5), fit((cam.fy * p.y() / z + cam.cy + 0.5) * scale - 0.5)};
     }
 };
 
@@ -114,8 +120,15 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
     if (camera) view.cam = *camera;
     else view.cam = estimateIntrinsics(cloud);
     if (!(view.cam.fx > 0)) view.cam = CameraIntrinsics{};  // a virtual Kinect-like view
+    if (static_cast<std::uint64_t>(view.cam.width) * view.cam.height > limits::kMaxImagePixels || view.cam.width < 1 ||
+        view.cam.height < 1)
+        view.cam = CameraIntrinsics{};  // no picture that large: the virtual view
     const int w = view.cam.width, h = view.cam.height;
-    view.scale = std::max(1.0, 960.0 / w);
+    // Small frames are enlarged to about 960 pixels across, by both sides (a 1 x 2000 frame
+    // must not become 960 x 1920000), never beyond the image limit.
+    view.scale = std::clamp(std::min(960.0 / w, 960.0 / h * 4.0 / 3.0), 1.0, 16.0);
+    while (view.scale > 1.0 && w * view.scale * h * view.scale > static_cast<double>(limits::kMaxImagePixels))
+        view.scale = std::max(1.0, view.scale / 2.0);
 
     // Background: the colour image, or the depth shaded grey (near = bright).
     cv::Mat base(h, w, CV_8UC3, cv::Scalar(30, 30, 30));
@@ -135,9 +148,11 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
             u = static_cast<int>(i % w);
             v = static_cast<int>(i / w);
         } else {
-            u = static_cast<int>(std::lround(view.cam.fx * p.x() / p.z() + view.cam.cx));
-            v = static_cast<int>(std::lround(view.cam.fy * p.y() / p.z() + view.cam.cy));
-            if (u < 0 || v < 0 || u >= w || v >= h) continue;
+            const double fu = std::round(view.cam.fx * p.x() / p.z() + view.cam.cx),
+                         fv = std::round(view.cam.fy * p.y() / p.z() + view.cam.cy);
+            if (!(fu >= 0 && fv >= 0 && fu < w && fv < h)) continue;  // tested before converting
+            u = static_cast<int>(fu);
+            v = static_cast<int>(fv);
         }
         cv::Vec3b &px = base.at<cv::Vec3b>(v, u);
         if (!use_color) {

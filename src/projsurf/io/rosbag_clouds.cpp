@@ -1,51 +1,67 @@
 #include "projsurf/io/rosbag_clouds.hpp"
 
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/files.hpp"
-
-#ifdef PROJSURF_HAVE_ROSBAG
-#include <rosbag/bag.h>
-#include <rosbag/view.h>
-#include <sensor_msgs/PointCloud2.h>
-
 #include <set>
 
+#include "projsurf/io/bag_records.hpp"
+#include "projsurf/io/errors.hpp"
 #include "projsurf/io/pointcloud2.hpp"
-#endif
 
 namespace projsurf {
-
-#ifdef PROJSURF_HAVE_ROSBAG
 
 bool haveRosbagSupport() { return true; }
 
 namespace {
 
 constexpr const char *kCloudType = "sensor_msgs/PointCloud2";
+constexpr const char *kCloudMd5 = "1158d486dd51d683ce2f1be655c3c181";
+
+/// A serialized sensor_msgs/PointCloud2 (ROS 1, little-endian) read field by field; `data`
+/// of the view points into `bytes`.
+PointCloud2View parsePointCloud2(const std::string &bytes, const std::string &source, BagCloudInfo &info) {
+    RosReader r(bytes, source);
+    r.u32();  // header.seq
+    const std::uint32_t sec = r.u32(), nsec = r.u32();
+    info.frame_id = r.string();
+    if (sec != 0 || nsec != 0) info.stamp = sec + 1e-9 * nsec;
+    PointCloud2View v;
+    v.height = r.u32();
+    v.width = r.u32();
+    const std::uint32_t nfields = r.u32();
+    if (nfields > r.remaining() / 13) throw InputError(source, "PointCloud2 announces more fields than the message holds");
+    for (std::uint32_t i = 0; i < nfields; ++i) {
+        PointField2 f;
+        f.name = r.string();
+        f.offset = r.u32();
+        f.datatype = r.u8();
+        f.count = r.u32();
+        v.fields.push_back(f);
+    }
+    v.is_bigendian = r.u8() != 0;
+    v.point_step = r.u32();
+    v.row_step = r.u32();
+    std::size_t length = 0;
+    const std::size_t at = r.bytes(length);
+    v.data = reinterpret_cast<const std::uint8_t *>(bytes.data()) + at;
+    v.data_size = length;
+    return v;
+}
 
 }  // namespace
 
 std::size_t forEachBagCloud(const std::string &path, const std::string &topic,
                             const std::function<void(const Cloud &, const BagCloudInfo &)> &visit) {
-    requireReadable(path);
-    rosbag::Bag bag;
-    try {
-        bag.open(path, rosbag::bagmode::Read);
-    } catch (const rosbag::BagException &e) {
-        throw InputError(path, std::string("not a readable ROS bag (") + e.what() + ")");
-    }
+    // Our own bounded reader: the rosbag library's parser trusts the lengths in the file.
+    BagFile bag(path, topic);
 
     // Check the topic against what the bag holds before reading any message.
     std::set<std::string> cloud_topics;
-    std::string topic_type;
-    try {
-        rosbag::View all(bag);
-        for (const rosbag::ConnectionInfo *c : all.getConnections()) {
-            if (c->datatype == kCloudType) cloud_topics.insert(c->topic);
-            if (c->topic == topic) topic_type = c->datatype;
+    std::string topic_type, topic_md5;
+    for (const BagConnection &c : bag.connections()) {
+        if (c.type == kCloudType) cloud_topics.insert(c.topic);
+        if (c.topic == topic) {
+            topic_type = c.type;
+            topic_md5 = c.md5sum;
         }
-    } catch (const rosbag::BagException &e) {
-        throw InputError(path, std::string("corrupt ROS bag (") + e.what() + ")");
     }
     if (topic_type.empty()) {
         std::string have;
@@ -55,39 +71,23 @@ std::size_t forEachBagCloud(const std::string &path, const std::string &topic,
     }
     if (topic_type != kCloudType)
         throw InputError(path, "topic '" + topic + "' holds " + topic_type + ", not " + kCloudType);
+    if (!topic_md5.empty() && topic_md5 != "*" && topic_md5 != kCloudMd5)
+        throw InputError(path, "topic '" + topic + "' holds a sensor_msgs/PointCloud2 of another definition (md5sum " +
+                                   topic_md5.substr(0, 32) + ")");
 
     std::size_t index = 0;
-    try {
-        rosbag::View view(bag, rosbag::TopicQuery(topic));
-        for (const rosbag::MessageInstance &m : view) {
-            const auto msg = m.instantiate<sensor_msgs::PointCloud2>();
-            if (!msg) throw InputError(path, "message " + std::to_string(index) + " on '" + topic + "' cannot be read");
-            BagCloudInfo info;
-            info.stamp = msg->header.stamp.isZero() ? m.getTime().toSec() : msg->header.stamp.toSec();
-            info.frame_id = msg->header.frame_id;
-            info.index = index;
-            const Cloud cloud =
-                cloudFromPointCloud2(viewOfMessage(*msg), path + ":" + topic + "#" + std::to_string(index));
-            visit(cloud, info);
-            ++index;
-        }
-    } catch (const rosbag::BagException &e) {
-        throw InputError(path, std::string("corrupt ROS bag (") + e.what() + ")");
-    } catch (const ros::Exception &e) {
-        throw InputError(path, std::string("corrupt ROS bag message (") + e.what() + ")");
+    for (const BagMessageRef &m : bag.messages()) {
+        const std::string bytes = bag.read(m);
+        const std::string source = path + ":" + topic + "#" + std::to_string(index);
+        BagCloudInfo info;
+        info.stamp = m.sec + 1e-9 * m.nsec;  // the receive time, unless the header has a stamp
+        info.index = index;
+        const PointCloud2View view = parsePointCloud2(bytes, source, info);
+        const Cloud cloud = cloudFromPointCloud2(view, source);
+        visit(cloud, info);
+        ++index;
     }
     return index;
 }
-
-#else  // no rosbag_storage in this build
-
-bool haveRosbagSupport() { return false; }
-
-std::size_t forEachBagCloud(const std::string &path, const std::string &,
-                            const std::function<void(const Cloud &, const BagCloudInfo &)> &) {
-    throw InputError(path, "this build of projsurf cannot read ROS bags (install ROS 1, see scripts/setup.sh, and rebuild)");
-}
-
-#endif
 
 }  // namespace projsurf

@@ -1,7 +1,7 @@
 #pragma once
-// Recorded robot data: the point clouds of one topic of a ROS 1 bag, in order.
-// Available when the build found rosbag_storage (PROJSURF_HAVE_ROSBAG); otherwise every call
-// throws InputError saying so.
+// Recorded robot data: the point clouds of one topic of a ROS 1 bag (format 2.0), in order.
+// Read by projsurf's own bounded reader (io/bag_records.hpp), not the rosbag library; chunks
+// may be uncompressed or bz2, and lz4 when the build found ROS (roslz4).
 #include <functional>
 #include <string>
 
@@ -9,7 +9,7 @@
 
 namespace projsurf {
 
-/// True when this build can read bags.
+/// True: every build reads bags (kept for the callers that asked).
 bool haveRosbagSupport();
 
 /// What each message of the topic brings besides its points.
@@ -22,7 +22,7 @@ struct BagCloudInfo {
 /// Calls `visit` for every sensor_msgs/PointCloud2 on `topic` in `path`, in bag time order.
 /// Throws InputError(path, problem) for a missing, unreadable or corrupt bag, a topic that is
 /// not in the bag (the message lists the PointCloud2 topics it has), a topic of another type,
-/// or a message whose layout cannot be read. Returns the number of messages visited.
+/// a message whose layout cannot be read, or a bag beyond io/limits.hpp. Returns the number of messages visited.
 std::size_t forEachBagCloud(const std::string &path, const std::string &topic,
                             const std::function<void(const Cloud &, const BagCloudInfo &)> &visit);
 

@@ -5,10 +5,15 @@
 #include <cstdlib>
 #include <filesystem>
 #include <opencv2/core/utils/logger.hpp>
+#include <cstdio>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <regex>
 
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/limits.hpp"
+#include "projsurf/io/quiet_stderr.hpp"
 
 namespace projsurf {
 namespace {
@@ -56,8 +61,8 @@ cv::VideoCapture openVideoInput(const std::string &path) {
     if (!pattern) requireReadable(path);
     cv::VideoCapture cap;
     try {
+        QuietStderr quiet;
         cap.open(path, pattern ? cv::CAP_IMAGES : cv::CAP_FFMPEG);
-        if (!cap.isOpened() && !pattern) cap.open(path, cv::CAP_ANY);
     } catch (const cv::Exception &) {
         cap.release();
     }
@@ -74,13 +79,97 @@ cv::VideoWriter openVideoOutput(const std::string &path, const std::string &name
         throw InputError(name_for_errors, "a video needs a .avi, .mkv, .mp4 or .mov name");
     cv::VideoWriter writer;
     try {
+        QuietStderr quiet;
         writer.open(path, cv::CAP_FFMPEG, fourcc, fps, size, true);
-        if (!writer.isOpened()) writer.open(path, cv::CAP_ANY, fourcc, fps, size, true);
+        // OpenCV's own MJPG writer when FFmpeg is missing (not CAP_ANY: its fallbacks leak).
+        if (!writer.isOpened() && fourcc == cv::VideoWriter::fourcc('M', 'J', 'P', 'G'))
+            writer.open(path, cv::CAP_OPENCV_MJPEG, fourcc, fps, size, true);
     } catch (const cv::Exception &) {
         writer.release();
     }
     if (!writer.isOpened()) throw InputError(name_for_errors, "cannot write a video here (try an .avi file: MJPG)");
     return writer;
+}
+
+namespace {
+
+std::string frameName(const std::string &pattern, long n) {
+    char name[4096];
+    const int len = std::snprintf(name, sizeof name, pattern.c_str(), static_cast<int>(n));
+    if (len < 0 || static_cast<std::size_t>(len) >= sizeof name) throw InputError(pattern, "frame names are too long");
+    return name;
+}
+
+bool exists(const std::string &path) {
+    std::error_code ec;
+    return std::filesystem::is_regular_file(path, ec);
+}
+
+void toBgr8(cv::Mat &frame) {
+    if (frame.channels() == 1) cv::cvtColor(frame, frame, cv::COLOR_GRAY2BGR);
+    else if (frame.channels() == 4) cv::cvtColor(frame, frame, cv::COLOR_BGRA2BGR);
+    if (frame.depth() != CV_8U) frame.convertTo(frame, CV_8U, frame.depth() == CV_16U ? 1.0 / 257.0 : 1.0);
+}
+
+}  // namespace
+
+FrameSource::FrameSource(const std::string &path) : path_(path), current_(path), pattern_(isFramePattern(path)) {
+    if (pattern_) {
+        if (!isValidFramePattern(path))
+            throw InputError(path, "an image-sequence pattern needs exactly one frame-number field such as %04d");
+        while (first_ < 1000 && !exists(frameName(path, first_))) ++first_;
+        if (first_ == 1000) throw InputError(path, "no image of this sequence exists (numbers 0..999 tried)");
+        // Counted before any work: the length is known and checked up front.
+        long n = first_;
+        while (exists(frameName(path, n))) {
+            if (static_cast<std::uint64_t>(n - first_) >= limits::kMaxSequenceFrames)
+                throw InputError(path, "image sequence longer than the limit of " + std::to_string(limits::kMaxSequenceFrames) +
+                                           " frames");
+            ++n;
+        }
+        count_ = n - first_;
+        next_ = first_;
+        return;
+    }
+    cap_ = openVideoInput(path);
+    const double w = cap_.get(cv::CAP_PROP_FRAME_WIDTH), h = cap_.get(cv::CAP_PROP_FRAME_HEIGHT);
+    if (!(w * h <= static_cast<double>(limits::kMaxImagePixels)))
+        throw InputError(path, "video frames of " + std::to_string(static_cast<long long>(std::min(w, 1e15))) + " x " +
+                                   std::to_string(static_cast<long long>(std::min(h, 1e15))) +
+                                   " pixels exceed the limit of " + std::to_string(limits::kMaxImagePixels) + " pixels");
+    const double n = cap_.get(cv::CAP_PROP_FRAME_COUNT);
+    if (n > static_cast<double>(limits::kMaxSequenceFrames))
+        throw InputError(path, "video of " + std::to_string(static_cast<long long>(std::min(n, 1e15))) +
+                                   " frames exceeds the limit of " + std::to_string(limits::kMaxSequenceFrames) + " frames");
+    count_ = n > 0 ? static_cast<long>(n) : 0;
+    const double f = cap_.get(cv::CAP_PROP_FPS);
+    fps_ = f > 0 && f < 1000 ? f : 0.0;
+}
+
+bool FrameSource::read(cv::Mat &frame) {
+    if (pattern_) {
+        if (next_ - first_ >= count_) return false;
+        current_ = frameName(path_, next_);
+        frame = readImage(current_, cv::IMREAD_UNCHANGED);  // an unreadable frame is an error naming it
+        ++next_;
+        toBgr8(frame);
+        return true;
+    }
+    if (static_cast<std::uint64_t>(done_) >= limits::kMaxSequenceFrames)
+        throw InputError(path_, "video longer than the limit of " + std::to_string(limits::kMaxSequenceFrames) + " frames");
+    bool ok = false;
+    try {
+        QuietStderr quiet;
+        ok = cap_.read(frame) && !frame.empty();
+    } catch (const cv::Exception &) {
+        throw InputError(path_, "frame " + std::to_string(done_) + " cannot be decoded");
+    }
+    if (!ok) return false;
+    if (frame.total() > limits::kMaxImagePixels)
+        throw InputError(path_, "video frame exceeds the limit of " + std::to_string(limits::kMaxImagePixels) + " pixels");
+    ++done_;
+    toBgr8(frame);
+    return true;
 }
 
 }  // namespace projsurf

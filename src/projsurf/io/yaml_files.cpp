@@ -5,6 +5,7 @@
 
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/limits.hpp"
 
 namespace projsurf {
 namespace {
@@ -12,9 +13,9 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 YAML::Node loadYaml(const std::string &path) {
-    requireReadable(path);
+    const std::string text = readSmallTextFile(path, limits::kMaxYamlBytes, "YAML");
     try {
-        YAML::Node root = YAML::LoadFile(path);
+        YAML::Node root = YAML::Load(text);
         if (!root.IsMap()) throw InputError(path, "expected a YAML mapping at the top level");
         return root;
     } catch (const YAML::Exception &e) {
@@ -57,9 +58,14 @@ Projector readCalibration(const std::string &path) {
     const auto d = numbers(path, child(path, axis, "direction", "projector.axis."), "projector.axis.direction", 3);
 
     Projector proj;
-    if (res[0] < 2 || res[1] < 2 || res[0] > 16384 || res[1] > 16384 || res[0] != std::floor(res[0]) ||
+    const double side = limits::kMaxFramebufferSide;
+    if (res[0] < 2 || res[1] < 2 || res[0] > side || res[1] > side || res[0] != std::floor(res[0]) ||
         res[1] != std::floor(res[1]))
         throw InputError(path, "projector.resolution must be two whole numbers between 2 and 16384");
+    if (res[0] * res[1] > static_cast<double>(limits::kMaxFramebufferPixels))
+        throw InputError(path, "projector.resolution " + std::to_string(static_cast<int>(res[0])) + " x " +
+                                   std::to_string(static_cast<int>(res[1])) + " exceeds the limit of " +
+                                   std::to_string(limits::kMaxFramebufferPixels) + " framebuffer pixels");
     proj.width = static_cast<int>(res[0]);
     proj.height = static_cast<int>(res[1]);
     if (!(fov[0] > 0 && fov[0] < 170 && fov[1] > 0 && fov[1] < 170))
@@ -113,6 +119,10 @@ CameraIntrinsics readCamera(const std::string &path) {
     const double h = number(path, child(path, c, "height", "camera."), "camera.height");
     if (w < 1 || h < 1 || w > 16384 || h > 16384 || w != std::floor(w) || h != std::floor(h))
         throw InputError(path, "camera.width and camera.height must be positive whole numbers");
+    if (w * h > static_cast<double>(limits::kMaxDepthPixels))
+        throw InputError(path, "camera image of " + std::to_string(static_cast<int>(w)) + " x " +
+                                   std::to_string(static_cast<int>(h)) + " pixels exceeds the limit of " +
+                                   std::to_string(limits::kMaxDepthPixels) + " pixels");
     cam.width = static_cast<int>(w);
     cam.height = static_cast<int>(h);
     cam.fx = number(path, child(path, c, "fx", "camera."), "camera.fx");

@@ -1,0 +1,10 @@
+// libFuzzer harness: readCloud on a PCD file (ascii, binary, binary_compressed).
+#include "fuzz_common.hpp"
+#include "projsurf/io/cloud_io.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
+    using namespace projsurf;
+    const std::string path = fuzz::writeInput("in.pcd", data, size);
+    fuzz::expectOnlyInputErrors([&] { (void)readCloud(path); });
+    return 0;
+}

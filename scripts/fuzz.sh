@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# libFuzzer over every reader (PCD, PLY, depth PNG, camera and calibration YAML, detection
+# JSON, bags, capture images) for a bounded time, with ASan + UBSan, in the sanitizer tree
+# (build-sanitize, configured by scripts/sanitize.sh). Seeds are made here from the simulator
+# (`projsurf simulate`, `projsurf detect`): nothing binary is committed. Each reader must run
+# at least FUZZ_RUNS inputs (default 10000) within FUZZ_SECONDS (default 60) with no finding;
+# the memory target (2 GiB) is libFuzzer's -rss_limit_mb and -malloc_limit_mb.
+# Findings (crash-*, oom-*, timeout-*) are kept in build-sanitize/fuzz/artifacts.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+start=$(date +%s)
+runs=${FUZZ_RUNS:-10000}
+seconds=${FUZZ_SECONDS:-60}
+tree=build-sanitize
+export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=true
+[ -f "$tree/CMakeCache.txt" ] || { echo "fuzz: run scripts/sanitize.sh first (it configures $tree)"; exit 1; }
+cmake --build "$tree" -j"$(nproc)" --target fuzzers projsurf
+built=$(date +%s)
+
+work="$PWD/$tree/fuzz"
+rm -rf "$work/sim" "$work/corpus" "$work/tmp"
+mkdir -p "$work/artifacts" "$work/tmp"
+export ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
+export PROJSURF_FUZZ_TMP="$work/tmp"
+# Seeds from the simulator (the sanitized CLI: its runs are checked too).
+"$tree/projsurf" simulate --scenario wall --captures 3 --out "$work/sim" >/dev/null
+"$tree/projsurf" detect --calib "$work/sim/calib.yaml" --cloud "$work/sim/cloud.pcd" --json "$work/sim/det.json" >/dev/null
+"$tree/fuzz/projsurf_fuzz_seeds" "$work/sim" "$work/sim/det.json" "$work/corpus" >/dev/null
+
+rc=0
+for name in pcd ply depth_png camera_yaml calib_yaml detection_json bag captures; do
+  corpus="$work/corpus/$name"
+  mkdir -p "$corpus"
+  log="$work/$name.log"
+  t0=$(date +%s)
+  status=0
+  "$tree/fuzz/fuzz_$name" "$corpus" -runs="$runs" -max_total_time="$seconds" -max_len=65536 -timeout=10 \
+    -rss_limit_mb=2048 -malloc_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$work/artifacts/$name-" \
+    >"$log" 2>&1 || status=$?
+  done_runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
+  echo "fuzz: $name: ${done_runs:-0} inputs in $(( $(date +%s) - t0 )) s, exit $status"
+  if [ "$status" != 0 ] || [ "${done_runs:-0}" -lt "$runs" ]; then
+    echo "fuzz: $name failed (needs $runs inputs, no finding); the end of $log:"
+    tail -n 40 "$log"
+    rc=1
+  fi
+done
+rm -rf "$work/tmp"
+echo "fuzz: build $((built - start)) s, fuzzing $(( $(date +%s) - built )) s, exit $rc"
+exit $rc

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# The whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer, float-cast-overflow
+# included, with no report allowed. Built with clang into build-sanitize (no benchmarks; the
+# ROS node and its tests are left out: see docs/limits.md), the same tree scripts/fuzz.sh uses.
+# Reports go to build-sanitize/sanitizer-reports/: one file there fails the run, even from a
+# CLI run whose failure a test expected.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+start=$(date +%s)
+export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=true
+tree=build-sanitize
+san="-fsanitize=address,undefined -fsanitize=float-cast-overflow -fno-sanitize-recover=all -fno-omit-frame-pointer"
+CC=clang CXX=clang++ cmake -S . -B "$tree" -DCMAKE_BUILD_TYPE=Sanitize \
+  -DCMAKE_C_FLAGS_SANITIZE="-O1 -g1 $san" -DCMAKE_CXX_FLAGS_SANITIZE="-O1 -g1 $san" \
+  -DCMAKE_EXE_LINKER_FLAGS="$san" -DCMAKE_SHARED_LINKER_FLAGS="$san" \
+  -DPROJSURF_BUILD_BENCH=OFF -DPROJSURF_BUILD_ROS=OFF -DPROJSURF_BUILD_FUZZ=ON >/dev/null
+cmake --build "$tree" -j"$(nproc)" --target projsurf projsurf_tests
+built=$(date +%s)
+
+reports="$PWD/$tree/sanitizer-reports"
+rm -rf "$reports"
+mkdir -p "$reports"
+export ASAN_OPTIONS="log_path=$reports/asan:detect_leaks=1:check_initialization_order=1"
+export UBSAN_OPTIONS="log_path=$reports/ubsan:print_stacktrace=1:halt_on_error=1"
+export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
+rc=0
+(cd "$tree" && ctest --output-on-failure -j"$(nproc)" --timeout 900) || rc=$?
+end=$(date +%s)
+if compgen -G "$reports/*" >/dev/null; then
+  echo "sanitize: $(ls "$reports" | wc -l) sanitizer report(s):"
+  for f in "$reports"/*; do echo "----- $f"; head -n 60 "$f"; done
+  rc=1
+fi
+echo "sanitize: build $((built - start)) s, tests $((end - built)) s, exit $rc"
+exit $rc

@@ -1,0 +1,44 @@
+#pragma once
+// Input limits: what projsurf accepts from files and messages (docs/limits.md tells why each
+// value). Every reader checks them before it allocates; exceeding one is an InputError
+// (one stderr line, exit 2). Each one is far above what real sensors, projectors and
+// pictures produce, and low enough that any input up to all of them stays under 2 GiB.
+#include <cstddef>
+#include <cstdint>
+
+namespace projsurf::limits {
+
+/// Points in one cloud (PCD, PLY, PointCloud2, depth image): 2^24 = 4096 x 4096.
+constexpr std::uint64_t kMaxCloudPoints = std::uint64_t{1} << 24;
+/// Bytes of one point-cloud file (PCD, PLY): 768 MiB (2^24 points of 48 bytes).
+constexpr std::uint64_t kMaxCloudFileBytes = std::uint64_t{768} << 20;
+/// Bytes a compressed block may decompress to (PCD binary_compressed, bag chunks): 512 MiB,
+/// and never more than kMaxLzfRatio times its compressed size for LZF.
+constexpr std::uint64_t kMaxDecompressedBytes = std::uint64_t{512} << 20;
+/// Pixels of a picture, a video frame or a colour image: 2^25 (8K UHD 7680 x 4320 fits).
+constexpr std::uint64_t kMaxImagePixels = std::uint64_t{1} << 25;
+/// Pixels of a depth image: as many as a cloud may have points.
+constexpr std::uint64_t kMaxDepthPixels = kMaxCloudPoints;
+/// Bytes of one image file: 256 MiB.
+constexpr std::uint64_t kMaxImageFileBytes = std::uint64_t{256} << 20;
+/// Projector framebuffer (calibration resolution): each side 2..16384 px, at most 2^25 px.
+constexpr int kMaxFramebufferSide = 16384;
+constexpr std::uint64_t kMaxFramebufferPixels = std::uint64_t{1} << 25;
+/// Frames of one image sequence or video: 100000 (over an hour at 25 fps).
+constexpr std::uint64_t kMaxSequenceFrames = 100000;
+/// Messages of one bag topic: 100000; bytes of one bag record (a message or an
+/// uncompressed chunk): 512 MiB; bytes of a record header: 1 MiB.
+constexpr std::uint64_t kMaxBagMessages = 100000;
+constexpr std::uint64_t kMaxBagRecordBytes = std::uint64_t{512} << 20;
+constexpr std::uint64_t kMaxBagHeaderBytes = std::uint64_t{1} << 20;
+/// Calibration captures: numbered 0..99, at most 2^26 pixels in all (about 5 bytes each
+/// once decoded: 64 captures of 1280 x 720, 32 of 1920 x 1080).
+constexpr std::uint64_t kMaxCaptures = 100;
+constexpr std::uint64_t kMaxCapturePixels = std::uint64_t{1} << 26;
+/// Bytes of a YAML file (camera, calibration): 64 KiB; of a detection JSON file: 1 MiB;
+/// nesting depth of either: 64.
+constexpr std::uint64_t kMaxYamlBytes = std::uint64_t{64} << 10;
+constexpr std::uint64_t kMaxJsonBytes = std::uint64_t{1} << 20;
+constexpr int kMaxNesting = 64;
+
+}  // namespace projsurf::limits

@@ -1,0 +1,354 @@
+// Hostile input (issue 16), end to end through the CLI: every finding is a case here, built
+// from a simulated frame in the test (no committed binaries). A refused input must give exit
+// 2, exactly one stderr line "projsurf: error: <file>: ...", and no output file (nor a
+// temporary) left behind; a valid but odd input (all-NaN cloud, far points) exit 0.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <random>
+#include <sstream>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "bag_writer.hpp"
+#include "projsurf/io/cloud_io.hpp"
+#include "projsurf/io/errors.hpp"
+#include "projsurf/io/limits.hpp"
+#include "projsurf/io/rosbag_clouds.hpp"
+#include "projsurf/io/yaml_files.hpp"
+
+namespace fs = std::filesystem;
+using namespace projsurf;
+
+namespace {
+
+struct CliResult {
+    int status = -1;
+    std::string out, err;
+};
+
+std::string slurp(const fs::path &path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+void writeBytes(const fs::path &path, const std::string &bytes) { std::ofstream(path, std::ios::binary) << bytes; }
+
+/// The CLI with a hang guard (60 s; the limits promise < 30 s).
+CliResult cli(const std::string &args, const fs::path &dir) {
+    const fs::path o = dir / "stdout.log", e = dir / "stderr.log";
+    const std::string cmd = "timeout 60 " + std::string(PROJSURF_CLI) + " " + args + " >" + o.string() + " 2>" + e.string();
+    CliResult r;
+    const int s = std::system(cmd.c_str());
+    r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+    r.out = slurp(o);
+    r.err = slurp(e);
+    fs::remove(o);
+    fs::remove(e);
+    return r;
+}
+
+int tmpLeftovers(const fs::path &dir) {
+    int n = 0;
+    for (const auto &e : fs::recursive_directory_iterator(dir))
+        if (e.path().filename().string().find(".tmp") != std::string::npos) ++n;
+    return n;
+}
+
+/// A simulated frame (cloud, depth, camera, calibration, captures) shared by the cases.
+class Hostile : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() {
+        sim_ = fs::temp_directory_path() / ("projsurf_hostile_sim_" + std::to_string(::getpid()));
+        fs::remove_all(sim_);
+        const std::string cmd = std::string(PROJSURF_CLI) + " simulate --scenario wall --captures 3 --out " + sim_.string() +
+                                " >/dev/null 2>&1";
+        ASSERT_EQ(std::system(cmd.c_str()), 0);
+    }
+    static void TearDownTestSuite() { fs::remove_all(sim_); }
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("projsurf_hostile_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
+                std::to_string(::getpid()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override {
+        // Every child so far stayed under the memory target (ru_maxrss: KiB, the largest child).
+        rusage ru{};
+        getrusage(RUSAGE_CHILDREN, &ru);
+        EXPECT_LT(ru.ru_maxrss, 2L * 1024 * 1024) << "a projsurf run took more than 2 GiB";
+        if (!HasFailure()) fs::remove_all(dir_);
+    }
+    std::string sim(const char *name) const { return (sim_ / name).string(); }
+    std::string at(const std::string &name) const { return (dir_ / name).string(); }
+
+    /// Exit 2, one stderr line naming `file` (and saying `problem`), none of `outputs`
+    /// written, no temporary left.
+    void refused(const std::string &args, const std::string &file, const std::string &problem,
+                 const std::vector<std::string> &outputs = {}) {
+        const CliResult r = cli(args, dir_);
+        EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one stderr line expected:\n" << r.err;
+        EXPECT_EQ(r.err.rfind("projsurf: error: ", 0), 0u) << r.err;
+        EXPECT_NE(r.err.find(file), std::string::npos) << "should name " << file << ": " << r.err;
+        EXPECT_NE(r.err.find(problem), std::string::npos) << "should say '" << problem << "': " << r.err;
+        for (const auto &o : outputs) EXPECT_FALSE(fs::exists(o)) << o << " was written";
+        EXPECT_EQ(tmpLeftovers(dir_), 0);
+    }
+    std::string detectArgs(const std::string &cloud) const { return "detect --calib " + sim("calib.yaml") + " --cloud " + cloud; }
+
+    static fs::path sim_;
+    fs::path dir_;
+};
+fs::path Hostile::sim_;
+
+std::string pngHeader(std::uint32_t w, std::uint32_t h) {
+    // Signature and IHDR only: the size is read from the header and refused before decoding.
+    std::string s("\x89PNG\r\n\x1a\n", 8);
+    auto be = [&](std::uint32_t v) {
+        for (int i = 3; i >= 0; --i) s.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
+    };
+    be(13);
+    s += "IHDR";
+    be(w);
+    be(h);
+    s += std::string("\x10\x00\x00\x00\x00", 5);  // 16-bit grey
+    be(0);                                         // CRC (not checked: never decoded)
+    return s + std::string(1000, '\0');
+}
+
+std::string pcdAscii(const std::vector<std::array<float, 3>> &pts) {
+    std::ostringstream s;
+    s.precision(9);
+    s << "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH " << pts.size() << "\nHEIGHT 1\nPOINTS "
+      << pts.size() << "\nDATA ascii\n";
+    for (const auto &p : pts) s << p[0] << " " << p[1] << " " << p[2] << "\n";
+    return s.str();
+}
+
+}  // namespace
+
+// --- High: a corrupt bag must not reach a parser that trusts its lengths -----------------
+
+TEST_F(Hostile, BagsAreCheckedRecordByRecord) {
+    const Cloud cloud = readCloud(sim("cloud.pcd"));
+    const std::string good = bagtest::bagWithClouds({cloud, cloud}, "/points");
+    writeBytes(at("good.bag"), good);
+    const CliResult ok = cli("detect --calib " + sim("calib.yaml") + " --bag " + at("good.bag") + " --topic /points --json " +
+                           at("good.jsonl"),
+                       dir_);
+    ASSERT_EQ(ok.status, 0) << ok.err;
+    EXPECT_EQ(ok.err, "");
+    EXPECT_EQ(std::count(std::istreambuf_iterator<char>(std::ifstream(at("good.jsonl")).rdbuf()), {}, '\n'), 2);
+
+    // The finding: a header field length far beyond its header (rosbag read past the buffer).
+    std::string bad = good;
+    const std::size_t chunk = bad.find("compression=none") - 4;  // the first field of the chunk's header
+    bad.replace(chunk, 4, std::string("\x00\x00\x01\x00", 4));  // 65536 bytes, in a header of ~40
+    writeBytes(at("field.bag"), bad);
+    refused("detect --calib " + sim("calib.yaml") + " --bag " + at("field.bag") + " --topic /points --json " + at("o.jsonl"),
+            at("field.bag"), "corrupt ROS bag", {at("o.jsonl")});
+    // A record announcing more data than the file has; a chunk announcing 4 GB.
+    std::string cut = good.substr(0, good.size() - 100);
+    writeBytes(at("cut.bag"), cut);
+    refused("detect --calib " + sim("calib.yaml") + " --bag " + at("cut.bag") + " --topic /points", at("cut.bag"), "ROS bag");
+    std::string big = good;
+    const std::size_t size_field = big.find("size=") + 5;
+    big.replace(size_field, 4, std::string("\xff\xff\xff\xff", 4));
+    writeBytes(at("big.bag"), big);
+    refused("detect --calib " + sim("calib.yaml") + " --bag " + at("big.bag") + " --topic /points", at("big.bag"),
+            "exceeds the limit");
+
+    // Random mutations of a small bag: an InputError naming the file, or a clean read.
+    Cloud small;
+    small.points.assign(50, Point(0.1f, 0.2f, 1.5f));
+    small.width = 50;
+    const std::string seed = bagtest::bagWithClouds({small}, "/points");
+    std::mt19937 rng(16);
+    int errors = 0;
+    for (int k = 0; k < 1000; ++k) {
+        std::string m = seed;
+        const int flips = 1 + static_cast<int>(rng() % 4);
+        for (int f = 0; f < flips; ++f) m[rng() % m.size()] = static_cast<char>(rng());
+        writeBytes(at("m.bag"), m);
+        try {
+            forEachBagCloud(at("m.bag"), "/points", [](const Cloud &, const BagCloudInfo &) {});
+        } catch (const InputError &e) {
+            ++errors;
+            ASSERT_NE(std::string(e.what()).find(at("m.bag")), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_GT(errors, 50);
+}
+
+// --- Undefined float -> int conversions: far points, NaN, inf, a tiny depth_scale --------
+
+TEST_F(Hostile, FarAndNonFinitePointsAreAFrameNotACrash) {
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    std::vector<std::array<float, 3>> pts;
+    for (int i = 0; i < 400; ++i) {
+        const float u = static_cast<float>(i % 20) / 10.0f - 1.0f, v = static_cast<float>(i / 20) / 10.0f - 1.0f;
+        pts.push_back({u, v, 2.0f});                  // a wall
+        pts.push_back({u * 1e12f, v * 1e12f, 1e12f}); // very far
+        pts.push_back({u * 3e38f, 1e30f, 3e38f});     // near the float range
+    }
+    pts.push_back({nan, 0, 1});
+    pts.push_back({inf, -inf, inf});
+    writeBytes(at("far.pcd"), pcdAscii(pts));
+    for (const char *method : {"default", "paper"}) {
+        const CliResult r = cli(detectArgs(at("far.pcd")) + " --method " + method, dir_);
+        EXPECT_EQ(r.status, 0) << method << ": " << r.err;
+        EXPECT_EQ(r.err, "") << method;
+        EXPECT_NO_THROW((void)nlohmann::json::parse(r.out)) << r.out;
+    }
+    // A depth_scale that turns every reading into kilometres and beyond.
+    writeBytes(at("camera.yaml"), "camera: {width: 640, height: 480, fx: 525, fy: 525, cx: 319.5, cy: 239.5, depth_scale: 1e-9}\n");
+    const CliResult r = cli("detect --calib " + sim("calib.yaml") + " --depth " + sim("depth.png") + " --camera " + at("camera.yaml") +
+                          " --overlay " + at("far.png"),
+                      dir_);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(fs::exists(at("far.png")));
+}
+
+// --- The contract: NaN points are allowed, so an all-NaN cloud is a frame with no surface --
+
+TEST_F(Hostile, AllNanCloudIsFoundFalseWithAReason) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    writeBytes(at("nan.pcd"), pcdAscii(std::vector<std::array<float, 3>>(100, {nan, nan, nan})));
+    const CliResult r = cli(detectArgs(at("nan.pcd")) + " --json " + at("nan.json"), dir_);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    const auto j = nlohmann::json::parse(slurp(at("nan.json")));
+    EXPECT_EQ(j["found"], false);
+    ASSERT_TRUE(j["reason"].is_string());
+    EXPECT_FALSE(j["reason"].get<std::string>().empty());
+}
+
+// --- Memory bombs: valid-looking files refused from their headers -------------------------
+
+TEST_F(Hostile, CompressedPcdBeyondTheLimitsIsRefusedBeforeDecompressing) {
+    // 2^24 points of 48 bytes = 768 MiB once decompressed (> 512 MiB), in a few bytes.
+    std::string pcd = "VERSION 0.7\nFIELDS x y z pad\nSIZE 4 4 4 4\nTYPE F F F F\nCOUNT 1 1 1 9\nWIDTH 4096\nHEIGHT 4096\n"
+                      "POINTS 16777216\nDATA binary_compressed\n";
+    bagtest::putU32(pcd, 10000000);
+    bagtest::putU32(pcd, 48u << 24);
+    pcd += std::string(10000000, '\0');
+    writeBytes(at("bomb.pcd"), pcd);
+    refused(detectArgs(at("bomb.pcd")) + " --json " + at("o.json"), at("bomb.pcd"), "exceeds the limit", {at("o.json")});
+    // More points than the limit.
+    writeBytes(at("many.pcd"), "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 5000\nHEIGHT 5000\n"
+                               "POINTS 25000000\nDATA binary_compressed\n" + std::string(16, '\0'));
+    refused(detectArgs(at("many.pcd")), at("many.pcd"), "exceeds the limit of 16777216 points");
+}
+
+TEST_F(Hostile, HugeImagesAreRefusedFromTheirHeader) {
+    writeBytes(at("huge_depth.png"), pngHeader(16384, 16384));
+    refused("detect --calib " + sim("calib.yaml") + " --depth " + at("huge_depth.png") + " --camera " + sim("camera.yaml") +
+                " --json " + at("o.json"),
+            at("huge_depth.png"), "exceeds the limit", {at("o.json")});
+    writeBytes(at("huge_picture.png"), pngHeader(30000, 30000));
+    const CliResult det = cli("detect --calib " + sim("calib.yaml") + " --cloud " + sim("cloud.pcd") + " --json " + at("det.json"), dir_);
+    ASSERT_EQ(det.status, 0) << det.err;
+    refused("correct --calib " + sim("calib.yaml") + " --detection " + at("det.json") + " --image " + at("huge_picture.png") +
+                " --out " + at("fb.png") + " --json " + at("k.json"),
+            at("huge_picture.png"), "exceeds the limit", {at("fb.png"), at("k.json")});
+    // A framebuffer of 16384 x 16384 (1.2 GB per frame).
+    writeBytes(at("calib.yaml"), "projector:\n  resolution: [16384, 16384]\n  fov_deg: [40, 25]\n  axis:\n"
+                                 "    origin: [0, 0.12, 0]\n    direction: [0, 0, 1]\n");
+    refused("detect --calib " + at("calib.yaml") + " --cloud " + sim("cloud.pcd"), at("calib.yaml"), "exceeds the limit");
+    // Not an image format projsurf reads; a truncated PNG (libpng would print its own lines).
+    writeBytes(at("junk.png"), "GIF89a" + std::string(100, 'x'));
+    refused("correct --calib " + sim("calib.yaml") + " --detection " + at("det.json") + " --image " + at("junk.png") +
+                " --out " + at("fb.png"),
+            at("junk.png"), "not a readable image", {at("fb.png")});
+    const std::string rgb = slurp(sim("rgb.png"));
+    writeBytes(at("cut.png"), rgb.substr(0, rgb.size() / 2));
+    refused("correct --calib " + sim("calib.yaml") + " --detection " + at("det.json") + " --image " + at("cut.png") +
+                " --out " + at("fb.png"),
+            at("cut.png"), "not a readable image", {at("fb.png")});
+}
+
+TEST_F(Hostile, ThinDepthFrameGivesASmallOverlay) {
+    // 1 x 2000: the overlay was scaled by its width alone (960 x 1920000 pixels).
+    writeBytes(at("camera.yaml"), "camera: {width: 1, height: 2000, fx: 525, fy: 525, cx: 0, cy: 1000}\n");
+    cv::Mat depth(2000, 1, CV_16UC1, cv::Scalar(2000));
+    ASSERT_TRUE(cv::imwrite(at("thin.png"), depth));
+    const CliResult r = cli("detect --calib " + sim("calib.yaml") + " --depth " + at("thin.png") + " --camera " + at("camera.yaml") +
+                          " --overlay " + at("thin_overlay.png") + " --json " + at("thin.json"),
+                      dir_);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const cv::Mat overlay = cv::imread(at("thin_overlay.png"));
+    ASSERT_FALSE(overlay.empty());
+    EXPECT_LT(overlay.total(), 8u << 20) << overlay.cols << " x " << overlay.rows;
+}
+
+// --- Partial output: every output of one command, or none ----------------------------------
+
+TEST_F(Hostile, NoPartialOutputWhenALaterOutputFails) {
+    // detect: --json fine, --overlay with an extension no encoder has, or a directory.
+    refused(detectArgs(sim("cloud.pcd")) + " --json " + at("d.json") + " --overlay " + at("d.xyz"), at("d.xyz"),
+            "extension", {at("d.json"), at("d.xyz")});
+    fs::create_directories(at("adir.png"));
+    refused(detectArgs(sim("cloud.pcd")) + " --json " + at("d.json") + " --overlay " + at("adir.png"), at("adir.png"),
+            "directory", {at("d.json")});
+    // correct: framebuffer fine, --json a directory.
+    const CliResult det = cli(detectArgs(sim("cloud.pcd")) + " --json " + at("det.json"), dir_);
+    ASSERT_EQ(det.status, 0) << det.err;
+    fs::create_directories(at("k.json"));
+    refused("correct --calib " + sim("calib.yaml") + " --detection " + at("det.json") + " --image " + sim("rgb.png") +
+                " --out " + at("fb.png") + " --json " + at("k.json"),
+            at("k.json"), "directory", {at("fb.png")});
+}
+
+// --- Silent truncation: an unreadable frame in the middle of a sequence --------------------
+
+TEST_F(Hostile, UnreadableMiddleFrameIsAnErrorNamingIt) {
+    const CliResult det = cli(detectArgs(sim("cloud.pcd")) + " --json " + at("det.json"), dir_);
+    ASSERT_EQ(det.status, 0) << det.err;
+    fs::create_directories(at("frames"));
+    const cv::Mat pic(120, 160, CV_8UC3, cv::Scalar(40, 200, 90));
+    for (int k = 0; k < 3; ++k) ASSERT_TRUE(cv::imwrite(at("frames/f_000" + std::to_string(k) + ".png"), pic));
+    writeBytes(at("frames/f_0001.png"), "\x89PNG\r\n\x1a\n but then nothing");
+    const std::string base = "correct --calib " + sim("calib.yaml") + " --detection " + at("det.json");
+    refused(base + " --image " + at("frames/f_%04d.png") + " --out " + at("out.avi") + " --json " + at("k.json"),
+            at("frames/f_0001.png"), "not a readable image", {at("out.avi"), at("k.json")});
+    refused(base + " --image " + at("frames/f_%04d.png") + " --out " + at("out_%04d.png"), at("frames/f_0001.png"),
+            "not a readable image", {at("out_0000.png")});
+    // An unreadable video file.
+    writeBytes(at("junk.mp4"), std::string(5000, 'j'));
+    refused(base + " --image " + at("junk.mp4") + " --out " + at("out.avi"), at("junk.mp4"), "video", {at("out.avi")});
+}
+
+// --- One stderr line: a capture number out of range ----------------------------------------
+
+TEST_F(Hostile, CaptureNumberOutOfRangeIsOneLineNamingIt) {
+    fs::copy(sim_ / "captures", dir_ / "captures");
+    fs::copy_file(sim_ / "captures" / "capture_0_rgb.png", dir_ / "captures" / "capture_99999999999_rgb.png");
+    refused("calibrate --captures " + at("captures") + " --out " + at("calib.yaml"), "capture_99999999999_rgb.png",
+            "out of range", {at("calib.yaml")});
+}
+
+// --- Text files: size and nesting ----------------------------------------------------------
+
+TEST_F(Hostile, DeepOrHugeYamlAndJsonAreRefused) {
+    writeBytes(at("deep.yaml"), "projector: " + std::string(1000, '[') + "\n");
+    refused("detect --calib " + at("deep.yaml") + " --cloud " + sim("cloud.pcd"), at("deep.yaml"), "YAML");
+    writeBytes(at("big.yaml"), "camera:\n" + std::string(1 << 20, '#') + "\n");
+    refused("detect --calib " + sim("calib.yaml") + " --depth " + sim("depth.png") + " --camera " + at("big.yaml"),
+            at("big.yaml"), "exceeds the limit");
+    writeBytes(at("deep.json"), std::string(100000, '[') + std::string(100000, ']'));
+    refused("correct --calib " + sim("calib.yaml") + " --detection " + at("deep.json") + " --image " + sim("rgb.png") +
+                " --out " + at("fb.png"),
+            at("deep.json"), "JSON", {at("fb.png")});
+}
