@@ -13,7 +13,8 @@ san="-fsanitize=address,undefined -fsanitize=float-cast-overflow -fno-sanitize-r
 CC=clang CXX=clang++ cmake -S . -B "$tree" -DCMAKE_BUILD_TYPE=Sanitize \
   -DCMAKE_C_FLAGS_SANITIZE="-O1 -g1 $san" -DCMAKE_CXX_FLAGS_SANITIZE="-O1 -g1 $san" \
   -DCMAKE_EXE_LINKER_FLAGS="$san" -DCMAKE_SHARED_LINKER_FLAGS="$san" \
-  -DPROJSURF_BUILD_BENCH=OFF -DPROJSURF_BUILD_ROS=OFF -DPROJSURF_BUILD_FUZZ=ON >/dev/null
+  -DPROJSURF_BUILD_BENCH=OFF -DPROJSURF_BUILD_ROS=OFF -DPROJSURF_BUILD_PYTHON=OFF -DPROJSURF_INSTALL=OFF \
+  -DPROJSURF_BUILD_FUZZ=ON >/dev/null
 cmake --build "$tree" -j"$(nproc)" --target projsurf projsurf_tests
 built=$(date +%s)
 

@@ -56,11 +56,13 @@ double tilt(const Plane &p, const Eigen::Vector3d &down) { return std::asin(std:
 }  // namespace
 
 std::vector<PlanarRegion> findVerticalRegions(const PointGrid &grid, const Eigen::Vector3d &gravity,
-                                              const DepthTolerance &tolerance, const PlanarRegionOptions &options) {
+                                              const DepthTolerance &tolerance, const PlanarRegionOptions &options,
+                                              std::vector<std::int16_t> *labels) {
     const Eigen::Vector3d down = gravity.normalized();
     const int cs = std::max(2, options.cell);
     const int cols = grid.cols / cs, rows = grid.rows / cs;
     std::vector<PlanarRegion> out;
+    if (labels) labels->assign(static_cast<std::size_t>(grid.cols) * grid.rows, -1);
     if (!grid.organized || cols < 1 || rows < 1) return out;
 
     // 1. A plane per cell; keep the flat, vertical ones.
@@ -106,6 +108,8 @@ std::vector<PlanarRegion> findVerticalRegions(const PointGrid &grid, const Eigen
     struct Grown {
         Moments m;
         int cells = 0;
+        cv::Rect box;  ///< cells
+        void take(int r, int c) { box = box.area() ? (box | cv::Rect(c, r, 1, 1)) : cv::Rect(c, r, 1, 1); }
     };
     std::vector<Grown> regions;
     for (int seed : order) {
@@ -114,6 +118,7 @@ std::vector<PlanarRegion> findVerticalRegions(const PointGrid &grid, const Eigen
         Grown g;
         g.m = cell[seed];
         g.cells = 1;
+        g.take(seed / cols, seed % cols);
         region_of[seed] = id;
         Fit plane = cell_fit[seed];
         int fitted_cells = 1;
@@ -134,6 +139,7 @@ std::vector<PlanarRegion> findVerticalRegions(const PointGrid &grid, const Eigen
                 region_of[j] = id;
                 g.m += cell[j];
                 ++g.cells;
+                g.take(rc[0], rc[1]);
                 queue.push_back(j);
                 // Refit as the region grows.
                 if (g.cells >= fitted_cells + std::max(1, fitted_cells / options.refit_every)) {
@@ -152,30 +158,78 @@ std::vector<PlanarRegion> findVerticalRegions(const PointGrid &grid, const Eigen
         if (regions[i].cells >= options.min_cells) big.push_back(i);
     std::stable_sort(big.begin(), big.end(), [&](int a, int b) { return regions[a].m.n > regions[b].m.n; });
     std::vector<Grown> merged;
+    std::vector<int> merged_of(regions.size(), -1);
     for (int i : big) {
         const Fit fi = fit(regions[i].m);
         if (!fi.ok) continue;
         bool joined = false;
         for (Grown &g : merged) {
+            const int gi = static_cast<int>(&g - merged.data());
             const Fit fg = fit(g.m);
             const float z = static_cast<float>(fi.mean.z());
             if (std::abs(fg.plane.normal.dot(fi.plane.normal)) > std::cos(options.merge_angle) &&
                 regions[i].m.rmsTo(fg.plane) < tolerance.margin(z)) {
                 g.m += regions[i].m;
                 g.cells += regions[i].cells;
+                g.box |= regions[i].box;
+                merged_of[i] = gi;
                 joined = true;
                 break;
             }
         }
-        if (!joined) merged.push_back(regions[i]);
+        if (!joined) {
+            merged_of[i] = static_cast<int>(merged.size());
+            merged.push_back(regions[i]);
+        }
     }
-    for (const Grown &g : merged) {
-        const Fit f = fit(g.m);
+    std::vector<int> order_of(merged.size(), -1);  // merged region -> index in `out`
+    for (std::size_t k = 0; k < merged.size(); ++k) {
+        const Fit f = fit(merged[k].m);
         if (!f.ok || tilt(f.plane, down) > options.max_tilt) continue;
-        out.push_back({f.plane, static_cast<int>(g.m.n), g.cells});
+        order_of[k] = static_cast<int>(out.size());
+        const cv::Rect &b = merged[k].box;
+        const int px = cs * grid.step;
+        out.push_back({f.plane, static_cast<int>(merged[k].m.n), merged[k].cells,
+                       cv::Rect(b.x * px, b.y * px, b.width * px, b.height * px)});
     }
-    std::stable_sort(out.begin(), out.end(), [](const PlanarRegion &a, const PlanarRegion &b) { return a.points > b.points; });
-    return out;
+    std::vector<int> rank(out.size());
+    for (std::size_t k = 0; k < out.size(); ++k) rank[k] = static_cast<int>(k);
+    std::stable_sort(rank.begin(), rank.end(), [&](int a, int b) { return out[a].points > out[b].points; });
+    std::vector<PlanarRegion> sorted;
+    std::vector<int> position(out.size());
+    for (std::size_t k = 0; k < rank.size(); ++k) {
+        position[rank[k]] = static_cast<int>(k);
+        sorted.push_back(out[rank[k]]);
+    }
+    if (labels)
+        for (int k = 0; k < static_cast<int>(cell.size()); ++k) {
+            const int r = region_of[k];
+            const int m = r >= 0 ? merged_of[r] : -1;
+            const int o = m >= 0 ? order_of[m] : -1;
+            if (o < 0) continue;
+            const std::int16_t id = static_cast<std::int16_t>(std::min(position[o], 32767));
+            const int cr = k / cols, cc = k % cols;
+            for (int gr = cr * cs; gr < (cr + 1) * cs; ++gr)
+                std::fill_n(labels->data() + static_cast<std::size_t>(gr) * grid.cols + cc * cs, cs, id);
+        }
+    return sorted;
+}
+
+void nearerOtherMask(const PointGrid &grid, const cv::Rect &box, const std::vector<std::int16_t> &labels,
+                     const std::vector<PlanarRegion> &regions, const std::vector<char> &other, const Plane &plane,
+                     const DepthTolerance &tolerance, std::vector<std::uint8_t> &mask) {
+    mask.assign(labels.size(), 0);
+    const cv::Rect area = box & cv::Rect(0, 0, grid.cols, grid.rows);
+    const int n = static_cast<int>(std::min(other.size(), regions.size()));
+    for (int gr = area.y; gr < area.y + area.height; ++gr)
+        for (int gc = area.x; gc < area.x + area.width; ++gc) {
+            const std::size_t i = static_cast<std::size_t>(gr) * grid.cols + gc;
+            const int j = labels[i];
+            if (j < 0 || j >= n || !other[j]) continue;
+            const Eigen::Vector3d p(grid.x[i], grid.y[i], grid.z[i]);
+            mask[i] = std::abs(regions[j].plane.signedDistance(p)) + 0.25 * tolerance.band(grid.z[i]) <
+                      std::abs(plane.signedDistance(p));
+        }
 }
 
 }  // namespace projsurf

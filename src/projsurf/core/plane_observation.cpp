@@ -30,8 +30,8 @@ struct RasterShape {
 PROJSURF_CLONES
 void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane, const PlaneFrame &frame,
                  const RasterFrame &raster, const Eigen::Vector3d &projector_origin, const DepthTolerance &tolerance,
-                 const RasterShape &shape, std::int32_t *bins, std::int32_t *seen, std::int32_t *off_counts,
-                 int &support_points) {
+                 const RasterShape &shape, const std::uint8_t *exclude, std::int32_t *bins, std::int32_t *seen,
+                 std::int32_t *off_counts, int &support_points) {
     // Everything in float and as plain scalars, so that the per-point loop vectorises.
     // Raster column of a point q of the plane: q . R + cr; row: q . U + cu.
     const Eigen::Vector3d R = frame.right / raster.cell, U = -frame.up / raster.cell;
@@ -57,6 +57,7 @@ void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane
     for (int gr = area.y; gr < area.y + area.height; ++gr) {
         const std::size_t first = static_cast<std::size_t>(gr) * grid.cols + area.x;
         const float *X = grid.x.data() + first, *Y = grid.y.data() + first, *Z = grid.z.data() + first;
+        const std::uint8_t *E = exclude + first;
         // Classify and place every point of the row. Integer flags combined with &, and
         // selects between values computed beforehand: the loop stays straight-line and
         // vectorises (see CMakeLists.txt on trapping math). NaN points fail every test.
@@ -77,7 +78,8 @@ void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane
             const float sc = o_col + s * (pc - o_col) + col0, sw = o_row + s * (pw - o_row) + row0;
             const float ac = pc + col0, aw = pw + row0;                // on the plane: its foot
             const float r = h - shape.at(ac, aw);                       // off the wall's shape
-            const std::int32_t on = std::abs(r) <= band, beyond = r < -margin, between = (r > margin) & (h < proj_h);
+            const std::int32_t on = (std::abs(r) <= band) & (E[i] == 0), beyond = r < -margin,
+                               between = (r > margin) & (h < proj_h);
             const float fc = beyond ? tc : sc, fw = beyond ? tw : sw;  // off it: camera or projector ray
             const float bc = on ? ac : fc, bw = on ? aw : fw;
             const std::int32_t bin_in = (on | beyond | between) & (bc >= 0.0f) & (bc < cols) & (bw >= 0.0f) & (bw < rows);
@@ -108,7 +110,7 @@ void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane
 
 void observePlane(const PointGrid &grid, const cv::Rect &box, const Plane &plane, const PlaneFrame &frame,
                   const RasterFrame &raster, const Eigen::Vector3d &projector_origin, const DepthTolerance &tolerance,
-                  PlaneObservation &out, const WallShape &shape) {
+                  PlaneObservation &out, const WallShape &shape, const std::vector<std::uint8_t> *exclude) {
     const int rows = raster.rows, cols = raster.cols;
     const std::size_t row_cells = static_cast<std::size_t>(cols), total = (3 * rows + 1 + 2 * rows + 2) * row_cells;
     if (out.counts.size() < total) out.counts.resize(total);
@@ -121,7 +123,11 @@ void observePlane(const PointGrid &grid, const cv::Rect &box, const Plane &plane
     out.seen = view(rays);
     out.off = view(rays + (rows + 1) * row_cells);
     const cv::Rect area = box & cv::Rect(0, 0, grid.cols, grid.rows);
-    observeRows(grid, area, plane, frame, raster, projector_origin, tolerance, RasterShape(shape, raster), bins, rays,
+    const bool use = exclude && exclude->size() == grid.x.size();
+    thread_local std::vector<std::uint8_t> zeros;
+    if (!use && zeros.size() < grid.x.size()) zeros.assign(grid.x.size(), 0);
+    observeRows(grid, area, plane, frame, raster, projector_origin, tolerance, RasterShape(shape, raster),
+                use ? exclude->data() : zeros.data(), bins, rays,
                 rays + (rows + 1) * row_cells, out.support_points);
 }
 

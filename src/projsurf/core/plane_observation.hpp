@@ -41,10 +41,11 @@ struct PlaneObservation {
 /// wall (|r| <= band), beyond it (r < -margin), between the projector and the wall
 /// (margin < r, h < projector height), or in between (counted in `seen` only); h is its signed
 /// distance to the plane, positive towards the camera, and r = h - shape's height at its foot.
-/// Reuses `out`'s storage.
+/// Grid elements with a non-zero `exclude` (grid-sized; points of another surface) are never
+/// support. Reuses `out`'s storage.
 void observePlane(const PointGrid &grid, const cv::Rect &box, const Plane &plane, const PlaneFrame &frame,
                   const RasterFrame &raster, const Eigen::Vector3d &projector_origin, const DepthTolerance &tolerance,
-                  PlaneObservation &out, const WallShape &shape = {});
+                  PlaneObservation &out, const WallShape &shape = {}, const std::vector<std::uint8_t> *exclude = nullptr);
 
 /// The default surface check (checkSurface's rule) read off an observation: the points whose
 /// camera ray crosses the plane in the cells whose centres lie in [lo, hi] (plane

@@ -35,6 +35,7 @@ struct PlaneCandidate : Candidate {
     cv::Rect image_box;                  ///< organized clouds: the pixels that matter to it (empty = all)
     double bound = 0.0;                  ///< m^2, the largest rectangle its raster could hold
     double spread_area = 0.0;            ///< m^2, the bounding box of its inliers on the plane
+    std::vector<char> other_surfaces;    ///< depth images: the planar regions on other planes than this one
     PlaneObservation *observed = nullptr;///< what the camera saw of it, per raster cell
     WallShape shape;                     ///< how the seen wall departs from the plane
     DepthTolerance tolerance;            ///< the band about the shape (the noise measured on it)
@@ -69,16 +70,28 @@ PlaneCandidate makeCandidate(const CloudSample &s, const Plane &plane, const std
 
 /// 3.2.1 on a depth image: its planar regions, biggest first, each with the sampled points on it.
 std::vector<PlaneCandidate> findRegionCandidates(const CloudSample &s, const PointGrid &grid, const DetectorConfig &cfg,
-                                                 const Eigen::Vector3d &gravity) {
+                                                 const Eigen::Vector3d &gravity, std::vector<std::int16_t> &labels,
+                                                 std::vector<PlanarRegion> &regions) {
     PlanarRegionOptions opt = cfg.planes.regions;
     opt.max_tilt = cfg.max_tilt;
     std::vector<int> all(s.points.size());
     for (std::size_t i = 0; i < s.points.size(); ++i) all[i] = static_cast<int>(i);
     std::vector<PlaneCandidate> out;
-    for (const PlanarRegion &r : findVerticalRegions(grid, gravity, cfg.tolerance, opt)) {
-        if (static_cast<int>(out.size()) >= cfg.planes.max_planes) break;
-        const std::vector<int> inliers = planeInliers(s.points, all, s.band, r.plane);
-        if (inliers.size() >= 3) out.push_back(makeCandidate(s, r.plane, inliers, gravity));
+    regions = findVerticalRegions(grid, gravity, cfg.tolerance, opt, &labels);
+    for (int k = 0; k < static_cast<int>(regions.size()) && static_cast<int>(out.size()) < cfg.planes.max_planes; ++k) {
+        const std::vector<int> inliers = planeInliers(s.points, all, s.band, regions[k].plane);
+        if (inliers.size() < 3) continue;
+        PlaneCandidate c = makeCandidate(s, regions[k].plane, inliers, gravity);
+        // Regions of other surfaces (not this plane seen in pieces): where they meet it (a
+        // corner), their points are no support for it.
+        c.other_surfaces.assign(regions.size(), 0);
+        for (std::size_t j = 0; j < regions.size(); ++j) {
+            const Plane &p = regions[j].plane;
+            const double z = std::abs(p.d);  // about the depth the two planes are compared at
+            c.other_surfaces[j] = std::abs(p.normal.dot(c.plane.normal)) < std::cos(opt.merge_angle) ||
+                                  std::abs(p.d - c.plane.d) > cfg.tolerance.margin(static_cast<float>(z));
+        }
+        out.push_back(std::move(c));
     }
     return out;
 }
@@ -118,8 +131,9 @@ void shapeWall(const Cloud &cloud, const CloudSample &s, const DetectorConfig &c
     c.inlier_indices.clear();
     for (std::size_t i = 0; i < s.points.size(); ++i) {
         const Eigen::Vector3d p = s.points[i].cast<double>();
+        const int k = s.indices[i];
         if (std::abs(c.plane.signedDistance(p) - c.shape.height(c.frame.toPlane(p))) <= c.tolerance.band(s.points[i].z()))
-            c.inlier_indices.push_back(s.indices[i]);
+            c.inlier_indices.push_back(k);
     }
     c.inliers = static_cast<int>(c.inlier_indices.size());
 }
@@ -162,10 +176,17 @@ bool frameCandidate(const Cloud &cloud, const CloudSample &s, const Projector &p
 }
 
 /// 3.2.2: the free surface of the candidate from one pass over the points where it is seen.
-void observeFreeSpace(const Cloud &cloud, const PointGrid &grid, const Projector &projector, const DetectorConfig &cfg,
+void observeFreeSpace(const Cloud &cloud, DefaultScratch &scratch, const Projector &projector, const DetectorConfig &cfg,
                       PlaneCandidate &c) {
+    const PointGrid &grid = scratch.grid;
+    // On depth images, points of another surface nearer its plane than this one's (where a wall
+    // meets this one at a corner) are no support for it, even within its band.
+    const bool exclude = cfg.free_space.exclude_other_surfaces && !c.other_surfaces.empty() && !scratch.region_labels.empty();
+    if (exclude)
+        nearerOtherMask(grid, grid.gridBox(c.image_box), scratch.region_labels, scratch.regions, c.other_surfaces, c.plane,
+                        c.tolerance, scratch.exclude);
     observePlane(grid, grid.gridBox(c.image_box), c.plane, c.frame, c.raster, projector.origin, c.tolerance, *c.observed,
-                 c.shape);
+                 c.shape, exclude ? &scratch.exclude : nullptr);
     // The gaps between neighbouring samples on the wall are closed, up to a limit.
     const double spacing = sampleSpacing(cloud, c.inlier_indices, c.plane, grid.step, c.tolerance, c.spread_area,
                                          c.observed->support_points);
@@ -232,7 +253,8 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     // 2. Every vertical plane in view, biggest first (3.2.1).
     fillPointGrid(cloud, cfg.free_space.stride, scratch.grid);
     const bool image = cfg.planes.image_regions && scratch.grid.organized;
-    std::vector<PlaneCandidate> candidates = image ? findRegionCandidates(sample, scratch.grid, cfg, gravity)
+    scratch.region_labels.clear();
+    std::vector<PlaneCandidate> candidates = image ? findRegionCandidates(sample, scratch.grid, cfg, gravity, scratch.region_labels, scratch.regions)
                                                    : findCandidates(sample, cfg, gravity);
     for (const auto &c : candidates) det.debug.candidates.push_back(c.plane);
     time.lap("planes");
@@ -259,7 +281,7 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     for (int k : usable) {
         PlaneCandidate &c = candidates[k];
         if (chosen && c.bound <= chosen->rectangle.area()) break;
-        observeFreeSpace(cloud, scratch.grid, projector, cfg, c);
+        observeFreeSpace(cloud, scratch, projector, cfg, c);
         time.lap("free_space");
         const bool ok = placeRectangle(aspect, c);
         time.lap("rectangle");

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "projsurf/core/cloud.hpp"
+#include "projsurf/core/planar_regions.hpp"
 #include "projsurf/core/plane_observation.hpp"
 #include "projsurf/core/point_grid.hpp"
 #include "projsurf/core/projector.hpp"
@@ -17,6 +18,9 @@ namespace projsurf {
 struct DefaultScratch {
     PointGrid grid;
     std::vector<PlaneObservation> observations;  ///< one per candidate plane
+    std::vector<std::int16_t> region_labels;     ///< depth images: the planar region of each grid element
+    std::vector<PlanarRegion> regions;           ///< depth images: the planar regions found
+    std::vector<std::uint8_t> exclude;           ///< grid elements of another region than the candidate's
 };
 
 /// `gravity` in the camera frame; aspect = width / height.

@@ -54,6 +54,7 @@ struct WallConfig {
 struct FreeSpaceConfig {
     double cell = 0.01;            ///< m, raster cell (area error < 0.05 m^2 at 3 m, measured)
     int stride = 2;                ///< pixel step of the pass on organized clouds (3 lost 7 % of the area behind a person)
+    bool exclude_other_surfaces = true; ///< depth images: points clearly nearer another region's plane are no support
     int max_gap_cells = 8;         ///< largest gap between wall samples closed, cells (sensor holes up to 8 cm)
     int min_blocked_neighbours = 2;///< a blocked cell needs this many blocked cells in its 3x3: single cells are noise
     double image_margin = 1.0 / 64;///< of the image width: margin around where a plane is seen (mixed pixels, grazing angles)
