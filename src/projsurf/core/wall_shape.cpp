@@ -92,8 +92,8 @@ double localNoiseK(const Cloud &cloud, const std::vector<int> &sample, const std
         }
     }
     if (static_cast<int>(diffs.size()) < min_pairs) return 0.0;
-    std::sort(diffs.begin(), diffs.end());
     const std::size_t keep = diffs.size() * 9 / 10;
+    std::nth_element(diffs.begin(), diffs.begin() + keep, diffs.end());
     double sum = 0.0;
     for (std::size_t k = 0; k < keep; ++k) sum += diffs[k];
     // a - b ~ N(0, sqrt(2) sigma) for independent readings; the mean of the smallest 90 % of

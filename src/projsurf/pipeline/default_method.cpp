@@ -260,11 +260,8 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     time.lap("planes");
     if (candidates.empty()) return time.fail("no vertical plane in view");
 
-    // 3. How each wall departs from its plane (the depth camera's bend) and its noise.
-    for (PlaneCandidate &c : candidates) shapeWall(cloud, sample, cfg, c);
-    time.lap("wall_shape");
 
-    // 4. Those the projector reaches, the largest rectangle they could hold first.
+    // 3. Those the projector reaches, the largest rectangle they could hold first.
     std::vector<int> usable;
     for (int k = 0; k < static_cast<int>(candidates.size()); ++k)
         if (frameCandidate(cloud, sample, projector, cfg, aspect, candidates[k])) usable.push_back(k);
@@ -273,14 +270,21 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     for (std::size_t k = 0; k < candidates.size(); ++k) candidates[k].observed = &scratch.observations[k];
     time.lap("free_space");
 
-    // 5. Free space (3.2.2), rectangle and surface check (3.2.3), candidate by candidate; one
-    // that could not hold a bigger rectangle than the one accepted is not looked at.
+    // 4. Each wall's shape, free space (3.2.2), rectangle and surface check (3.2.3), candidate
+    // by candidate; one that could not hold a bigger rectangle than the one accepted is not
+    // looked at.
     const PlaneCandidate *chosen = nullptr, *checked = nullptr;  // accepted; the check reported
     SurfaceCheckResult check;
     std::vector<int> placed;
     for (int k : usable) {
         PlaneCandidate &c = candidates[k];
         if (chosen && c.bound <= chosen->rectangle.area()) break;
+        // How the wall departs from its plane (the depth camera's bend) and its noise; on that
+        // shape its points may reach further, so the raster is laid again.
+        shapeWall(cloud, sample, cfg, c);
+        const bool framed = frameCandidate(cloud, sample, projector, cfg, aspect, c);
+        time.lap("wall_shape");
+        if (!framed) continue;
         observeFreeSpace(cloud, scratch, projector, cfg, c);
         time.lap("free_space");
         const bool ok = placeRectangle(aspect, c);
@@ -299,7 +303,7 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     if (checked) check.outlier_indices = checkOutliers(sample, scratch.grid, *checked);
     time.lap("surface_check");
 
-    // 6. The answer, and the plane shown with it.
+    // 5. The answer, and the plane shown with it.
     std::sort(placed.begin(), placed.end(),
               [&](int a, int b) { return candidates[a].rectangle.area() > candidates[b].rectangle.area(); });
     const PlaneCandidate &shown = chosen ? *chosen : candidates[!placed.empty() ? placed[0] : (usable.empty() ? 0 : usable[0])];
