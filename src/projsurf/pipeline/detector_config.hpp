@@ -23,6 +23,7 @@ struct PaperConfig {
     double cell = 0.02;                 ///< m, raster cell of the free-space matrices (paper 3.2.2)
     double outlier_distance = 0.05;     ///< m, |z - mean z| above this is an outlier (paper 3.2.3)
     int max_outliers = 5000;            ///< more outliers reject the surface (paper 4.3)
+    int max_voxels = 500000;            ///< more voxels are not searched (the hull keeps them all: memory, time); a VGA frame has 307,200 points
 };
 
 /// Default method, stage 1: the vertical planes in view: on depth images, planar regions of the

@@ -72,6 +72,9 @@ Detection detectPaper(const Cloud &cloud, const Projector &projector, const Dete
     const std::vector<Point> voxels = voxelDownsample(cloud.points, cfg.paper.voxel_leaf);
     time.lap("voxel_grid");
     if (voxels.size() < 3) return time.fail("no points to search (empty or all-NaN cloud)");
+    if (static_cast<long long>(voxels.size()) > cfg.paper.max_voxels)
+        return time.fail("the cloud fills " + std::to_string(voxels.size()) + " voxels, more than the paper method searches (" +
+                         std::to_string(cfg.paper.max_voxels) + "): use the default method");
 
     const auto found = findPaperPlane(voxels, cfg, gravity);
     time.lap("plane");
