@@ -22,35 +22,15 @@
 
 #include "projsurf/io/yaml_files.hpp"
 #include "synthetic_rig.hpp"
+#include "cli_run.hpp"
 
 namespace fs = std::filesystem;
 using namespace projsurf;
+using projsurf::test::cli;
+using projsurf::test::CliRun;
+using projsurf::test::slurp;
 
 namespace {
-
-struct CliRun {
-    int status = -1;
-    std::string out, err;
-};
-
-std::string slurp(const std::string &path) {
-    std::ifstream in(path);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-/// Runs the CLI with a time limit; captures stdout and stderr.
-CliRun cli(const std::string &args, const fs::path &dir) {
-    const std::string o = (dir / "stdout.txt").string(), e = (dir / "stderr.txt").string();
-    const std::string cmd = "timeout 120 " + std::string(PROJSURF_CLI) + " " + args + " >" + o + " 2>" + e;
-    CliRun r;
-    const int s = std::system(cmd.c_str());
-    r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-    r.out = slurp(o);
-    r.err = slurp(e);
-    return r;
-}
 
 fs::path freshDir(const std::string &name) {
     const fs::path d = fs::temp_directory_path() / ("projsurf_" + name + "_" + std::to_string(::getpid()));

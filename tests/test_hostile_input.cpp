@@ -24,39 +24,17 @@
 #include "projsurf/io/limits.hpp"
 #include "projsurf/io/rosbag_clouds.hpp"
 #include "projsurf/io/yaml_files.hpp"
+#include "cli_run.hpp"
 
 namespace fs = std::filesystem;
 using namespace projsurf;
+using projsurf::test::cli;
+using projsurf::test::CliRun;
+using projsurf::test::slurp;
 
 namespace {
 
-struct CliResult {
-    int status = -1;
-    std::string out, err;
-};
-
-std::string slurp(const fs::path &path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 void writeBytes(const fs::path &path, const std::string &bytes) { std::ofstream(path, std::ios::binary) << bytes; }
-
-/// The CLI with a hang guard (60 s; the limits promise < 30 s).
-CliResult cli(const std::string &args, const fs::path &dir) {
-    const fs::path o = dir / "stdout.log", e = dir / "stderr.log";
-    const std::string cmd = "timeout 60 " + std::string(PROJSURF_CLI) + " " + args + " >" + o.string() + " 2>" + e.string();
-    CliResult r;
-    const int s = std::system(cmd.c_str());
-    r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-    r.out = slurp(o);
-    r.err = slurp(e);
-    fs::remove(o);
-    fs::remove(e);
-    return r;
-}
 
 int tmpLeftovers(const fs::path &dir) {
     int n = 0;
@@ -97,7 +75,7 @@ class Hostile : public ::testing::Test {
     /// written, no temporary left.
     void refused(const std::string &args, const std::string &file, const std::string &problem,
                  const std::vector<std::string> &outputs = {}) {
-        const CliResult r = cli(args, dir_);
+        const CliRun r = cli(args, dir_);
         EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one stderr line expected:\n" << r.err;
         EXPECT_EQ(r.err.rfind("projsurf: error: ", 0), 0u) << r.err;
@@ -145,7 +123,7 @@ TEST_F(Hostile, BagsAreCheckedRecordByRecord) {
     const Cloud cloud = readCloud(sim("cloud.pcd"));
     const std::string good = bagtest::bagWithClouds({cloud, cloud}, "/points");
     writeBytes(at("good.bag"), good);
-    const CliResult ok = cli("detect --calib " + sim("calib.yaml") + " --bag " + at("good.bag") + " --topic /points --json " +
+    const CliRun ok = cli("detect --calib " + sim("calib.yaml") + " --bag " + at("good.bag") + " --topic /points --json " +
                            at("good.jsonl"),
                        dir_);
     ASSERT_EQ(ok.status, 0) << ok.err;
@@ -207,14 +185,14 @@ TEST_F(Hostile, FarAndNonFinitePointsAreAFrameNotACrash) {
     pts.push_back({inf, -inf, inf});
     writeBytes(at("far.pcd"), pcdAscii(pts));
     for (const char *method : {"default", "paper"}) {
-        const CliResult r = cli(detectArgs(at("far.pcd")) + " --method " + method, dir_);
+        const CliRun r = cli(detectArgs(at("far.pcd")) + " --method " + method, dir_);
         EXPECT_EQ(r.status, 0) << method << ": " << r.err;
         EXPECT_EQ(r.err, "") << method;
         EXPECT_NO_THROW((void)nlohmann::json::parse(r.out)) << r.out;
     }
     // A depth_scale that turns every reading into kilometres and beyond.
     writeBytes(at("camera.yaml"), "camera: {width: 640, height: 480, fx: 525, fy: 525, cx: 319.5, cy: 239.5, depth_scale: 1e-9}\n");
-    const CliResult r = cli("detect --calib " + sim("calib.yaml") + " --depth " + sim("depth.png") + " --camera " + at("camera.yaml") +
+    const CliRun r = cli("detect --calib " + sim("calib.yaml") + " --depth " + sim("depth.png") + " --camera " + at("camera.yaml") +
                           " --overlay " + at("far.png"),
                       dir_);
     EXPECT_EQ(r.status, 0) << r.err;
@@ -226,7 +204,7 @@ TEST_F(Hostile, FarAndNonFinitePointsAreAFrameNotACrash) {
 TEST_F(Hostile, AllNanCloudIsFoundFalseWithAReason) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     writeBytes(at("nan.pcd"), pcdAscii(std::vector<std::array<float, 3>>(100, {nan, nan, nan})));
-    const CliResult r = cli(detectArgs(at("nan.pcd")) + " --json " + at("nan.json"), dir_);
+    const CliRun r = cli(detectArgs(at("nan.pcd")) + " --json " + at("nan.json"), dir_);
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err, "");
     const auto j = nlohmann::json::parse(slurp(at("nan.json")));
@@ -258,7 +236,7 @@ TEST_F(Hostile, HugeImagesAreRefusedFromTheirHeader) {
                 " --json " + at("o.json"),
             at("huge_depth.png"), "exceeds the limit", {at("o.json")});
     writeBytes(at("huge_picture.png"), pngHeader(30000, 30000));
-    const CliResult det = cli("detect --calib " + sim("calib.yaml") + " --cloud " + sim("cloud.pcd") + " --json " + at("det.json"), dir_);
+    const CliRun det = cli("detect --calib " + sim("calib.yaml") + " --cloud " + sim("cloud.pcd") + " --json " + at("det.json"), dir_);
     ASSERT_EQ(det.status, 0) << det.err;
     refused("correct --calib " + sim("calib.yaml") + " --detection " + at("det.json") + " --image " + at("huge_picture.png") +
                 " --out " + at("fb.png") + " --json " + at("k.json"),
@@ -284,7 +262,7 @@ TEST_F(Hostile, ThinDepthFrameGivesASmallOverlay) {
     writeBytes(at("camera.yaml"), "camera: {width: 1, height: 2000, fx: 525, fy: 525, cx: 0, cy: 1000}\n");
     cv::Mat depth(2000, 1, CV_16UC1, cv::Scalar(2000));
     ASSERT_TRUE(cv::imwrite(at("thin.png"), depth));
-    const CliResult r = cli("detect --calib " + sim("calib.yaml") + " --depth " + at("thin.png") + " --camera " + at("camera.yaml") +
+    const CliRun r = cli("detect --calib " + sim("calib.yaml") + " --depth " + at("thin.png") + " --camera " + at("camera.yaml") +
                           " --overlay " + at("thin_overlay.png") + " --json " + at("thin.json"),
                       dir_);
     ASSERT_EQ(r.status, 0) << r.err;
@@ -303,7 +281,7 @@ TEST_F(Hostile, NoPartialOutputWhenALaterOutputFails) {
     refused(detectArgs(sim("cloud.pcd")) + " --json " + at("d.json") + " --overlay " + at("adir.png"), at("adir.png"),
             "directory", {at("d.json")});
     // correct: framebuffer fine, --json a directory.
-    const CliResult det = cli(detectArgs(sim("cloud.pcd")) + " --json " + at("det.json"), dir_);
+    const CliRun det = cli(detectArgs(sim("cloud.pcd")) + " --json " + at("det.json"), dir_);
     ASSERT_EQ(det.status, 0) << det.err;
     fs::create_directories(at("k.json"));
     refused("correct --calib " + sim("calib.yaml") + " --detection " + at("det.json") + " --image " + sim("rgb.png") +
@@ -314,7 +292,7 @@ TEST_F(Hostile, NoPartialOutputWhenALaterOutputFails) {
 // --- Silent truncation: an unreadable frame in the middle of a sequence --------------------
 
 TEST_F(Hostile, UnreadableMiddleFrameIsAnErrorNamingIt) {
-    const CliResult det = cli(detectArgs(sim("cloud.pcd")) + " --json " + at("det.json"), dir_);
+    const CliRun det = cli(detectArgs(sim("cloud.pcd")) + " --json " + at("det.json"), dir_);
     ASSERT_EQ(det.status, 0) << det.err;
     fs::create_directories(at("frames"));
     const cv::Mat pic(120, 160, CV_8UC3, cv::Scalar(40, 200, 90));

@@ -16,30 +16,15 @@
 #include "projsurf/core/calibration.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/scenarios.hpp"
+#include "cli_run.hpp"
 
 namespace fs = std::filesystem;
 using namespace projsurf;
+using projsurf::test::cli;
+using projsurf::test::CliRun;
+using projsurf::test::slurp;
 
 namespace {
-
-struct CliRun {
-    int status = -1;
-    std::string out, err;
-};
-
-std::string slurp(const fs::path &path) {
-    std::ifstream in(path);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-CliRun cli(const std::string &args, const fs::path &dir) {
-    const fs::path o = dir / "stdout.txt", e = dir / "stderr.txt";
-    const std::string cmd = "timeout 60 " + std::string(PROJSURF_CLI) + " " + args + " >" + o.string() + " 2>" + e.string();
-    const int s = std::system(cmd.c_str());
-    return {WIFEXITED(s) ? WEXITSTATUS(s) : -1, slurp(o), slurp(e)};
-}
 
 fs::path freshDir(const std::string &name) {
     const fs::path d = fs::temp_directory_path() / ("projsurf_" + name + "_" + std::to_string(::getpid()));

@@ -22,6 +22,7 @@
 #include "projsurf/sim/raster.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
+#include "cli_run.hpp"
 
 using namespace projsurf;
 using namespace projsurf::sim;
@@ -375,24 +376,8 @@ TEST(SimScenarios, EveryScenarioRendersItsWall) {
 
 namespace {
 
-struct CliResult {
-    int status = -1;
-    std::string out, err;
-};
-
-std::string slurp(const std::string &path) {
-    std::ifstream in(path);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-CliResult runSimulate(const std::string &args, const std::string &tmp) {
-    const std::string o = tmp + "/stdout.txt", e = tmp + "/stderr.txt";
-    const int s = std::system(("timeout 120 " + std::string(PROJSURF_CLI) + " simulate " + args + " >" + o + " 2>" + e).c_str());
-    CliResult r;
-    r.status = WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-    r.out = slurp(o);
-    r.err = slurp(e);
-    return r;
+projsurf::test::CliRun runSimulate(const std::string &args, const std::string &tmp) {
+    return projsurf::test::cli("simulate " + args, tmp);
 }
 
 std::string freshDir(const std::string &name) {
@@ -407,7 +392,7 @@ std::string freshDir(const std::string &name) {
 TEST(SimCli, WritesTheContractFilesAndTheTruth) {
     const std::string tmp = freshDir("cli");
     const std::string out = tmp + "/frame";
-    const CliResult r = runSimulate("--scenario big_obstacle --distance 2.5 --angle-deg 17.19 --seed 4 --captures 3 --out " + out, tmp);
+    const projsurf::test::CliRun r = runSimulate("--scenario big_obstacle --distance 2.5 --angle-deg 17.19 --seed 4 --captures 3 --out " + out, tmp);
     ASSERT_EQ(r.status, 0) << r.err;
     for (const char *f : {"cloud.pcd", "depth.png", "rgb.png", "camera.yaml", "calib.yaml", "truth.json",
                           "captures/camera.yaml", "captures/capture_0_rgb.png", "captures/capture_2_depth.png"})
@@ -417,7 +402,7 @@ TEST(SimCli, WritesTheContractFilesAndTheTruth) {
     EXPECT_EQ(depth.cols, 640);
     EXPECT_GT(cv::countNonZero(depth), 200000);
     // The truth file matches the library's ground truth for the same scene.
-    const nlohmann::json j = nlohmann::json::parse(slurp(out + "/truth.json"));
+    const nlohmann::json j = nlohmann::json::parse(projsurf::test::slurp(out + "/truth.json"));
     ASSERT_TRUE(j["found"].get<bool>());
     const Scenario s = makeScenario("big_obstacle", 2.5, 17.19);
     const GroundTruth gt = computeGroundTruth(s.scene, SensorModel(), exampleProjector(), s.gravity);
@@ -436,12 +421,12 @@ TEST(SimCli, BadArgumentsExitTwoAndWriteNothing) {
           "--scenario wall --captures 2 --out " + out, "--scenario wall --aspect 16x9 --out " + out,
           "--scenario wall --calib /nonexistent/calib.yaml --out " + out,
           "--scenario wall --picture /nonexistent/p.png --out " + out}) {
-        const CliResult r = runSimulate(args, tmp);
+        const projsurf::test::CliRun r = runSimulate(args, tmp);
         EXPECT_EQ(r.status, 2) << args;
         EXPECT_NE(r.err.find("error"), std::string::npos) << args << ": " << r.err;
         EXPECT_FALSE(std::filesystem::exists(out)) << args;
     }
-    const CliResult list = runSimulate("--list", tmp);
+    const projsurf::test::CliRun list = runSimulate("--list", tmp);
     EXPECT_EQ(list.status, 0);
     for (const auto &name : scenarioNames()) EXPECT_NE(list.out.find(name), std::string::npos) << name;
     std::filesystem::remove_all(tmp);
