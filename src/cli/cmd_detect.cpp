@@ -1,4 +1,5 @@
 // projsurf detect: find the biggest upright area a projector can use on a vertical surface.
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -20,6 +21,8 @@
 namespace projsurf::cli {
 namespace {
 
+constexpr double kTiltWarningDeg = 5.0;  ///< deg, a floor this far from level means the camera is not level
+
 struct DetectOptions {
     std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity, method = "default",
         hull = "concave", bag, topic;
@@ -35,6 +38,44 @@ Detection detectChecked(SurfaceDetector &detector, const Cloud &cloud, const Eig
     } catch (const cv::Exception &e) {
         throw InputError(source, "cannot be processed (" + e.func + ": " + e.err + ")");
     }
+}
+
+/// A level camera is assumed (no --gravity), but the floor says the camera is tilted.
+void warnIfTilted(const Cloud &cloud) {
+    const Eigen::Vector3d level = SurfaceDetector::levelGravity();
+    const auto floor = estimateGravityFromFloor(cloud, level);
+    if (!floor) return;
+    const double deg = std::acos(std::clamp(floor->gravity.dot(level), -1.0, 1.0)) * 180.0 / M_PI;
+    if (deg > kTiltWarningDeg)
+        std::fprintf(stderr,
+                     "projsurf: warning: the floor says the camera is tilted %.0f deg from level; give --gravity auto "
+                     "(or the robot's gravity) so that the picture stands upright\n",
+                     deg);
+}
+
+/// Depths that no RGB-D camera reads (median beyond 10 m or nearer than 0.2 m): a wrong
+/// depth_scale in the camera file is the usual cause.
+void warnIfImplausibleDepth(const Cloud &cloud, const std::string &camera_file) {
+    std::vector<float> z;
+    for (std::size_t i = 0; i < cloud.points.size(); i += 37)
+        if (isFinite(cloud.points[i])) z.push_back(cloud.points[i].z());
+    if (z.size() < 100) return;
+    std::nth_element(z.begin(), z.begin() + z.size() / 2, z.end());
+    const float median = z[z.size() / 2];
+    if (median > 10.0f || median < 0.2f)
+        std::fprintf(stderr, "projsurf: warning: %s: the median depth is %.2f m, outside what RGB-D cameras read; "
+                             "check its depth_scale (depth PNG units per metre)\n",
+                     camera_file.c_str(), median);
+}
+
+/// Options the chosen method does not use.
+void warnIfIgnored(const CLI::App &sub, Method method) {
+    const std::vector<const char *> paper_only{"--hull", "--voxel-leaf", "--ransac-distance", "--max-outliers"};
+    const std::vector<const char *> default_only{"--cell", "--max-planes", "--max-outlier-fraction"};
+    for (const char *name : method == Method::Paper ? default_only : paper_only)
+        if (sub.get_option(name)->count() > 0)
+            std::fprintf(stderr, "projsurf: warning: %s is ignored by the %s method\n", name,
+                         method == Method::Paper ? "paper" : "default");
 }
 
 /// --bag: one detection per cloud of the topic, one JSON object per line (JSON Lines), each
@@ -64,7 +105,7 @@ void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &
     }
 }
 
-void run(const DetectOptions &o) {
+void run(const DetectOptions &o, const CLI::App &sub) {
     // Validate every input before any work, and before any output is written.
     if (!o.bag.empty()) {
         if (!o.cloud.empty() || !o.depth.empty()) throw InputError("arguments", "give only one of --cloud, --depth or --bag");
@@ -83,6 +124,7 @@ void run(const DetectOptions &o) {
     if (o.hull == "concave") cfg.paper.hull = HullKind::Concave;
     else if (o.hull == "convex") cfg.paper.hull = HullKind::Convex;
     else throw InputError("--hull", "expected 'concave' or 'convex', got '" + o.hull + "'");
+    warnIfIgnored(sub, cfg.method);
     const bool auto_gravity = o.gravity == "auto";
     Eigen::Vector3d gravity = SurfaceDetector::levelGravity();
     if (!o.gravity.empty() && !auto_gravity) gravity = parseVector3("--gravity", o.gravity);
@@ -113,7 +155,10 @@ void run(const DetectOptions &o) {
         // No IMU: take "down" from the floor when one is in view, else keep a level camera.
         if (const auto g = estimateGravityFromFloor(cloud, gravity)) gravity = g->gravity;
         else std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
+    } else if (o.gravity.empty()) {
+        warnIfTilted(cloud);
     }
+    if (!o.depth.empty()) warnIfImplausibleDepth(cloud, o.camera);
     SurfaceDetector detector(projector, cfg);
     const Detection det = detectChecked(detector, cloud, gravity, o.cloud.empty() ? o.depth : o.cloud);
     const nlohmann::json j = detectionToJson(det, cfg);
@@ -160,7 +205,7 @@ void addDetectCommand(CLI::App &app) {
     sub->add_option("--max-planes", c.planes.max_planes, "default: vertical planes considered")->check(CLI::Range(1, 20));
     sub->add_option("--max-outlier-fraction", c.check.max_outlier_fraction, "default: outlier share that rejects an area")
         ->check(CLI::Range(0.0, 1.0));
-    sub->callback([o] { run(*o); });
+    sub->callback([o, sub] { run(*o, *sub); });
 }
 
 }  // namespace projsurf::cli

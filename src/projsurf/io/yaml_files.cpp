@@ -70,6 +70,12 @@ Projector readCalibration(const std::string &path) {
     proj.height = static_cast<int>(res[1]);
     if (!(fov[0] > 0 && fov[0] < 170 && fov[1] > 0 && fov[1] < 170))
         throw InputError(path, "projector.fov_deg must be two angles between 0 and 170 degrees");
+    // Likely mistakes that are still numbers: radians for degrees, millimetres for metres.
+    if (fov[0] < 3.2 && fov[1] < 3.2)
+        throw InputError(path, "projector.fov_deg [" + std::to_string(fov[0]) + ", " + std::to_string(fov[1]) +
+                                   "] looks like radians: give the field of view in degrees (a projector's is 15-120)");
+    if (!(std::abs(o[0]) <= 3.0 && std::abs(o[1]) <= 3.0 && std::abs(o[2]) <= 3.0))
+        throw InputError(path, "projector.axis.origin is more than 3 m from the camera: give it in metres (millimetres?)");
     proj.fov_h = fov[0] * kDeg;
     proj.fov_v = fov[1] * kDeg;
     proj.origin = Eigen::Vector3d(o[0], o[1], o[2]);
