@@ -1,5 +1,5 @@
 #pragma once
-// Running the projsurf CLI from a test: exit status, stdout and stderr.
+// Running the projsurf CLI from a test: exit status, stdout and stderr; a folder to run it in.
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 
 namespace projsurf::test {
 
@@ -33,6 +34,15 @@ inline CliRun cli(const std::string &args, const std::filesystem::path &dir, int
     std::filesystem::remove(o);
     std::filesystem::remove(e);
     return r;
+}
+
+/// An empty folder for one test: the temporary directory's projsurf_<name>_<pid>.
+inline std::filesystem::path freshDir(const std::string &name) {
+    const std::filesystem::path d =
+        std::filesystem::temp_directory_path() / ("projsurf_" + name + "_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(d);
+    std::filesystem::create_directories(d);
+    return d;
 }
 
 }  // namespace projsurf::test

@@ -28,16 +28,11 @@ namespace fs = std::filesystem;
 using namespace projsurf;
 using projsurf::test::cli;
 using projsurf::test::CliRun;
+using projsurf::test::freshDir;
 using projsurf::test::slurp;
 
 namespace {
 
-fs::path freshDir(const std::string &name) {
-    const fs::path d = fs::temp_directory_path() / ("projsurf_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
 
 /// Writes the synthetic captures of the rig to `dir` (camera.yaml + capture_k_*.png).
 void writeCaptures(const fs::path &dir, const std::vector<CaptureImages> &caps) {

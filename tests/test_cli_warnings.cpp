@@ -12,6 +12,7 @@
 
 namespace fs = std::filesystem;
 using projsurf::test::cli;
+using projsurf::test::freshDir;
 using projsurf::test::slurp;
 
 namespace {
@@ -20,12 +21,6 @@ namespace {
 const fs::path kFrame = fs::path(PROJSURF_SHARED_DIR) / "data/real/tum_o3d_fr3_office_partition";
 const std::string kCalib = std::string(PROJSURF_SOURCE_DIR) + "/examples/calib/example_calib.yaml";
 
-fs::path freshDir(const std::string &name) {
-    const fs::path dir = fs::temp_directory_path() / ("projsurf_test_warnings_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
 
 std::string depthArgs(const fs::path &camera = kFrame / "camera.yaml") {
     return "detect --depth " + (kFrame / "depth.png").string() + " --camera " + camera.string();
@@ -42,7 +37,7 @@ void writeEdited(const fs::path &from, const fs::path &path, const std::string &
 
 TEST(CliWarnings, TiltedCameraWithoutGravityIsToldToGiveIt) {
     if (!fs::exists(kFrame / "depth.png")) GTEST_SKIP() << "no real frames at " << kFrame;
-    const fs::path dir = freshDir("tilt");
+    const fs::path dir = freshDir("warnings_tilt");
     const auto level = cli(depthArgs() + " --calib " + kCalib + " --json " + (dir / "a.json").string(), dir);
     EXPECT_EQ(level.status, 0) << level.err;
     EXPECT_NE(level.err.find("projsurf: warning: the floor says the camera is tilted"), std::string::npos) << level.err;
@@ -57,7 +52,7 @@ TEST(CliWarnings, TiltedCameraWithoutGravityIsToldToGiveIt) {
 
 TEST(CliWarnings, WrongDepthScaleAndIgnoredOptionsAreWarnedAbout) {
     if (!fs::exists(kFrame / "depth.png")) GTEST_SKIP() << "no real frames at " << kFrame;
-    const fs::path dir = freshDir("scale");
+    const fs::path dir = freshDir("warnings_scale");
     writeEdited(kFrame / "camera.yaml", dir / "camera.yaml", "depth_scale: *[0-9.]+", "depth_scale: 500");
     const auto r = cli(depthArgs(dir / "camera.yaml") + " --calib " + kCalib + " --gravity auto --hull convex --json " +
                            (dir / "d.json").string(),
@@ -70,7 +65,7 @@ TEST(CliWarnings, WrongDepthScaleAndIgnoredOptionsAreWarnedAbout) {
 }
 
 TEST(CliWarnings, CalibrationInRadiansOrMillimetresIsRefused) {
-    const fs::path dir = freshDir("units");
+    const fs::path dir = freshDir("warnings_units");
     writeEdited(kCalib, dir / "rad.yaml", "fov_deg: \\[[^\\]]*\\]", "fov_deg: [0.686, 0.419]");
     writeEdited(kCalib, dir / "mm.yaml", "origin: \\[[^\\]]*\\]", "origin: [0, 120, 0]");
     for (const auto &[file, word] : {std::pair<std::string, std::string>{"rad.yaml", "radians"}, {"mm.yaml", "metres"}}) {

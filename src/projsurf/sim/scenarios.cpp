@@ -1,4 +1,5 @@
 #include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/palette.hpp"
 
 #include "projsurf/sim/wall_frame.hpp"
 
@@ -14,11 +15,7 @@ constexpr double kWallWidth = kScenarioWallWidth;
 constexpr double kWallHeight = kScenarioWallHeight;
 
 // Colours, BGR reflectance.
-const cv::Vec3f kWallPaint{0.82f, 0.85f, 0.86f};
-const cv::Vec3f kFloor{0.42f, 0.48f, 0.55f};
-const cv::Vec3f kWood{0.25f, 0.42f, 0.58f};
-const cv::Vec3f kCardboard{0.35f, 0.55f, 0.70f};
-const cv::Vec3f kPoster{0.25f, 0.22f, 0.75f};
+using palette::kCardboard, palette::kFloor, palette::kPoster, palette::kWallPaint, palette::kWood;
 const cv::Vec3f kClothes{0.45f, 0.25f, 0.15f};
 const cv::Vec3f kSkin{0.55f, 0.65f, 0.85f};
 

@@ -3,18 +3,16 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "projsurf/sim/palette.hpp"
 #include "projsurf/sim/wall_frame.hpp"
 
 namespace projsurf::sim {
 namespace {
 
-const cv::Vec3f kPaint{0.82f, 0.85f, 0.86f};
-const cv::Vec3f kFloor{0.42f, 0.48f, 0.55f};
-const cv::Vec3f kWood{0.25f, 0.42f, 0.58f};
+using palette::kCardboard, palette::kFloor, palette::kPoster, palette::kWood;
+const cv::Vec3f kPaint = palette::kWallPaint;
 const cv::Vec3f kWhite{0.92f, 0.92f, 0.92f};
 const cv::Vec3f kBlack{0.04f, 0.04f, 0.04f};
-const cv::Vec3f kCardboard{0.35f, 0.55f, 0.70f};
-const cv::Vec3f kPoster{0.25f, 0.22f, 0.75f};
 const cv::Vec3f kGlass{0.75f, 0.70f, 0.60f};
 const cv::Vec3f kFabric{0.30f, 0.30f, 0.50f};
 
