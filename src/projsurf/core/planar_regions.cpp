@@ -108,8 +108,6 @@ std::vector<PlanarRegion> findVerticalRegions(const PointGrid &grid, const Eigen
     struct Grown {
         Moments m;
         int cells = 0;
-        cv::Rect box;  ///< cells
-        void take(int r, int c) { box = box.area() ? (box | cv::Rect(c, r, 1, 1)) : cv::Rect(c, r, 1, 1); }
     };
     std::vector<Grown> regions;
     for (int seed : order) {
@@ -118,10 +116,8 @@ std::vector<PlanarRegion> findVerticalRegions(const PointGrid &grid, const Eigen
         Grown g;
         g.m = cell[seed];
         g.cells = 1;
-        g.take(seed / cols, seed % cols);
         region_of[seed] = id;
         Fit plane = cell_fit[seed];
-        int fitted_cells = 1;
         std::deque<int> queue{seed};
         while (!queue.empty()) {
             const int k = queue.front();
@@ -139,14 +135,10 @@ std::vector<PlanarRegion> findVerticalRegions(const PointGrid &grid, const Eigen
                 region_of[j] = id;
                 g.m += cell[j];
                 ++g.cells;
-                g.take(rc[0], rc[1]);
                 queue.push_back(j);
-                // Refit as the region grows.
-                if (g.cells >= fitted_cells + std::max(1, fitted_cells / options.refit_every)) {
-                    const Fit refit = fit(g.m);
-                    if (refit.ok) plane = refit;
-                    fitted_cells = g.cells;
-                }
+                // Refit as the region grows (closed-form 3x3: cheap at a thousand cells a frame).
+                const Fit refit = fit(g.m);
+                if (refit.ok) plane = refit;
             }
         }
         regions.push_back(g);
@@ -171,7 +163,6 @@ std::vector<PlanarRegion> findVerticalRegions(const PointGrid &grid, const Eigen
                 regions[i].m.rmsTo(fg.plane) < tolerance.margin(z)) {
                 g.m += regions[i].m;
                 g.cells += regions[i].cells;
-                g.box |= regions[i].box;
                 merged_of[i] = gi;
                 joined = true;
                 break;
@@ -187,10 +178,7 @@ std::vector<PlanarRegion> findVerticalRegions(const PointGrid &grid, const Eigen
         const Fit f = fit(merged[k].m);
         if (!f.ok || tilt(f.plane, down) > options.max_tilt) continue;
         order_of[k] = static_cast<int>(out.size());
-        const cv::Rect &b = merged[k].box;
-        const int px = cs * grid.step;
-        out.push_back({f.plane, static_cast<int>(merged[k].m.n), merged[k].cells,
-                       cv::Rect(b.x * px, b.y * px, b.width * px, b.height * px)});
+        out.push_back({f.plane, static_cast<int>(merged[k].m.n), merged[k].cells});
     }
     std::vector<int> rank(out.size());
     for (std::size_t k = 0; k < out.size(); ++k) rank[k] = static_cast<int>(k);

@@ -24,7 +24,6 @@ struct PlanarRegionOptions {
     double max_tilt = 0.1;         ///< rad, a region's plane within this of horizontal (contract)
     double join_bands = 0.6;       ///< a neighbour cell joins when its points' RMS distance to the region's plane is below this many bands
     int min_cells = 6;             ///< smaller regions are not surfaces
-    int refit_every = 1000;        ///< a growing region is refitted when it grew by 1/this of its cells
     double merge_angle = 0.15;     ///< rad, regions this parallel whose points lie within the obstacle margin of each other's plane are one
 };
 
@@ -32,7 +31,6 @@ struct PlanarRegion {
     Plane plane;
     int points = 0;  ///< grid points in its cells
     int cells = 0;
-    cv::Rect pixels; ///< the cloud pixels its cells span
 };
 
 /// Biggest first. `grid` must come from an organized cloud. With `labels`, also which region

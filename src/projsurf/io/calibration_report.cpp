@@ -1,4 +1,5 @@
 #include "projsurf/io/calibration_report.hpp"
+#include "projsurf/io/yaml_numbers.hpp"
 
 #include <cstdio>
 #include <yaml-cpp/yaml.h>
@@ -9,19 +10,9 @@
 namespace projsurf {
 namespace {
 
-/// A number written with 10 significant digits (yaml-cpp would write 39.299999999999997).
-YAML::Node num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return YAML::Node(std::string(buf));
-}
-
-YAML::Node flow(std::initializer_list<double> values) {
-    YAML::Node n;
-    for (double v : values) n.push_back(num(v));
-    n.SetStyle(YAML::EmitterStyle::Flow);
-    return n;
-}
+/// Calibration numbers carry 10 significant digits.
+YAML::Node num(double v) { return yamlNumber(v, 10); }
+YAML::Node flow(std::initializer_list<double> values) { return yamlNumbers(values, 10); }
 
 YAML::Node flow(const Eigen::Vector3d &v) { return flow({v.x(), v.y(), v.z()}); }
 

@@ -1,4 +1,5 @@
 #include "projsurf/io/real_labels.hpp"
+#include "projsurf/io/yaml_numbers.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -56,19 +57,9 @@ struct Reader {
     }
 };
 
-/// A number as a plain scalar with 7 significant digits (yaml-cpp would print 17).
-YAML::Node num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.7g", v);
-    return YAML::Node(std::string(buf));
-}
-
-YAML::Node flow(std::initializer_list<double> v) {
-    YAML::Node n;
-    for (double x : v) n.push_back(num(x));
-    n.SetStyle(YAML::EmitterStyle::Flow);
-    return n;
-}
+/// Label numbers carry 7 significant digits (labels/remake.sh rebuilds them byte for byte).
+YAML::Node num(double v) { return yamlNumber(v, 7); }
+YAML::Node flow(std::initializer_list<double> v) { return yamlNumbers(v, 7); }
 
 YAML::Node polygonNode(const LabelPolygon &p) {
     YAML::Node n;
