@@ -1,8 +1,8 @@
 # Install rules and the exported package: `cmake --install build --prefix P` gives
-#   P/include/projsurf/{core,pipeline,sim,io}/*.hpp
-#   P/lib/libprojsurf_{core,sim,io}.so*          P/bin/projsurf
-#   P/lib/cmake/projsurf/  find_package(projsurf [COMPONENTS core sim io]) -> projsurf::<component>
-#   P/lib/pkgconfig/       projsurf-core.pc (the core), projsurf.pc (core, sim, io)
+#   P/include/projsurf/{core,pipeline,sim,io,eval}/*.hpp
+#   P/lib/libprojsurf_{core,sim,io,eval}.so*     P/bin/projsurf
+#   P/lib/cmake/projsurf/  find_package(projsurf [COMPONENTS core sim io eval]) -> projsurf::<component>
+#   P/lib/pkgconfig/       projsurf-core.pc (the core), projsurf.pc (all of them)
 # Each component has its own export file, so find_package(projsurf COMPONENTS core) looks up
 # only what the core's headers need (Eigen, OpenCV core): no nlohmann-json, PCL or CLI11.
 # Every path in these files is relative to where they are installed (a tree can be moved).
@@ -11,7 +11,7 @@ set(PROJSURF_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/projsurf)
 
 set(PROJSURF_COMPONENTS core sim)
 if(TARGET projsurf_io)
-  list(APPEND PROJSURF_COMPONENTS io)
+  list(APPEND PROJSURF_COMPONENTS io eval)
 endif()
 foreach(component ${PROJSURF_COMPONENTS})
   install(TARGETS projsurf_${component} EXPORT projsurf-${component}-targets
@@ -34,7 +34,7 @@ install(FILES ${PROJECT_BINARY_DIR}/projsurf-config.cmake ${PROJECT_BINARY_DIR}/
 set(PROJSURF_PKGCONFIG_DIR ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 file(RELATIVE_PATH PROJSURF_PC_TO_PREFIX /prefix/${PROJSURF_PKGCONFIG_DIR} /prefix)
 string(REGEX REPLACE "/$" "" PROJSURF_PC_TO_PREFIX "${PROJSURF_PC_TO_PREFIX}")
-# Static libraries: a program links what projsurf_io uses inside too (pkg-config --static).
+# Static libraries: a program links what projsurf_io and projsurf_eval use inside too (pkg-config --static).
 set(PROJSURF_PC_IO_PRIVATE "")
 if(NOT PROJSURF_SHARED_LIBS)
   set(PROJSURF_PC_IO_PRIVATE yaml-cpp)

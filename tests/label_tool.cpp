@@ -23,10 +23,10 @@
 
 #include "projsurf/core/gravity.hpp"
 #include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/label_overlay.hpp"
-#include "projsurf/io/labelled_eval.hpp"
-#include "projsurf/io/label_reference.hpp"
-#include "projsurf/io/real_labels.hpp"
+#include "projsurf/eval/label_overlay.hpp"
+#include "projsurf/eval/labelled_eval.hpp"
+#include "projsurf/eval/label_reference.hpp"
+#include "projsurf/eval/real_labels.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/scenarios.hpp"
 

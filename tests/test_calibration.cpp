@@ -230,7 +230,7 @@ TEST(CalibrationEndToEnd, EstimatedCalibrationAndNoisyCloud) {
                 ASSERT_TRUE(k.keystone) << k.problem;
                 Corners3 c;
                 for (int i = 0; i < 4; ++i) c[i] = *castToWall(truth, k.keystone->picture_px[i], w);
-                const auto e = eq8Errors(c);
+                const auto e = shapeErrors(c);
                 // The picture stays where it was meant to be: inside the rectangle, up to the
                 // calibration's and the plane fit's error.
                 for (int i = 0; i < 4; ++i) {

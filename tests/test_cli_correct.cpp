@@ -219,7 +219,7 @@ TEST(CliCorrect, PictureToFramebufferJsonAndBadInputs) {
         onwall[i] = *castToWall(truth, px, wall);
     }
     // Cast back onto the wall: an undistorted 4:3 picture.
-    const auto e = eq8Errors(onwall);
+    const auto e = shapeErrors(onwall);
     EXPECT_LT(e.worst_pct(), 1e-6);
     EXPECT_NEAR(e.top / e.left, 4.0 / 3.0, 1e-6);
     // The framebuffer: corners black, each quadrant's colour where the homography puts it.

@@ -9,7 +9,7 @@
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
-#include "projsurf/sim/scoring.hpp"
+#include "projsurf/eval/scoring.hpp"
 
 using namespace projsurf;
 
@@ -104,7 +104,7 @@ TEST(Detection, BothCheckersRejectAnAreaWithABoxAndTheDefaultAvoidsIt) {
     const sim::RgbdFrame frame = sim::renderFrame(sc.scene, sim::SensorModel{}, 5);
     const PlaneFrame f = makePlaneFrame(sc.wall, sc.gravity, Eigen::Vector3d(0, 0, 2));
     const Rectangle all = makeRectangle(f, {-1.2, -1.0}, {1.2, 1.0});  // around the optical axis
-    const SurfaceCheckResult paper = checkSurfacePaper(frame.cloud, f, all, 0.05, 5000);
+    const SurfaceCheckResult paper = checkSurfaceAgainstMeanDepth(frame.cloud, f, all, 0.05, 5000);
     const SurfaceCheckResult ours = checkSurface(frame.cloud, f, all, DepthTolerance{}, 0.03);
     EXPECT_GT(paper.outliers, 1000);
     EXPECT_GT(ours.outliers, 0.03 * ours.points);
@@ -112,7 +112,7 @@ TEST(Detection, BothCheckersRejectAnAreaWithABoxAndTheDefaultAvoidsIt) {
     // On a plain wall the same area passes both.
     sim::Scenario plain = sim::makeScenario("wall", 2.0, 0.0);
     const sim::RgbdFrame wall = sim::renderFrame(plain.scene, sim::SensorModel{}, 5);
-    EXPECT_TRUE(checkSurfacePaper(wall.cloud, f, all, 0.05, 5000).accepted);
+    EXPECT_TRUE(checkSurfaceAgainstMeanDepth(wall.cloud, f, all, 0.05, 5000).accepted);
     EXPECT_TRUE(checkSurface(wall.cloud, f, all, DepthTolerance{}, 0.03).accepted);
 }
 

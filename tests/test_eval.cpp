@@ -12,7 +12,7 @@
 #include <string>
 #include <unistd.h>
 
-#include "projsurf/sim/experiments.hpp"
+#include "projsurf/eval/experiments.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/scenarios.hpp"
 

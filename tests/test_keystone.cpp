@@ -82,7 +82,7 @@ TEST(KeystoneEq7, AgreesWithThePinholeModel) {
         for (int i = 0; i < 20; ++i) {
             const Eigen::Vector2d px((u(rng) + 1) * 0.6 * p.width, (u(rng) + 1) * 0.6 * p.height);
             const Eigen::Vector3d point = p.origin + (1.0 + 1.5 * (u(rng) + 1)) * p.ray(px);
-            const auto a = pixelByEq7(p, point);
+            const auto a = pixelFromWorkspace(p, point);
             const auto b = p.toPixel(point);
             ASSERT_TRUE(a && b);
             worst = std::max(worst, (*a - *b).norm());
@@ -90,7 +90,7 @@ TEST(KeystoneEq7, AgreesWithThePinholeModel) {
     }
     EXPECT_LT(worst, 1e-6);
     // Behind the lens: no pixel.
-    EXPECT_FALSE(pixelByEq7(Projector{}, Eigen::Vector3d(0, 0.12, -1.0)));
+    EXPECT_FALSE(pixelFromWorkspace(Projector{}, Eigen::Vector3d(0, 0.12, -1.0)));
 }
 
 TEST(KeystoneLetterbox, FitsThePictureWholeAndCentred) {
@@ -104,7 +104,7 @@ TEST(KeystoneLetterbox, FitsThePictureWholeAndCentred) {
         EXPECT_LE(s.height, rect.height + 1e-9);
         // One dimension is full: nothing is wasted that needn't be.
         EXPECT_TRUE(std::abs(s.width - rect.width) < 1e-9 || std::abs(s.height - rect.height) < 1e-9);
-        const auto e = eq8Errors(s.corners);
+        const auto e = shapeErrors(s.corners);
         EXPECT_LT(e.worst_pct(), 1e-9);
     }
 }
@@ -205,7 +205,7 @@ TEST(KeystoneRoundTrip, ExactCalibrationAtThePapersDistancesAndAngles) {
                     EXPECT_LE(px.y(), p.height - 0.5 + 1e-9);
                     EXPECT_TRUE(insideQuad(px, k.keystone->rectangle_px, 1e-6));
                 }
-                const auto e = eq8Errors(onWall(p, k.keystone->picture_px, w));
+                const auto e = shapeErrors(onWall(p, k.keystone->picture_px, w));
                 cells[a][d][0].add(e.horizontal_pct);
                 cells[a][d][1].add(e.vertical_pct);
                 cells[a][d][2].add(e.diagonal_pct);
@@ -217,8 +217,8 @@ TEST(KeystoneRoundTrip, ExactCalibrationAtThePapersDistancesAndAngles) {
                 // their workspace is not a rectangle, so the result is slightly off.
                 Corners2 stock;
                 const auto rays = paperCornerRays(p.direction, p.fov_h, p.fov_v);
-                for (int i = 0; i < 4; ++i) stock[i] = *pixelByEq7(p, k.keystone->shown.corners[i], rays);
-                worst_stock = std::max(worst_stock, eq8Errors(onWall(p, stock, w)).worst_pct());
+                for (int i = 0; i < 4; ++i) stock[i] = *pixelFromWorkspace(p, k.keystone->shown.corners[i], rays);
+                worst_stock = std::max(worst_stock, shapeErrors(onWall(p, stock, w)).worst_pct());
             }
         }
     printTable("eq. (8) errors, exact calibration, exact wall (3 pictures per cell)", cells);
@@ -250,7 +250,7 @@ TEST(KeystoneRoundTrip, ExactCalibrationNoisyCloud) {
                 const Rectangle rect = rig::rectangleInWorkspace(p, *fitted);
                 const auto k = computeKeystone(p, rect, cv::Size(640, 480));
                 ASSERT_TRUE(k.keystone) << k.problem;
-                const auto e = eq8Errors(onWall(p, k.keystone->picture_px, w));
+                const auto e = shapeErrors(onWall(p, k.keystone->picture_px, w));
                 cells[a][d][0].add(e.horizontal_pct);
                 cells[a][d][1].add(e.vertical_pct);
                 cells[a][d][2].add(e.diagonal_pct);
@@ -282,7 +282,7 @@ TEST(KeystoneRoundTrip, LensOffsetAlongTheAxis) {
                 const auto k = computeKeystone(assumed, rect, cv::Size(640, 480));
                 ASSERT_TRUE(k.keystone) << k.problem;
                 const Corners3 c = onWall(truth, k.keystone->picture_px, w);
-                worst = std::max(worst, eq8Errors(c).worst_pct());
+                worst = std::max(worst, shapeErrors(c).worst_pct());
                 // How far the picture's corners land from where they were meant to be.
                 for (int i = 0; i < 4; ++i)
                     worst_outside_mm = std::max(worst_outside_mm, 1000 * (c[i] - k.keystone->shown.corners[i]).norm());

@@ -16,10 +16,10 @@
 
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
-#include "projsurf/io/label_reference.hpp"
-#include "projsurf/io/labelled_eval.hpp"
-#include "projsurf/io/real_labels.hpp"
-#include "projsurf/io/real_scoring.hpp"
+#include "projsurf/eval/label_reference.hpp"
+#include "projsurf/eval/labelled_eval.hpp"
+#include "projsurf/eval/real_labels.hpp"
+#include "projsurf/eval/real_scoring.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 using namespace projsurf;

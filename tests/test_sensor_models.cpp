@@ -19,10 +19,10 @@
 
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
-#include "projsurf/sim/experiments.hpp"
+#include "projsurf/eval/experiments.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/noise_field.hpp"
-#include "projsurf/sim/realistic_suite.hpp"
+#include "projsurf/eval/realistic_suite.hpp"
 #include "projsurf/sim/scenarios_realistic.hpp"
 #include "projsurf/sim/wall_frame.hpp"
 #include "projsurf/sim/wall_residual_stats.hpp"

@@ -19,7 +19,7 @@
 
 #include "projsurf/core/plane.hpp"
 #include "projsurf/sim/ground_truth.hpp"
-#include "projsurf/sim/raster.hpp"
+#include "projsurf/sim/ray_cast.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 #include "cli_run.hpp"

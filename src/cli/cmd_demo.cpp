@@ -14,9 +14,9 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/overlay.hpp"
-#include "projsurf/io/plot.hpp"
+#include "projsurf/eval/plot.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/sim/demo.hpp"
+#include "projsurf/eval/demo.hpp"
 
 namespace fs = std::filesystem;
 

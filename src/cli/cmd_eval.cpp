@@ -12,12 +12,12 @@
 
 #include "cli/commands.hpp"
 #include "projsurf/io/errors.hpp"
-#include "projsurf/io/labelled_eval.hpp"
-#include "projsurf/io/real_gallery.hpp"
-#include "projsurf/io/real_labels.hpp"
-#include "projsurf/io/report.hpp"
-#include "projsurf/sim/experiments.hpp"
-#include "projsurf/sim/realistic_suite.hpp"
+#include "projsurf/eval/labelled_eval.hpp"
+#include "projsurf/eval/real_gallery.hpp"
+#include "projsurf/eval/real_labels.hpp"
+#include "projsurf/eval/report.hpp"
+#include "projsurf/eval/experiments.hpp"
+#include "projsurf/eval/realistic_suite.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
 namespace fs = std::filesystem;

@@ -15,7 +15,7 @@
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
-#include "projsurf/io/truth_json.hpp"
+#include "projsurf/eval/truth_json.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/calibration_captures.hpp"
 #include "projsurf/sim/depth_sensor.hpp"

@@ -7,7 +7,7 @@
 #include "projsurf/core/camera.hpp"
 #include "projsurf/core/cloud.hpp"
 #include "projsurf/core/plane_frame.hpp"
-#include "projsurf/core/raster.hpp"
+#include "projsurf/core/outline_raster.hpp"
 
 namespace projsurf {
 

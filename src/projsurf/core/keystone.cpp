@@ -10,7 +10,7 @@
 
 namespace projsurf {
 
-std::optional<Eigen::Vector2d> pixelByEq7(const Projector &projector, const Eigen::Vector3d &point,
+std::optional<Eigen::Vector2d> pixelFromWorkspace(const Projector &projector, const Eigen::Vector3d &point,
                                           const Corners3 &rays) {
     const Eigen::Vector3d axis = projector.direction.normalized();
     const Eigen::Vector3d right = projector.right(), down = projector.down();
@@ -34,8 +34,8 @@ std::optional<Eigen::Vector2d> pixelByEq7(const Projector &projector, const Eige
     return Eigen::Vector2d(u, v);
 }
 
-std::optional<Eigen::Vector2d> pixelByEq7(const Projector &projector, const Eigen::Vector3d &point) {
-    return pixelByEq7(projector, point, projector.cornerRays());
+std::optional<Eigen::Vector2d> pixelFromWorkspace(const Projector &projector, const Eigen::Vector3d &point) {
+    return pixelFromWorkspace(projector, point, projector.cornerRays());
 }
 
 Rectangle letterbox(const Rectangle &rect, double picture_aspect) {
@@ -71,8 +71,8 @@ KeystoneResult computeKeystone(const Projector &projector, const Rectangle &rect
     const char *names[4] = {"top-left", "top-right", "bottom-right", "bottom-left"};
     double overshoot = 0.0;
     for (int i = 0; i < 4; ++i) {
-        const auto full = pixelByEq7(projector, rect.corners[i], rays);
-        const auto shown = pixelByEq7(projector, k.shown.corners[i], rays);
+        const auto full = pixelFromWorkspace(projector, rect.corners[i], rays);
+        const auto shown = pixelFromWorkspace(projector, k.shown.corners[i], rays);
         if (!full || !shown) {
             result.problem = std::string("the rectangle's ") + names[i] + " corner is behind the projector";
             return result;
@@ -151,7 +151,7 @@ std::optional<Eigen::Vector3d> castToWall(const Projector &projector, const Eige
 
 double ShapeErrors::worst_pct() const { return std::max({horizontal_pct, vertical_pct, diagonal_pct}); }
 
-ShapeErrors eq8Errors(const Corners3 &c) {
+ShapeErrors shapeErrors(const Corners3 &c) {
     ShapeErrors e;
     e.top = (c[1] - c[0]).norm();
     e.bottom = (c[2] - c[3]).norm();

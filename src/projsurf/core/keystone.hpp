@@ -24,10 +24,10 @@ using Corners2 = std::array<Eigen::Vector2d, 4>;  ///< same order, framebuffer p
 /// workspace's extremes along the projector's right and down axes. Pixel centres are at
 /// integers, so the workspace edges map to -0.5 and W-0.5. With the pinhole corner rays the
 /// workspace is a true rectangle and this equals Projector::toPixel. nullopt behind the lens.
-std::optional<Eigen::Vector2d> pixelByEq7(const Projector &projector, const Eigen::Vector3d &point,
+std::optional<Eigen::Vector2d> pixelFromWorkspace(const Projector &projector, const Eigen::Vector3d &point,
                                           const Corners3 &rays);
 /// Same, with the projector's pinhole corner rays.
-std::optional<Eigen::Vector2d> pixelByEq7(const Projector &projector, const Eigen::Vector3d &point);
+std::optional<Eigen::Vector2d> pixelFromWorkspace(const Projector &projector, const Eigen::Vector3d &point);
 
 /// The part of `rect` that shows a picture of aspect ratio `picture_aspect` (width/height) whole
 /// and undistorted: full width or full height, centred (letterbox / pillarbox).
@@ -76,6 +76,6 @@ struct ShapeErrors {
     double horizontal_pct = 0, vertical_pct = 0, diagonal_pct = 0;
     double worst_pct() const;
 };
-ShapeErrors eq8Errors(const Corners3 &corners);
+ShapeErrors shapeErrors(const Corners3 &corners);
 
 }  // namespace projsurf

@@ -7,7 +7,7 @@
 #include <opencv2/core.hpp>
 
 #include "projsurf/core/plane_observation.hpp"
-#include "projsurf/core/raster.hpp"
+#include "projsurf/core/outline_raster.hpp"
 
 namespace projsurf {
 

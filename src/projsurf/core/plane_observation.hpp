@@ -10,7 +10,7 @@
 #include "projsurf/core/plane.hpp"
 #include "projsurf/core/plane_frame.hpp"
 #include "projsurf/core/point_grid.hpp"
-#include "projsurf/core/raster.hpp"
+#include "projsurf/core/outline_raster.hpp"
 #include "projsurf/core/surface_check.hpp"
 #include "projsurf/core/wall_shape.hpp"
 

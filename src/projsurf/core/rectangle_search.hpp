@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "projsurf/core/plane_frame.hpp"
-#include "projsurf/core/raster.hpp"
+#include "projsurf/core/outline_raster.hpp"
 
 namespace projsurf {
 

@@ -26,7 +26,7 @@ Box planeBox(const PlaneFrame &frame, const Rectangle &rect) {
 
 }  // namespace
 
-SurfaceCheckResult checkSurfacePaper(const Cloud &cloud, const PlaneFrame &frame, const Rectangle &rect,
+SurfaceCheckResult checkSurfaceAgainstMeanDepth(const Cloud &cloud, const PlaneFrame &frame, const Rectangle &rect,
                                      double threshold, int max_outliers) {
     // Rotate so the rectangle is perpendicular to z (plane frame), keep the points inside
     // its limits, compare each z with the mean z (paper Fig. 10).

@@ -19,7 +19,7 @@ struct SurfaceCheckResult {
 
 /// Paper: points whose orthogonal projection falls inside the rectangle; outlier when
 /// (z - mean z)^2 > threshold^2 in the plane-aligned frame; reject above max_outliers.
-SurfaceCheckResult checkSurfacePaper(const Cloud &cloud, const PlaneFrame &frame, const Rectangle &rect,
+SurfaceCheckResult checkSurfaceAgainstMeanDepth(const Cloud &cloud, const PlaneFrame &frame, const Rectangle &rect,
                                      double threshold, int max_outliers);
 
 /// The default method's rule, point by point: points seen through the rectangle (camera ray

@@ -6,7 +6,7 @@
 
 #include "projsurf/core/plane_frame.hpp"
 #include "projsurf/core/projector_footprint.hpp"
-#include "projsurf/core/raster.hpp"
+#include "projsurf/core/outline_raster.hpp"
 #include "projsurf/pipeline/detection.hpp"
 
 namespace projsurf {

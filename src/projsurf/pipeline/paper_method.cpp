@@ -4,7 +4,7 @@
 
 #include "projsurf/core/euler_rodrigues.hpp"
 #include "projsurf/core/hull.hpp"
-#include "projsurf/core/raster.hpp"
+#include "projsurf/core/outline_raster.hpp"
 #include "projsurf/core/rectangle_search.hpp"
 #include "projsurf/core/vertical_planes.hpp"
 #include "projsurf/core/vertical_ransac.hpp"
@@ -111,7 +111,7 @@ Detection detectPaper(const Cloud &cloud, const Projector &projector, const Dete
     det.rectangle = c.rectangle;
 
     // 3.2.3: the surface checker on the original cloud.
-    det.surface_check = checkSurfacePaper(cloud, c.frame, c.rectangle, cfg.paper.outlier_distance, cfg.paper.max_outliers);
+    det.surface_check = checkSurfaceAgainstMeanDepth(cloud, c.frame, c.rectangle, cfg.paper.outlier_distance, cfg.paper.max_outliers);
     time.lap("surface_check");
     det.debug.outliers = det.surface_check.outlier_indices;
     det.found = det.surface_check.accepted;

@@ -4,7 +4,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/sim/raster.hpp"
+#include "projsurf/sim/ray_cast.hpp"
 
 namespace projsurf::sim {
 namespace {

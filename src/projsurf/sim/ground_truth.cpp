@@ -6,7 +6,7 @@
 #include <map>
 
 #include "projsurf/core/rectangle_search.hpp"
-#include "projsurf/sim/raster.hpp"
+#include "projsurf/sim/ray_cast.hpp"
 
 namespace projsurf::sim {
 

@@ -7,7 +7,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/sim/raster.hpp"
+#include "projsurf/sim/ray_cast.hpp"
 #include "projsurf/sim/gaussian_table.hpp"
 
 namespace projsurf::sim {

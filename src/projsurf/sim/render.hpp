@@ -7,7 +7,7 @@
 
 #include "projsurf/core/cloud.hpp"
 #include "projsurf/core/projector.hpp"
-#include "projsurf/sim/raster.hpp"
+#include "projsurf/sim/ray_cast.hpp"
 #include "projsurf/sim/scene.hpp"
 #include "projsurf/sim/sensor_model.hpp"
 

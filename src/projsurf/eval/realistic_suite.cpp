@@ -1,14 +1,14 @@
-#include "projsurf/sim/realistic_suite.hpp"
+#include "projsurf/eval/realistic_suite.hpp"
 
 #include <chrono>
 #include <cstdio>
 #include <map>
 #include <sstream>
 
-#include "projsurf/sim/experiments.hpp"
+#include "projsurf/eval/experiments.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/scenarios_realistic.hpp"
-#include "projsurf/sim/scoring.hpp"
+#include "projsurf/eval/scoring.hpp"
 
 namespace projsurf::sim {
 

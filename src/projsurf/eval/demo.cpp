@@ -1,10 +1,10 @@
-#include "projsurf/sim/demo.hpp"
+#include "projsurf/eval/demo.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/sim/raster.hpp"
+#include "projsurf/sim/ray_cast.hpp"
 #include "projsurf/sim/test_card.hpp"
 
 namespace projsurf::sim {

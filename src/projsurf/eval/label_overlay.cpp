@@ -1,4 +1,4 @@
-#include "projsurf/io/label_overlay.hpp"
+#include "projsurf/eval/label_overlay.hpp"
 
 #include <algorithm>
 #include <cmath>

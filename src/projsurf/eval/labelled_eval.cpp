@@ -1,4 +1,4 @@
-#include "projsurf/io/labelled_eval.hpp"
+#include "projsurf/eval/labelled_eval.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,8 +12,8 @@
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
-#include "projsurf/io/label_overlay.hpp"
-#include "projsurf/io/plot.hpp"
+#include "projsurf/eval/label_overlay.hpp"
+#include "projsurf/eval/plot.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace fs = std::filesystem;

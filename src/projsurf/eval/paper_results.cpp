@@ -1,4 +1,4 @@
-#include "projsurf/sim/paper_results.hpp"
+#include "projsurf/eval/paper_results.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "projsurf/core/raster.hpp"
+#include "projsurf/core/outline_raster.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -7,7 +7,7 @@
 
 #include "projsurf/core/camera.hpp"
 #include "projsurf/core/plane_frame.hpp"
-#include "projsurf/io/real_labels.hpp"
+#include "projsurf/eval/real_labels.hpp"
 
 namespace projsurf {
 

@@ -1,4 +1,4 @@
-#include "projsurf/sim/experiments.hpp"
+#include "projsurf/eval/experiments.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -229,7 +229,7 @@ WallPicture framebufferOnWall(const Projector &real, const Scene &scene, const C
         }
         w.corners[i] = real.origin + hit->t * dir;
     }
-    w.errors = eq8Errors(w.corners);
+    w.errors = shapeErrors(w.corners);
     w.ok = true;
     return w;
 }

@@ -1,4 +1,4 @@
-#include "projsurf/sim/scoring.hpp"
+#include "projsurf/eval/scoring.hpp"
 
 #include <cmath>
 #include <limits>

@@ -1,10 +1,10 @@
-#include "projsurf/io/real_scoring.hpp"
+#include "projsurf/eval/real_scoring.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "projsurf/io/label_reference.hpp"
+#include "projsurf/eval/label_reference.hpp"
 
 namespace projsurf {
 

@@ -1,4 +1,4 @@
-#include "projsurf/io/report.hpp"
+#include "projsurf/eval/report.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,8 +10,8 @@
 #include <sstream>
 
 #include "projsurf/io/files.hpp"
-#include "projsurf/io/plot.hpp"
-#include "projsurf/sim/paper_results.hpp"
+#include "projsurf/eval/plot.hpp"
+#include "projsurf/eval/paper_results.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,4 +1,4 @@
-#include "projsurf/io/real_labels.hpp"
+#include "projsurf/eval/real_labels.hpp"
 #include "projsurf/io/yaml_numbers.hpp"
 
 #include <algorithm>

@@ -8,9 +8,9 @@
 
 #include <opencv2/core.hpp>
 
-#include "projsurf/io/labelled_eval.hpp"
-#include "projsurf/io/real_gallery.hpp"
-#include "projsurf/sim/experiments.hpp"
+#include "projsurf/eval/labelled_eval.hpp"
+#include "projsurf/eval/real_gallery.hpp"
+#include "projsurf/eval/experiments.hpp"
 
 namespace projsurf {
 

@@ -1,4 +1,4 @@
-#include "projsurf/sim/raster.hpp"
+#include "projsurf/sim/ray_cast.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "projsurf/io/plot.hpp"
+#include "projsurf/eval/plot.hpp"
 
 #include <algorithm>
 #include <cmath>

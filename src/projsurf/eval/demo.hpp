@@ -12,7 +12,7 @@
 
 #include "projsurf/core/keystone.hpp"
 #include "projsurf/pipeline/detector.hpp"
-#include "projsurf/sim/experiments.hpp"
+#include "projsurf/eval/experiments.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"

@@ -8,9 +8,9 @@
 
 #include <opencv2/core.hpp>
 
-#include "projsurf/io/real_gallery.hpp"
-#include "projsurf/io/real_labels.hpp"
-#include "projsurf/io/real_scoring.hpp"
+#include "projsurf/eval/real_gallery.hpp"
+#include "projsurf/eval/real_labels.hpp"
+#include "projsurf/eval/real_scoring.hpp"
 
 namespace projsurf {
 

@@ -1,4 +1,4 @@
-#include "projsurf/io/real_gallery.hpp"
+#include "projsurf/eval/real_gallery.hpp"
 
 #include "projsurf/core/gravity.hpp"
 
@@ -12,7 +12,7 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/overlay.hpp"
-#include "projsurf/io/plot.hpp"
+#include "projsurf/eval/plot.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace fs = std::filesystem;

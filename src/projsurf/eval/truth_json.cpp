@@ -1,4 +1,4 @@
-#include "projsurf/io/truth_json.hpp"
+#include "projsurf/eval/truth_json.hpp"
 
 #include "projsurf/core/plane.hpp"
 #include "projsurf/io/files.hpp"

@@ -1,4 +1,4 @@
-#include "projsurf/io/label_reference.hpp"
+#include "projsurf/eval/label_reference.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -15,7 +15,7 @@
 #include "projsurf/core/keystone.hpp"
 #include "projsurf/pipeline/detector.hpp"
 #include "projsurf/sim/scene.hpp"
-#include "projsurf/sim/scoring.hpp"
+#include "projsurf/eval/scoring.hpp"
 #include "projsurf/sim/sensor_model.hpp"
 
 namespace projsurf::sim {
