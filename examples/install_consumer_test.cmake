@@ -69,7 +69,7 @@ step("configure core_consumer" ${CMAKE_COMMAND} -S ${PROJSURF_SOURCE_DIR}/tests/
 step("build core_consumer" ${CMAKE_COMMAND} --build ${WORK_DIR}/core)
 step("run core_consumer" ${WORK_DIR}/core/core_consumer)
 step("ldd core_consumer" ldd ${WORK_DIR}/core/core_consumer)
-if(step_output MATCHES "libpcl|yaml-cpp|libprojsurf_io|libprojsurf_sim")
+if(step_output MATCHES "libpcl|yaml-cpp|libprojsurf_io|libprojsurf_sim|libprojsurf_eval")
   message(FATAL_ERROR "install test: the core-only program loads more than the core:\n${step_output}")
 endif()
 # 4. The installed Python module imports from the prefix and reads the example calibration.
