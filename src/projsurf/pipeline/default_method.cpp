@@ -14,6 +14,7 @@
 #include "projsurf/core/point_sampling.hpp"
 #include "projsurf/core/rectangle_growth.hpp"
 #include "projsurf/core/rectangle_search.hpp"
+#include "projsurf/core/surface_suitability.hpp"
 #include "projsurf/core/vertical_planes.hpp"
 #include "projsurf/pipeline/candidate.hpp"
 #include "projsurf/pipeline/stage_timer.hpp"
@@ -39,6 +40,7 @@ struct PlaneCandidate : Candidate {
     PlaneObservation *observed = nullptr;///< what the camera saw of it, per raster cell
     WallShape shape;                     ///< how the seen wall departs from the plane
     DepthTolerance tolerance;            ///< the band about the shape (the noise measured on it)
+    CellSuitability colour;              ///< the cells' fitness by their colour (empty without colour)
 };
 
 CloudSample sampleCloud(const Cloud &cloud, const DetectorConfig &cfg) {
@@ -208,6 +210,65 @@ bool placeRectangle(double aspect, PlaneCandidate &c) {
     return true;
 }
 
+/// Issue 15: each free cell's fitness by the colour of the wall seen there, in its cell state.
+void judgeColour(const Cloud &cloud, const DefaultScratch &scratch, const DetectorConfig &cfg, PlaneCandidate &c) {
+    c.colour = cellSuitability(scratch.grid, scratch.grid.gridBox(c.image_box), cloud.colours, c.plane, c.frame, c.raster,
+                               c.tolerance, c.shape, cfg.suitability.cells);
+    if (c.colour.empty()) return;
+    const cv::Mat unfit_free = (c.colour.unfit != 0) & (c.cell_state == static_cast<int>(CellState::Free));
+    cv::Mat state = c.colour.unfit + static_cast<int>(CellState::Edge);
+    state.copyTo(c.cell_state, unfit_free);
+}
+
+/// The cells unfit by their colour taken off the free surface.
+void avoidUnfit(PlaneCandidate &c) {
+    c.surface.setTo(0, c.colour.unfit != 0);
+    c.free.setTo(0, c.colour.unfit != 0);
+}
+
+double unfitShare(const PlaneCandidate &c) {
+    return regionSuitability(c.colour, c.raster, c.frame.toPlane(c.rectangle.corners[3]), c.frame.toPlane(c.rectangle.corners[1]))
+        .unfit_share;
+}
+
+/// The rectangle by the suitability mode: off (or no colour) as placeRectangle; avoid on the
+/// fit cells only; prefer the better of both by area x (1 - unfit share)^k.
+bool placeSuitableRectangle(const DetectorConfig &cfg, double aspect, PlaneCandidate &c) {
+    const SuitabilityMode mode = c.colour.empty() ? SuitabilityMode::Off : cfg.suitability.mode;
+    if (mode == SuitabilityMode::Off) return placeRectangle(aspect, c);
+    if (mode == SuitabilityMode::Avoid) {
+        avoidUnfit(c);
+        return placeRectangle(aspect, c);
+    }
+    const bool any = placeRectangle(aspect, c);
+    const Rectangle plain = c.rectangle;
+    const double plain_score = any ? plain.area() * std::pow(1.0 - unfitShare(c), cfg.suitability.prefer_exponent) : 0.0;
+    const cv::Mat surface = c.surface.clone(), free = c.free.clone();
+    avoidUnfit(c);
+    const bool clean = placeRectangle(aspect, c);
+    if (clean && c.rectangle.area() >= plain_score) return true;
+    if (!any) return false;
+    c.rectangle = plain;
+    c.surface = surface;
+    c.free = free;
+    return true;
+}
+
+/// What the chosen rectangle lies on, by its colour.
+SuitabilityReport reportSuitability(const DetectorConfig &cfg, const PlaneCandidate &c) {
+    SuitabilityReport r;
+    if (c.colour.empty() || cfg.suitability.mode == SuitabilityMode::Off) return r;
+    const RegionSuitability s =
+        regionSuitability(c.colour, c.raster, c.frame.toPlane(c.rectangle.corners[3]), c.frame.toPlane(c.rectangle.corners[1]));
+    r.used = true;
+    r.mode = cfg.suitability.mode == SuitabilityMode::Prefer ? "prefer" : "avoid";
+    r.mean_albedo = s.mean_luminance;
+    r.texture = s.contrast;
+    r.unsuitable_share = s.unfit_share;
+    r.wall_luminance = c.colour.median_luminance;
+    return r;
+}
+
 /// 3.2.3, read off the free-space pass. Mixed pixels at depth edges along the border are not
 /// the surface's fault: the check looks one raster cell inside the rectangle.
 SurfaceCheckResult checkRectangle(const DetectorConfig &cfg, const PlaneCandidate &c) {
@@ -287,7 +348,11 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         if (!framed) continue;
         observeFreeSpace(cloud, scratch, projector, cfg, c);
         time.lap("free_space");
-        const bool ok = placeRectangle(aspect, c);
+        if (cloud.hasColour() && cfg.suitability.mode != SuitabilityMode::Off) {
+            judgeColour(cloud, scratch, cfg, c);
+            time.lap("suitability");
+        }
+        const bool ok = placeSuitableRectangle(cfg, aspect, c);
         time.lap("rectangle");
         if (!ok) continue;
         placed.push_back(k);
@@ -322,6 +387,7 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         det.found = true;
         det.rectangle = chosen->rectangle;
         det.surface_check = check;
+        det.suitability = reportSuitability(cfg, *chosen);
     } else if (usable.empty()) {
         det.reason = "the projector workspace does not reach any vertical plane in view";
     } else if (placed.empty()) {
