@@ -31,26 +31,34 @@ struct SuitabilityOptions {
     double max_contrast = 0.12;    ///< luminance std / mean over the window above this: textured (measured, docs/suitability.md)
     double glare_level = 0.98;     ///< a sample whose brightest channel reaches this share of 255 is blown out
     double max_glare_share = 0.25; ///< more blown-out samples than this share of the window: glare (specular, emissive)
+    int row_step = 2;              ///< every this many rows of the point grid are sampled (half the cost; 6 samples per window at 4 m, VGA)
     int min_samples = 3;           ///< fewer wall samples in the window: colour decides nothing there
     double max_hole = 0.25;        ///< m^2, fit areas enclosed by unfit cells up to this size are unfit too (a picture's plain mat)
 };
 
-/// Per-cell colour sums over the wall samples (CV_32F, raster rows x cols) and the verdicts.
+/// The colour sums of one cell's wall samples (Y and chroma in 8-bit levels).
+struct ColourSums {
+    float samples = 0, luminance = 0, luminance_sq = 0, chroma = 0, glare = 0;  ///< count, sum Y, sum Y^2, sum chroma, blown-out count
+};
+
+/// Per-cell colour sums over the wall samples and the verdicts (raster rows x cols).
 struct CellSuitability {
-    cv::Mat samples, luminance, luminance_sq, chroma, glare;  ///< per cell: count, sum Y, sum Y^2, sum chroma, blown-out count
+    int rows = 0, cols = 0;
+    std::vector<ColourSums> sums;  ///< row-major
+    std::vector<ColourSums> window;///< working storage: the window sums
     cv::Mat contrast;              ///< CV_32F, luminance std / mean over the window about each cell (0 without samples)
     cv::Mat unfit;                 ///< CV_8U, Unfit per cell
     double median_luminance = 0.0; ///< share of 255, of the wall samples seen
-    bool empty() const { return unfit.empty(); }
+    bool empty() const { return rows == 0; }
 };
 
 /// The colour statistics of the wall samples in `box` (grid coordinates): those within the
 /// tolerance band of the wall's shape, at their foot on the plane. `colours` are the cloud's
-/// (one per point); empty result when there are none.
-CellSuitability cellSuitability(const PointGrid &grid, const cv::Rect &box,
-                                const std::vector<std::array<std::uint8_t, 3>> &colours, const Plane &plane,
-                                const PlaneFrame &frame, const RasterFrame &raster, const DepthTolerance &tolerance,
-                                const WallShape &shape, const SuitabilityOptions &options);
+/// (one per point); `out` is left empty when there are none. Reuses `out`'s storage (a
+/// stream of frames allocates nothing once warm).
+void cellSuitability(const PointGrid &grid, const cv::Rect &box, const std::vector<std::array<std::uint8_t, 3>> &colours,
+                     const Plane &plane, const PlaneFrame &frame, const RasterFrame &raster, const DepthTolerance &tolerance,
+                     const WallShape &shape, const SuitabilityOptions &options, CellSuitability &out);
 
 /// What the picture would lie on: over the cells whose centres are in [lo, hi] (plane coords).
 struct RegionSuitability {

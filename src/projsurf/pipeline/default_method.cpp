@@ -40,7 +40,7 @@ struct PlaneCandidate : Candidate {
     PlaneObservation *observed = nullptr;///< what the camera saw of it, per raster cell
     WallShape shape;                     ///< how the seen wall departs from the plane
     DepthTolerance tolerance;            ///< the band about the shape (the noise measured on it)
-    CellSuitability colour;              ///< the cells' fitness by their colour (empty without colour)
+    CellSuitability *colour = nullptr;   ///< the cells' fitness by their colour (null without colour)
 };
 
 CloudSample sampleCloud(const Cloud &cloud, const DetectorConfig &cfg) {
@@ -211,30 +211,37 @@ bool placeRectangle(double aspect, PlaneCandidate &c) {
 }
 
 /// Issue 15: each free cell's fitness by the colour of the wall seen there, in its cell state.
-void judgeColour(const Cloud &cloud, const DefaultScratch &scratch, const DetectorConfig &cfg, PlaneCandidate &c) {
-    c.colour = cellSuitability(scratch.grid, scratch.grid.gridBox(c.image_box), cloud.colours, c.plane, c.frame, c.raster,
-                               c.tolerance, c.shape, cfg.suitability.cells);
-    if (c.colour.empty()) return;
-    const cv::Mat unfit_free = (c.colour.unfit != 0) & (c.cell_state == static_cast<int>(CellState::Free));
-    cv::Mat state = c.colour.unfit + static_cast<int>(CellState::Edge);
-    state.copyTo(c.cell_state, unfit_free);
+void judgeColour(const Cloud &cloud, DefaultScratch &scratch, const DetectorConfig &cfg, std::size_t k, PlaneCandidate &c) {
+    CellSuitability &s = scratch.colour.at(k);
+    cellSuitability(scratch.grid, scratch.grid.gridBox(c.image_box), cloud.colours, c.plane, c.frame, c.raster, c.tolerance,
+                    c.shape, cfg.suitability.cells, s);
+    if (s.empty()) return;
+    c.colour = &s;
+    for (int r = 0; r < s.rows; ++r) {
+        const uchar *unfit = s.unfit.ptr<uchar>(r);
+        uchar *state = c.cell_state.ptr<uchar>(r);
+        for (int col = 0; col < s.cols; ++col)
+            if (unfit[col] && state[col] == static_cast<uchar>(CellState::Free))
+                state[col] = static_cast<uchar>(static_cast<int>(CellState::Edge) + unfit[col]);
+    }
 }
 
 /// The cells unfit by their colour taken off the free surface.
 void avoidUnfit(PlaneCandidate &c) {
-    c.surface.setTo(0, c.colour.unfit != 0);
-    c.free.setTo(0, c.colour.unfit != 0);
+    const cv::Mat unfit = c.colour->unfit != 0;
+    c.surface.setTo(0, unfit);
+    c.free.setTo(0, unfit);
 }
 
 double unfitShare(const PlaneCandidate &c) {
-    return regionSuitability(c.colour, c.raster, c.frame.toPlane(c.rectangle.corners[3]), c.frame.toPlane(c.rectangle.corners[1]))
+    return regionSuitability(*c.colour, c.raster, c.frame.toPlane(c.rectangle.corners[3]), c.frame.toPlane(c.rectangle.corners[1]))
         .unfit_share;
 }
 
 /// The rectangle by the suitability mode: off (or no colour) as placeRectangle; avoid on the
 /// fit cells only; prefer the better of both by area x (1 - unfit share)^k.
 bool placeSuitableRectangle(const DetectorConfig &cfg, double aspect, PlaneCandidate &c) {
-    const SuitabilityMode mode = c.colour.empty() ? SuitabilityMode::Off : cfg.suitability.mode;
+    const SuitabilityMode mode = c.colour ? cfg.suitability.mode : SuitabilityMode::Off;
     if (mode == SuitabilityMode::Off) return placeRectangle(aspect, c);
     if (mode == SuitabilityMode::Avoid) {
         avoidUnfit(c);
@@ -257,15 +264,15 @@ bool placeSuitableRectangle(const DetectorConfig &cfg, double aspect, PlaneCandi
 /// What the chosen rectangle lies on, by its colour.
 SuitabilityReport reportSuitability(const DetectorConfig &cfg, const PlaneCandidate &c) {
     SuitabilityReport r;
-    if (c.colour.empty() || cfg.suitability.mode == SuitabilityMode::Off) return r;
+    if (!c.colour || cfg.suitability.mode == SuitabilityMode::Off) return r;
     const RegionSuitability s =
-        regionSuitability(c.colour, c.raster, c.frame.toPlane(c.rectangle.corners[3]), c.frame.toPlane(c.rectangle.corners[1]));
+        regionSuitability(*c.colour, c.raster, c.frame.toPlane(c.rectangle.corners[3]), c.frame.toPlane(c.rectangle.corners[1]));
     r.used = true;
     r.mode = cfg.suitability.mode == SuitabilityMode::Prefer ? "prefer" : "avoid";
     r.mean_albedo = s.mean_luminance;
     r.texture = s.contrast;
     r.unsuitable_share = s.unfit_share;
-    r.wall_luminance = c.colour.median_luminance;
+    r.wall_luminance = c.colour->median_luminance;
     return r;
 }
 
@@ -329,6 +336,7 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     std::sort(usable.begin(), usable.end(), [&](int a, int b) { return candidates[a].bound > candidates[b].bound; });
     if (scratch.observations.size() < candidates.size()) scratch.observations.resize(candidates.size());
     for (std::size_t k = 0; k < candidates.size(); ++k) candidates[k].observed = &scratch.observations[k];
+    if (cloud.hasColour() && scratch.colour.size() < candidates.size()) scratch.colour.resize(candidates.size());
     time.lap("free_space");
 
     // 4. Each wall's shape, free space (3.2.2), rectangle and surface check (3.2.3), candidate
@@ -349,7 +357,7 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         observeFreeSpace(cloud, scratch, projector, cfg, c);
         time.lap("free_space");
         if (cloud.hasColour() && cfg.suitability.mode != SuitabilityMode::Off) {
-            judgeColour(cloud, scratch, cfg, c);
+            judgeColour(cloud, scratch, cfg, static_cast<std::size_t>(k), c);
             time.lap("suitability");
         }
         const bool ok = placeSuitableRectangle(cfg, aspect, c);
