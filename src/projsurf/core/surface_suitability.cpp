@@ -155,6 +155,14 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box, const std::vect
             unfit[c] = static_cast<uchar>(why);
         }
     }
+    // A window reaches half its side beyond a thing's edge (its edge, its glare, part of its
+    // darkness): that margin is given back.
+    if (opt.trim_cells > 0) {
+        cv::Mat keep;
+        cv::erode(out.unfit != 0, keep, cv::getStructuringElement(cv::MORPH_RECT, {2 * opt.trim_cells + 1, 2 * opt.trim_cells + 1}),
+                  {-1, -1}, 1, cv::BORDER_REPLICATE);
+        out.unfit.setTo(0, keep == 0);
+    }
     fillEnclosed(out.unfit, opt.max_hole / (raster.cell * raster.cell));
 }
 

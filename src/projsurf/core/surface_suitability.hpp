@@ -30,9 +30,10 @@ struct SuitabilityOptions {
     double max_chroma = 0.40;      ///< mean (max - min channel) / 255 above this: too saturated (measured, docs/suitability.md)
     double max_contrast = 0.12;    ///< luminance std / mean over the window above this: textured (measured, docs/suitability.md)
     double glare_level = 0.98;     ///< a sample whose brightest channel reaches this share of 255 is blown out
-    double max_glare_share = 0.25; ///< more blown-out samples than this share of the window: glare (specular, emissive)
-    int row_step = 2;              ///< every this many rows of the point grid are sampled (half the cost; 6 samples per window at 4 m, VGA)
+    double max_glare_share = 0.1;  ///< more blown-out samples than this share of the window: glare (specular, emissive; one column of 5)
+    int row_step = 1;              ///< every this many rows of the point grid are sampled (2 halves the pass but lets a window pane reach 2.1 % of the rectangle; colour suite)
     int min_samples = 3;           ///< fewer wall samples in the window: colour decides nothing there
+    int trim_cells = 2;            ///< cells the unfit areas are eroded by (the window reaches 2 cells beyond a thing's edge; colour suite)
     double max_hole = 0.25;        ///< m^2, fit areas enclosed by unfit cells up to this size are unfit too (a picture's plain mat)
 };
 
