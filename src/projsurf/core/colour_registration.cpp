@@ -94,7 +94,8 @@ RegistrationResult checkColourRegistration(const Cloud &cloud, const cv::Mat &bg
     std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
     r.score_median = sorted[sorted.size() / 2];
     r.checked = r.score_best >= opt.min_prominence * r.score_median;
-    r.registered = r.checked && r.score_zero >= opt.min_zero_over_median * r.score_median;
+    r.registered = r.checked && r.score_zero >= opt.min_zero_over_median * r.score_median &&
+                   r.score_zero >= opt.min_zero_over_best * r.score_best;
     return r;
 }
 
