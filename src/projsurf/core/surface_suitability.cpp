@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 
 namespace projsurf {
@@ -134,9 +135,13 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box, const std::vect
     out.contrast.setTo(0);
     out.unfit.create(rows, cols, CV_8U);
     out.unfit.setTo(0);
+    // A wall that is itself at the glare level is the camera's exposure clipping it, not glare.
+    const float max_glare = out.median_luminance < opt.glare_level * opt.glare_wall_share
+                                ? static_cast<float>(opt.max_glare_share)
+                                : std::numeric_limits<float>::infinity();
     const float dark = static_cast<float>(std::max(opt.dark_min, opt.dark_relative * out.median_luminance) * 255.0);
     const float max_chroma = static_cast<float>(opt.max_chroma * 255.0), max_contrast = static_cast<float>(opt.max_contrast),
-                max_glare = static_cast<float>(opt.max_glare_share), min_samples = static_cast<float>(opt.min_samples);
+                min_samples = static_cast<float>(opt.min_samples);
     for (int r = 0; r < rows; ++r) {
         const ColourSums *w = win.data() + static_cast<std::size_t>(r) * cols;
         float *contrast = out.contrast.ptr<float>(r);

@@ -28,9 +28,10 @@ struct SuitabilityOptions {
     double dark_relative = 0.45;   ///< darker than this share of the wall's median luminance: too dark (measured, docs/suitability.md)
     double dark_min = 0.06;        ///< luminance share below which a surface is too dark whatever the wall (near black)
     double max_chroma = 0.40;      ///< mean (max - min channel) / 255 above this: too saturated (measured, docs/suitability.md)
-    double max_contrast = 0.12;    ///< luminance std / mean over the window above this: textured (measured, docs/suitability.md)
+    double max_contrast = 0.20;    ///< luminance std / mean over the window above this: textured (measured, docs/suitability.md)
     double glare_level = 0.98;     ///< a sample whose brightest channel reaches this share of 255 is blown out
     double max_glare_share = 0.1;  ///< more blown-out samples than this share of the window: glare (specular, emissive; one column of 5)
+    double glare_wall_share = 0.85;///< no glare on a wall whose median luminance reaches this share of glare_level (the camera clipped the wall itself; real frame sun3d_nvblox_studyroom_000116)
     int row_step = 1;              ///< every this many rows of the point grid are sampled (2 halves the pass but lets a window pane reach 2.1 % of the rectangle; colour suite)
     int min_samples = 3;           ///< fewer wall samples in the window: colour decides nothing there
     int trim_cells = 2;            ///< cells the unfit areas are eroded by (the window reaches 2 cells beyond a thing's edge; colour suite)
