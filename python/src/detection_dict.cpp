@@ -38,6 +38,11 @@ py::dict detectionToDict(const Detection &det, const DetectorConfig &config) {
     }
     d["surface_check"] = py::dict("points"_a = det.surface_check.points, "outliers"_a = det.surface_check.outliers,
                                   "accepted"_a = det.surface_check.accepted);
+    if (det.suitability.used)  // as the JSON: only when colour was used
+        d["suitability"] = py::dict("mode"_a = det.suitability.mode, "mean_albedo"_a = det.suitability.mean_albedo,
+                                    "texture"_a = det.suitability.texture,
+                                    "unsuitable_share"_a = det.suitability.unsuitable_share,
+                                    "wall_luminance"_a = det.suitability.wall_luminance);
     d["timing_ms"] = py::cast(det.timing_ms);
     const Eigen::Vector3d g = det.gravity;
     d["gravity"] = py::array_t<double>(3, g.data());

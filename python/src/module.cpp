@@ -15,6 +15,7 @@
 #include "image_array.hpp"
 #include "points_array.hpp"
 #include "projsurf/core/camera.hpp"
+#include "projsurf/core/colour_registration.hpp"
 #include "projsurf/core/keystone.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
@@ -65,14 +66,31 @@ py::array corners2(const Corners2 &c) {
     return a;
 }
 
+/// Registered colour into the cloud (surface suitability, issue 15); colour that the edge check
+/// finds not registered is not used, with a UserWarning (the CLI's warning line).
+void attachChecked(Cloud &cloud, const py::object &colour) {
+    py::object keep;
+    const cv::Mat bgr = matFromArray(colour.cast<py::array>(), "colour", keep);
+    if (bgr.type() != CV_8UC3 || !cloud.organized() || bgr.cols != cloud.width || bgr.rows != cloud.height)
+        throw InputError("colour", "must be an (H, W, 3) uint8 array (B, G, R) of the points' (H, W)");
+    const RegistrationResult r = checkColourRegistration(cloud, bgr);
+    if (r.checked && !r.registered) {
+        const std::string message = "colour is not registered to the depth (" + r.summary() + "); not used";
+        if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 1) < 0) throw py::error_already_set();
+        return;
+    }
+    attachColour(cloud, bgr);
+}
+
 /// A detector for a stream of clouds: keeps the C++ SurfaceDetector (and its buffers).
 class Detector {
 public:
     Detector(const Projector &projector, DetectorOptions options)
         : options_(std::move(options)), detector_(projector, options_.config) {}
 
-    py::dict detect(const py::object &points) {
-        const Cloud cloud = cloudFromPoints(points);
+    py::dict detect(const py::object &points, const py::object &colour) {
+        Cloud cloud = cloudFromPoints(points);
+        if (!colour.is_none()) attachChecked(cloud, colour);
         Detection det;
         {
             py::gil_scoped_release unlocked;
@@ -168,19 +186,21 @@ PYBIND11_MODULE(projsurf, m) {
              }),
              "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(), "method"_a = "default",
              "hull"_a = "concave", "seed"_a = 42u)
-        .def("detect", &Detector::detect, "points"_a,
+        .def("detect", &Detector::detect, "points"_a, py::kw_only(), "colour"_a = py::none(),
              "points: (H, W, 3) or (N, 3) array (camera frame, m; NaN = no reading) or an object with .points.\n"
+             "colour: optional (H, W, 3) uint8 B, G, R image registered to (H, W) points: the surface's suitability\n"
+             "(docs/suitability.md); not used, with a UserWarning, when its edges do not fit the depth's.\n"
              "Returns the detection as a dict with the keys of the detection JSON.")
         .def_property_readonly("projector", &Detector::projector);
 
     m.def("detect",
           [](const py::object &points, const Projector &projector, const py::object &aspect, const py::object &gravity,
-             const std::string &method, const std::string &hull, unsigned seed) {
+             const std::string &method, const std::string &hull, unsigned seed, const py::object &colour) {
               Detector detector(projector, detectorOptions(aspect, gravity, method, hull, seed));
-              return detector.detect(points);
+              return detector.detect(points, colour);
           },
           "points"_a, "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(),
-          "method"_a = "default", "hull"_a = "concave", "seed"_a = 42u,
+          "method"_a = "default", "hull"_a = "concave", "seed"_a = 42u, "colour"_a = py::none(),
           "The biggest upright rectangle of the aspect ratio (None: the framebuffer's, a number, or 'W:H') that the\n"
           "projector can light on a vertical surface. gravity: camera frame, pointing down (None: a level camera\n"
           "[0, 1, 0]; 'auto': from the floor). Returns a dict: found, reason, method, plane, rectangle,\n"

@@ -262,3 +262,33 @@ def test_depth_to_cloud_matches_the_depth_png_reader(tmp_path):
     np.testing.assert_array_equal(projsurf.read_depth_cloud(png, str(camera)), cloud)
     with pytest.raises(projsurf.InputError, match="^depth: expected an \\(H, W\\) uint16 depth image"):
         projsurf.depth_to_cloud(depth.astype(np.float32), fx=52.5, fy=52.5, cx=31.5, cy=23.5)
+
+
+def _colour_frame():
+    """A frontal wall 2.5 m away with a box in front, a dark square on the wall beside it,
+    and the matching (registered) colour."""
+    h, w, f = 480, 640, 525.0
+    v, u = np.mgrid[0:h, 0:w].astype(np.float32)
+    z = np.full((h, w), 2.5, np.float32)
+    z[300:460, 40:260] = 1.6  # a box
+    pts = np.dstack([(u - 319.5) * z / f, (v - 239.5) * z / f, z]).astype(np.float32)
+    colour = np.full((h, w, 3), 200, np.uint8)
+    colour[300:460, 40:260] = (40, 80, 120)
+    colour[60:260, 300:560] = 15  # dark panel on the wall
+    return pts, colour
+
+
+def test_colour_is_used_only_when_registered():
+    pts, colour = _colour_frame()
+    proj = projsurf.Projector()
+    plain = projsurf.detect(pts, proj)
+    assert "suitability" not in plain
+    with_colour = projsurf.detect(pts, proj, colour=colour)
+    assert with_colour["suitability"]["mode"] == "avoid"
+    assert with_colour["suitability"]["unsuitable_share"] <= 0.02
+    shifted = np.ascontiguousarray(np.roll(colour, 15, axis=1))
+    with pytest.warns(UserWarning, match="not registered"):
+        moved = projsurf.detect(pts, proj, colour=shifted)
+    assert "suitability" not in moved
+    with pytest.raises(projsurf.InputError):
+        projsurf.detect(pts, proj, colour=colour[:100])

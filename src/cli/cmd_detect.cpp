@@ -9,6 +9,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/parse.hpp"
+#include "projsurf/core/colour_registration.hpp"
 #include "projsurf/core/gravity.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/detection_json.hpp"
@@ -25,7 +26,7 @@ constexpr double kTiltWarningDeg = 5.0;  ///< deg, a floor this far from level m
 
 struct DetectOptions {
     std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity, method = "default",
-        hull = "concave", bag, topic;
+        hull = "concave", bag, topic, suitability;
     DetectorConfig config;
 };
 
@@ -68,10 +69,30 @@ void warnIfImplausibleDepth(const Cloud &cloud, const std::string &camera_file) 
                      camera_file.c_str(), median);
 }
 
+/// --rgb: the colour goes into the cloud only when its edges fit the depth's (issue 14), else
+/// it is not used at all (one warning line). False when it is not used.
+bool attachRegisteredColour(Cloud &cloud, const cv::Mat &color, const std::string &file) {
+    if (!cloud.organized()) {
+        std::fprintf(stderr, "projsurf: warning: %s: colour needs an organized cloud or a depth image to be registered to; not used\n",
+                     file.c_str());
+        return false;
+    }
+    const RegistrationResult r = checkColourRegistration(cloud, color);
+    if (r.checked && !r.registered) {
+        std::fprintf(stderr, "projsurf: warning: %s: colour is not registered to the depth (%s); not used\n", file.c_str(),
+                     r.summary().c_str());
+        return false;
+    }
+    if (!r.checked)
+        std::fprintf(stderr, "projsurf: warning: %s: cannot check that the colour is registered to the depth (%s); used as given\n",
+                     file.c_str(), r.summary().c_str());
+    return attachColour(cloud, color);
+}
+
 /// Options the chosen method does not use.
 void warnIfIgnored(const CLI::App &sub, Method method) {
     const std::vector<const char *> paper_only{"--hull", "--voxel-leaf", "--ransac-distance", "--max-outliers"};
-    const std::vector<const char *> default_only{"--cell", "--max-planes", "--max-outlier-fraction"};
+    const std::vector<const char *> default_only{"--cell", "--max-planes", "--max-outlier-fraction", "--suitability"};
     for (const char *name : method == Method::Paper ? default_only : paper_only)
         if (sub.get_option(name)->count() > 0)
             std::fprintf(stderr, "projsurf: warning: %s is ignored by the %s method\n", name,
@@ -124,6 +145,10 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     if (o.hull == "concave") cfg.paper.hull = HullKind::Concave;
     else if (o.hull == "convex") cfg.paper.hull = HullKind::Convex;
     else throw InputError("--hull", "expected 'concave' or 'convex', got '" + o.hull + "'");
+    if (o.suitability == "off") cfg.suitability.mode = SuitabilityMode::Off;
+    else if (o.suitability == "avoid" || o.suitability.empty()) cfg.suitability.mode = SuitabilityMode::Avoid;
+    else if (o.suitability == "prefer") cfg.suitability.mode = SuitabilityMode::Prefer;
+    else throw InputError("--suitability", "expected 'off', 'avoid' or 'prefer', got '" + o.suitability + "'");
     warnIfIgnored(sub, cfg.method);
     const bool auto_gravity = o.gravity == "auto";
     Eigen::Vector3d gravity = SurfaceDetector::levelGravity();
@@ -149,7 +174,11 @@ void run(const DetectOptions &o, const CLI::App &sub) {
         if (cloud.organized() && (color.cols != cloud.width || color.rows != cloud.height))
             throw InputError(o.rgb, "colour image is " + std::to_string(color.cols) + "x" + std::to_string(color.rows) +
                                         ", the cloud is " + std::to_string(cloud.width) + "x" + std::to_string(cloud.height));
+        if (!attachRegisteredColour(cloud, color, o.rgb)) color.release();
     }
+    if (!o.suitability.empty() && o.suitability != "off" && !cloud.hasColour() && cfg.method == Method::Default)
+        std::fprintf(stderr, "projsurf: warning: --suitability %s needs registered colour (--rgb); the surface is judged by depth only\n",
+                     o.suitability.c_str());
 
     if (auto_gravity) {
         // No IMU: take "down" from the floor when one is in view, else keep a level camera.
@@ -187,7 +216,10 @@ void addDetectCommand(CLI::App &app) {
     sub->add_option("--camera", o->camera, "Camera intrinsics YAML for --depth");
     sub->add_option("--bag", o->bag, "ROS 1 bag: detect on every cloud of --topic, one JSON line per message");
     sub->add_option("--topic", o->topic, "sensor_msgs/PointCloud2 topic in --bag");
-    sub->add_option("--rgb", o->rgb, "Colour PNG registered to the cloud, for the overlay");
+    sub->add_option("--rgb", o->rgb, "Colour PNG registered to the cloud (checked): surface suitability and the overlay");
+    sub->add_option("--suitability", o->suitability,
+                    "With registered colour: off | avoid (default: no picture over dark, glaring, textured or saturated wall) | "
+                    "prefer (trade a little area for a cleaner wall; docs/suitability.md)");
     sub->add_option("--calib", o->calib, "Projector calibration YAML")->required();
     sub->add_option("--aspect", o->aspect, "Picture aspect ratio W:H (default: the framebuffer's)");
     sub->add_option("--json", o->json, "Write the detection JSON here (else it goes to stdout)");

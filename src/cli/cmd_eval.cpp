@@ -6,6 +6,7 @@
 #include <thread>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -18,6 +19,7 @@
 #include "projsurf/eval/report.hpp"
 #include "projsurf/eval/experiments.hpp"
 #include "projsurf/eval/realistic_suite.hpp"
+#include "projsurf/eval/colour_suite.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
 namespace fs = std::filesystem;
@@ -97,6 +99,11 @@ void run(const EvalOptions &o, const std::string &command) {
     if (!o.quick) ropt.rounds = rounds;
     ropt.seed = o.seed;
     const sim::RealisticSuiteResult realistic = sim::runRealisticSuite(ropt, sim::defaultVariant().config, progress);
+    // The colour suite (surface suitability, issue 15), the default method.
+    sim::ColourSuiteOptions copt = o.quick ? sim::quickColourSuite() : sim::ColourSuiteOptions{};
+    if (!o.quick) copt.rounds = rounds;
+    copt.seed = o.seed;
+    const sim::ColourSuiteResult colour = sim::runColourSuite(copt, sim::defaultVariant().config, progress);
 
     // Real frames: default method, the contract's example calibration, the default gravity.
     std::vector<GalleryEntry> gallery;
@@ -143,10 +150,13 @@ void run(const EvalOptions &o, const std::string &command) {
     fs::create_directories(out, ec);
     if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
     writeEvalReport(o.out, results, gallery, info);
+    std::ofstream(out / "report.md", std::ios::app) << "\n## Colour suite: surface suitability (issue 15)\n\n"
+                                                    << sim::colourSuiteMarkdown(colour);
     std::printf("eval: %zu detections in %.1f s (%d rounds%s), %zu real frames; wrote %s/report.md\n",
                 results.trials.size() + results.keystone.size(), results.seconds, rounds, o.quick ? ", quick" : "",
                 gallery.size(), o.out.c_str());
     std::printf("%s\n", sim::realisticSuiteSummary(realistic).c_str());
+    std::printf("%s\n", sim::colourSuiteSummary(colour).c_str());
     if (!labelled.empty()) std::printf("%s\n", labelledSummaryLine(summariseLabelled(labelled)).c_str());
 }
 

@@ -18,6 +18,11 @@ enum class CellState : uchar {
     SeenThrough = 2,  ///< points beyond the wall seen through it (a hole, a door, glass)
     InFront = 3,      ///< something between the projector and the wall shadows it
     Edge = 4,         ///< the cell along the edge of the observed wall (its true edge may be a cell in)
+    // Free by depth, but unfit by its colour (core/surface_suitability.hpp): 4 + its Unfit value.
+    Glare = 5,        ///< blown out: specular or emissive (glass, a lamp, a screen)
+    Dark = 6,         ///< too dark (low albedo)
+    Textured = 7,     ///< textured or edgy (a framed picture, a calendar, a busy pattern)
+    Saturated = 8,    ///< too saturated a colour
 };
 
 struct SurfaceCells {

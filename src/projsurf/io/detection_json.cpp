@@ -43,6 +43,14 @@ nlohmann::json detectionToJson(const Detection &det, const DetectorConfig &confi
     j["surface_check"] = {{"points", det.surface_check.points},
                           {"outliers", det.surface_check.outliers},
                           {"accepted", det.surface_check.accepted}};
+    if (det.suitability.used) {
+        auto r3 = [](double v) { return std::round(v * 1000.0) / 1000.0; };
+        j["suitability"] = {{"mode", det.suitability.mode},
+                            {"mean_albedo", r3(det.suitability.mean_albedo)},
+                            {"texture", r3(det.suitability.texture)},
+                            {"unsuitable_share", r3(det.suitability.unsuitable_share)},
+                            {"wall_luminance", r3(det.suitability.wall_luminance)}};
+    }
     nlohmann::json timing = nlohmann::json::object();
     for (const auto &[k, v] : det.timing_ms) timing[k] = std::round(v * 1000.0) / 1000.0;
     j["timing_ms"] = timing;

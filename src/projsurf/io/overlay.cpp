@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <tuple>
 #include <opencv2/imgproc.hpp>
 #include "projsurf/core/observed_free_space.hpp"
 
@@ -15,7 +16,7 @@ namespace {
 
 const cv::Scalar kInlier(80, 200, 80), kFree(0, 220, 255), kWorkspace(255, 160, 40), kRect(255, 0, 255),
     kOutlier(40, 40, 255), kText(255, 255, 255), kInFront(0, 130, 255), kSeenThrough(220, 80, 200),
-    kNoReading(150, 150, 150);
+    kNoReading(150, 150, 150), kGlare(255, 255, 160), kDark(90, 40, 20), kTextured(0, 60, 160), kSaturated(160, 0, 90);
 
 
 /// Where camera-frame points land in the picture.
@@ -178,6 +179,12 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
     paintCells(img, view, det.debug, CellState::InFront, kInFront);
     paintCells(img, view, det.debug, CellState::SeenThrough, kSeenThrough);
     paintCells(img, view, det.debug, CellState::NoReading, kNoReading);
+    const std::vector<std::tuple<CellState, cv::Scalar, const char *>> unfit{
+        {CellState::Glare, kGlare, "not fit: glare (specular, emissive)"},
+        {CellState::Dark, kDark, "not fit: too dark (low albedo)"},
+        {CellState::Textured, kTextured, "not fit: textured (picture, pattern)"},
+        {CellState::Saturated, kSaturated, "not fit: too saturated a colour"}};
+    for (const auto &[state, colour, text] : unfit) paintCells(img, view, det.debug, state, colour);
     for (const auto &outline : det.debug.hull) polyline(img, view, outline, outline.size() > 2, kFree, 2);
     if (det.debug.has_workspace) polyline(img, view, {det.debug.workspace.begin(), det.debug.workspace.end()}, true, kWorkspace, 2);
     if (det.rectangle.area() > 0) {
@@ -216,6 +223,8 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
         key.push_back({kInFront, "not free: something in front (its shadow)"});
         key.push_back({kSeenThrough, "not free: seen through (hole, door, glass)"});
         key.push_back({kNoReading, "not free: no wall reading"});
+        for (const auto &[state, colour, text] : unfit)
+            if (cv::countNonZero(det.debug.cell_state == static_cast<int>(state)) > 0) key.push_back({colour, text});
     }
     return withLegend(img, key, lines);
 }

@@ -14,6 +14,7 @@
 #include "projsurf/core/point_sampling.hpp"
 #include "projsurf/core/rectangle_growth.hpp"
 #include "projsurf/core/rectangle_search.hpp"
+#include "projsurf/core/surface_suitability.hpp"
 #include "projsurf/core/vertical_planes.hpp"
 #include "projsurf/pipeline/candidate.hpp"
 #include "projsurf/pipeline/stage_timer.hpp"
@@ -39,6 +40,7 @@ struct PlaneCandidate : Candidate {
     PlaneObservation *observed = nullptr;///< what the camera saw of it, per raster cell
     WallShape shape;                     ///< how the seen wall departs from the plane
     DepthTolerance tolerance;            ///< the band about the shape (the noise measured on it)
+    CellSuitability *colour = nullptr;   ///< the cells' fitness by their colour (null without colour)
 };
 
 CloudSample sampleCloud(const Cloud &cloud, const DetectorConfig &cfg) {
@@ -208,6 +210,72 @@ bool placeRectangle(double aspect, PlaneCandidate &c) {
     return true;
 }
 
+/// Issue 15: each free cell's fitness by the colour of the wall seen there, in its cell state.
+void judgeColour(const Cloud &cloud, DefaultScratch &scratch, const DetectorConfig &cfg, std::size_t k, PlaneCandidate &c) {
+    CellSuitability &s = scratch.colour.at(k);
+    cellSuitability(scratch.grid, scratch.grid.gridBox(c.image_box), cloud.colours, c.plane, c.frame, c.raster, c.tolerance,
+                    c.shape, cfg.suitability.cells, s);
+    if (s.empty()) return;
+    c.colour = &s;
+    for (int r = 0; r < s.rows; ++r) {
+        const uchar *unfit = s.unfit.ptr<uchar>(r);
+        uchar *state = c.cell_state.ptr<uchar>(r);
+        for (int col = 0; col < s.cols; ++col)
+            if (unfit[col] && state[col] == static_cast<uchar>(CellState::Free))
+                state[col] = static_cast<uchar>(static_cast<int>(CellState::Edge) + unfit[col]);
+    }
+}
+
+/// The cells unfit by their colour taken off the free surface.
+void avoidUnfit(PlaneCandidate &c) {
+    const cv::Mat unfit = c.colour->unfit != 0;
+    c.surface.setTo(0, unfit);
+    c.free.setTo(0, unfit);
+}
+
+double unfitShare(const PlaneCandidate &c) {
+    return regionSuitability(*c.colour, c.raster, c.frame.toPlane(c.rectangle.corners[3]), c.frame.toPlane(c.rectangle.corners[1]))
+        .unfit_share;
+}
+
+/// The rectangle by the suitability mode: off (or no colour) as placeRectangle; avoid on the
+/// fit cells only; prefer the better of both by area x (1 - unfit share)^k.
+bool placeSuitableRectangle(const DetectorConfig &cfg, double aspect, PlaneCandidate &c) {
+    const SuitabilityMode mode = c.colour ? cfg.suitability.mode : SuitabilityMode::Off;
+    if (mode == SuitabilityMode::Off) return placeRectangle(aspect, c);
+    if (mode == SuitabilityMode::Avoid) {
+        avoidUnfit(c);
+        return placeRectangle(aspect, c);
+    }
+    const bool any = placeRectangle(aspect, c);
+    const Rectangle plain = c.rectangle;
+    const double plain_score = any ? plain.area() * std::pow(1.0 - unfitShare(c), cfg.suitability.prefer_exponent) : 0.0;
+    const cv::Mat surface = c.surface.clone(), free = c.free.clone();
+    avoidUnfit(c);
+    const bool clean = placeRectangle(aspect, c);
+    if (clean && c.rectangle.area() >= plain_score) return true;
+    if (!any) return false;
+    c.rectangle = plain;
+    c.surface = surface;
+    c.free = free;
+    return true;
+}
+
+/// What the chosen rectangle lies on, by its colour.
+SuitabilityReport reportSuitability(const DetectorConfig &cfg, const PlaneCandidate &c) {
+    SuitabilityReport r;
+    if (!c.colour || cfg.suitability.mode == SuitabilityMode::Off) return r;
+    const RegionSuitability s =
+        regionSuitability(*c.colour, c.raster, c.frame.toPlane(c.rectangle.corners[3]), c.frame.toPlane(c.rectangle.corners[1]));
+    r.used = true;
+    r.mode = cfg.suitability.mode == SuitabilityMode::Prefer ? "prefer" : "avoid";
+    r.mean_albedo = s.mean_luminance;
+    r.texture = s.contrast;
+    r.unsuitable_share = s.unfit_share;
+    r.wall_luminance = c.colour->median_luminance;
+    return r;
+}
+
 /// 3.2.3, read off the free-space pass. Mixed pixels at depth edges along the border are not
 /// the surface's fault: the check looks one raster cell inside the rectangle.
 SurfaceCheckResult checkRectangle(const DetectorConfig &cfg, const PlaneCandidate &c) {
@@ -268,6 +336,7 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     std::sort(usable.begin(), usable.end(), [&](int a, int b) { return candidates[a].bound > candidates[b].bound; });
     if (scratch.observations.size() < candidates.size()) scratch.observations.resize(candidates.size());
     for (std::size_t k = 0; k < candidates.size(); ++k) candidates[k].observed = &scratch.observations[k];
+    if (cloud.hasColour() && scratch.colour.size() < candidates.size()) scratch.colour.resize(candidates.size());
     time.lap("free_space");
 
     // 4. Each wall's shape, free space (3.2.2), rectangle and surface check (3.2.3), candidate
@@ -287,7 +356,11 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         if (!framed) continue;
         observeFreeSpace(cloud, scratch, projector, cfg, c);
         time.lap("free_space");
-        const bool ok = placeRectangle(aspect, c);
+        if (cloud.hasColour() && cfg.suitability.mode != SuitabilityMode::Off) {
+            judgeColour(cloud, scratch, cfg, static_cast<std::size_t>(k), c);
+            time.lap("suitability");
+        }
+        const bool ok = placeSuitableRectangle(cfg, aspect, c);
         time.lap("rectangle");
         if (!ok) continue;
         placed.push_back(k);
@@ -322,6 +395,7 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         det.found = true;
         det.rectangle = chosen->rectangle;
         det.surface_check = check;
+        det.suitability = reportSuitability(cfg, *chosen);
     } else if (usable.empty()) {
         det.reason = "the projector workspace does not reach any vertical plane in view";
     } else if (placed.empty()) {

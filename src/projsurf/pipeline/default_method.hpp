@@ -8,6 +8,7 @@
 #include "projsurf/core/planar_regions.hpp"
 #include "projsurf/core/plane_observation.hpp"
 #include "projsurf/core/point_grid.hpp"
+#include "projsurf/core/surface_suitability.hpp"
 #include "projsurf/core/projector.hpp"
 #include "projsurf/pipeline/detection.hpp"
 #include "projsurf/pipeline/detector_config.hpp"
@@ -18,6 +19,7 @@ namespace projsurf {
 struct DefaultScratch {
     PointGrid grid;
     std::vector<PlaneObservation> observations;  ///< one per candidate plane
+    std::vector<CellSuitability> colour;         ///< one per candidate plane, when the cloud has colour
     std::vector<std::int16_t> region_labels;     ///< depth images: the planar region of each grid element
     std::vector<PlanarRegion> regions;           ///< depth images: the planar regions found
     std::vector<std::uint8_t> exclude;           ///< grid elements of another region than the candidate's

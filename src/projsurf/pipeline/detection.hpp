@@ -31,6 +31,16 @@ struct DetectionDebug {
     double grid_cell = 0.0;
 };
 
+/// What the chosen rectangle lies on, by its colour (default method, when colour was used).
+struct SuitabilityReport {
+    bool used = false;             ///< the cloud had colour and the mode was not off
+    std::string mode;              ///< "avoid" or "prefer"
+    double mean_albedo = 0.0;      ///< mean luminance of the wall samples in it, share of 255 (uncalibrated albedo)
+    double texture = 0.0;          ///< mean luminance contrast (std / mean over 5 cm windows) of its cells
+    double unsuitable_share = 0.0; ///< share of its cells unfit by their colour
+    double wall_luminance = 0.0;   ///< median luminance of the wall's samples, share of 255
+};
+
 struct Detection {
     bool found = false;
     std::string reason;           ///< why not found (empty when found)
@@ -39,6 +49,7 @@ struct Detection {
     int inliers = 0;
     Rectangle rectangle;
     SurfaceCheckResult surface_check;
+    SuitabilityReport suitability;
     Eigen::Vector3d gravity = Eigen::Vector3d::UnitY();  ///< the down direction used (camera frame, unit)
     std::map<std::string, double> timing_ms;  ///< "total" and per stage
     DetectionDebug debug;

@@ -3,6 +3,7 @@
 // and where it comes from (paper section, datasheet, or a measurement of this project).
 #include "projsurf/core/depth_tolerance.hpp"
 #include "projsurf/core/planar_regions.hpp"
+#include "projsurf/core/surface_suitability.hpp"
 #include "projsurf/core/wall_shape.hpp"
 
 namespace projsurf {
@@ -67,6 +68,21 @@ struct SurfaceCheckConfig {
     double max_outlier_fraction = 0.03;  ///< share of checked points off the wall that rejects an area, measured
 };
 
+/// How registered colour (Cloud::colours) is used.
+enum class SuitabilityMode {
+    Off,     ///< colour ignored
+    Avoid,   ///< cells unfit by their colour are not free
+    Prefer,  ///< of the rectangle that avoids them and the one that does not, the larger area x (1 - unfit share)^k
+};
+
+/// Default method, stage 4b: the surface's suitability from its colour (issue 15), only when
+/// the cloud carries colour (without colour it is off whatever the mode).
+struct SuitabilityConfig {
+    SuitabilityMode mode = SuitabilityMode::Avoid;
+    SuitabilityOptions cells;
+    double prefer_exponent = 2.0;  ///< k of prefer's rule (a 10 % unfit rectangle counts 81 % of its area)
+};
+
 struct DetectorConfig {
     Method method = Method::Default;
     double aspect = 0.0;    ///< picture width / height; 0 = the projector framebuffer's
@@ -78,6 +94,7 @@ struct DetectorConfig {
     WallConfig wall;
     FreeSpaceConfig free_space;
     SurfaceCheckConfig check;
+    SuitabilityConfig suitability;
     PaperConfig paper;
 };
 

@@ -51,14 +51,25 @@ std::optional<ProjectorLight> makeLight(const Scene &scene, const std::optional<
 
 /// Light leaving surface point p of quad qi, as a fraction of white per BGR channel: the
 /// albedo under ambient light, plus the framebuffer's colour where the projector reaches p.
+/// The reflectance at p: the quad's texture (nearest texel) where it has one, else its albedo.
+cv::Vec3f albedoAt(const Quad &quad, const Eigen::Vector3d &p) {
+    if (quad.texture.empty()) return quad.albedo;
+    const Eigen::Vector3d q = p - quad.corner;
+    const double a = q.dot(quad.edge_a) / quad.edge_a.squaredNorm(), b = q.dot(quad.edge_b) / quad.edge_b.squaredNorm();
+    const int col = std::clamp(static_cast<int>(a * quad.texture.cols), 0, quad.texture.cols - 1);
+    const int row = std::clamp(static_cast<int>(b * quad.texture.rows), 0, quad.texture.rows - 1);
+    return quad.texture.at<cv::Vec3f>(row, col);
+}
+
 cv::Vec3f shade(const Quad &quad, const Eigen::Vector3d &p, int qi, const std::optional<ProjectorLight> &light,
                 const Lighting &lighting) {
-    cv::Vec3f c = quad.albedo * static_cast<float>(lighting.ambient);
+    const cv::Vec3f albedo = albedoAt(quad, p);
+    cv::Vec3f c = albedo * static_cast<float>(lighting.ambient) + cv::Vec3f::all(quad.emission);
     if (light && light->map.reaches(p, qi)) {
         const Eigen::Vector2d px = light->view.pixelOf(light->view.toView(p));
         if (light->view.inside(px)) {
             const cv::Vec3f fbc = sampleBilinear(light->framebuffer, px.x(), px.y());
-            c += quad.albedo.mul(fbc) * static_cast<float>(lighting.projector_gain);
+            c += albedo.mul(fbc) * static_cast<float>(lighting.projector_gain);
         }
     }
     return c;

@@ -45,6 +45,11 @@ struct Quad {
     int surface = -1;
     Material material = Material::Matte;
     Bow bow;  ///< flat by default; the renderer and the sensor models see the bowed surface
+    /// Colour only (the depth sensors ignore both): a reflectance image (CV_32FC3 BGR, 0-1)
+    /// over the quad, column ~ a, row ~ b, that replaces `albedo` (a picture, a poster); and
+    /// light the surface gives off itself, as a fraction of white (a window pane, a screen).
+    cv::Mat texture;
+    float emission = 0.0f;
 
 
     Eigen::Vector3d normal() const { return edge_a.cross(edge_b).normalized(); }

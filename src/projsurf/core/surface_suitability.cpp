@@ -1,0 +1,204 @@
+#include "projsurf/core/surface_suitability.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <opencv2/imgproc.hpp>
+
+namespace projsurf {
+namespace {
+
+/// Fills fit areas wholly enclosed by unfit cells, up to `max_cells` cells, with the reason of
+/// a cell on their border.
+void fillEnclosed(cv::Mat &unfit, double max_cells) {
+    const cv::Mat bad = unfit != 0;
+    std::vector<std::vector<cv::Point>> contours;
+    std::vector<cv::Vec4i> hierarchy;
+    cv::findContours(bad, contours, hierarchy, cv::RETR_CCOMP, cv::CHAIN_APPROX_SIMPLE);
+    cv::Mat hole;
+    for (std::size_t i = 0; i < contours.size(); ++i) {
+        if (hierarchy[i][3] < 0) continue;  // an outer boundary, not a hole
+        if (cv::contourArea(contours[i]) > max_cells) continue;
+        const cv::Rect box = cv::boundingRect(contours[i]);
+        const cv::Point p = contours[i].front();
+        const uchar reason = unfit.at<uchar>(p.y, p.x) ? unfit.at<uchar>(p.y, p.x) : static_cast<uchar>(Unfit::Textured);
+        hole = cv::Mat::zeros(box.size(), CV_8U);
+        cv::drawContours(hole, contours, static_cast<int>(i), cv::Scalar(255), cv::FILLED, cv::LINE_8, cv::noArray(), 0,
+                         -box.tl());
+        cv::Mat roi = unfit(box);
+        roi.setTo(reason, hole & (roi == 0));
+    }
+}
+
+/// Sums over the k x k window about each cell (zero outside the raster) into `out`: a running
+/// sum down the columns into `out`, then along each row in place.
+void windowSums(const std::vector<ColourSums> &in, int rows, int cols, int k, std::vector<ColourSums> &out) {
+    const int half = k / 2;
+    auto add = [](ColourSums &a, const ColourSums &b) {
+        a.samples += b.samples, a.luminance += b.luminance, a.luminance_sq += b.luminance_sq, a.chroma += b.chroma,
+            a.glare += b.glare;
+    };
+    auto sub = [](ColourSums &a, const ColourSums &b) {
+        a.samples -= b.samples, a.luminance -= b.luminance, a.luminance_sq -= b.luminance_sq, a.chroma -= b.chroma,
+            a.glare -= b.glare;
+    };
+    const std::size_t n = static_cast<std::size_t>(rows) * cols;
+    out.assign(n, ColourSums{});
+    auto at = [cols](int r) { return static_cast<std::size_t>(r) * cols; };
+    // Down: out row r = sum of in rows r - half .. r + half.
+    for (int r = 0; r < std::min(half, rows); ++r)
+        for (int c = 0; c < cols; ++c) add(out[c], in[at(r) + c]);
+    for (int r = 0; r < rows; ++r) {
+        ColourSums *dst = out.data() + at(r);
+        if (r > 0) std::copy(dst - cols, dst, dst);
+        if (r + half < rows)
+            for (int c = 0; c < cols; ++c) add(dst[c], in[at(r + half) + c]);
+        if (r - half - 1 >= 0)
+            for (int c = 0; c < cols; ++c) sub(dst[c], in[at(r - half - 1) + c]);
+    }
+    // Across, in place (a window of the column sums kept aside).
+    std::vector<ColourSums> line(static_cast<std::size_t>(cols));
+    for (int r = 0; r < rows; ++r) {
+        ColourSums *row = out.data() + at(r);
+        std::copy(row, row + cols, line.begin());
+        ColourSums run;
+        for (int c = 0; c < std::min(half, cols); ++c) add(run, line[c]);
+        for (int c = 0; c < cols; ++c) {
+            if (c + half < cols) add(run, line[c + half]);
+            if (c - half - 1 >= 0) sub(run, line[c - half - 1]);
+            row[c] = run;
+        }
+    }
+}
+
+}  // namespace
+
+void cellSuitability(const PointGrid &grid, const cv::Rect &box, const std::vector<std::array<std::uint8_t, 3>> &colours,
+                     const Plane &plane, const PlaneFrame &frame, const RasterFrame &raster, const DepthTolerance &tolerance,
+                     const WallShape &shape, const SuitabilityOptions &opt, CellSuitability &out) {
+    out.rows = out.cols = 0;
+    const int rows = raster.rows, cols = raster.cols;
+    if (rows <= 0 || cols <= 0 || colours.empty()) return;
+    std::vector<ColourSums> &sums = out.sums;
+    sums.assign(static_cast<std::size_t>(rows) * cols, ColourSums{});
+    // 1. Each wall sample's colour, summed in the cell under its foot. Float arithmetic, as in
+    // observePlane: raster column q . R + col0, row q . U + row0.
+    const Eigen::Vector3d R = frame.right / raster.cell, U = -frame.up / raster.cell;
+    const Eigen::Vector3f r3 = R.cast<float>(), u3 = U.cast<float>(), n3 = plane.normal.cast<float>();
+    const float col0 = static_cast<float>(-frame.origin.dot(R) - raster.top_left.x() / raster.cell);
+    const float row0 = static_cast<float>(-frame.origin.dot(U) + raster.top_left.y() / raster.cell);
+    const float d = static_cast<float>(plane.d);
+    const bool flat = shape.flat();
+    const int glare = static_cast<int>(std::ceil(opt.glare_level * 255.0));
+    std::vector<int> histogram(256, 0);
+    const cv::Rect area = box & cv::Rect(0, 0, grid.cols, grid.rows);
+    for (int gr = area.y; gr < area.y + area.height; gr += std::max(1, opt.row_step)) {
+        const std::size_t first = static_cast<std::size_t>(gr) * grid.cols;
+        for (int gc = area.x; gc < area.x + area.width; ++gc) {
+            const std::size_t k = first + gc;
+            const float px = grid.x[k], py = grid.y[k], pz = grid.z[k];
+            const float c = r3.x() * px + r3.y() * py + r3.z() * pz + col0;
+            const float r = u3.x() * px + u3.y() * py + u3.z() * pz + row0;
+            if (!(c >= 0.0f && r >= 0.0f && c < cols && r < rows)) continue;  // NaN fails too
+            float h = n3.x() * px + n3.y() * py + n3.z() * pz + d;
+            if (!flat)  // the wall's shape at the foot: u = top_left.x + cell col, v = top_left.y - cell row
+                h -= static_cast<float>(shape.height({raster.top_left.x() + c * raster.cell, raster.top_left.y() - r * raster.cell}));
+            if (std::abs(h) > tolerance.band(pz)) continue;
+            const std::size_t index = static_cast<std::size_t>(grid.cloudIndex(gr, gc));
+            if (index >= colours.size()) continue;
+            const auto &bgr = colours[index];
+            const int luma = (29 * bgr[0] + 150 * bgr[1] + 77 * bgr[2] + 128) >> 8;
+            const int hi = std::max({bgr[0], bgr[1], bgr[2]}), lo = std::min({bgr[0], bgr[1], bgr[2]});
+            ColourSums &cell = sums[static_cast<std::size_t>(r) * cols + static_cast<std::size_t>(c)];
+            cell.samples += 1.0f;
+            cell.luminance += static_cast<float>(luma);
+            cell.luminance_sq += static_cast<float>(luma * luma);
+            cell.chroma += static_cast<float>(hi - lo);
+            cell.glare += hi >= glare ? 1.0f : 0.0f;
+            ++histogram[std::min(255, luma)];
+        }
+    }
+    int total = 0;
+    for (int h : histogram) total += h;
+    if (total == 0) return;
+    int below = 0, median = 0;
+    while (median < 255 && (below += histogram[median]) * 2 < total) ++median;
+    out.median_luminance = median / 255.0;
+    out.rows = rows;
+    out.cols = cols;
+
+    // 2. Window sums about each cell, and the verdicts.
+    const int k = std::max(1, static_cast<int>(std::lround(opt.window / raster.cell)) | 1);
+    windowSums(out.sums, rows, cols, k, out.window);
+    const std::vector<ColourSums> &win = out.window;
+    out.contrast.create(rows, cols, CV_32F);
+    out.contrast.setTo(0);
+    out.unfit.create(rows, cols, CV_8U);
+    out.unfit.setTo(0);
+    // A wall that is itself at the glare level is the camera's exposure clipping it, not glare.
+    const float max_glare = out.median_luminance < opt.glare_level * opt.glare_wall_share
+                                ? static_cast<float>(opt.max_glare_share)
+                                : std::numeric_limits<float>::infinity();
+    const float dark = static_cast<float>(std::max(opt.dark_min, opt.dark_relative * out.median_luminance) * 255.0);
+    const float max_chroma = static_cast<float>(opt.max_chroma * 255.0), max_contrast = static_cast<float>(opt.max_contrast),
+                min_samples = static_cast<float>(opt.min_samples);
+    for (int r = 0; r < rows; ++r) {
+        const ColourSums *w = win.data() + static_cast<std::size_t>(r) * cols;
+        float *contrast = out.contrast.ptr<float>(r);
+        uchar *unfit = out.unfit.ptr<uchar>(r);
+        for (int c = 0; c < cols; ++c) {
+            const ColourSums &s = w[c];
+            if (s.samples < min_samples) continue;
+            const float mean = s.luminance / s.samples;
+            const float var = std::max(0.0f, s.luminance_sq / s.samples - mean * mean);
+            contrast[c] = std::sqrt(var) / std::max(mean, 8.0f);  // Weber-like; near black: its floor
+            Unfit why = Unfit::None;
+            if (s.glare > max_glare * s.samples) why = Unfit::Glare;
+            else if (mean < dark) why = Unfit::Dark;
+            else if (contrast[c] > max_contrast) why = Unfit::Textured;
+            else if (s.chroma / s.samples > max_chroma) why = Unfit::Saturated;
+            unfit[c] = static_cast<uchar>(why);
+        }
+    }
+    // A window reaches half its side beyond a thing's edge (its edge, its glare, part of its
+    // darkness): that margin is given back.
+    if (opt.trim_cells > 0) {
+        cv::Mat keep;
+        cv::erode(out.unfit != 0, keep, cv::getStructuringElement(cv::MORPH_RECT, {2 * opt.trim_cells + 1, 2 * opt.trim_cells + 1}),
+                  {-1, -1}, 1, cv::BORDER_REPLICATE);
+        out.unfit.setTo(0, keep == 0);
+    }
+    fillEnclosed(out.unfit, opt.max_hole / (raster.cell * raster.cell));
+}
+
+RegionSuitability regionSuitability(const CellSuitability &s, const RasterFrame &raster, const Eigen::Vector2d &lo,
+                                    const Eigen::Vector2d &hi) {
+    RegionSuitability out;
+    if (s.empty()) return out;
+    const double cell = raster.cell;
+    const int c0 = std::max(0, static_cast<int>(std::ceil((lo.x() - raster.top_left.x()) / cell - 0.5)));
+    const int c1 = std::min(raster.cols - 1, static_cast<int>(std::floor((hi.x() - raster.top_left.x()) / cell - 0.5)));
+    const int r0 = std::max(0, static_cast<int>(std::ceil((raster.top_left.y() - hi.y()) / cell - 0.5)));
+    const int r1 = std::min(raster.rows - 1, static_cast<int>(std::floor((raster.top_left.y() - lo.y()) / cell - 0.5)));
+    double samples = 0, luminance = 0, contrast = 0;
+    int unfit = 0, seen = 0;
+    for (int r = r0; r <= r1; ++r)
+        for (int c = c0; c <= c1; ++c) {
+            ++out.cells;
+            const ColourSums &sum = s.sums[static_cast<std::size_t>(r) * s.cols + c];
+            unfit += s.unfit.at<uchar>(r, c) != 0;
+            samples += sum.samples;
+            luminance += sum.luminance;
+            if (sum.samples > 0) {
+                contrast += s.contrast.at<float>(r, c);
+                ++seen;
+            }
+        }
+    if (out.cells == 0) return out;
+    out.unfit_share = static_cast<double>(unfit) / out.cells;
+    out.mean_luminance = samples > 0 ? luminance / samples / 255.0 : 0.0;
+    out.contrast = seen > 0 ? contrast / seen : 0.0;
+    return out;
+}
+
+}  // namespace projsurf

@@ -1,0 +1,317 @@
+// Surface suitability from registered colour (issue 15) and the colour registration check
+// (issue 14): the core on synthetic walls, the detector on the colour suite's scenes, the CLI.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "cli_run.hpp"
+#include "projsurf/core/colour_registration.hpp"
+#include "projsurf/core/observed_free_space.hpp"
+#include "projsurf/core/plane_frame.hpp"
+#include "projsurf/core/point_grid.hpp"
+#include "projsurf/core/surface_suitability.hpp"
+#include "projsurf/io/detection_json.hpp"
+#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/eval/colour_suite.hpp"
+#include "projsurf/sim/depth_sensor.hpp"
+#include "projsurf/sim/exact_depth.hpp"
+#include "projsurf/sim/ray_cast.hpp"
+#include "projsurf/sim/render.hpp"
+#include "projsurf/sim/wall_frame.hpp"
+
+namespace fs = std::filesystem;
+using namespace projsurf;
+
+namespace {
+
+const CameraIntrinsics kCam{};  // 640 x 480, f = 525 px
+
+/// A frontal wall `z` m away filling the image, with a box `box_out` m in front of it over
+/// the pixels `box` (none when empty).
+Cloud wallCloud(double z, const cv::Rect &box = {}, double box_out = 0.5) {
+    cv::Mat depth(kCam.height, kCam.width, CV_16U, cv::Scalar(z * 1000.0));
+    if (!box.empty()) depth(box).setTo((z - box_out) * 1000.0);
+    return depthToCloud(depth, kCam);
+}
+
+/// A light wall colour with, in `dark`, a near-black patch and, in `chequer`, 8 px black and
+/// white squares.
+cv::Mat wallColour(const cv::Rect &dark, const cv::Rect &chequer) {
+    cv::Mat img(kCam.height, kCam.width, CV_8UC3, cv::Scalar(200, 205, 210));
+    if (!dark.empty()) img(dark).setTo(cv::Scalar(12, 12, 14));
+    for (int v = chequer.y; v < chequer.y + chequer.height; ++v)
+        for (int u = chequer.x; u < chequer.x + chequer.width; ++u)
+            if (((u / 8) + (v / 8)) % 2) img.at<cv::Vec3b>(v, u) = cv::Vec3b(20, 20, 20);
+    return img;
+}
+
+struct WallRaster {
+    Plane plane;
+    PlaneFrame frame;
+    RasterFrame raster;
+};
+
+/// The plane z = `z` with a 1 cm raster over what the camera sees of it.
+WallRaster frontalRaster(double z) {
+    WallRaster w;
+    w.plane = makePlane(Eigen::Vector3d(0, 0, -1), z);
+    w.frame = makePlaneFrame(w.plane, Eigen::Vector3d(0, 1, 0), Eigen::Vector3d(0, 0, z));
+    const double hx = 320.0 / 525.0 * z, hy = 240.0 / 525.0 * z;
+    w.raster = makeRasterFrame({-hx, -hy}, {hx, hy}, 0.01);
+    return w;
+}
+
+/// The Unfit verdict of the cell under pixel (u, v) of the frontal wall.
+Unfit unfitAt(const CellSuitability &s, const WallRaster &w, double z, int u, int v) {
+    const Eigen::Vector3d p((u - kCam.cx) * z / kCam.fx, (v - kCam.cy) * z / kCam.fy, z);
+    const Eigen::Vector2d cell = w.raster.toCell(w.frame.toPlane(p));
+    return static_cast<Unfit>(s.unfit.at<uchar>(static_cast<int>(cell.y()), static_cast<int>(cell.x())));
+}
+
+CellSuitability judge(const Cloud &cloud, const WallRaster &w) {
+    PointGrid grid;
+    fillPointGrid(cloud, 2, grid);
+    CellSuitability s;
+    cellSuitability(grid, grid.gridBox(cv::Rect()), cloud.colours, w.plane, w.frame, w.raster, DepthTolerance{}, WallShape{},
+                    SuitabilityOptions{}, s);
+    return s;
+}
+
+}  // namespace
+
+TEST(Suitability, DarkAndEdgyCellsAreFlaggedPlainOnesNot) {
+    const double z = 2.5;
+    Cloud cloud = wallCloud(z);
+    const cv::Rect dark(80, 100, 120, 100), chequer(400, 220, 140, 120);
+    ASSERT_TRUE(attachColour(cloud, wallColour(dark, chequer)));
+    const WallRaster w = frontalRaster(z);
+    const CellSuitability s = judge(cloud, w);
+    ASSERT_FALSE(s.empty());
+    EXPECT_EQ(unfitAt(s, w, z, 140, 150), Unfit::Dark);
+    EXPECT_EQ(unfitAt(s, w, z, 470, 280), Unfit::Textured);
+    EXPECT_EQ(unfitAt(s, w, z, 300, 400), Unfit::None);  // plain wall
+    EXPECT_EQ(unfitAt(s, w, z, 320, 60), Unfit::None);
+    // Plain wall, dark and textured areas in about their true proportions.
+    const double share = static_cast<double>(cv::countNonZero(s.unfit)) / s.unfit.total();
+    const double truth = (dark.area() + chequer.area()) / (640.0 * 480.0);
+    EXPECT_NEAR(share, truth, 0.03);
+}
+
+TEST(Suitability, PlainWallOfAnyRoomPaintIsFit) {
+    const double z = 3.0;
+    for (const cv::Scalar &paint : {cv::Scalar(210, 215, 220), cv::Scalar(150, 190, 215), cv::Scalar(80, 110, 175),
+                                   cv::Scalar(105, 105, 105)}) {
+        Cloud cloud = wallCloud(z);
+        cv::Mat img(kCam.height, kCam.width, CV_8UC3, paint);
+        cv::Mat noise(img.size(), CV_8SC3);
+        cv::randn(noise, 0, 3);
+        cv::add(img, noise, img, cv::noArray(), CV_8UC3);
+        ASSERT_TRUE(attachColour(cloud, img));
+        const WallRaster w = frontalRaster(z);
+        const CellSuitability s = judge(cloud, w);
+        EXPECT_EQ(cv::countNonZero(s.unfit), 0) << paint;
+    }
+}
+
+TEST(Suitability, RegionReportsTheShareOfUnfitCells) {
+    const double z = 2.5;
+    Cloud cloud = wallCloud(z);
+    ASSERT_TRUE(attachColour(cloud, wallColour(cv::Rect(0, 0, 320, 480), cv::Rect())));  // left half dark
+    const WallRaster w = frontalRaster(z);
+    const CellSuitability s = judge(cloud, w);
+    const RegionSuitability all = regionSuitability(s, w.raster, {-1.0, -0.5}, {1.0, 0.5});
+    EXPECT_NEAR(all.unfit_share, 0.5, 0.05);
+    const RegionSuitability right = regionSuitability(s, w.raster, {0.2, -0.5}, {1.0, 0.5});
+    EXPECT_NEAR(right.unfit_share, 0.0, 1e-9);
+    EXPECT_NEAR(right.mean_luminance, 205.0 / 255.0, 0.02);
+    EXPECT_LT(right.contrast, 0.02);
+}
+
+TEST(ColourRegistration, RegisteredTrueShiftedFalse) {
+    // A wall with three boxes in front; the colour shows the same boxes darker.
+    const std::vector<cv::Rect> boxes{{100, 80, 120, 160}, {330, 200, 180, 140}, {250, 50, 60, 60}};
+    cv::Mat depth(kCam.height, kCam.width, CV_16U, cv::Scalar(3000));
+    cv::Mat colour(kCam.height, kCam.width, CV_8UC3, cv::Scalar(190, 195, 200));
+    for (const auto &b : boxes) {
+        depth(b).setTo(1800);
+        colour(b).setTo(cv::Scalar(60, 90, 120));
+    }
+    const Cloud cloud = depthToCloud(depth, kCam);
+    const RegistrationResult same = checkColourRegistration(cloud, colour);
+    EXPECT_TRUE(same.checked);
+    EXPECT_TRUE(same.registered) << same.summary();
+    for (const cv::Point shift : {cv::Point(12, 0), cv::Point(-8, 10), cv::Point(0, 15)}) {
+        cv::Mat moved;
+        const cv::Mat m = (cv::Mat_<double>(2, 3) << 1, 0, shift.x, 0, 1, shift.y);
+        cv::warpAffine(colour, moved, m, colour.size(), cv::INTER_NEAREST, cv::BORDER_REPLICATE);
+        const RegistrationResult r = checkColourRegistration(cloud, moved);
+        EXPECT_TRUE(r.checked) << shift;
+        EXPECT_FALSE(r.registered) << shift << ": " << r.summary();
+        EXPECT_EQ(r.best_dx, shift.x);
+        EXPECT_EQ(r.best_dy, shift.y);
+    }
+    // No depth edges: it cannot tell.
+    EXPECT_FALSE(checkColourRegistration(wallCloud(2.0), colour).checked);
+    // Another size: not checked, and no colour attached.
+    Cloud small = wallCloud(2.0);
+    cv::Mat half;
+    cv::resize(colour, half, {320, 240});
+    EXPECT_FALSE(checkColourRegistration(small, half).checked);
+    EXPECT_FALSE(attachColour(small, half));
+    EXPECT_FALSE(small.hasColour());
+}
+
+namespace {
+
+/// A colour-suite scene through the Kinect v1 model, its registered colour attached.
+struct ColourFrame {
+    sim::ColourScene scene;
+    sim::RgbdFrame frame;
+    cv::Mat rgb;
+    CameraIntrinsics camera;
+};
+ColourFrame colourFrame(const std::string &name, double distance, double angle_deg) {
+    ColourFrame f;
+    f.scene = sim::makeColourScene(name, distance, angle_deg);
+    // A box on the floor in front of the wall, right of the axis: depth edges for the
+    // registration check (the flat things on the wall have none).
+    const sim::WallFrame w(distance, angle_deg);
+    sim::wallBox(f.scene.scenario.scene, w, -0.6, 0.9, 0.0, 0.6, 0.4, 0.8, {0.35f, 0.55f, 0.70f}, "box");
+    const sim::DepthSensor unit = sim::makeDepthSensor(sim::SensorKind::Kinect1, 0);
+    const sim::ExactDepth exact = sim::castExactDepth(f.scene.scenario.scene, unit.camera());
+    sim::Lighting light;
+    light.ambient = 0.8;
+    f.rgb = sim::renderView(f.scene.scenario.scene, sim::cameraView(exact.camera), std::nullopt, light);
+    sim::fillFrameDepth(sim::measureDepth(f.scene.scenario.scene, exact, unit, 7), exact.camera, f.frame);
+    f.camera = exact.camera;
+    return f;
+}
+
+}  // namespace
+
+TEST(Suitability, DetectorAvoidsThePicturesAndReportsIt) {
+    ColourFrame f = colourFrame("pictures", 2.5, 0.0);
+    const Projector projector = sim::exampleProjector();
+    DetectorConfig cfg;
+    const Detection plain = detectSurface(f.frame.cloud, projector, cfg, f.scene.scenario.gravity);
+    ASSERT_TRUE(plain.found);
+    EXPECT_FALSE(plain.suitability.used);  // no colour: judged by depth only
+    EXPECT_FALSE(detectionToJson(plain, cfg).contains("suitability"));
+
+    ASSERT_TRUE(checkColourRegistration(f.frame.cloud, f.rgb).registered);
+    ASSERT_TRUE(attachColour(f.frame.cloud, f.rgb));
+    const Detection avoid = detectSurface(f.frame.cloud, projector, cfg, f.scene.scenario.gravity);
+    ASSERT_TRUE(avoid.found);
+    ASSERT_TRUE(avoid.suitability.used);
+    EXPECT_EQ(avoid.suitability.mode, "avoid");
+    EXPECT_LE(avoid.suitability.unsuitable_share, 0.02);
+    EXPECT_LT(avoid.rectangle.area(), plain.rectangle.area());  // without colour it covers a picture
+    const auto j = detectionToJson(avoid, cfg);
+    ASSERT_TRUE(j.contains("suitability"));
+    for (const char *key : {"mode", "mean_albedo", "texture", "unsuitable_share"}) EXPECT_TRUE(j["suitability"].contains(key));
+    // The overlay's states: unfit cells are marked in the shown plane's cell states.
+    int unfit = 0;
+    for (CellState s : {CellState::Glare, CellState::Dark, CellState::Textured, CellState::Saturated})
+        unfit += cv::countNonZero(avoid.debug.cell_state == static_cast<int>(s));
+    EXPECT_GT(unfit, 100);
+
+    cfg.suitability.mode = SuitabilityMode::Off;
+    const Detection off = detectSurface(f.frame.cloud, projector, cfg, f.scene.scenario.gravity);
+    EXPECT_FALSE(off.suitability.used);
+    EXPECT_NEAR(off.rectangle.area(), plain.rectangle.area(), 1e-9);
+
+    cfg.suitability.mode = SuitabilityMode::Prefer;
+    const Detection prefer = detectSurface(f.frame.cloud, projector, cfg, f.scene.scenario.gravity);
+    ASSERT_TRUE(prefer.found);
+    EXPECT_EQ(prefer.suitability.mode, "prefer");
+    // Prefer's rule: area x (1 - unfit share)^2 at least avoid's area.
+    const double k = cfg.suitability.prefer_exponent;
+    EXPECT_GE(prefer.rectangle.area() * std::pow(1.0 - prefer.suitability.unsuitable_share, k) + 1e-9,
+              avoid.rectangle.area() * std::pow(1.0 - avoid.suitability.unsuitable_share, k) - 1e-3);
+}
+
+TEST(Suitability, ColourSuiteQuickMeetsTheUnfitTarget) {
+    sim::ColourSuiteOptions o = sim::quickColourSuite();
+    o.rounds = 1;
+    const sim::ColourSuiteResult r = sim::runColourSuite(o);
+    ASSERT_EQ(r.rows.size(), o.cases.size());
+    for (const auto &row : r.rows) {
+        EXPECT_EQ(row.found, row.rounds) << row.scene.scene;
+        if (row.plain) EXPECT_LE(row.worst_plain_pct, 2.0) << row.scene.scene;
+        else EXPECT_LE(row.max_unfit_pct, 2.0) << row.scene.scene;
+    }
+    EXPECT_NE(sim::colourSuiteMarkdown(r).find("| pictures |"), std::string::npos);
+}
+
+namespace {
+
+/// A colour-suite frame written as the CLI reads it: depth.png, camera.yaml, rgb.png and a
+/// copy of the colour moved by 14 px named rgb_unregistered.png.
+fs::path writeColourFrame(const std::string &name) {
+    const fs::path dir = test::freshDir(name);
+    ColourFrame f = colourFrame("pictures", 2.5, 0.0);
+    cv::imwrite((dir / "depth.png").string(), f.frame.depth);
+    writeCamera((dir / "camera.yaml").string(), f.camera);
+    cv::imwrite((dir / "rgb.png").string(), f.rgb);
+    cv::Mat moved;
+    const cv::Mat m = (cv::Mat_<double>(2, 3) << 1, 0, 14, 0, 1, -6);
+    cv::warpAffine(f.rgb, moved, m, f.rgb.size(), cv::INTER_NEAREST, cv::BORDER_REPLICATE);
+    cv::imwrite((dir / "rgb_unregistered.png").string(), moved);
+    // The moved colour under an innocent name: the check, not the name, must catch it.
+    cv::imwrite((dir / "colour.png").string(), moved);
+    return dir;
+}
+
+std::string detectArgs(const fs::path &dir) {
+    return "detect --depth " + (dir / "depth.png").string() + " --camera " + (dir / "camera.yaml").string() +
+           " --calib " + std::string(PROJSURF_SOURCE_DIR) + "/examples/calib/example_calib.yaml --gravity 0,1,0";
+}
+
+}  // namespace
+
+TEST(SuitabilityCli, ModesParsedColourKeyOnlyWithColour) {
+    const fs::path dir = writeColourFrame("suitability_cli");
+    const auto none = test::cli(detectArgs(dir) + " --json " + (dir / "none.json").string(), dir);
+    ASSERT_EQ(none.status, 0) << none.err;
+    EXPECT_EQ(test::slurp(dir / "none.json").find("\"suitability\""), std::string::npos);
+
+    const auto avoid = test::cli(detectArgs(dir) + " --rgb " + (dir / "rgb.png").string() + " --json " +
+                                     (dir / "avoid.json").string(), dir);
+    ASSERT_EQ(avoid.status, 0) << avoid.err;
+    EXPECT_EQ(avoid.err, "");
+    const std::string j = test::slurp(dir / "avoid.json");
+    EXPECT_NE(j.find("\"suitability\""), std::string::npos);
+    EXPECT_NE(j.find("\"mode\": \"avoid\""), std::string::npos);
+
+    const auto off = test::cli(detectArgs(dir) + " --rgb " + (dir / "rgb.png").string() + " --suitability off --json " +
+                                   (dir / "off.json").string(), dir);
+    ASSERT_EQ(off.status, 0) << off.err;
+    EXPECT_EQ(test::slurp(dir / "off.json").find("\"suitability\""), std::string::npos);
+
+    const auto prefer = test::cli(detectArgs(dir) + " --rgb " + (dir / "rgb.png").string() + " --suitability prefer", dir);
+    ASSERT_EQ(prefer.status, 0) << prefer.err;
+    EXPECT_NE(prefer.out.find("\"mode\": \"prefer\""), std::string::npos);
+
+    const auto bad = test::cli(detectArgs(dir) + " --rgb " + (dir / "rgb.png").string() + " --suitability sometimes", dir);
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_EQ(bad.err, "projsurf: error: --suitability: expected 'off', 'avoid' or 'prefer', got 'sometimes'\n");
+    fs::remove_all(dir);
+}
+
+TEST(SuitabilityCli, UnregisteredColourIsCaughtByTheCheckNotTheName) {
+    const fs::path dir = writeColourFrame("suitability_unreg");
+    for (const char *name : {"rgb_unregistered.png", "colour.png"}) {
+        const fs::path rgb = dir / name;
+        const auto r = test::cli(detectArgs(dir) + " --rgb " + rgb.string() + " --json " + (dir / "u.json").string(), dir);
+        ASSERT_EQ(r.status, 0) << r.err;
+        const std::string expect = "projsurf: warning: " + rgb.string() + ": colour is not registered to the depth (";
+        EXPECT_EQ(r.err.rfind(expect, 0), 0u) << r.err;
+        EXPECT_NE(r.err.find("); not used\n"), std::string::npos) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_EQ(test::slurp(dir / "u.json").find("\"suitability\""), std::string::npos);
+    }
+    fs::remove_all(dir);
+}
