@@ -16,6 +16,8 @@
 #include "points_array.hpp"
 #include "projsurf/core/camera.hpp"
 #include "projsurf/core/keystone.hpp"
+#include "projsurf/frontend/depth_image_cloud.hpp"
+#include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -53,7 +55,7 @@ Projector makeProjector(std::pair<int, int> resolution, std::pair<double, double
 /// One picture -> framebuffer with a detection: what `projsurf correct` does for an image.
 Keystone keystoneFor(const Projector &projector, const py::object &detection, cv::Size picture, double tolerance_px) {
     const Rectangle rect = rectangleFromDetection(detection);
-    const KeystoneResult r = computeKeystone(projector, rect, picture, tolerance_px);
+    frontend::FramebufferRender r = frontend::keystoneFor(projector, rect, picture, tolerance_px);
     if (!r.keystone) throw InputError("detection", r.problem);
     return *r.keystone;
 }
@@ -78,6 +80,7 @@ public:
             py::gil_scoped_release unlocked;
             det = detector_.detect(cloud, gravityFor(options_, cloud));
         }
+        frontend::enforceMinimumSize(det, options_.minimum, "min_width", "min_area");
         return detectionToDict(det, options_.config);
     }
     const Projector &projector() const { return detector_.projector(); }
@@ -138,14 +141,8 @@ PYBIND11_MODULE(projsurf, m) {
               py::object keep;
               const cv::Mat d = matFromArray(depth, "depth", keep);
               if (d.type() != CV_16UC1) throw InputError("depth", "expected an (H, W) uint16 depth image (0 = no reading)");
-              if (!(fx > 0 && fy > 0 && std::isfinite(cx) && std::isfinite(cy) && depth_scale > 0 &&
-                    std::isfinite(fx + fy + depth_scale)))
-                  throw InputError("camera", "fx, fy and depth_scale must be positive, cx and cy finite");
-              CameraIntrinsics camera;
-              camera.width = d.cols;
-              camera.height = d.rows;
-              camera.fx = fx, camera.fy = fy, camera.cx = cx, camera.cy = cy, camera.depth_scale = depth_scale;
-              return arrayFromCloud(depthToCloud(d, camera));
+              const CameraIntrinsics camera = frontend::pinholeCamera("camera", d.cols, d.rows, fx, fy, cx, cy, depth_scale);
+              return arrayFromCloud(frontend::depthImageToCloud("depth", d, camera));
           },
           "depth"_a, py::kw_only(), "fx"_a, "fy"_a, "cx"_a, "cy"_a, "depth_scale"_a = 1000.0,
           "An (H, W) uint16 depth image (depth_scale units per metre, 0 = no reading) and its pinhole\n"
@@ -163,11 +160,12 @@ PYBIND11_MODULE(projsurf, m) {
 
     py::class_<Detector>(m, "Detector", "Detection over a stream of clouds (reuses its buffers from frame to frame).")
         .def(py::init([](const Projector &projector, const py::object &aspect, const py::object &gravity,
-                         const std::string &method, const std::string &hull, unsigned seed) {
-                 return Detector(projector, detectorOptions(aspect, gravity, method, hull, seed));
+                         const std::string &method, const std::string &hull, unsigned seed, const py::object &min_width,
+                         const py::object &min_area) {
+                 return Detector(projector, detectorOptions(aspect, gravity, method, hull, seed, min_width, min_area));
              }),
              "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(), "method"_a = "default",
-             "hull"_a = "concave", "seed"_a = 42u)
+             "hull"_a = "concave", "seed"_a = 42u, "min_width"_a = py::none(), "min_area"_a = py::none())
         .def("detect", &Detector::detect, "points"_a,
              "points: (H, W, 3) or (N, 3) array (camera frame, m; NaN = no reading) or an object with .points.\n"
              "Returns the detection as a dict with the keys of the detection JSON.")
@@ -175,15 +173,18 @@ PYBIND11_MODULE(projsurf, m) {
 
     m.def("detect",
           [](const py::object &points, const Projector &projector, const py::object &aspect, const py::object &gravity,
-             const std::string &method, const std::string &hull, unsigned seed) {
-              Detector detector(projector, detectorOptions(aspect, gravity, method, hull, seed));
+             const std::string &method, const std::string &hull, unsigned seed, const py::object &min_width,
+             const py::object &min_area) {
+              Detector detector(projector, detectorOptions(aspect, gravity, method, hull, seed, min_width, min_area));
               return detector.detect(points);
           },
           "points"_a, "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(),
-          "method"_a = "default", "hull"_a = "concave", "seed"_a = 42u,
+          "method"_a = "default", "hull"_a = "concave", "seed"_a = 42u, "min_width"_a = py::none(),
+          "min_area"_a = py::none(),
           "The biggest upright rectangle of the aspect ratio (None: the framebuffer's, a number, or 'W:H') that the\n"
           "projector can light on a vertical surface. gravity: camera frame, pointing down (None: a level camera\n"
-          "[0, 1, 0]; 'auto': from the floor). Returns a dict: found, reason, method, plane, rectangle,\n"
+          "[0, 1, 0]; 'auto': from the floor). min_width (m), min_area (m^2): smaller rectangles are not found\n"
+          "(None: 0.20 m and 0.02 m^2, as `projsurf detect`; 0 with method='paper'). Returns a dict: found, reason, method, plane, rectangle,\n"
           "surface_check, timing_ms, gravity (numpy arrays for vectors). Raises InputError for bad points or options.");
 
     m.def("keystone",

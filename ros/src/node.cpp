@@ -9,8 +9,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "conversions.hpp"
-#include "framebuffer.hpp"
-#include "projsurf/core/gravity.hpp"
+#include "projsurf/frontend/framebuffer_render.hpp"
+#include "projsurf/frontend/test_card.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -38,7 +38,7 @@ std::string summary(const Detection &det) {
 ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams params)
     : params_(std::move(params)), nh_(nh), pnh_(pnh), detector_(params_.projector, params_.detector) {
     if (!params_.image.empty()) picture_ = readImage(params_.image, cv::IMREAD_COLOR);
-    else picture_ = testCard({params_.projector.width, params_.projector.height});
+    else picture_ = frontend::testCard({params_.projector.width, params_.projector.height});
     if (!params_.gravity_frame.empty() || !params_.fixed_frame.empty()) {
         tf_buffer_ = std::make_unique<tf2_ros::Buffer>(ros::Duration(30.0));
         tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, nh_);
@@ -123,7 +123,7 @@ bool ProjsurfNode::lookup(const std::string &target, const std::string &source, 
 }
 
 Eigen::Vector3d ProjsurfNode::gravityFor(const std_msgs::Header &header, std::string &problem) {
-    Eigen::Vector3d gravity = params_.gravity;
+    Eigen::Vector3d gravity = params_.gravity.gravity;
     if (!params_.gravity_frame.empty()) {
         Eigen::Isometry3d camera_from_gravity;
         if (lookup(header.frame_id, params_.gravity_frame, header.stamp, camera_from_gravity, problem)) {
@@ -132,9 +132,9 @@ Eigen::Vector3d ProjsurfNode::gravityFor(const std_msgs::Header &header, std::st
             problem += " (using ~gravity instead)";
         }
     }
-    if (params_.gravity_auto && (params_.gravity_frame.empty() || !problem.empty())) {
+    if (params_.gravity.from_floor && (params_.gravity_frame.empty() || !problem.empty())) {
         // No IMU and no tf: "down" from the floor when one is in view, else a level camera.
-        if (const auto g = estimateGravityFromFloor(cloud_, Eigen::Vector3d(0.0, 1.0, 0.0))) gravity = g->gravity;
+        gravity = frontend::resolveGravity(params_.gravity, cloud_).gravity;
     }
     return gravity;
 }
@@ -159,7 +159,8 @@ void ProjsurfNode::writeFramebufferFile(const cv::Mat &image) {
 }
 
 std::string ProjsurfNode::publishFramebuffer(const Rectangle &rect, const std_msgs::Header &header) {
-    const Framebuffer fb = renderFramebuffer(params_.projector, rect, picture_, params_.keystone_tolerance_px);
+    const frontend::FramebufferRender fb =
+        frontend::renderFramebuffer(params_.projector, rect, picture_, params_.keystone_tolerance_px);
     if (fb.image.empty()) return fb.problem;
     framebuffer_pub_.publish(toImageMsg(fb.image, header));
     writeFramebufferFile(fb.image);
@@ -188,7 +189,8 @@ ProjsurfNode::Outcome ProjsurfNode::detectOnValidCloud() {
     std::string tf_problem;
     const Eigen::Vector3d gravity = gravityFor(cloud_header_, tf_problem);
     if (!tf_problem.empty()) ROS_WARN("projsurf_node: %s", tf_problem.c_str());
-    const Detection det = detector_.detect(cloud_, gravity);
+    Detection det = detector_.detect(cloud_, gravity);
+    frontend::enforceMinimumSize(det, params_.minimum, "~min_width", "~min_area");
     std_msgs::String json;
     json.data = detectionToJson(det, detector_.config()).dump();
     result_pub_.publish(json);
@@ -238,14 +240,15 @@ void ProjsurfNode::runContinuous() {
     Detection det;
     try {
         det = detector_.detect(cloud_, gravity);
+        frontend::enforceMinimumSize(det, params_.minimum, "~min_width", "~min_area");
     } catch (const std::exception &e) {
         ROS_ERROR_THROTTLE(5.0, "projsurf_node: detection failed: %s", e.what());
         return;
     }
     const ContinuousMode::Output o = continuous_->update(det, cloud_, fixed_from_camera, detector_.config());
     // Re-warp every frame: the robot moved, so the same place on the wall has new pixels.
-    Framebuffer fb;
-    if (o.has_target) fb = renderFramebuffer(params_.projector, o.shown, picture_, params_.keystone_tolerance_px);
+    frontend::FramebufferRender fb;
+    if (o.has_target) fb = frontend::renderFramebuffer(params_.projector, o.shown, picture_, params_.keystone_tolerance_px);
     if (fb.image.empty()) fb.image = cv::Mat(params_.projector.height, params_.projector.width, CV_8UC3, cv::Scalar::all(0));
     const double frame_ms = (ros::WallTime::now() - start).toSec() * 1e3;
 

@@ -8,8 +8,9 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli/commands.hpp"
-#include "cli/parse.hpp"
-#include "projsurf/core/gravity.hpp"
+#include "projsurf/frontend/aspect.hpp"
+#include "projsurf/frontend/gravity_choice.hpp"
+#include "projsurf/frontend/minimum_size.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
@@ -27,6 +28,7 @@ struct DetectOptions {
     std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity, method = "default",
         hull = "concave", bag, topic;
     DetectorConfig config;
+    double min_width = -1.0, min_area = -1.0;  ///< m, m^2; < 0: the method's default (frontend/minimum_size.hpp)
 };
 
 /// detectSurface, with a library failure on this cloud (an OpenCV assertion) reported as
@@ -42,15 +44,12 @@ Detection detectChecked(SurfaceDetector &detector, const Cloud &cloud, const Eig
 
 /// A level camera is assumed (no --gravity), but the floor says the camera is tilted.
 void warnIfTilted(const Cloud &cloud) {
-    const Eigen::Vector3d level = SurfaceDetector::levelGravity();
-    const auto floor = estimateGravityFromFloor(cloud, level);
-    if (!floor) return;
-    const double deg = std::acos(std::clamp(floor->gravity.dot(level), -1.0, 1.0)) * 180.0 / M_PI;
-    if (deg > kTiltWarningDeg)
+    const auto deg = frontend::floorTiltFromLevelDeg(cloud);
+    if (deg && *deg > kTiltWarningDeg)
         std::fprintf(stderr,
                      "projsurf: warning: the floor says the camera is tilted %.0f deg from level; give --gravity auto "
                      "(or the robot's gravity) so that the picture stands upright\n",
-                     deg);
+                     *deg);
 }
 
 /// Depths that no RGB-D camera reads (median beyond 10 m or nearer than 0.2 m): a wrong
@@ -81,16 +80,15 @@ void warnIfIgnored(const CLI::App &sub, Method method) {
 /// --bag: one detection per cloud of the topic, one JSON object per line (JSON Lines), each
 /// with a "bag" key (index, stamp, frame_id). With --json the file is written once all
 /// messages were read (never a partial file); without, lines go to stdout as they come.
-void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &projector, const Eigen::Vector3d &base_gravity,
-            bool auto_gravity) {
+void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &projector,
+            const frontend::GravityChoice &gravity, const frontend::MinimumSize &minimum) {
     std::string lines;
     std::size_t found = 0;
     SurfaceDetector detector(projector, cfg);  // one for the whole bag: its buffers are reused
     const std::size_t n = forEachBagCloud(o.bag, o.topic, [&](const Cloud &cloud, const BagCloudInfo &info) {
-        Eigen::Vector3d gravity = base_gravity;
-        if (auto_gravity)
-            if (const auto g = estimateGravityFromFloor(cloud, gravity)) gravity = g->gravity;
-        const Detection det = detectChecked(detector, cloud, gravity, o.bag + ":" + o.topic + "#" + std::to_string(info.index));
+        const Eigen::Vector3d down = frontend::resolveGravity(gravity, cloud).gravity;
+        Detection det = detectChecked(detector, cloud, down, o.bag + ":" + o.topic + "#" + std::to_string(info.index));
+        frontend::enforceMinimumSize(det, minimum, "--min-width", "--min-area");
         nlohmann::json j = detectionToJson(det, cfg);
         j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", o.topic}};
         found += det.found ? 1 : 0;
@@ -125,16 +123,21 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     else if (o.hull == "convex") cfg.paper.hull = HullKind::Convex;
     else throw InputError("--hull", "expected 'concave' or 'convex', got '" + o.hull + "'");
     warnIfIgnored(sub, cfg.method);
-    const bool auto_gravity = o.gravity == "auto";
-    Eigen::Vector3d gravity = SurfaceDetector::levelGravity();
-    if (!o.gravity.empty() && !auto_gravity) gravity = parseVector3("--gravity", o.gravity);
-    if (!o.aspect.empty()) cfg.aspect = parseAspect("--aspect", o.aspect);
+    const frontend::GravityChoice gravity_choice = frontend::parseGravityChoice("--gravity", o.gravity);
+    if (!o.aspect.empty()) cfg.aspect = frontend::parseAspect("--aspect", o.aspect);
     for (const auto &out : {o.json, o.overlay})
         if (!out.empty()) requireWritableFile(out);
     if (!o.overlay.empty()) requireImageWriter(o.overlay);
 
     const Projector projector = readCalibration(o.calib);
-    if (!o.bag.empty()) return runBag(o, cfg, projector, gravity, auto_gravity);
+    if (readCalibrationVerdict(o.calib) == "redo")
+        std::fprintf(stderr, "projsurf: warning: %s: its captures disagree (fit verdict redo); the picture may land "
+                             "off the detected area until you calibrate again\n",
+                     o.calib.c_str());
+    frontend::MinimumSize minimum = frontend::defaultMinimumSize(cfg.method);
+    if (o.min_width >= 0.0) minimum.width = o.min_width;
+    if (o.min_area >= 0.0) minimum.area = o.min_area;
+    if (!o.bag.empty()) return runBag(o, cfg, projector, gravity_choice, minimum);
     std::unique_ptr<CameraIntrinsics> camera;
     Cloud cloud;
     if (!o.cloud.empty()) {
@@ -151,16 +154,16 @@ void run(const DetectOptions &o, const CLI::App &sub) {
                                         ", the cloud is " + std::to_string(cloud.width) + "x" + std::to_string(cloud.height));
     }
 
-    if (auto_gravity) {
-        // No IMU: take "down" from the floor when one is in view, else keep a level camera.
-        if (const auto g = estimateGravityFromFloor(cloud, gravity)) gravity = g->gravity;
-        else std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
-    } else if (o.gravity.empty()) {
+    const frontend::ResolvedGravity resolved = frontend::resolveGravity(gravity_choice, cloud);
+    const Eigen::Vector3d gravity = resolved.gravity;
+    if (gravity_choice.from_floor && !resolved.floor_found)
+        std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
+    else if (o.gravity.empty())
         warnIfTilted(cloud);
-    }
     if (!o.depth.empty()) warnIfImplausibleDepth(cloud, o.camera);
     SurfaceDetector detector(projector, cfg);
-    const Detection det = detectChecked(detector, cloud, gravity, o.cloud.empty() ? o.depth : o.cloud);
+    Detection det = detectChecked(detector, cloud, gravity, o.cloud.empty() ? o.depth : o.cloud);
+    frontend::enforceMinimumSize(det, minimum, "--min-width", "--min-area");
     const nlohmann::json j = detectionToJson(det, cfg);
     // Both outputs, or neither: written beside their targets, renamed once both are there.
     OutputGroup outputs;
@@ -195,6 +198,13 @@ void addDetectCommand(CLI::App &app) {
     sub->add_option("--gravity", o->gravity, "Gravity in the camera frame gx,gy,gz (default 0,1,0), or 'auto' (from the floor)");
     sub->add_option("--method", o->method, "default | paper (the paper's steps, for reproduction)");
     sub->add_option("--hull", o->hull, "paper method: concave | convex hull of the plane");
+    sub->add_option("--min-width", o->min_width,
+                    "Narrowest picture worth showing, m (default 0.20: text stays readable at 2 m; 0 with --method "
+                    "paper); below it: found false with the reason")
+        ->check(CLI::Range(0.0, 100.0));
+    sub->add_option("--min-area", o->min_area,
+                    "Smallest picture worth showing, m^2 (default 0.02; 0 with --method paper)")
+        ->check(CLI::Range(0.0, 10000.0));
     auto &c = o->config;
     sub->add_option("--max-tilt", c.max_tilt, "Vertical tolerance, rad (paper 3.2.1)")->check(CLI::Range(0.0, 1.5));
     sub->add_option("--seed", c.seed, "RANSAC random seed");

@@ -56,6 +56,8 @@ int main(int argc, char **argv) {
     for (auto &a : args) cargs.push_back(a.data());
     try {
         app.parse(static_cast<int>(cargs.size()), cargs.data());
+    } catch (const projsurf::cli::ExitStatus &e) {
+        return e.code;
     } catch (const CLI::CallForHelp &e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp &e) {
