@@ -16,6 +16,7 @@
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/progress.hpp"
+#include "projsurf/frontend/stamp_pairing.hpp"
 #include "projsurf/frontend/test_card.hpp"
 #include "projsurf/io/errors.hpp"
 #include "synthetic_rig.hpp"
@@ -210,4 +211,22 @@ TEST(FrontendProgress, InALogWritesALineEveryTenPercent) {
     int lines = 0;
     for (char c : text) lines += c == '\n';
     EXPECT_EQ(lines, 11);
+}
+
+TEST(FrontendStampPairing, FindsTheSameStampNotTheLatest) {
+    StampedBuffer<int> infos(3);
+    EXPECT_EQ(infos.exact(1.0), nullptr);
+    infos.add(1.0, 10);
+    infos.add(1.0333333, 11);
+    infos.add(1.0666666, 12);
+    ASSERT_NE(infos.exact(1.0333333), nullptr);
+    EXPECT_EQ(*infos.exact(1.0333333), 11);
+    EXPECT_EQ(infos.exact(1.05), nullptr);
+    double at = 0;
+    ASSERT_NE(infos.nearest(1.05, at), nullptr);
+    EXPECT_EQ(*infos.nearest(1.03, at), 11);
+    EXPECT_DOUBLE_EQ(at, 1.0333333);
+    infos.add(1.1, 13);  // capacity 3: the oldest goes
+    EXPECT_EQ(infos.exact(1.0), nullptr);
+    EXPECT_EQ(*infos.exact(1.1), 13);
 }

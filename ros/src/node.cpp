@@ -53,7 +53,8 @@ ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams p
     // Queue of 1: in continuous mode a slow frame drops the ones behind it, never lags.
     cloud_sub_ = nh_.subscribe("points", 1, &ProjsurfNode::onCloud, this);
     depth_sub_ = nh_.subscribe("depth/image_rect", 1, &ProjsurfNode::onDepth, this);
-    info_sub_ = nh_.subscribe("depth/camera_info", 1, &ProjsurfNode::onCameraInfo, this);
+    // camera_info is small and paired by stamp: a few are kept (frontend/stamp_pairing.hpp).
+    info_sub_ = nh_.subscribe("depth/camera_info", 10, &ProjsurfNode::onCameraInfo, this);
     image_sub_ = nh_.subscribe("image", 1, &ProjsurfNode::onImage, this);
     ROS_INFO("projsurf_node: projector %dx%d from %s; %s mode; listening on %s (or %s + %s)", params_.projector.width,
              params_.projector.height, params_.calib.c_str(), params_.continuous ? "continuous" : "on-demand (~detect)",
@@ -69,17 +70,43 @@ void ProjsurfNode::onImage(const sensor_msgs::ImageConstPtr &msg) {
     }
 }
 
-void ProjsurfNode::onCameraInfo(const sensor_msgs::CameraInfoConstPtr &msg) { camera_info_ = msg; }
+void ProjsurfNode::onCameraInfo(const sensor_msgs::CameraInfoConstPtr &msg) {
+    camera_infos_.add(msg->header.stamp.toSec(), msg);
+    // The depth image of this stamp came first: now it has its camera_info.
+    if (pending_depth_ && std::abs(pending_depth_->header.stamp.toSec() - msg->header.stamp.toSec()) <= frontend::kSameStampS) {
+        const sensor_msgs::ImageConstPtr depth = pending_depth_;
+        pending_depth_.reset();
+        takeDepth(*depth, *msg);
+    }
+}
 
 void ProjsurfNode::onDepth(const sensor_msgs::ImageConstPtr &msg) {
-    if (!camera_info_) {
-        ROS_WARN_THROTTLE(5.0, "projsurf_node: depth image without camera_info on %s yet", info_sub_.getTopic().c_str());
+    // The camera_info of the same stamp (a driver publishes both per frame), not the latest.
+    if (const auto *info = camera_infos_.exact(msg->header.stamp.toSec())) {
+        pending_depth_.reset();
+        takeDepth(*msg, **info);
         return;
     }
+    // An older image still waiting gets the nearest camera_info there is (a driver whose
+    // stamps differ); this one waits for its own.
+    double at = 0.0;
+    if (pending_depth_) {
+        if (const auto *info = camera_infos_.nearest(pending_depth_->header.stamp.toSec(), at)) {
+            ROS_WARN_THROTTLE(5.0, "projsurf_node: no camera_info with the depth image's stamp %.3f on %s; using the one of %.3f",
+                              pending_depth_->header.stamp.toSec(), info_sub_.getTopic().c_str(), at);
+            takeDepth(*pending_depth_, **info);
+        } else {
+            ROS_WARN_THROTTLE(5.0, "projsurf_node: depth image without camera_info on %s yet", info_sub_.getTopic().c_str());
+        }
+    }
+    pending_depth_ = msg;
+}
+
+void ProjsurfNode::takeDepth(const sensor_msgs::Image &depth, const sensor_msgs::CameraInfo &info) {
     try {
-        takeCloud(toCloud(*msg, *camera_info_), msg->header);
+        takeCloud(toCloud(depth, info), depth.header);
     } catch (const InputError &e) {
-        rejectCloud("depth image", e.what(), msg->header);
+        rejectCloud("depth image", e.what(), depth.header);
     }
 }
 
