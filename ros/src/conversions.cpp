@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "projsurf/frontend/depth_image_cloud.hpp"
+#include "projsurf/io/depth_image_bytes.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/pointcloud2.hpp"
 
@@ -23,22 +24,9 @@ Cloud toCloud(const sensor_msgs::Image &depth, const sensor_msgs::CameraInfo &in
                                       ", camera_info says " + std::to_string(info.width) + "x" +
                                       std::to_string(info.height));
     if (!(info.K[0] > 0.0) || !(info.K[4] > 0.0)) throw InputError("camera_info", "K has no focal length");
-    const bool mm = depth.encoding == enc::TYPE_16UC1 || depth.encoding == enc::MONO16;
-    const bool metres = depth.encoding == enc::TYPE_32FC1;
-    if (!mm && !metres) throw InputError("depth", "encoding '" + depth.encoding + "' (expected 16UC1 in mm or 32FC1 in m)");
-    const std::size_t bpp = mm ? 2 : 4;
-    if (depth.step < depth.width * bpp || depth.data.size() < static_cast<std::size_t>(depth.step) * depth.height)
-        throw InputError("depth", "data is shorter than its size says");
-    // The message's bytes as an image (no copy), in this machine's byte order.
-    cv::Mat image(static_cast<int>(depth.height), static_cast<int>(depth.width), mm ? CV_16UC1 : CV_32FC1,
-                  const_cast<std::uint8_t *>(depth.data.data()), depth.step);
-    if (depth.is_bigendian) {
-        image = image.clone();
-        for (int v = 0; v < image.rows; ++v) {
-            auto *row = image.ptr<std::uint8_t>(v);
-            for (int u = 0; u < image.cols; ++u) std::reverse(row + u * bpp, row + (u + 1) * bpp);
-        }
-    }
+    // The message's pixels in this machine's byte order (io/depth_image_bytes.hpp, as for bags).
+    const cv::Mat image = depthImageFromBytes("depth", depth.encoding, depth.width, depth.height, depth.step,
+                                              depth.is_bigendian != 0, depth.data.data(), depth.data.size());
     const CameraIntrinsics cam = frontend::pinholeCamera("camera_info", image.cols, image.rows, info.K[0], info.K[4],
                                                          info.K[2], info.K[5], 1000.0);  // 16UC1 is in mm (REP 118)
     return frontend::depthImageToCloud("depth", image, cam);

@@ -16,7 +16,10 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/overlay.hpp"
+#include "projsurf/frontend/depth_image_cloud.hpp"
+#include "projsurf/frontend/stamp_pairing.hpp"
 #include "projsurf/io/rosbag_clouds.hpp"
+#include "projsurf/io/rosbag_depth.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace projsurf::cli {
@@ -26,7 +29,7 @@ constexpr double kTiltWarningDeg = 5.0;  ///< deg, a floor this far from level m
 
 struct DetectOptions {
     std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity, method = "default",
-        hull = "concave", bag, topic;
+        hull = "concave", bag, topic, info_topic;
     DetectorConfig config;
     double min_width = -1.0, min_area = -1.0;  ///< m, m^2; < 0: the method's default (frontend/minimum_size.hpp)
 };
@@ -77,29 +80,96 @@ void warnIfIgnored(const CLI::App &sub, Method method) {
                          method == Method::Paper ? "paper" : "default");
 }
 
-/// --bag: one detection per cloud of the topic, one JSON object per line (JSON Lines), each
-/// with a "bag" key (index, stamp, frame_id). With --json the file is written once all
-/// messages were read (never a partial file); without, lines go to stdout as they come.
+/// The topic --bag reads: --topic, else the bag's one usable topic (a PointCloud2, or a
+/// sensor_msgs/Image whose name says depth), else an error that lists them.
+BagConnection bagTopic(const DetectOptions &o) {
+    const std::vector<BagConnection> topics = bagTopics(o.bag);
+    std::vector<BagConnection> usable;
+    for (const BagConnection &c : topics) {
+        if (!o.topic.empty() && c.topic == o.topic) return c;
+        if (c.type == "sensor_msgs/PointCloud2" || (c.type == kImageType && c.topic.find("depth") != std::string::npos))
+            usable.push_back(c);
+    }
+    std::string list;
+    for (const BagConnection &c : usable) list += (list.empty() ? "" : ", ") + c.topic + " (" + c.type + ")";
+    if (!o.topic.empty())
+        throw InputError(o.bag, "no topic '" + o.topic + "' in the bag (usable topics: " + (list.empty() ? "none" : list) + ")");
+    if (usable.size() == 1) return usable.front();
+    if (usable.empty())
+        throw InputError(o.bag, "has no sensor_msgs/PointCloud2 topic and no depth sensor_msgs/Image topic");
+    throw InputError(o.bag, "has " + std::to_string(usable.size()) + " usable topics, give one with --topic: " + list);
+}
+
+/// The camera_info topic of a depth topic: --camera-info-topic, else camera_info beside it
+/// (/camera/depth/image_rect -> /camera/depth/camera_info), else the bag's only CameraInfo topic.
+std::string cameraInfoTopic(const DetectOptions &o, const std::string &depth_topic) {
+    if (!o.info_topic.empty()) return o.info_topic;
+    const std::string beside = depth_topic.substr(0, depth_topic.find_last_of('/') + 1) + "camera_info";
+    std::vector<std::string> infos;
+    for (const BagConnection &c : bagTopics(o.bag)) {
+        if (c.type != kCameraInfoType) continue;
+        if (c.topic == beside) return beside;
+        infos.push_back(c.topic);
+    }
+    if (infos.size() == 1) return infos.front();
+    throw InputError(o.bag, "no camera_info for " + depth_topic + " (looked for " + beside + "; give --camera-info-topic)");
+}
+
+/// --bag: one detection per cloud (or depth image) of the topic, one JSON object per line
+/// (JSON Lines), each with a "bag" key (index, stamp, frame_id, topic). With --json the file
+/// is written once all messages were read (never a partial file); without, lines go to
+/// stdout as they come. A depth image goes with the camera_info of its stamp, as in the node.
 void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &projector,
             const frontend::GravityChoice &gravity, const frontend::MinimumSize &minimum) {
+    const BagConnection topic = bagTopic(o);
     std::string lines;
     std::size_t found = 0;
     SurfaceDetector detector(projector, cfg);  // one for the whole bag: its buffers are reused
-    const std::size_t n = forEachBagCloud(o.bag, o.topic, [&](const Cloud &cloud, const BagCloudInfo &info) {
+    auto detectOne = [&](const Cloud &cloud, const BagCloudInfo &info) {
         const Eigen::Vector3d down = frontend::resolveGravity(gravity, cloud).gravity;
-        Detection det = detectChecked(detector, cloud, down, o.bag + ":" + o.topic + "#" + std::to_string(info.index));
+        Detection det = detectChecked(detector, cloud, down, o.bag + ":" + topic.topic + "#" + std::to_string(info.index));
         frontend::enforceMinimumSize(det, minimum, "--min-width", "--min-area");
         nlohmann::json j = detectionToJson(det, cfg);
-        j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", o.topic}};
+        j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", topic.topic}};
         found += det.found ? 1 : 0;
         if (o.json.empty()) std::cout << j.dump() << "\n" << std::flush;
         else lines += j.dump() + "\n";
-    });
+    };
+    std::size_t n = 0;
+    const char *what = "clouds";
+    if (topic.type == kImageType) {
+        what = "depth images";
+        const std::string info_topic = cameraInfoTopic(o, topic.topic);
+        const std::vector<CameraInfoMessage> all = readBagCameraInfos(o.bag, info_topic);
+        frontend::StampedBuffer<CameraInfoMessage> infos(all.size() + 1);
+        for (const CameraInfoMessage &c : all) infos.add(c.header.stamp(), c);
+        std::size_t unpaired = 0;
+        n = forEachBagDepthImage(o.bag, topic.topic, [&](const DepthImageMessage &m, const BagCloudInfo &info) {
+            const std::string source = o.bag + ":" + topic.topic + "#" + std::to_string(info.index);
+            const CameraInfoMessage *k = infos.exact(info.stamp);
+            double at = 0.0;
+            if (!k) {
+                k = infos.nearest(info.stamp, at);
+                ++unpaired;
+            }
+            if (!k) throw InputError(o.bag, "no camera_info on " + info_topic);
+            const CameraIntrinsics cam = frontend::pinholeCamera(source + " (camera_info)", static_cast<int>(k->width),
+                                                                 static_cast<int>(k->height), k->K[0], k->K[4], k->K[2],
+                                                                 k->K[5], 1000.0);  // 16UC1 is in mm (REP 118)
+            detectOne(frontend::depthImageToCloud(source, m.depth, cam), info);
+        });
+        if (unpaired > 0)
+            std::fprintf(stderr, "projsurf: warning: %s: %zu of %zu depth images had no camera_info of their stamp on %s; "
+                                 "the nearest was used\n",
+                         o.bag.c_str(), unpaired, n, info_topic.c_str());
+    } else {
+        n = forEachBagCloud(o.bag, topic.topic, detectOne);
+    }
     if (!o.json.empty()) {
         OutputGroup outputs;
         outputs.addFile(o.json, lines);
         outputs.commit();
-        std::printf("%zu clouds on %s: %zu with a surface, %zu without\n", n, o.topic.c_str(), found, n - found);
+        std::printf("%zu %s on %s: %zu with a surface, %zu without\n", n, what, topic.topic.c_str(), found, n - found);
     }
 }
 
@@ -107,10 +177,9 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     // Validate every input before any work, and before any output is written.
     if (!o.bag.empty()) {
         if (!o.cloud.empty() || !o.depth.empty()) throw InputError("arguments", "give only one of --cloud, --depth or --bag");
-        if (o.topic.empty()) throw InputError("arguments", "--bag needs --topic (a sensor_msgs/PointCloud2 topic)");
         if (!o.overlay.empty() || !o.rgb.empty()) throw InputError("arguments", "--overlay and --rgb are for one cloud, not --bag");
-    } else if (!o.topic.empty()) {
-        throw InputError("arguments", "--topic goes with --bag");
+    } else if (!o.topic.empty() || !o.info_topic.empty()) {
+        throw InputError("arguments", "--topic and --camera-info-topic go with --bag");
     } else if (o.cloud.empty() == o.depth.empty()) {
         throw InputError("arguments", "give exactly one of --cloud FILE, --depth FILE or --bag FILE");
     }
@@ -188,8 +257,12 @@ void addDetectCommand(CLI::App &app) {
     sub->add_option("--cloud", o->cloud, "Point cloud (PCD or PLY, camera optical frame, metres)");
     sub->add_option("--depth", o->depth, "16-bit depth PNG (0 = no reading); needs --camera");
     sub->add_option("--camera", o->camera, "Camera intrinsics YAML for --depth");
-    sub->add_option("--bag", o->bag, "ROS 1 bag: detect on every cloud of --topic, one JSON line per message");
-    sub->add_option("--topic", o->topic, "sensor_msgs/PointCloud2 topic in --bag");
+    sub->add_option("--bag", o->bag, "ROS 1 bag: detect on every cloud (or depth image) of --topic, one JSON line per message");
+    sub->add_option("--topic", o->topic,
+                    "--bag's sensor_msgs/PointCloud2 topic, or depth sensor_msgs/Image topic (16UC1 mm or 32FC1 m); "
+                    "optional when the bag has one such topic");
+    sub->add_option("--camera-info-topic", o->info_topic,
+                    "--bag's camera_info for a depth topic (default: camera_info beside it, or the bag's only one)");
     sub->add_option("--rgb", o->rgb, "Colour PNG registered to the cloud, for the overlay");
     sub->add_option("--calib", o->calib, "Projector calibration YAML")->required();
     sub->add_option("--aspect", o->aspect, "Picture aspect ratio W:H (default: the framebuffer's)");

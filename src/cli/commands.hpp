@@ -19,5 +19,6 @@ void addShowCommand(CLI::App &app);       // cmd_show.cpp
 void addSimulateCommand(CLI::App &app);   // cmd_simulate.cpp
 void addDemoCommand(CLI::App &app);       // cmd_demo.cpp
 void addEvalCommand(CLI::App &app);       // cmd_eval.cpp
+void addBagCommand(CLI::App &app);        // cmd_bag.cpp
 
 }  // namespace projsurf::cli
