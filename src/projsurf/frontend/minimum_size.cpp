@@ -15,10 +15,10 @@ bool enforceMinimumSize(Detection &det, const MinimumSize &minimum, const std::s
     const Rectangle &r = det.rectangle;
     char buf[320];
     if (r.width < minimum.width)
-        std::snprintf(buf, sizeof buf, "the largest area, %.2f x %.2f m, is narrower than %s %.2f m", r.width, r.height,
+        std::snprintf(buf, sizeof buf, "the largest area, %.3f x %.3f m, is narrower than %s %.3f m", r.width, r.height,
                       width_option.c_str(), minimum.width);
     else if (r.area() < minimum.area)
-        std::snprintf(buf, sizeof buf, "the largest area, %.2f x %.2f m (%.3f m^2), is smaller than %s %.3f m^2",
+        std::snprintf(buf, sizeof buf, "the largest area, %.3f x %.3f m (%.4f m^2), is smaller than %s %.4f m^2",
                       r.width, r.height, r.area(), area_option.c_str(), minimum.area);
     else
         return false;
