@@ -13,6 +13,7 @@
 #include "projsurf/core/camera.hpp"
 #include "projsurf/frontend/aspect.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
+#include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/progress.hpp"
@@ -229,4 +230,19 @@ TEST(FrontendStampPairing, FindsTheSameStampNotTheLatest) {
     infos.add(1.1, 13);  // capacity 3: the oldest goes
     EXPECT_EQ(infos.exact(1.0), nullptr);
     EXPECT_EQ(*infos.exact(1.1), 13);
+}
+
+TEST(FrontendSummary, OneLineForAFoundAndANotFoundDetection) {
+    Detection det;
+    det.reason = "no vertical plane in view";
+    EXPECT_EQ(detectionSummary(det), "not found: no vertical plane in view");
+    det.reason.clear();
+    EXPECT_EQ(detectionSummary(det), "not found: no projection surface found");
+    det.found = true;
+    det.rectangle.width = 1.344;
+    det.rectangle.height = 0.84;
+    det.plane.d = 2.0;
+    det.orientation_deg = 10.04;
+    det.timing_ms["total"] = 2.07;
+    EXPECT_EQ(detectionSummary(det), "found 1.34 x 0.84 m (1.13 m^2) on a plane 2.00 m away at 10.0 deg in 2.1 ms");
 }

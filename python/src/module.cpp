@@ -198,7 +198,7 @@ PYBIND11_MODULE(projsurf, m) {
                               "picture_px"_a = corners2(k.picture_px),
                               "framebuffer_size"_a = std::make_pair(k.framebuffer.width, k.framebuffer.height));
           },
-          "projector"_a, "detection"_a, "picture_size"_a, "tolerance_px"_a = 0.5,
+          "projector"_a, "detection"_a, "picture_size"_a, "tolerance_px"_a = kKeystoneTolerancePx,
           "picture_size: (width, height) px. homography maps picture pixels to framebuffer pixels (centres at\n"
           "integers); rectangle_px / picture_px: (4, 2) framebuffer positions (TL, TR, BR, BL). Raises InputError\n"
           "when the detection found nothing or its rectangle cannot be shown.");
@@ -215,7 +215,7 @@ PYBIND11_MODULE(projsurf, m) {
               }
               return arrayFromMat(framebuffer);
           },
-          "image"_a, "projector"_a, "detection"_a, "tolerance_px"_a = 0.5,
+          "image"_a, "projector"_a, "detection"_a, "tolerance_px"_a = kKeystoneTolerancePx,
           "Keystone correction: the projector framebuffer (the calibration's resolution, black around) showing\n"
           "`image` ((H, W) or (H, W, C), uint8, uint16 or float32; channels kept in their order) whole and\n"
           "undistorted in the detected rectangle (letterboxed, never stretched). The image is read in place.\n"

@@ -9,6 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "conversions.hpp"
+#include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/frontend/test_card.hpp"
 #include "projsurf/io/detection_json.hpp"
@@ -23,14 +24,6 @@ Eigen::Isometry3d toEigen(const geometry_msgs::Transform &t) {
     T.linear() = Eigen::Quaterniond(t.rotation.w, t.rotation.x, t.rotation.y, t.rotation.z).normalized().toRotationMatrix();
     T.translation() = Eigen::Vector3d(t.translation.x, t.translation.y, t.translation.z);
     return T;
-}
-
-std::string summary(const Detection &det) {
-    char buf[256];
-    std::snprintf(buf, sizeof buf, "found %.2f x %.2f m (%.2f m^2) on a plane %.2f m away at %.1f deg in %.1f ms",
-                  det.rectangle.width, det.rectangle.height, det.rectangle.area(), det.plane.d, det.orientation_deg,
-                  det.timing_ms.count("total") ? det.timing_ms.at("total") : 0.0);
-    return buf;
 }
 
 }  // namespace
@@ -230,7 +223,7 @@ ProjsurfNode::Outcome ProjsurfNode::detectOnValidCloud() {
         return out;
     }
     out.success = true;
-    out.message = summary(det);
+    out.message = frontend::detectionSummary(det);
     rectangle_pub_.publish(toPolygon(det.rectangle, cloud_header_));
     const std::string problem = publishFramebuffer(det.rectangle, cloud_header_);
     if (!problem.empty()) out.message += "; but the picture cannot be shown there: " + problem;

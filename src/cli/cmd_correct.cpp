@@ -27,9 +27,6 @@ namespace fs = std::filesystem;
 namespace projsurf::cli {
 namespace {
 
-/// px: how far the rectangle may leave the framebuffer (core/keystone.hpp's default).
-constexpr double kToleranceDefault = 0.5;
-
 struct CorrectOptions {
     std::string calib, detection, image, video, out, json;
     double fps = 0.0;  // output frame rate for video; 0 = the input's (25 when unknown)
@@ -59,21 +56,22 @@ std::string keystoneJson(const Keystone &k, const std::string &method) {
     return j.dump(2) + "\n";
 }
 
-Keystone keystoneFor(const Projector &projector, const DetectionFile &det, cv::Size picture,
-                     const std::string &detection_path) {
-    frontend::FramebufferRender r = frontend::keystoneFor(projector, det.rectangle, picture, kToleranceDefault);
+/// The keystone of a picture of this size in the detected rectangle; the detection file is
+/// named when the picture cannot be shown there.
+frontend::FramebufferRender keystoneFor(const Projector &projector, const DetectionFile &det, cv::Size picture,
+                                        const std::string &detection_path) {
+    frontend::FramebufferRender r = frontend::keystoneFor(projector, det.rectangle, picture, kKeystoneTolerancePx);
     if (!r.keystone) throw InputError(detection_path, r.problem);
-    return *r.keystone;
+    return r;
 }
 
 /// " (letterboxed: ...)" when the picture leaves bars of the rectangle dark.
-std::string letterboxNote(const Projector &projector, const DetectionFile &det, cv::Size picture) {
-    const frontend::FramebufferRender r = frontend::keystoneFor(projector, det.rectangle, picture, kToleranceDefault);
+std::string letterboxNote(const frontend::FramebufferRender &r, const DetectionFile &det) {
     if (!r.letterboxed) return "";
     char buf[200];
     std::snprintf(buf, sizeof buf, " (letterboxed: the %dx%d picture fills %.2f x %.2f m of the %.2f x %.2f m rectangle)",
-                  picture.width, picture.height, r.keystone->shown.width, r.keystone->shown.height,
-                  det.rectangle.width, det.rectangle.height);
+                  r.keystone->picture.width, r.keystone->picture.height, r.keystone->shown.width,
+                  r.keystone->shown.height, det.rectangle.width, det.rectangle.height);
     return buf;
 }
 
@@ -82,7 +80,8 @@ void runVideo(const CorrectOptions &o, const std::string &input, const Projector
     FrameSource source(input);
     cv::Mat frame;
     if (!source.read(frame)) throw InputError(input, "no frame could be read");
-    const Keystone k = keystoneFor(projector, det, frame.size(), o.detection);
+    const frontend::FramebufferRender render = keystoneFor(projector, det, frame.size(), o.detection);
+    const Keystone &k = *render.keystone;
     double fps = o.fps > 0 ? o.fps : source.fps();
     if (!(fps > 0 && fps < 1000)) fps = 25.0;  // image sequences carry no rate
 
@@ -121,7 +120,7 @@ void runVideo(const CorrectOptions &o, const std::string &input, const Projector
     if (!o.json.empty()) outputs.addFile(o.json, keystoneJson(k, "eq7"));
     outputs.commit();
     progress.finish(n);
-    std::cout << "projsurf correct: " << n << " frames -> " << o.out << letterboxNote(projector, det, k.picture) << "\n";
+    std::cout << "projsurf correct: " << n << " frames -> " << o.out << letterboxNote(render, det) << "\n";
 }
 
 void run(const CorrectOptions &o) {
@@ -149,7 +148,8 @@ void run(const CorrectOptions &o) {
     requireImageWriter(o.out);
     if (!o.json.empty()) requireWritableFile(o.json);
     const cv::Mat picture = readImage(input, cv::IMREAD_COLOR);
-    const frontend::FramebufferRender fb = frontend::renderFramebuffer(projector, det.rectangle, picture, kToleranceDefault);
+    const frontend::FramebufferRender fb =
+        frontend::renderFramebuffer(projector, det.rectangle, picture, kKeystoneTolerancePx);
     if (!fb.keystone) throw InputError(o.detection, fb.problem);
     // Both outputs, or neither.
     OutputGroup outputs;
@@ -158,7 +158,7 @@ void run(const CorrectOptions &o) {
     outputs.commit();
     std::cout << "projsurf correct: " << picture.cols << "x" << picture.rows << " picture -> " << o.out << " ("
               << fb.image.cols << "x" << fb.image.rows << " framebuffer)" << (o.json.empty() ? "" : " and " + o.json)
-              << letterboxNote(projector, det, picture.size()) << "\n";
+              << letterboxNote(fb, det) << "\n";
 }
 
 }  // namespace

@@ -17,6 +17,7 @@
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/overlay.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
+#include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/stamp_pairing.hpp"
 #include "projsurf/io/rosbag_clouds.hpp"
 #include "projsurf/io/rosbag_depth.hpp"
@@ -241,11 +242,8 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     outputs.commit();
     if (o.json.empty()) {
         std::cout << j.dump(2) << "\n";
-    } else if (det.found) {
-        std::printf("found: %.2f x %.2f m (%.2f m^2) on a plane %.2f m away at %.1f deg; %.1f ms\n", det.rectangle.width,
-                    det.rectangle.height, det.rectangle.area(), det.plane.d, det.orientation_deg, det.timing_ms.at("total"));
     } else {
-        std::printf("not found: %s\n", det.reason.c_str());
+        std::printf("%s\n", frontend::detectionSummary(det).c_str());
     }
 }
 
