@@ -178,7 +178,7 @@ TEST(CliFirstHour, EvalSaysWhenTheDefaultRealFramesAreMissing) {
     // From a folder with no ../shared/data/real: the report is written, and the missing folder said.
     const fs::path was = fs::current_path();
     fs::current_path(dir / "cwd");
-    const CliRun r = cli("eval --quick --no-progress --labels '' --out " + (dir / "out").string(), dir, 300);
+    const CliRun r = cli("eval --quick --rounds 1 --no-progress --labels '' --out " + (dir / "out").string(), dir, 300);
     fs::current_path(was);
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("projsurf: note: ../shared/data/real: no such folder (from "), std::string::npos) << r.err;

@@ -77,6 +77,12 @@ void run(const EvalOptions &o, const std::string &command) {
     std::vector<std::string> label_frames;
     for (const std::string &l : labels) label_frames.push_back(readRealLabel(l).frame);
 
+    // The default real-frame folder is taken from the working directory, and said (before the
+    // long simulation) when it is not there.
+    if (!o.real_dir_given && !fs::is_directory(o.real_dir, ec))
+        std::fprintf(stderr, "projsurf: note: %s: no such folder (from %s); the report has no real frames (--real-dir)\n",
+                     o.real_dir.c_str(), fs::current_path(ec).string().c_str());
+
     const int rounds = o.quick ? std::min(o.rounds, 2) : o.rounds;
     const sim::EvalPlan plan = sim::paperEvalPlan(rounds, o.quick, o.seed);
     const double load_before = loadAverage();
@@ -100,11 +106,7 @@ void run(const EvalOptions &o, const std::string &command) {
     info.quick = o.quick;
     info.realistic_markdown = sim::realisticSuiteMarkdown(realistic);
     const auto t0 = std::chrono::steady_clock::now();
-    // The default folder is taken from the working directory, and said when it is not there.
-    const std::string real_dir = o.real_dir;
-    if (!o.real_dir_given && !fs::is_directory(real_dir, ec))
-        std::fprintf(stderr, "projsurf: note: %s: no such folder (from %s); the report has no real frames (--real-dir)\n",
-                     real_dir.c_str(), fs::current_path(ec).string().c_str());
+    const std::string &real_dir = o.real_dir;
     const std::vector<std::string> frames = real_dir.empty() ? std::vector<std::string>{} : listFrameFolders(real_dir);
     for (std::size_t i = 0; i < frames.size(); ++i) {
         if (progress) progress(static_cast<int>(i), static_cast<int>(frames.size()), "real frame " + fs::path(frames[i]).filename().string());
