@@ -13,6 +13,9 @@ set(PROJSURF_COMPONENTS core sim)
 if(TARGET projsurf_io)
   list(APPEND PROJSURF_COMPONENTS io eval)
 endif()
+if(TARGET projsurf_frontend)
+  list(APPEND PROJSURF_COMPONENTS frontend)  # the CLI links it
+endif()
 foreach(component ${PROJSURF_COMPONENTS})
   install(TARGETS projsurf_${component} EXPORT projsurf-${component}-targets
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT runtime NAMELINK_COMPONENT devel

@@ -13,7 +13,8 @@ PACKAGES=(
   clang libclang-rt-14-dev libbz2-dev
 )
 # ROS 1 (Debian's packages) for the node in ros/; see ros/README.md.
-ROS_PACKAGES=(libroscpp-dev libstd-msgs-dev libstd-srvs-dev libsensor-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libtf2-ros-dev librosbag-storage-dev python3-rosmaster python3-roslaunch)
+ROS_PACKAGES=(libroscpp-dev libstd-msgs-dev libstd-srvs-dev libsensor-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libtf2-ros-dev librosbag-storage-dev python3-rosmaster python3-roslaunch
+  python3-rostopic)  # `rostopic echo /projsurf/result` and friends (ros/README.md)
 
 missing=()
 for p in "${PACKAGES[@]}" "${ROS_PACKAGES[@]}"; do

@@ -3,9 +3,9 @@
 #include <pybind11/numpy.h>
 
 #include <cmath>
-#include <sstream>
+#include <cstdio>
 
-#include "projsurf/core/gravity.hpp"
+#include "projsurf/frontend/aspect.hpp"
 #include "projsurf/io/errors.hpp"
 
 namespace py = pybind11;
@@ -15,30 +15,36 @@ namespace {
 
 double aspectFrom(const py::object &aspect) {
     if (aspect.is_none()) return 0.0;
-    double a = 0.0;
-    std::string text;
-    if (py::isinstance<py::str>(aspect)) {
-        text = aspect.cast<std::string>();
-        std::stringstream ss(text);
-        double w = 0, h = 0;
-        char colon = 0;
-        if (ss >> w >> colon >> h && colon == ':' && (ss >> std::ws).eof() && h != 0.0) a = w / h;
-    } else {
-        try {
-            a = aspect.cast<double>();
-        } catch (const py::cast_error &) {
-        }
-        text = py::str(aspect);
+    if (py::isinstance<py::str>(aspect)) return frontend::parseAspect("aspect", aspect.cast<std::string>());
+    double a = std::nan("");
+    try {
+        a = aspect.cast<double>();
+    } catch (const py::cast_error &) {
+        return frontend::parseAspect("aspect", py::str(aspect));
     }
-    if (!(a > 0.01 && a < 100.0))
-        throw InputError("aspect", "expected a positive aspect ratio W:H or width / height, got '" + text + "'");
-    return a;
+    char text[64];
+    std::snprintf(text, sizeof text, "%.17g", a);  // exact: the same double read back
+    return frontend::parseAspect("aspect", text);
+}
+
+/// None -> `fallback`; else a finite number >= 0.
+double minimumFrom(const char *name, const py::object &value, double fallback) {
+    if (value.is_none()) return fallback;
+    double v = std::nan("");
+    try {
+        v = value.cast<double>();
+    } catch (const py::cast_error &) {
+    }
+    if (!(v >= 0.0 && std::isfinite(v)))
+        throw InputError(name, "expected a number >= 0 or None, got '" + std::string(py::str(value)) + "'");
+    return v;
 }
 
 }  // namespace
 
 DetectorOptions detectorOptions(const py::object &aspect, const py::object &gravity, const std::string &method,
-                                const std::string &hull, unsigned seed) {
+                                const std::string &hull, unsigned seed, const py::object &min_width,
+                                const py::object &min_area) {
     DetectorOptions o;
     o.config.aspect = aspectFrom(aspect);
     if (method == "paper") o.config.method = Method::Paper;
@@ -48,8 +54,11 @@ DetectorOptions detectorOptions(const py::object &aspect, const py::object &grav
     else if (hull == "convex") o.config.paper.hull = HullKind::Convex;
     else throw InputError("hull", "expected 'concave' or 'convex', got '" + hull + "'");
     o.config.seed = seed;
-    if (py::isinstance<py::str>(gravity) && gravity.cast<std::string>() == "auto") {
-        o.auto_gravity = true;
+    const frontend::MinimumSize defaults = frontend::defaultMinimumSize(o.config.method);
+    o.minimum.width = minimumFrom("min_width", min_width, defaults.width);
+    o.minimum.area = minimumFrom("min_area", min_area, defaults.area);
+    if (py::isinstance<py::str>(gravity)) {
+        o.gravity = frontend::parseGravityChoice("gravity", gravity.cast<std::string>());
     } else if (!gravity.is_none()) {
         py::array_t<double, py::array::forcecast> g;
         try {
@@ -59,18 +68,13 @@ DetectorOptions detectorOptions(const py::object &aspect, const py::object &grav
         if (!g || g.size() != 3)
             throw InputError("gravity", "expected three numbers gx,gy,gz or 'auto', got '" +
                                             std::string(py::str(gravity)) + "'");
-        const Eigen::Vector3d v(g.data()[0], g.data()[1], g.data()[2]);
-        if (!v.allFinite()) throw InputError("gravity", "the vector is not finite");
-        if (v.norm() < 1e-9) throw InputError("gravity", "the vector is zero");
-        o.gravity = v;
+        o.gravity = frontend::gravityChoiceFrom("gravity", g.data(), 3);
     }
     return o;
 }
 
 Eigen::Vector3d gravityFor(const DetectorOptions &options, const Cloud &cloud) {
-    if (options.auto_gravity)
-        if (const auto g = estimateGravityFromFloor(cloud, options.gravity)) return g->gravity;
-    return options.gravity;
+    return frontend::resolveGravity(options.gravity, cloud).gravity;
 }
 
 }  // namespace projsurf::python

@@ -17,6 +17,8 @@
 #include "projsurf/core/camera.hpp"
 #include "projsurf/core/colour_registration.hpp"
 #include "projsurf/core/keystone.hpp"
+#include "projsurf/frontend/depth_image_cloud.hpp"
+#include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -54,7 +56,7 @@ Projector makeProjector(std::pair<int, int> resolution, std::pair<double, double
 /// One picture -> framebuffer with a detection: what `projsurf correct` does for an image.
 Keystone keystoneFor(const Projector &projector, const py::object &detection, cv::Size picture, double tolerance_px) {
     const Rectangle rect = rectangleFromDetection(detection);
-    const KeystoneResult r = computeKeystone(projector, rect, picture, tolerance_px);
+    frontend::FramebufferRender r = frontend::keystoneFor(projector, rect, picture, tolerance_px);
     if (!r.keystone) throw InputError("detection", r.problem);
     return *r.keystone;
 }
@@ -96,6 +98,7 @@ public:
             py::gil_scoped_release unlocked;
             det = detector_.detect(cloud, gravityFor(options_, cloud));
         }
+        frontend::enforceMinimumSize(det, options_.minimum, "min_width", "min_area");
         return detectionToDict(det, options_.config);
     }
     const Projector &projector() const { return detector_.projector(); }
@@ -156,14 +159,8 @@ PYBIND11_MODULE(projsurf, m) {
               py::object keep;
               const cv::Mat d = matFromArray(depth, "depth", keep);
               if (d.type() != CV_16UC1) throw InputError("depth", "expected an (H, W) uint16 depth image (0 = no reading)");
-              if (!(fx > 0 && fy > 0 && std::isfinite(cx) && std::isfinite(cy) && depth_scale > 0 &&
-                    std::isfinite(fx + fy + depth_scale)))
-                  throw InputError("camera", "fx, fy and depth_scale must be positive, cx and cy finite");
-              CameraIntrinsics camera;
-              camera.width = d.cols;
-              camera.height = d.rows;
-              camera.fx = fx, camera.fy = fy, camera.cx = cx, camera.cy = cy, camera.depth_scale = depth_scale;
-              return arrayFromCloud(depthToCloud(d, camera));
+              const CameraIntrinsics camera = frontend::pinholeCamera("camera", d.cols, d.rows, fx, fy, cx, cy, depth_scale);
+              return arrayFromCloud(frontend::depthImageToCloud("depth", d, camera));
           },
           "depth"_a, py::kw_only(), "fx"_a, "fy"_a, "cx"_a, "cy"_a, "depth_scale"_a = 1000.0,
           "An (H, W) uint16 depth image (depth_scale units per metre, 0 = no reading) and its pinhole\n"
@@ -181,11 +178,12 @@ PYBIND11_MODULE(projsurf, m) {
 
     py::class_<Detector>(m, "Detector", "Detection over a stream of clouds (reuses its buffers from frame to frame).")
         .def(py::init([](const Projector &projector, const py::object &aspect, const py::object &gravity,
-                         const std::string &method, const std::string &hull, unsigned seed) {
-                 return Detector(projector, detectorOptions(aspect, gravity, method, hull, seed));
+                         const std::string &method, const std::string &hull, unsigned seed, const py::object &min_width,
+                         const py::object &min_area) {
+                 return Detector(projector, detectorOptions(aspect, gravity, method, hull, seed, min_width, min_area));
              }),
              "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(), "method"_a = "default",
-             "hull"_a = "concave", "seed"_a = 42u)
+             "hull"_a = "concave", "seed"_a = 42u, "min_width"_a = py::none(), "min_area"_a = py::none())
         .def("detect", &Detector::detect, "points"_a, py::kw_only(), "colour"_a = py::none(),
              "points: (H, W, 3) or (N, 3) array (camera frame, m; NaN = no reading) or an object with .points.\n"
              "colour: optional (H, W, 3) uint8 B, G, R image registered to (H, W) points: the surface's suitability\n"
@@ -195,15 +193,18 @@ PYBIND11_MODULE(projsurf, m) {
 
     m.def("detect",
           [](const py::object &points, const Projector &projector, const py::object &aspect, const py::object &gravity,
-             const std::string &method, const std::string &hull, unsigned seed, const py::object &colour) {
-              Detector detector(projector, detectorOptions(aspect, gravity, method, hull, seed));
+             const std::string &method, const std::string &hull, unsigned seed, const py::object &min_width,
+             const py::object &min_area, const py::object &colour) {
+              Detector detector(projector, detectorOptions(aspect, gravity, method, hull, seed, min_width, min_area));
               return detector.detect(points, colour);
           },
           "points"_a, "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(),
-          "method"_a = "default", "hull"_a = "concave", "seed"_a = 42u, "colour"_a = py::none(),
+          "method"_a = "default", "hull"_a = "concave", "seed"_a = 42u, "min_width"_a = py::none(),
+          "min_area"_a = py::none(), "colour"_a = py::none(),
           "The biggest upright rectangle of the aspect ratio (None: the framebuffer's, a number, or 'W:H') that the\n"
           "projector can light on a vertical surface. gravity: camera frame, pointing down (None: a level camera\n"
-          "[0, 1, 0]; 'auto': from the floor). Returns a dict: found, reason, method, plane, rectangle,\n"
+          "[0, 1, 0]; 'auto': from the floor). min_width (m), min_area (m^2): smaller rectangles are not found\n"
+          "(None: 0.20 m and 0.02 m^2, as `projsurf detect`; 0 with method='paper'). Returns a dict: found, reason, method, plane, rectangle,\n"
           "surface_check, timing_ms, gravity (numpy arrays for vectors). Raises InputError for bad points or options.");
 
     m.def("keystone",
@@ -217,7 +218,7 @@ PYBIND11_MODULE(projsurf, m) {
                               "picture_px"_a = corners2(k.picture_px),
                               "framebuffer_size"_a = std::make_pair(k.framebuffer.width, k.framebuffer.height));
           },
-          "projector"_a, "detection"_a, "picture_size"_a, "tolerance_px"_a = 0.5,
+          "projector"_a, "detection"_a, "picture_size"_a, "tolerance_px"_a = kKeystoneTolerancePx,
           "picture_size: (width, height) px. homography maps picture pixels to framebuffer pixels (centres at\n"
           "integers); rectangle_px / picture_px: (4, 2) framebuffer positions (TL, TR, BR, BL). Raises InputError\n"
           "when the detection found nothing or its rectangle cannot be shown.");
@@ -234,7 +235,7 @@ PYBIND11_MODULE(projsurf, m) {
               }
               return arrayFromMat(framebuffer);
           },
-          "image"_a, "projector"_a, "detection"_a, "tolerance_px"_a = 0.5,
+          "image"_a, "projector"_a, "detection"_a, "tolerance_px"_a = kKeystoneTolerancePx,
           "Keystone correction: the projector framebuffer (the calibration's resolution, black around) showing\n"
           "`image` ((H, W) or (H, W, C), uint8, uint16 or float32; channels kept in their order) whole and\n"
           "undistorted in the detected rectangle (letterboxed, never stretched). The image is read in place.\n"

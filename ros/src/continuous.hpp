@@ -1,7 +1,8 @@
 #pragma once
 // Continuous mode's ROS side: carries the steady tracker's rectangle between the camera frame
-// of each cloud and the fixed frame (odom/map, from tf2), and tells the tracker whether the
-// held rectangle can still be shown from where the robot is now.
+// of each cloud and the fixed frame (odom/map, from tf2; core/rigid_transform.hpp), and tells
+// the tracker whether the held rectangle can still be shown from where the robot is now
+// (core/held_rectangle.hpp).
 #include <Eigen/Geometry>
 
 #include "params.hpp"
@@ -10,9 +11,6 @@
 #include "projsurf/pipeline/detector.hpp"
 
 namespace projsurf::ros_node {
-
-Plane transformPlane(const Plane &plane, const Eigen::Isometry3d &T);
-Rectangle transformRectangle(const Rectangle &rect, const Eigen::Isometry3d &T);
 
 class ContinuousMode {
 public:
@@ -32,9 +30,6 @@ public:
     const SteadyTracker &tracker() const { return tracker_; }
 
 private:
-    bool stillUsable(const Rectangle &rect, const Plane &plane, const Cloud &cloud, const DetectorConfig &config,
-                     const Eigen::Vector3d &gravity) const;
-
     const NodeParams &params_;
     SteadyTracker tracker_;
 };

@@ -2,12 +2,14 @@
 
 #include <sensor_msgs/image_encodings.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/core/camera.hpp"
+#include "projsurf/frontend/depth_image_cloud.hpp"
+#include "projsurf/io/depth_image_bytes.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/pointcloud2.hpp"
 
@@ -22,44 +24,12 @@ Cloud toCloud(const sensor_msgs::Image &depth, const sensor_msgs::CameraInfo &in
                                       ", camera_info says " + std::to_string(info.width) + "x" +
                                       std::to_string(info.height));
     if (!(info.K[0] > 0.0) || !(info.K[4] > 0.0)) throw InputError("camera_info", "K has no focal length");
-    const bool mm = depth.encoding == enc::TYPE_16UC1 || depth.encoding == enc::MONO16;
-    const bool metres = depth.encoding == enc::TYPE_32FC1;
-    if (!mm && !metres) throw InputError("depth", "encoding '" + depth.encoding + "' (expected 16UC1 in mm or 32FC1 in m)");
-    const std::size_t bpp = mm ? 2 : 4;
-    if (depth.step < depth.width * bpp || depth.data.size() < static_cast<std::size_t>(depth.step) * depth.height)
-        throw InputError("depth", "data is shorter than its size says");
-    CameraIntrinsics cam;
-    cam.width = static_cast<int>(depth.width);
-    cam.height = static_cast<int>(depth.height);
-    cam.fx = info.K[0];
-    cam.fy = info.K[4];
-    cam.cx = info.K[2];
-    cam.cy = info.K[5];
-    Cloud cloud;
-    cloud.width = cam.width;
-    cloud.height = cam.height;
-    cloud.points.resize(static_cast<std::size_t>(cam.width) * cam.height);
-    const float nan = std::numeric_limits<float>::quiet_NaN();
-    for (int v = 0; v < cam.height; ++v) {
-        const std::uint8_t *row = depth.data.data() + static_cast<std::size_t>(v) * depth.step;
-        for (int u = 0; u < cam.width; ++u) {
-            double z;
-            if (mm) {
-                std::uint16_t raw;
-                std::memcpy(&raw, row + u * 2, 2);
-                if (depth.is_bigendian) raw = static_cast<std::uint16_t>((raw >> 8) | (raw << 8));
-                z = raw * 1e-3;
-            } else {
-                float raw;
-                std::memcpy(&raw, row + u * 4, 4);
-                z = raw;
-            }
-            Point &p = cloud.points[static_cast<std::size_t>(v) * cam.width + u];
-            if (z > 0.0 && std::isfinite(z)) p = cam.backProject(u, v, z).cast<float>();
-            else p = Point(nan, nan, nan);
-        }
-    }
-    return cloud;
+    // The message's pixels in this machine's byte order (io/depth_image_bytes.hpp, as for bags).
+    const cv::Mat image = depthImageFromBytes("depth", depth.encoding, depth.width, depth.height, depth.step,
+                                              depth.is_bigendian != 0, depth.data.data(), depth.data.size());
+    const CameraIntrinsics cam = frontend::pinholeCamera("camera_info", image.cols, image.rows, info.K[0], info.K[4],
+                                                         info.K[2], info.K[5], 1000.0);  // 16UC1 is in mm (REP 118)
+    return frontend::depthImageToCloud("depth", image, cam);
 }
 
 cv::Mat toBgr(const sensor_msgs::Image &msg) {

@@ -9,8 +9,9 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "conversions.hpp"
-#include "framebuffer.hpp"
-#include "projsurf/core/gravity.hpp"
+#include "projsurf/frontend/detection_summary.hpp"
+#include "projsurf/frontend/framebuffer_render.hpp"
+#include "projsurf/frontend/test_card.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -25,20 +26,12 @@ Eigen::Isometry3d toEigen(const geometry_msgs::Transform &t) {
     return T;
 }
 
-std::string summary(const Detection &det) {
-    char buf[256];
-    std::snprintf(buf, sizeof buf, "found %.2f x %.2f m (%.2f m^2) on a plane %.2f m away at %.1f deg in %.1f ms",
-                  det.rectangle.width, det.rectangle.height, det.rectangle.area(), det.plane.d, det.orientation_deg,
-                  det.timing_ms.count("total") ? det.timing_ms.at("total") : 0.0);
-    return buf;
-}
-
 }  // namespace
 
 ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams params)
     : params_(std::move(params)), nh_(nh), pnh_(pnh), detector_(params_.projector, params_.detector) {
     if (!params_.image.empty()) picture_ = readImage(params_.image, cv::IMREAD_COLOR);
-    else picture_ = testCard({params_.projector.width, params_.projector.height});
+    else picture_ = frontend::testCard({params_.projector.width, params_.projector.height});
     if (!params_.gravity_frame.empty() || !params_.fixed_frame.empty()) {
         tf_buffer_ = std::make_unique<tf2_ros::Buffer>(ros::Duration(30.0));
         tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, nh_);
@@ -53,7 +46,8 @@ ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams p
     // Queue of 1: in continuous mode a slow frame drops the ones behind it, never lags.
     cloud_sub_ = nh_.subscribe("points", 1, &ProjsurfNode::onCloud, this);
     depth_sub_ = nh_.subscribe("depth/image_rect", 1, &ProjsurfNode::onDepth, this);
-    info_sub_ = nh_.subscribe("depth/camera_info", 1, &ProjsurfNode::onCameraInfo, this);
+    // camera_info is small and paired by stamp: a few are kept (frontend/stamp_pairing.hpp).
+    info_sub_ = nh_.subscribe("depth/camera_info", 10, &ProjsurfNode::onCameraInfo, this);
     image_sub_ = nh_.subscribe("image", 1, &ProjsurfNode::onImage, this);
     ROS_INFO("projsurf_node: projector %dx%d from %s; %s mode; listening on %s (or %s + %s)", params_.projector.width,
              params_.projector.height, params_.calib.c_str(), params_.continuous ? "continuous" : "on-demand (~detect)",
@@ -69,17 +63,43 @@ void ProjsurfNode::onImage(const sensor_msgs::ImageConstPtr &msg) {
     }
 }
 
-void ProjsurfNode::onCameraInfo(const sensor_msgs::CameraInfoConstPtr &msg) { camera_info_ = msg; }
+void ProjsurfNode::onCameraInfo(const sensor_msgs::CameraInfoConstPtr &msg) {
+    camera_infos_.add(msg->header.stamp.toSec(), msg);
+    // The depth image of this stamp came first: now it has its camera_info.
+    if (pending_depth_ && std::abs(pending_depth_->header.stamp.toSec() - msg->header.stamp.toSec()) <= frontend::kSameStampS) {
+        const sensor_msgs::ImageConstPtr depth = pending_depth_;
+        pending_depth_.reset();
+        takeDepth(*depth, *msg);
+    }
+}
 
 void ProjsurfNode::onDepth(const sensor_msgs::ImageConstPtr &msg) {
-    if (!camera_info_) {
-        ROS_WARN_THROTTLE(5.0, "projsurf_node: depth image without camera_info on %s yet", info_sub_.getTopic().c_str());
+    // The camera_info of the same stamp (a driver publishes both per frame), not the latest.
+    if (const auto *info = camera_infos_.exact(msg->header.stamp.toSec())) {
+        pending_depth_.reset();
+        takeDepth(*msg, **info);
         return;
     }
+    // An older image still waiting gets the nearest camera_info there is (a driver whose
+    // stamps differ); this one waits for its own.
+    double at = 0.0;
+    if (pending_depth_) {
+        if (const auto *info = camera_infos_.nearest(pending_depth_->header.stamp.toSec(), at)) {
+            ROS_WARN_THROTTLE(5.0, "projsurf_node: no camera_info with the depth image's stamp %.3f on %s; using the one of %.3f",
+                              pending_depth_->header.stamp.toSec(), info_sub_.getTopic().c_str(), at);
+            takeDepth(*pending_depth_, **info);
+        } else {
+            ROS_WARN_THROTTLE(5.0, "projsurf_node: depth image without camera_info on %s yet", info_sub_.getTopic().c_str());
+        }
+    }
+    pending_depth_ = msg;
+}
+
+void ProjsurfNode::takeDepth(const sensor_msgs::Image &depth, const sensor_msgs::CameraInfo &info) {
     try {
-        takeCloud(toCloud(*msg, *camera_info_), msg->header);
+        takeCloud(toCloud(depth, info), depth.header);
     } catch (const InputError &e) {
-        rejectCloud("depth image", e.what(), msg->header);
+        rejectCloud("depth image", e.what(), depth.header);
     }
 }
 
@@ -123,7 +143,7 @@ bool ProjsurfNode::lookup(const std::string &target, const std::string &source, 
 }
 
 Eigen::Vector3d ProjsurfNode::gravityFor(const std_msgs::Header &header, std::string &problem) {
-    Eigen::Vector3d gravity = params_.gravity;
+    Eigen::Vector3d gravity = params_.gravity.gravity;
     if (!params_.gravity_frame.empty()) {
         Eigen::Isometry3d camera_from_gravity;
         if (lookup(header.frame_id, params_.gravity_frame, header.stamp, camera_from_gravity, problem)) {
@@ -132,9 +152,9 @@ Eigen::Vector3d ProjsurfNode::gravityFor(const std_msgs::Header &header, std::st
             problem += " (using ~gravity instead)";
         }
     }
-    if (params_.gravity_auto && (params_.gravity_frame.empty() || !problem.empty())) {
+    if (params_.gravity.from_floor && (params_.gravity_frame.empty() || !problem.empty())) {
         // No IMU and no tf: "down" from the floor when one is in view, else a level camera.
-        if (const auto g = estimateGravityFromFloor(cloud_, Eigen::Vector3d(0.0, 1.0, 0.0))) gravity = g->gravity;
+        gravity = frontend::resolveGravity(params_.gravity, cloud_).gravity;
     }
     return gravity;
 }
@@ -159,7 +179,8 @@ void ProjsurfNode::writeFramebufferFile(const cv::Mat &image) {
 }
 
 std::string ProjsurfNode::publishFramebuffer(const Rectangle &rect, const std_msgs::Header &header) {
-    const Framebuffer fb = renderFramebuffer(params_.projector, rect, picture_, params_.keystone_tolerance_px);
+    const frontend::FramebufferRender fb =
+        frontend::renderFramebuffer(params_.projector, rect, picture_, params_.keystone_tolerance_px);
     if (fb.image.empty()) return fb.problem;
     framebuffer_pub_.publish(toImageMsg(fb.image, header));
     writeFramebufferFile(fb.image);
@@ -188,7 +209,8 @@ ProjsurfNode::Outcome ProjsurfNode::detectOnValidCloud() {
     std::string tf_problem;
     const Eigen::Vector3d gravity = gravityFor(cloud_header_, tf_problem);
     if (!tf_problem.empty()) ROS_WARN("projsurf_node: %s", tf_problem.c_str());
-    const Detection det = detector_.detect(cloud_, gravity);
+    Detection det = detector_.detect(cloud_, gravity);
+    frontend::enforceMinimumSize(det, params_.minimum, "~min_width", "~min_area");
     std_msgs::String json;
     json.data = detectionToJson(det, detector_.config()).dump();
     result_pub_.publish(json);
@@ -201,7 +223,7 @@ ProjsurfNode::Outcome ProjsurfNode::detectOnValidCloud() {
         return out;
     }
     out.success = true;
-    out.message = summary(det);
+    out.message = frontend::detectionSummary(det);
     rectangle_pub_.publish(toPolygon(det.rectangle, cloud_header_));
     const std::string problem = publishFramebuffer(det.rectangle, cloud_header_);
     if (!problem.empty()) out.message += "; but the picture cannot be shown there: " + problem;
@@ -238,14 +260,15 @@ void ProjsurfNode::runContinuous() {
     Detection det;
     try {
         det = detector_.detect(cloud_, gravity);
+        frontend::enforceMinimumSize(det, params_.minimum, "~min_width", "~min_area");
     } catch (const std::exception &e) {
         ROS_ERROR_THROTTLE(5.0, "projsurf_node: detection failed: %s", e.what());
         return;
     }
     const ContinuousMode::Output o = continuous_->update(det, cloud_, fixed_from_camera, detector_.config());
     // Re-warp every frame: the robot moved, so the same place on the wall has new pixels.
-    Framebuffer fb;
-    if (o.has_target) fb = renderFramebuffer(params_.projector, o.shown, picture_, params_.keystone_tolerance_px);
+    frontend::FramebufferRender fb;
+    if (o.has_target) fb = frontend::renderFramebuffer(params_.projector, o.shown, picture_, params_.keystone_tolerance_px);
     if (fb.image.empty()) fb.image = cv::Mat(params_.projector.height, params_.projector.width, CV_8UC3, cv::Scalar::all(0));
     const double frame_ms = (ros::WallTime::now() - start).toSec() * 1e3;
 

@@ -18,6 +18,7 @@
 
 #include "continuous.hpp"
 #include "params.hpp"
+#include "projsurf/frontend/stamp_pairing.hpp"
 #include "projsurf/pipeline/detector.hpp"
 
 namespace projsurf::ros_node {
@@ -40,6 +41,8 @@ private:
     bool onDetect(std_srvs::Trigger::Request &req, std_srvs::Trigger::Response &res);
 
     void takeCloud(Cloud cloud, const std_msgs::Header &header);
+    /// The depth image with this camera_info as a cloud (or rejected).
+    void takeDepth(const sensor_msgs::Image &depth, const sensor_msgs::CameraInfo &info);
     /// A cloud (or depth image) that cannot be used: kept out, and remembered for ~detect.
     void rejectCloud(const std::string &what, const std::string &problem, const std_msgs::Header &header);
     /// ~detect's answer; it says when the latest cloud was rejected (and answers from the last valid one).
@@ -70,7 +73,9 @@ private:
     std_msgs::Header cloud_header_;
     bool have_cloud_ = false;
     std::string rejected_;         ///< why the latest cloud was rejected; empty when it was used
-    sensor_msgs::CameraInfoConstPtr camera_info_;
+    /// camera_info by stamp: each depth image is paired with the one of its own stamp.
+    frontend::StampedBuffer<sensor_msgs::CameraInfoConstPtr> camera_infos_;
+    sensor_msgs::ImageConstPtr pending_depth_;  ///< a depth image whose camera_info has not come yet
     SurfaceDetector detector_;  ///< one for the stream: its buffers are reused frame to frame
     std::unique_ptr<ContinuousMode> continuous_;
     ros::WallTime last_file_write_;

@@ -5,6 +5,7 @@
 #include <sstream>
 #include <vector>
 
+#include "projsurf/frontend/aspect.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
@@ -40,50 +41,16 @@ void getCount(const ros::NodeHandle &pnh, const std::string &key, int &value, in
     if (value < min) throw InputError(name(pnh, key), "must be >= " + std::to_string(min));
 }
 
-Eigen::Vector3d parseGravity(const ros::NodeHandle &pnh) {
+frontend::GravityChoice parseGravity(const ros::NodeHandle &pnh) {
     const std::string key = "gravity";
     std::vector<double> list;
     std::string text;
-    Eigen::Vector3d g;
-    if (pnh.getParam(key, list)) {
-        if (list.size() != 3) throw InputError(name(pnh, key), "needs 3 numbers");
-        g = {list[0], list[1], list[2]};
-    } else if (pnh.getParam(key, text)) {
-        std::replace(text.begin(), text.end(), ',', ' ');
-        std::istringstream in(text);
-        if (!(in >> g.x() >> g.y() >> g.z())) throw InputError(name(pnh, key), "needs 3 numbers, e.g. [0, 1, 0]");
-        std::string rest;
-        if (in >> rest) throw InputError(name(pnh, key), "needs exactly 3 numbers");
-    } else {
-        throw InputError(name(pnh, key), "needs 3 numbers, e.g. [0, 1, 0]");
-    }
-    if (!g.allFinite() || g.norm() < 1e-9) throw InputError(name(pnh, key), "must be a finite non-zero vector");
-    return g.normalized();
+    if (pnh.getParam(key, list)) return frontend::gravityChoiceFrom(name(pnh, key), list.data(), list.size());
+    if (pnh.getParam(key, text)) return frontend::parseGravityChoice(name(pnh, key), text);
+    throw InputError(name(pnh, key), "needs 3 numbers, e.g. [0, 1, 0], or auto");
 }
 
 }  // namespace
-
-double parseAspectText(const std::string &what, const std::string &text) {
-    const auto colon = text.find(':');
-    try {
-        std::size_t used = 0;
-        double value;
-        if (colon == std::string::npos) {
-            value = std::stod(text, &used);
-            if (used != text.size()) throw std::invalid_argument("trailing");
-        } else {
-            const std::string a = text.substr(0, colon), b = text.substr(colon + 1);
-            std::size_t ua = 0, ub = 0;
-            const double w = std::stod(a, &ua), h = std::stod(b, &ub);
-            if (ua != a.size() || ub != b.size() || !(h > 0.0)) throw std::invalid_argument("bad");
-            value = w / h;
-        }
-        if (!(value > 0.0) || !std::isfinite(value)) throw std::invalid_argument("bad");
-        return value;
-    } catch (const std::exception &) {
-        throw InputError(what, "expected W:H with positive numbers (e.g. 16:9), got '" + text + "'");
-    }
-}
 
 NodeParams loadParams(const ros::NodeHandle &pnh) {
     NodeParams p;
@@ -98,16 +65,14 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
         std::string text;
         double number;
         if (pnh.getParam("aspect", text)) {
-            if (!text.empty()) c.aspect = parseAspectText(name(pnh, "aspect"), text);
+            if (!text.empty()) c.aspect = frontend::parseAspect(name(pnh, "aspect"), text);
         } else if (pnh.getParam("aspect", number)) {
-            c.aspect = parseAspectText(name(pnh, "aspect"), std::to_string(number));
+            c.aspect = frontend::parseAspect(name(pnh, "aspect"), std::to_string(number));
         } else {
             throw InputError(name(pnh, "aspect"), "expected \"W:H\"");
         }
     }
-    std::string gravity_text;
-    if (pnh.getParam("gravity", gravity_text) && gravity_text == "auto") p.gravity_auto = true;
-    else if (pnh.hasParam("gravity")) p.gravity = parseGravity(pnh);
+    if (pnh.hasParam("gravity")) p.gravity = parseGravity(pnh);
     std::string method = "default", hull = "concave";
     get(pnh, "method", method);
     get(pnh, "hull", hull);
@@ -130,6 +95,12 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
     getNumber(pnh, "max_outlier_fraction", c.check.max_outlier_fraction);
     if (c.check.max_outlier_fraction < 0.0 || c.check.max_outlier_fraction > 1.0)
         throw InputError(name(pnh, "max_outlier_fraction"), "must be within [0, 1]");
+
+    p.minimum = frontend::defaultMinimumSize(c.method);
+    getNumber(pnh, "min_width", p.minimum.width);
+    getNumber(pnh, "min_area", p.minimum.area);
+    if (p.minimum.width < 0.0) throw InputError(name(pnh, "min_width"), "must be >= 0");
+    if (p.minimum.area < 0.0) throw InputError(name(pnh, "min_area"), "must be >= 0");
 
     // Frames and continuous mode.
     get(pnh, "gravity_frame", p.gravity_frame);

@@ -8,6 +8,8 @@
 
 #include "projsurf/core/projector.hpp"
 #include "projsurf/core/steady_tracker.hpp"
+#include "projsurf/frontend/gravity_choice.hpp"
+#include "projsurf/frontend/minimum_size.hpp"
 #include "projsurf/pipeline/detector.hpp"
 
 namespace projsurf::ros_node {
@@ -21,14 +23,16 @@ struct NodeParams {
     /// ~voxel_leaf, ~ransac_distance, ~max_outliers, ~cell, ~max_planes, ~max_outlier_fraction
     /// (defaults: DetectorConfig's).
     DetectorConfig detector;
+    /// ~min_width (m), ~min_area (m^2): smaller rectangles are "not found", as `detect
+    /// --min-width/--min-area` (defaults: frontend/minimum_size.hpp's for ~method).
+    frontend::MinimumSize minimum;
 
     /// ~gravity_frame: a frame whose -z is gravity (e.g. base_link or odom); when set, gravity
     /// in the camera frame comes from tf2 for every cloud and ~gravity is the fallback.
     std::string gravity_frame;
-    /// ~gravity: down in the camera frame (3 numbers; default a level camera).
-    Eigen::Vector3d gravity = Eigen::Vector3d::UnitY();
-    /// ~gravity: auto -> down from the floor in each cloud (no IMU, no tf), as `detect --gravity auto`.
-    bool gravity_auto = false;
+    /// ~gravity: down in the camera frame (3 numbers; default a level camera), or auto -> down
+    /// from the floor in each cloud (no IMU, no tf), as `detect --gravity auto`.
+    frontend::GravityChoice gravity;
     /// ~fixed_frame: a frame that does not move with the robot (odom, map); continuous mode
     /// keeps the picture put in it. Empty: the camera frame (a robot standing still).
     std::string fixed_frame;
@@ -45,8 +49,5 @@ struct NodeParams {
 /// Reads every parameter from the private handle `pnh`; throws InputError naming the
 /// parameter (or the calibration file) and the problem.
 NodeParams loadParams(const ros::NodeHandle &pnh);
-
-/// "W:H" or one positive number -> W / H; throws InputError naming `what`.
-double parseAspectText(const std::string &what, const std::string &text);
 
 }  // namespace projsurf::ros_node

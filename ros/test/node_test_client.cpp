@@ -287,7 +287,7 @@ TEST_F(NodeTest, DepthImageInputAndThePictureFromTheImageTopic) {
     Inbox<geometry_msgs::PolygonStamped> rects;
     fbs.open(*nh_, ns + "/projsurf/framebuffer");
     rects.open(*nh_, ns + "/projsurf/rectangle");
-    ros::Publisher info_pub = nh_->advertise<sensor_msgs::CameraInfo>(ns + "/depth/camera_info", 1, true);
+    ros::Publisher info_pub = nh_->advertise<sensor_msgs::CameraInfo>(ns + "/depth/camera_info", 10, true);
     ros::Publisher depth_pub = nh_->advertise<sensor_msgs::Image>(ns + "/depth/image_rect", 1, true);
     ros::Publisher picture_pub = nh_->advertise<sensor_msgs::Image>(ns + "/image", 1, true);
     const std::string service = ns + "/projsurf/detect";
@@ -327,8 +327,16 @@ TEST_F(NodeTest, DepthImageInputAndThePictureFromTheImageTopic) {
         const std::uint16_t mm = std::isfinite(z) ? static_cast<std::uint16_t>(std::lround(z * 1000.0f)) : 0;
         std::memcpy(&depth.data[2 * i], &mm, 2);
     }
+    // Its camera_info, then one of a later stamp that does not fit this image (another
+    // resolution): the node pairs the depth image with the camera_info of its own stamp.
     info_pub.publish(info);
-    ros::WallDuration(0.2).sleep();  // camera_info first: the node pairs a depth image with the latest one
+    ros::WallDuration(0.1).sleep();
+    sensor_msgs::CameraInfo later = info;
+    later.header.stamp = stamp + ros::Duration(0.033);
+    later.width = 640;
+    later.height = 480;
+    info_pub.publish(later);
+    ros::WallDuration(0.2).sleep();
     depth_pub.publish(depth);
 
     sensor_msgs::Image fb;
@@ -626,9 +634,11 @@ TEST_F(Bag, DetectBagWritesOneJsonLinePerCloud) {
     EXPECT_EQ(rc3, 2);
     EXPECT_NE(text3.find("projsurf: error: " + bag_path_ + ": no topic '/nope'"), std::string::npos) << text3;
     EXPECT_FALSE(std::ifstream(out3).good());
+    // The bag's one cloud topic is taken without --topic (issue 14).
     const auto [rc4, text4] = runCommand("timeout 60 '" + cli + "' detect --bag '" + bag_path_ + "' --calib '" + calib + "'");
-    EXPECT_EQ(rc4, 2);
-    EXPECT_NE(text4.find("--topic"), std::string::npos) << text4;
+    EXPECT_EQ(rc4, 0) << text4;
+    EXPECT_EQ(std::count(text4.begin(), text4.end(), '\n'), 3) << text4;
+    EXPECT_NE(text4.find("\"topic\":\"/camera/points\""), std::string::npos) << text4;
 }
 }  // namespace
 

@@ -198,11 +198,14 @@ void run(const CalibrateOptions &o) {
     std::cout << fmt("  fit: residual rms %.2f mm, max %.2f mm, centroids span %.2f m along the axis", cal.axis.rms_m * 1000,
                      cal.axis.max_m * 1000, cal.axis.spread_m)
               << ": " << verdict << "\n";
-    if (verdict == "redo")
-        std::cerr << "projsurf: warning: the captures disagree by up to "
+    if (verdict == "redo") {
+        // Written (to look at), but not to be used: exit 3, so a script stops here.
+        std::cerr << "projsurf: error: " << o.out << ": written, but the captures disagree by up to "
                   << fmt("%.1f mm", cal.axis.max_m * 1000)
-                  << " from one line; check the robot did not turn the projector between captures and take them "
-                     "again\n";
+                  << " from one line (verdict redo); check the robot did not turn the projector between captures "
+                     "and take them again\n";
+        throw ExitStatus{kExitRedo};
+    }
 }
 
 }  // namespace
@@ -210,7 +213,11 @@ void run(const CalibrateOptions &o) {
 void addCalibrateCommand(CLI::App &app) {
     auto opts = std::make_shared<CalibrateOptions>();
     auto *sub = app.add_subcommand(
-        "calibrate", "find the projector's axis from captures of the calibration picture (--write-picture: write that picture)");
+        "calibrate",
+        "find the projector's axis from captures of the calibration picture (--write-picture: write that picture)");
+    sub->footer("Exit status: 0 when the calibration is written and its fit is good or acceptable; 3 when it is "
+                "written but the captures disagree (fit.verdict: redo; take them again before using it, see "
+                "docs/calibration.md); 2 for bad input (nothing written).");
     sub->add_option("--captures", opts->captures,
                     "folder with camera.yaml and capture_k_rgb.png / capture_k_depth.png, k = 0..N-1 (N >= 3); "
                     "required unless --write-picture");

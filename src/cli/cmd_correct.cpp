@@ -8,9 +8,10 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
-#include <unistd.h>
 
 #include "cli/commands.hpp"
+#include "projsurf/frontend/framebuffer_render.hpp"
+#include "projsurf/frontend/progress.hpp"
 #include "projsurf/core/keystone.hpp"
 #include "projsurf/core/keystone_warper.hpp"
 #include "projsurf/io/detection_json.hpp"
@@ -55,53 +56,23 @@ std::string keystoneJson(const Keystone &k, const std::string &method) {
     return j.dump(2) + "\n";
 }
 
-/// Progress. On a terminal: one stderr line redrawn in place, [#####.....] 50% 120/240
-/// frames, erased when the run fails (so the error is the one line left). In a log: a line
-/// every 10% on stdout (stderr holds only the failure's one line).
-class Progress {
-  public:
-    explicit Progress(long total) : total_(total), tty_(::isatty(2) != 0) {}
-    ~Progress() {
-        if (tty_ && drawn_ && !finished_) std::cerr << "\r" << std::string(60, ' ') << "\r" << std::flush;
-    }
-    void update(long done) {
-        if (!tty_) {
-            if (total_ <= 0) return;
-            const int pct = static_cast<int>(std::min<long>(100, 100 * done / total_));
-            if (pct / 10 == last_ / 10 && last_ >= 0) return;
-            std::cout << "correct: " << pct << "% (" << done << "/" << total_ << " frames)\n";
-            last_ = pct;
-            return;
-        }
-        drawn_ = true;
-        if (total_ <= 0) {
-            if (done % 25 == 0) std::cerr << "\rcorrect: " << done << " frames" << std::flush;
-            return;
-        }
-        const int pct = static_cast<int>(std::min<long>(100, 100 * done / total_));
-        if (pct == last_) return;
-        const int bar = pct / 4;
-        std::cerr << "\rcorrect: [" << std::string(bar, '#') << std::string(25 - bar, '.') << "] " << pct << "% " << done
-                  << "/" << total_ << " frames" << std::flush;
-        last_ = pct;
-    }
-    void finish(long done) {
-        finished_ = true;
-        if (tty_) std::cerr << "\rcorrect: " << done << " frames done" << std::string(40, ' ') << "\n";
-    }
-
-  private:
-    long total_;
-    bool tty_;
-    bool drawn_ = false, finished_ = false;
-    int last_ = -1;
-};
-
-Keystone keystoneFor(const Projector &projector, const DetectionFile &det, cv::Size picture,
-                     const std::string &detection_path) {
-    const KeystoneResult r = computeKeystone(projector, det.rectangle, picture);
+/// The keystone of a picture of this size in the detected rectangle; the detection file is
+/// named when the picture cannot be shown there.
+frontend::FramebufferRender keystoneFor(const Projector &projector, const DetectionFile &det, cv::Size picture,
+                                        const std::string &detection_path) {
+    frontend::FramebufferRender r = frontend::keystoneFor(projector, det.rectangle, picture, kKeystoneTolerancePx);
     if (!r.keystone) throw InputError(detection_path, r.problem);
-    return *r.keystone;
+    return r;
+}
+
+/// " (letterboxed: ...)" when the picture leaves bars of the rectangle dark.
+std::string letterboxNote(const frontend::FramebufferRender &r, const DetectionFile &det) {
+    if (!r.letterboxed) return "";
+    char buf[200];
+    std::snprintf(buf, sizeof buf, " (letterboxed: the %dx%d picture fills %.2f x %.2f m of the %.2f x %.2f m rectangle)",
+                  r.keystone->picture.width, r.keystone->picture.height, r.keystone->shown.width,
+                  r.keystone->shown.height, det.rectangle.width, det.rectangle.height);
+    return buf;
 }
 
 void runVideo(const CorrectOptions &o, const std::string &input, const Projector &projector,
@@ -109,7 +80,8 @@ void runVideo(const CorrectOptions &o, const std::string &input, const Projector
     FrameSource source(input);
     cv::Mat frame;
     if (!source.read(frame)) throw InputError(input, "no frame could be read");
-    const Keystone k = keystoneFor(projector, det, frame.size(), o.detection);
+    const frontend::FramebufferRender render = keystoneFor(projector, det, frame.size(), o.detection);
+    const Keystone &k = *render.keystone;
     double fps = o.fps > 0 ? o.fps : source.fps();
     if (!(fps > 0 && fps < 1000)) fps = 25.0;  // image sequences carry no rate
 
@@ -119,7 +91,7 @@ void runVideo(const CorrectOptions &o, const std::string &input, const Projector
     const bool sequence_out = isFramePattern(o.out);
     cv::VideoWriter writer;
     if (!sequence_out) writer = openVideoOutput(outputs.reserve(o.out), o.out, fps, k.framebuffer);
-    Progress progress(source.count());
+    frontend::ProgressLine progress("correct", "frames", frontend::stderrIsTerminal());
     long n = 0;
     KeystoneWarper warper(k);  // one keystone for every frame: source positions worked out once
     cv::Mat fb;
@@ -131,14 +103,15 @@ void runVideo(const CorrectOptions &o, const std::string &input, const Projector
             if (static_cast<std::uint64_t>(n) >= limits::kMaxSequenceFrames)
                 throw InputError(input, "more than " + std::to_string(limits::kMaxSequenceFrames) + " frames");
             char name[4096];
-            std::snprintf(name, sizeof name, o.out.c_str(), static_cast<int>(n));
+            // A sequence keeps its numbers (frames/0001.png -> out/0001.png).
+            std::snprintf(name, sizeof name, o.out.c_str(), static_cast<int>(n + source.firstNumber()));
             outputs.addImage(name, fb);
         } else {
             QuietStderr quiet;
             writer.write(fb);
         }
         ++n;
-        progress.update(n);
+        progress.update(n, source.count());
     } while (source.read(frame));
     if (!sequence_out) {
         QuietStderr quiet;
@@ -147,7 +120,7 @@ void runVideo(const CorrectOptions &o, const std::string &input, const Projector
     if (!o.json.empty()) outputs.addFile(o.json, keystoneJson(k, "eq7"));
     outputs.commit();
     progress.finish(n);
-    std::cout << "projsurf correct: " << n << " frames -> " << o.out << "\n";
+    std::cout << "projsurf correct: " << n << " frames -> " << o.out << letterboxNote(render, det) << "\n";
 }
 
 void run(const CorrectOptions &o) {
@@ -175,13 +148,17 @@ void run(const CorrectOptions &o) {
     requireImageWriter(o.out);
     if (!o.json.empty()) requireWritableFile(o.json);
     const cv::Mat picture = readImage(input, cv::IMREAD_COLOR);
-    const Keystone k = keystoneFor(projector, det, picture.size(), o.detection);
-    const cv::Mat fb = warpToFramebuffer(picture, k);
+    const frontend::FramebufferRender fb =
+        frontend::renderFramebuffer(projector, det.rectangle, picture, kKeystoneTolerancePx);
+    if (!fb.keystone) throw InputError(o.detection, fb.problem);
     // Both outputs, or neither.
     OutputGroup outputs;
-    outputs.addImage(o.out, fb);
-    if (!o.json.empty()) outputs.addFile(o.json, keystoneJson(k, "eq7"));
+    outputs.addImage(o.out, fb.image);
+    if (!o.json.empty()) outputs.addFile(o.json, keystoneJson(*fb.keystone, "eq7"));
     outputs.commit();
+    std::cout << "projsurf correct: " << picture.cols << "x" << picture.rows << " picture -> " << o.out << " ("
+              << fb.image.cols << "x" << fb.image.rows << " framebuffer)" << (o.json.empty() ? "" : " and " + o.json)
+              << letterboxNote(fb, det) << "\n";
 }
 
 }  // namespace

@@ -8,15 +8,21 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli/commands.hpp"
-#include "cli/parse.hpp"
 #include "projsurf/core/colour_registration.hpp"
 #include "projsurf/core/gravity.hpp"
+#include "projsurf/frontend/aspect.hpp"
+#include "projsurf/frontend/gravity_choice.hpp"
+#include "projsurf/frontend/minimum_size.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/overlay.hpp"
+#include "projsurf/frontend/depth_image_cloud.hpp"
+#include "projsurf/frontend/detection_summary.hpp"
+#include "projsurf/frontend/stamp_pairing.hpp"
 #include "projsurf/io/rosbag_clouds.hpp"
+#include "projsurf/io/rosbag_depth.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace projsurf::cli {
@@ -26,8 +32,9 @@ constexpr double kTiltWarningDeg = 5.0;  ///< deg, a floor this far from level m
 
 struct DetectOptions {
     std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity, method = "default",
-        hull = "concave", bag, topic, suitability;
+        hull = "concave", bag, topic, info_topic, suitability;
     DetectorConfig config;
+    double min_width = -1.0, min_area = -1.0;  ///< m, m^2; < 0: the method's default (frontend/minimum_size.hpp)
 };
 
 /// detectSurface, with a library failure on this cloud (an OpenCV assertion) reported as
@@ -43,15 +50,12 @@ Detection detectChecked(SurfaceDetector &detector, const Cloud &cloud, const Eig
 
 /// A level camera is assumed (no --gravity), but the floor says the camera is tilted.
 void warnIfTilted(const Cloud &cloud) {
-    const Eigen::Vector3d level = SurfaceDetector::levelGravity();
-    const auto floor = estimateGravityFromFloor(cloud, level);
-    if (!floor) return;
-    const double deg = std::acos(std::clamp(floor->gravity.dot(level), -1.0, 1.0)) * 180.0 / M_PI;
-    if (deg > kTiltWarningDeg)
+    const auto deg = frontend::floorTiltFromLevelDeg(cloud);
+    if (deg && *deg > kTiltWarningDeg)
         std::fprintf(stderr,
                      "projsurf: warning: the floor says the camera is tilted %.0f deg from level; give --gravity auto "
                      "(or the robot's gravity) so that the picture stands upright\n",
-                     deg);
+                     *deg);
 }
 
 /// Depths that no RGB-D camera reads (median beyond 10 m or nearer than 0.2 m): a wrong
@@ -99,30 +103,96 @@ void warnIfIgnored(const CLI::App &sub, Method method) {
                          method == Method::Paper ? "paper" : "default");
 }
 
-/// --bag: one detection per cloud of the topic, one JSON object per line (JSON Lines), each
-/// with a "bag" key (index, stamp, frame_id). With --json the file is written once all
-/// messages were read (never a partial file); without, lines go to stdout as they come.
-void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &projector, const Eigen::Vector3d &base_gravity,
-            bool auto_gravity) {
+/// The topic --bag reads: --topic, else the bag's one usable topic (a PointCloud2, or a
+/// sensor_msgs/Image whose name says depth), else an error that lists them.
+BagConnection bagTopic(const DetectOptions &o) {
+    const std::vector<BagConnection> topics = bagTopics(o.bag);
+    std::vector<BagConnection> usable;
+    for (const BagConnection &c : topics) {
+        if (!o.topic.empty() && c.topic == o.topic) return c;
+        if (c.type == "sensor_msgs/PointCloud2" || (c.type == kImageType && c.topic.find("depth") != std::string::npos))
+            usable.push_back(c);
+    }
+    std::string list;
+    for (const BagConnection &c : usable) list += (list.empty() ? "" : ", ") + c.topic + " (" + c.type + ")";
+    if (!o.topic.empty())
+        throw InputError(o.bag, "no topic '" + o.topic + "' in the bag (usable topics: " + (list.empty() ? "none" : list) + ")");
+    if (usable.size() == 1) return usable.front();
+    if (usable.empty())
+        throw InputError(o.bag, "has no sensor_msgs/PointCloud2 topic and no depth sensor_msgs/Image topic");
+    throw InputError(o.bag, "has " + std::to_string(usable.size()) + " usable topics, give one with --topic: " + list);
+}
+
+/// The camera_info topic of a depth topic: --camera-info-topic, else camera_info beside it
+/// (/camera/depth/image_rect -> /camera/depth/camera_info), else the bag's only CameraInfo topic.
+std::string cameraInfoTopic(const DetectOptions &o, const std::string &depth_topic) {
+    if (!o.info_topic.empty()) return o.info_topic;
+    const std::string beside = depth_topic.substr(0, depth_topic.find_last_of('/') + 1) + "camera_info";
+    std::vector<std::string> infos;
+    for (const BagConnection &c : bagTopics(o.bag)) {
+        if (c.type != kCameraInfoType) continue;
+        if (c.topic == beside) return beside;
+        infos.push_back(c.topic);
+    }
+    if (infos.size() == 1) return infos.front();
+    throw InputError(o.bag, "no camera_info for " + depth_topic + " (looked for " + beside + "; give --camera-info-topic)");
+}
+
+/// --bag: one detection per cloud (or depth image) of the topic, one JSON object per line
+/// (JSON Lines), each with a "bag" key (index, stamp, frame_id, topic). With --json the file
+/// is written once all messages were read (never a partial file); without, lines go to
+/// stdout as they come. A depth image goes with the camera_info of its stamp, as in the node.
+void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &projector,
+            const frontend::GravityChoice &gravity, const frontend::MinimumSize &minimum) {
+    const BagConnection topic = bagTopic(o);
     std::string lines;
     std::size_t found = 0;
     SurfaceDetector detector(projector, cfg);  // one for the whole bag: its buffers are reused
-    const std::size_t n = forEachBagCloud(o.bag, o.topic, [&](const Cloud &cloud, const BagCloudInfo &info) {
-        Eigen::Vector3d gravity = base_gravity;
-        if (auto_gravity)
-            if (const auto g = estimateGravityFromFloor(cloud, gravity)) gravity = g->gravity;
-        const Detection det = detectChecked(detector, cloud, gravity, o.bag + ":" + o.topic + "#" + std::to_string(info.index));
+    auto detectOne = [&](const Cloud &cloud, const BagCloudInfo &info) {
+        const Eigen::Vector3d down = frontend::resolveGravity(gravity, cloud).gravity;
+        Detection det = detectChecked(detector, cloud, down, o.bag + ":" + topic.topic + "#" + std::to_string(info.index));
+        frontend::enforceMinimumSize(det, minimum, "--min-width", "--min-area");
         nlohmann::json j = detectionToJson(det, cfg);
-        j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", o.topic}};
+        j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", topic.topic}};
         found += det.found ? 1 : 0;
         if (o.json.empty()) std::cout << j.dump() << "\n" << std::flush;
         else lines += j.dump() + "\n";
-    });
+    };
+    std::size_t n = 0;
+    const char *what = "clouds";
+    if (topic.type == kImageType) {
+        what = "depth images";
+        const std::string info_topic = cameraInfoTopic(o, topic.topic);
+        const std::vector<CameraInfoMessage> all = readBagCameraInfos(o.bag, info_topic);
+        frontend::StampedBuffer<CameraInfoMessage> infos(all.size() + 1);
+        for (const CameraInfoMessage &c : all) infos.add(c.header.stamp(), c);
+        std::size_t unpaired = 0;
+        n = forEachBagDepthImage(o.bag, topic.topic, [&](const DepthImageMessage &m, const BagCloudInfo &info) {
+            const std::string source = o.bag + ":" + topic.topic + "#" + std::to_string(info.index);
+            const CameraInfoMessage *k = infos.exact(info.stamp);
+            double at = 0.0;
+            if (!k) {
+                k = infos.nearest(info.stamp, at);
+                ++unpaired;
+            }
+            if (!k) throw InputError(o.bag, "no camera_info on " + info_topic);
+            const CameraIntrinsics cam = frontend::pinholeCamera(source + " (camera_info)", static_cast<int>(k->width),
+                                                                 static_cast<int>(k->height), k->K[0], k->K[4], k->K[2],
+                                                                 k->K[5], 1000.0);  // 16UC1 is in mm (REP 118)
+            detectOne(frontend::depthImageToCloud(source, m.depth, cam), info);
+        });
+        if (unpaired > 0)
+            std::fprintf(stderr, "projsurf: warning: %s: %zu of %zu depth images had no camera_info of their stamp on %s; "
+                                 "the nearest was used\n",
+                         o.bag.c_str(), unpaired, n, info_topic.c_str());
+    } else {
+        n = forEachBagCloud(o.bag, topic.topic, detectOne);
+    }
     if (!o.json.empty()) {
         OutputGroup outputs;
         outputs.addFile(o.json, lines);
         outputs.commit();
-        std::printf("%zu clouds on %s: %zu with a surface, %zu without\n", n, o.topic.c_str(), found, n - found);
+        std::printf("%zu %s on %s: %zu with a surface, %zu without\n", n, what, topic.topic.c_str(), found, n - found);
     }
 }
 
@@ -130,10 +200,9 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     // Validate every input before any work, and before any output is written.
     if (!o.bag.empty()) {
         if (!o.cloud.empty() || !o.depth.empty()) throw InputError("arguments", "give only one of --cloud, --depth or --bag");
-        if (o.topic.empty()) throw InputError("arguments", "--bag needs --topic (a sensor_msgs/PointCloud2 topic)");
         if (!o.overlay.empty() || !o.rgb.empty()) throw InputError("arguments", "--overlay and --rgb are for one cloud, not --bag");
-    } else if (!o.topic.empty()) {
-        throw InputError("arguments", "--topic goes with --bag");
+    } else if (!o.topic.empty() || !o.info_topic.empty()) {
+        throw InputError("arguments", "--topic and --camera-info-topic go with --bag");
     } else if (o.cloud.empty() == o.depth.empty()) {
         throw InputError("arguments", "give exactly one of --cloud FILE, --depth FILE or --bag FILE");
     }
@@ -150,16 +219,21 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     else if (o.suitability == "prefer") cfg.suitability.mode = SuitabilityMode::Prefer;
     else throw InputError("--suitability", "expected 'off', 'avoid' or 'prefer', got '" + o.suitability + "'");
     warnIfIgnored(sub, cfg.method);
-    const bool auto_gravity = o.gravity == "auto";
-    Eigen::Vector3d gravity = SurfaceDetector::levelGravity();
-    if (!o.gravity.empty() && !auto_gravity) gravity = parseVector3("--gravity", o.gravity);
-    if (!o.aspect.empty()) cfg.aspect = parseAspect("--aspect", o.aspect);
+    const frontend::GravityChoice gravity_choice = frontend::parseGravityChoice("--gravity", o.gravity);
+    if (!o.aspect.empty()) cfg.aspect = frontend::parseAspect("--aspect", o.aspect);
     for (const auto &out : {o.json, o.overlay})
         if (!out.empty()) requireWritableFile(out);
     if (!o.overlay.empty()) requireImageWriter(o.overlay);
 
     const Projector projector = readCalibration(o.calib);
-    if (!o.bag.empty()) return runBag(o, cfg, projector, gravity, auto_gravity);
+    if (readCalibrationVerdict(o.calib) == "redo")
+        std::fprintf(stderr, "projsurf: warning: %s: its captures disagree (fit verdict redo); the picture may land "
+                             "off the detected area until you calibrate again\n",
+                     o.calib.c_str());
+    frontend::MinimumSize minimum = frontend::defaultMinimumSize(cfg.method);
+    if (o.min_width >= 0.0) minimum.width = o.min_width;
+    if (o.min_area >= 0.0) minimum.area = o.min_area;
+    if (!o.bag.empty()) return runBag(o, cfg, projector, gravity_choice, minimum);
     std::unique_ptr<CameraIntrinsics> camera;
     Cloud cloud;
     if (!o.cloud.empty()) {
@@ -180,16 +254,16 @@ void run(const DetectOptions &o, const CLI::App &sub) {
         std::fprintf(stderr, "projsurf: warning: --suitability %s needs registered colour (--rgb); the surface is judged by depth only\n",
                      o.suitability.c_str());
 
-    if (auto_gravity) {
-        // No IMU: take "down" from the floor when one is in view, else keep a level camera.
-        if (const auto g = estimateGravityFromFloor(cloud, gravity)) gravity = g->gravity;
-        else std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
-    } else if (o.gravity.empty()) {
+    const frontend::ResolvedGravity resolved = frontend::resolveGravity(gravity_choice, cloud);
+    const Eigen::Vector3d gravity = resolved.gravity;
+    if (gravity_choice.from_floor && !resolved.floor_found)
+        std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
+    else if (o.gravity.empty())
         warnIfTilted(cloud);
-    }
     if (!o.depth.empty()) warnIfImplausibleDepth(cloud, o.camera);
     SurfaceDetector detector(projector, cfg);
-    const Detection det = detectChecked(detector, cloud, gravity, o.cloud.empty() ? o.depth : o.cloud);
+    Detection det = detectChecked(detector, cloud, gravity, o.cloud.empty() ? o.depth : o.cloud);
+    frontend::enforceMinimumSize(det, minimum, "--min-width", "--min-area");
     const nlohmann::json j = detectionToJson(det, cfg);
     // Both outputs, or neither: written beside their targets, renamed once both are there.
     OutputGroup outputs;
@@ -198,11 +272,8 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     outputs.commit();
     if (o.json.empty()) {
         std::cout << j.dump(2) << "\n";
-    } else if (det.found) {
-        std::printf("found: %.2f x %.2f m (%.2f m^2) on a plane %.2f m away at %.1f deg; %.1f ms\n", det.rectangle.width,
-                    det.rectangle.height, det.rectangle.area(), det.plane.d, det.orientation_deg, det.timing_ms.at("total"));
     } else {
-        std::printf("not found: %s\n", det.reason.c_str());
+        std::printf("%s\n", frontend::detectionSummary(det).c_str());
     }
 }
 
@@ -214,8 +285,12 @@ void addDetectCommand(CLI::App &app) {
     sub->add_option("--cloud", o->cloud, "Point cloud (PCD or PLY, camera optical frame, metres)");
     sub->add_option("--depth", o->depth, "16-bit depth PNG (0 = no reading); needs --camera");
     sub->add_option("--camera", o->camera, "Camera intrinsics YAML for --depth");
-    sub->add_option("--bag", o->bag, "ROS 1 bag: detect on every cloud of --topic, one JSON line per message");
-    sub->add_option("--topic", o->topic, "sensor_msgs/PointCloud2 topic in --bag");
+    sub->add_option("--bag", o->bag, "ROS 1 bag: detect on every cloud (or depth image) of --topic, one JSON line per message");
+    sub->add_option("--topic", o->topic,
+                    "--bag's sensor_msgs/PointCloud2 topic, or depth sensor_msgs/Image topic (16UC1 mm or 32FC1 m); "
+                    "optional when the bag has one such topic");
+    sub->add_option("--camera-info-topic", o->info_topic,
+                    "--bag's camera_info for a depth topic (default: camera_info beside it, or the bag's only one)");
     sub->add_option("--rgb", o->rgb, "Colour PNG registered to the cloud (checked): surface suitability and the overlay");
     sub->add_option("--suitability", o->suitability,
                     "With registered colour: off | avoid (default: no picture over dark, glaring, textured or saturated wall) | "
@@ -227,6 +302,13 @@ void addDetectCommand(CLI::App &app) {
     sub->add_option("--gravity", o->gravity, "Gravity in the camera frame gx,gy,gz (default 0,1,0), or 'auto' (from the floor)");
     sub->add_option("--method", o->method, "default | paper (the paper's steps, for reproduction)");
     sub->add_option("--hull", o->hull, "paper method: concave | convex hull of the plane");
+    sub->add_option("--min-width", o->min_width,
+                    "Narrowest picture worth showing, m (default 0.20: text stays readable at 2 m; 0 with --method "
+                    "paper); below it: found false with the reason")
+        ->check(CLI::Range(0.0, 100.0));
+    sub->add_option("--min-area", o->min_area,
+                    "Smallest picture worth showing, m^2 (default 0.02; 0 with --method paper)")
+        ->check(CLI::Range(0.0, 10000.0));
     auto &c = o->config;
     sub->add_option("--max-tilt", c.max_tilt, "Vertical tolerance, rad (paper 3.2.1)")->check(CLI::Range(0.0, 1.5));
     sub->add_option("--seed", c.seed, "RANSAC random seed");

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "projsurf/frontend/progress.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/eval/labelled_eval.hpp"
 #include "projsurf/eval/real_gallery.hpp"
@@ -32,7 +33,7 @@ struct EvalOptions {
     int rounds = 10;       // noise seeds per pose (paper: 10 detection rounds per pose)
     bool quick = false;    // 2 rounds, 2 m poses only (tests, CI)
     unsigned seed = 1;
-    std::string real_dir = "../shared/data/real";  // relative to the repository root
+    std::string real_dir = "../shared/data/real";  // relative to the working directory
     bool real_dir_given = false;
     std::string labels_dir = "labels/real";  // label files of the real frames, relative to the repository root
     bool labels_dir_given = false;
@@ -49,20 +50,9 @@ double loadAverage() {
     return load;
 }
 
-/// "\r[#####.....] 42% closet 2.5 m -16.62 deg" on stderr.
-void progressBar(int done, int total, const std::string &what) {
-    const int width = 30;
-    const double f = total > 0 ? static_cast<double>(done) / total : 1.0;
-    const int filled = static_cast<int>(f * width + 1e-9);
-    std::string bar(filled, '#');
-    bar += std::string(width - filled, '.');
-    std::fprintf(stderr, "\r[%s] %3d%% %-44.44s", bar.c_str(), static_cast<int>(100.0 * f), what.c_str());
-    std::fflush(stderr);
-}
-
-/// The default real-frame folder: ../shared/data/real from the working directory (the
-/// repository root), else from the repository that holds the binary (build/projsurf).
-std::string defaultRealDir(const std::string &relative) {
+/// The default label folder: labels/real from the working directory (the repository root),
+/// else from the repository that holds the binary (build/projsurf).
+std::string defaultLabelsDir(const std::string &relative) {
     std::error_code ec;
     if (fs::is_directory(relative, ec)) return relative;
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
@@ -84,15 +74,26 @@ void run(const EvalOptions &o, const std::string &command) {
     if (o.labels_dir_given && !o.labels_dir.empty() && !fs::is_directory(o.labels_dir, ec))
         throw InputError(o.labels_dir, "is not a directory (--labels)");
     // Bad label files are reported before the long simulation runs.
-    const std::string labels_dir = o.labels_dir_given ? o.labels_dir : defaultRealDir(o.labels_dir);
+    const std::string labels_dir = o.labels_dir_given ? o.labels_dir : defaultLabelsDir(o.labels_dir);
     const std::vector<std::string> labels = labels_dir.empty() ? std::vector<std::string>{} : listLabelFiles(labels_dir);
     std::vector<std::string> label_frames;
     for (const std::string &l : labels) label_frames.push_back(readRealLabel(l).frame);
 
+    // The default real-frame folder is taken from the working directory, and said (before the
+    // long simulation) when it is not there.
+    if (!o.real_dir_given && !fs::is_directory(o.real_dir, ec))
+        std::fprintf(stderr, "projsurf: note: %s: no such folder (from %s); the report has no real frames (--real-dir)\n",
+                     o.real_dir.c_str(), fs::current_path(ec).string().c_str());
+
     const int rounds = o.quick ? std::min(o.rounds, 2) : o.rounds;
     const sim::EvalPlan plan = sim::paperEvalPlan(rounds, o.quick, o.seed);
     const double load_before = loadAverage();
-    const sim::Progress progress = o.no_progress ? sim::Progress() : sim::Progress(progressBar);
+    // Drawn on stderr unless --no-progress (a log, too: eval's runs are long).
+    std::unique_ptr<frontend::ProgressLine> bar;
+    if (!o.no_progress) bar = std::make_unique<frontend::ProgressLine>("eval", "runs", true);
+    const sim::Progress progress = !bar ? sim::Progress() : sim::Progress([&bar](int done, int total, const std::string &what) {
+        bar->update(done, total, what);
+    });
     const sim::EvalResults results = sim::runEval(plan, progress);
     // The realistic suite (realistic sensors and scenes, issue 11), the default method.
     sim::RealisticSuiteOptions ropt = o.quick ? sim::quickRealisticSuite() : sim::RealisticSuiteOptions{};
@@ -112,14 +113,14 @@ void run(const EvalOptions &o, const std::string &command) {
     info.quick = o.quick;
     info.realistic_markdown = sim::realisticSuiteMarkdown(realistic);
     const auto t0 = std::chrono::steady_clock::now();
-    const std::string real_dir = o.real_dir_given ? o.real_dir : defaultRealDir(o.real_dir);
+    const std::string &real_dir = o.real_dir;
     const std::vector<std::string> frames = real_dir.empty() ? std::vector<std::string>{} : listFrameFolders(real_dir);
     for (std::size_t i = 0; i < frames.size(); ++i) {
         if (progress) progress(static_cast<int>(i), static_cast<int>(frames.size()), "real frame " + fs::path(frames[i]).filename().string());
         gallery.push_back(detectRealFrame(frames[i], sim::exampleProjector(), DetectorConfig{}));
     }
     if (progress && !frames.empty()) progress(static_cast<int>(frames.size()), static_cast<int>(frames.size()), "real frames");
-    if (progress) std::fprintf(stderr, "\n");
+    if (bar) bar->endLine();
     info.real_dir = frames.empty() ? "" : real_dir;
 
     // Labelled real frames: each label's projector and gravity, scored against the label.
@@ -132,7 +133,7 @@ void run(const EvalOptions &o, const std::string &command) {
     }
     if (progress && !labelled.empty()) {
         progress(static_cast<int>(labels.size()), static_cast<int>(labels.size()), "labelled frames");
-        std::fprintf(stderr, "\n");
+        bar->endLine();
     }
     if (!labelled.empty()) {
         info.labelled = &labelled;
@@ -171,7 +172,7 @@ void addEvalCommand(CLI::App &app) {
     sub->add_option("--seed", o->seed, "Base seed (default 1)");
     auto *real = sub->add_option("--real-dir", o->real_dir,
                                  "Folder of real frames (sub-folders with depth.png + camera.yaml); default "
-                                 "../shared/data/real, skipped when missing; '' to skip");
+                                 "../shared/data/real of the working directory (said when missing); '' to skip");
     auto *labels = sub->add_option("--labels", o->labels_dir,
                                    "Folder of real-frame label files (<frame>.yaml); default labels/real of the "
                                    "repository, skipped when missing; '' to skip");

@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "cli/commands.hpp"
+#include "projsurf/frontend/aspect.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -48,17 +49,6 @@ struct SimulateOptions {
 };
 
 constexpr const char *kIndependent = "kinect1-independent";
-
-double parseAspectText(const std::string &text) {
-    std::stringstream ss(text);
-    double w = 0, h = 1;
-    char colon = 0;
-    bool ok = static_cast<bool>(ss >> w);
-    if (ok && !(ss >> std::ws).eof()) ok = (ss >> colon >> h) && colon == ':' && (ss >> std::ws).eof();
-    if (!ok || !(w > 0) || !(h > 0) || !std::isfinite(w / h))
-        throw InputError("--aspect", "expected W:H with positive numbers, got '" + text + "'");
-    return w / h;
-}
 
 sim::Scenario buildScenario(const std::string &name, double distance, double angle_deg, double roll_deg,
                             double pitch_deg) {
@@ -99,7 +89,7 @@ void run(const SimulateOptions &o) {
     if (!std::isfinite(o.pitch_deg) || std::abs(o.pitch_deg) > 30.0)
         throw InputError("--pitch-deg", "must be within +-30 degrees");
     const Projector projector = o.calib.empty() ? sim::exampleProjector() : readCalibration(o.calib);
-    const double aspect = o.aspect.empty() ? projector.aspect() : parseAspectText(o.aspect);
+    const double aspect = o.aspect.empty() ? projector.aspect() : frontend::parseAspect("--aspect", o.aspect);
     std::optional<sim::Projection> projection;
     if (!o.picture.empty()) {
         cv::Mat picture = readImage(o.picture, cv::IMREAD_COLOR);

@@ -5,6 +5,13 @@
 
 namespace projsurf::cli {
 
+/// A command that finished and said why on stderr, but whose result must not be used as it
+/// is: main exits with `code` (calibrate: 3 when the fit's verdict is redo).
+struct ExitStatus {
+    int code;
+};
+constexpr int kExitRedo = 3;  ///< calibrate: written, but the captures disagree (verdict redo)
+
 void addDetectCommand(CLI::App &app);     // cmd_detect.cpp
 void addCalibrateCommand(CLI::App &app);  // cmd_calibrate.cpp
 void addCorrectCommand(CLI::App &app);    // cmd_correct.cpp
@@ -12,5 +19,6 @@ void addShowCommand(CLI::App &app);       // cmd_show.cpp
 void addSimulateCommand(CLI::App &app);   // cmd_simulate.cpp
 void addDemoCommand(CLI::App &app);       // cmd_demo.cpp
 void addEvalCommand(CLI::App &app);       // cmd_eval.cpp
+void addBagCommand(CLI::App &app);        // cmd_bag.cpp
 
 }  // namespace projsurf::cli

@@ -50,12 +50,15 @@ int main(int argc, char **argv) {
     projsurf::cli::addSimulateCommand(app);
     projsurf::cli::addDemoCommand(app);
     projsurf::cli::addEvalCommand(app);
+    projsurf::cli::addBagCommand(app);
 
     std::vector<std::string> args = glueNegativeValues(argc, argv);
     std::vector<char *> cargs;
     for (auto &a : args) cargs.push_back(a.data());
     try {
         app.parse(static_cast<int>(cargs.size()), cargs.data());
+    } catch (const projsurf::cli::ExitStatus &e) {
+        return e.code;
     } catch (const CLI::CallForHelp &e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp &e) {

@@ -48,12 +48,16 @@ struct KeystoneResult {
     std::string problem;  ///< why there is none (empty when there is)
 };
 
+/// px: how far a rectangle may leave the framebuffer and still be shown (its edge clipped) by
+/// default: half a pixel, the rounding of a corner that lies on the edge.
+constexpr double kKeystoneTolerancePx = 0.5;
+
 /// Eq. (7) pixels of the letterboxed rectangle and the picture -> framebuffer homography
 /// (OpenCV, four exact correspondences: the picture's outer corners (-0.5,-0.5), (w-0.5,-0.5),
 /// (w-0.5,h-0.5), (-0.5,h-0.5) to those pixels). Refuses (problem set) when a corner is behind
 /// the projector or the rectangle leaves the framebuffer by more than `tolerance_px`.
 KeystoneResult computeKeystone(const Projector &projector, const Rectangle &rect, cv::Size picture,
-                               double tolerance_px = 0.5);
+                               double tolerance_px = kKeystoneTolerancePx);
 
 /// The framebuffer: black, of the keystone's framebuffer size, with `picture` (same size as the
 /// keystone's picture, any 8-bit type) warped in (bilinear; pictures shrunk below half size

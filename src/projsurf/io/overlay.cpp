@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <algorithm>
+#include <limits>
 #include <cstdint>
 #include <cstdio>
 #include <tuple>
@@ -89,30 +90,16 @@ CameraIntrinsics estimateIntrinsics(const Cloud &cloud) {
     CameraIntrinsics cam;
     cam.fx = 0.0;
     if (!cloud.organized()) return cam;
-    Eigen::Matrix2d ax = Eigen::Matrix2d::Zero(), ay = Eigen::Matrix2d::Zero();
-    Eigen::Vector2d bx = Eigen::Vector2d::Zero(), by = Eigen::Vector2d::Zero();
-    int used = 0;
+    // core's pinhole fit on every 4th pixel of every 4th row; any residual (a view, not a measurement).
+    std::vector<int> grid;
     for (int v = 0; v < cloud.height; v += 4)
-        for (int u = 0; u < cloud.width; u += 4) {
-            const Point &p = cloud.points[static_cast<std::size_t>(v) * cloud.width + u];
-            if (!isFinite(p) || p.z() <= 0) continue;
-            const Eigen::Vector2d rx(p.x() / p.z(), 1.0), ry(p.y() / p.z(), 1.0);
-            ax += rx * rx.transpose();
-            bx += rx * u;
-            ay += ry * ry.transpose();
-            by += ry * v;
-            ++used;
-        }
+        for (int u = 0; u < cloud.width; u += 4) grid.push_back(v * cloud.width + u);
+    int used = 0;
+    for (int i : grid) used += isFinite(cloud.points[i]) && cloud.points[i].z() > 0 ? 1 : 0;
     if (used < 50) return cam;
-    const Eigen::Vector2d sx = ax.ldlt().solve(bx), sy = ay.ldlt().solve(by);
-    cam.width = cloud.width;
-    cam.height = cloud.height;
-    cam.fx = sx(0);
-    cam.cx = sx(1);
-    cam.fy = sy(0);
-    cam.cy = sy(1);
-    if (!(cam.fx > 0 && cam.fy > 0 && std::isfinite(cam.cx) && std::isfinite(cam.cy))) cam.fx = 0.0;
-    return cam;
+    const auto fit = fitIntrinsics(cloud, grid, std::numeric_limits<double>::infinity());
+    if (!fit || !(fit->fx > 0 && fit->fy > 0 && std::isfinite(fit->cx) && std::isfinite(fit->cy))) return cam;
+    return *fit;
 }
 
 cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorConfig &config,

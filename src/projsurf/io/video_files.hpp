@@ -37,6 +37,8 @@ class FrameSource {
     long count() const { return count_; }
     /// The name of the frame last read (the file of a sequence, else the video).
     const std::string &current() const { return current_; }
+    /// The number of a sequence's first frame (frames/0001.png... -> 1); 0 for a video.
+    long firstNumber() const { return first_; }
 
   private:
     std::string path_, current_;

@@ -48,6 +48,15 @@ std::vector<double> numbers(const std::string &path, const YAML::Node &node, con
 
 }  // namespace
 
+std::string readCalibrationVerdict(const std::string &path) {
+    const YAML::Node root = loadYaml(path);
+    const YAML::Node c = root["calibration"];
+    if (!c || !c.IsMap() || !c["fit"] || !c["fit"].IsMap()) return "";
+    const YAML::Node v = c["fit"]["verdict"];
+    if (!v || !v.IsScalar()) return "";
+    return v.as<std::string>();
+}
+
 Projector readCalibration(const std::string &path) {
     const YAML::Node root = loadYaml(path);
     const YAML::Node p = child(path, root, "projector", "");

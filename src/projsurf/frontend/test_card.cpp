@@ -1,10 +1,9 @@
-#include "framebuffer.hpp"
+#include "projsurf/frontend/test_card.hpp"
 
+#include <algorithm>
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/core/keystone.hpp"
-
-namespace projsurf::ros_node {
+namespace projsurf::frontend {
 
 cv::Mat testCard(cv::Size size) {
     cv::Mat card(size, CV_8UC3, cv::Scalar(60, 40, 20));
@@ -23,21 +22,4 @@ cv::Mat testCard(cv::Size size) {
     return card;
 }
 
-Framebuffer renderFramebuffer(const Projector &projector, const Rectangle &rect, const cv::Mat &picture,
-                              double tolerance_px) {
-    Framebuffer out;
-    const KeystoneResult k = computeKeystone(projector, rect, picture.size(), tolerance_px);
-    if (!k.keystone) {
-        out.problem = k.problem;
-        return out;
-    }
-    out.image = warpToFramebuffer(picture, *k.keystone);
-    if (out.image.type() != CV_8UC3) {
-        cv::Mat bgr;
-        cv::cvtColor(out.image, bgr, out.image.channels() == 1 ? cv::COLOR_GRAY2BGR : cv::COLOR_BGRA2BGR);
-        out.image = bgr;
-    }
-    return out;
-}
-
-}  // namespace projsurf::ros_node
+}  // namespace projsurf::frontend

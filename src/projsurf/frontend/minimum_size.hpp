@@ -1,0 +1,32 @@
+#pragma once
+// The smallest picture worth showing: a detection whose rectangle is narrower or smaller than
+// this is reported as not found, with the reason, so a robot does not project a stamp-sized
+// picture onto the side of a bin. Applied by the front ends (detect, the node, Python) to what
+// the detector returns; the evaluation scores the detector itself.
+#include <string>
+
+#include "projsurf/pipeline/detection.hpp"
+#include "projsurf/pipeline/detector_config.hpp"
+
+namespace projsurf::frontend {
+
+struct MinimumSize {
+    /// m. Text stays readable from about 1/120 of the viewing distance in letter height
+    /// (signage rule of thumb: 25 mm per 3 m); 8 such lines at 2 m need ~0.2 m of picture.
+    double width = 0.20;
+    /// m^2: 0.2 m wide at the 16:10 of a typical framebuffer (1280x800) is 0.025 m^2; a little
+    /// less, so a wider aspect (16:9, 0.0225 m^2) at the minimum width still passes.
+    double area = 0.02;
+};
+
+/// The defaults for `method`: the above for the default method; none (0, 0) for the paper's
+/// steps, which reproduce the paper (section 3.2 has no minimum).
+MinimumSize defaultMinimumSize(Method method);
+
+/// A found detection below `minimum` becomes found = false with a reason that names the size
+/// and the option (`width_option`, `area_option`: how this front end spells them). Returns
+/// true when it did.
+bool enforceMinimumSize(Detection &det, const MinimumSize &minimum, const std::string &width_option,
+                        const std::string &area_option);
+
+}  // namespace projsurf::frontend
