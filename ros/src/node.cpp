@@ -190,7 +190,7 @@ ProjsurfNode::Outcome ProjsurfNode::detectOnValidCloud() {
     if (!tf_problem.empty()) ROS_WARN("projsurf_node: %s", tf_problem.c_str());
     const Detection det = detector_.detect(cloud_, gravity);
     std_msgs::String json;
-    json.data = detectionToJson(det, detector_.config()).dump();
+    json.data = detectionToJson(det, detector_.config(), &params_.projector).dump();
     result_pub_.publish(json);
     markers_pub_.publish(toMarkers(det, nullptr, cloud_header_, params_.marker_ns));
     if (!det.found) {
@@ -249,7 +249,7 @@ void ProjsurfNode::runContinuous() {
     if (fb.image.empty()) fb.image = cv::Mat(params_.projector.height, params_.projector.width, CV_8UC3, cv::Scalar::all(0));
     const double frame_ms = (ros::WallTime::now() - start).toSec() * 1e3;
 
-    nlohmann::json j = detectionToJson(det, detector_.config());
+    nlohmann::json j = detectionToJson(det, detector_.config(), &params_.projector);
     j["continuous"] = {{"event", toString(o.event)},
                        {"showing", o.has_target && fb.problem.empty()},
                        {"stamp", header.stamp.toSec()},

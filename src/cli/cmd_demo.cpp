@@ -76,8 +76,9 @@ void run(const DemoCliOptions &o) {
     writeImageAtomic((out / "audience.png").string(), audience);
     writeImageAtomic((out / "camera_rgb.png").string(), r.frame.rgb);
     writeImageAtomic((out / "picture.png").string(), r.picture);
-    writeCalibration((out / "calib.yaml").string(), r.calibration.ok ? r.calibration.projector : r.true_projector);
-    writeFileAtomic((out / "detection.json").string(), detectionToJson(r.detection, r.config).dump(2) + "\n");
+    const Projector &believed = r.calibration.ok ? r.calibration.projector : r.true_projector;
+    writeCalibration((out / "calib.yaml").string(), believed);
+    writeFileAtomic((out / "detection.json").string(), detectionToJson(r.detection, r.config, &believed).dump(2) + "\n");
 
     // Summary.
     std::printf("projsurf demo: scenario '%s', wall %.2f m away at %.2f deg, seed %u\n", r.scenario.name.c_str(),

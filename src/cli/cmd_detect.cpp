@@ -91,7 +91,7 @@ void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &
         if (auto_gravity)
             if (const auto g = estimateGravityFromFloor(cloud, gravity)) gravity = g->gravity;
         const Detection det = detectChecked(detector, cloud, gravity, o.bag + ":" + o.topic + "#" + std::to_string(info.index));
-        nlohmann::json j = detectionToJson(det, cfg);
+        nlohmann::json j = detectionToJson(det, cfg, &projector);
         j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", o.topic}};
         found += det.found ? 1 : 0;
         if (o.json.empty()) std::cout << j.dump() << "\n" << std::flush;
@@ -161,7 +161,7 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     if (!o.depth.empty()) warnIfImplausibleDepth(cloud, o.camera);
     SurfaceDetector detector(projector, cfg);
     const Detection det = detectChecked(detector, cloud, gravity, o.cloud.empty() ? o.depth : o.cloud);
-    const nlohmann::json j = detectionToJson(det, cfg);
+    const nlohmann::json j = detectionToJson(det, cfg, &projector);
     // Both outputs, or neither: written beside their targets, renamed once both are there.
     OutputGroup outputs;
     if (!o.json.empty()) outputs.addFile(o.json, j.dump(2) + "\n");
