@@ -13,7 +13,8 @@
 // grid over the framebuffer (cells about one depth-camera pixel across), and only connected
 // groups survive (a 3x3 closing then a 3x3 opening of the grid: an isolated reading, or two,
 // never fill a 3x3 block; an arm a few cm wide fills many). Each surviving cell is then
-// dilated by the margin at its nearest point's depth, which the grid's cell size rounds up.
+// dilated by the margin at its nearest point's depth (a chamfer distance with offsets, so
+// every cell gets its own radius in one linear pass), rounded up to whole cells.
 #include <array>
 #include <vector>
 
@@ -64,20 +65,14 @@ private:
     BlankingOptions options_;
     int cell_ = 4;       ///< framebuffer px per grid cell
     int pad_ = 0;        ///< cells of grid beyond each framebuffer edge
+    double off_axis_ = 1.0;  ///< 1 / cos of the widest angle from the axis the grid covers
     int grid_w_ = 0, grid_h_ = 0;
-    cv::Mat hit_, kept_, nearest_, bucket_, grown_, scratch_, tmp_, full_, mask_;
-    std::vector<cv::Mat> kernels_;  ///< ellipse of radius 1.25^b cells, per bucket b
+    cv::Mat hit_, kept_, nearest_, near3_, scratch_, distance_, grown_, mask_;
+    std::vector<int> histogram_;
+    std::vector<uchar> row_;
     int blanked_ = 0;
     int candidates_ = 0;
     double noise_k_ = 0.0;
-    struct Candidate {
-        int cell;        ///< grid index
-        float depth;     ///< m along the projector axis
-        float gap;       ///< m from the plane along the ray
-        float camera_z;  ///< m, the camera's depth (the noise model's)
-    };
-    std::vector<Candidate> found_;
-    std::vector<int> histogram_;
 };
 
 /// Sets the framebuffer's pixels to black where `mask` (CV_8U, same size) is non-zero.
