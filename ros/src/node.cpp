@@ -50,6 +50,7 @@ ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams p
     framebuffer_pub_ = pnh_.advertise<sensor_msgs::Image>("framebuffer", 1, true);
     markers_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
     detect_srv_ = pnh_.advertiseService("detect", &ProjsurfNode::onDetect, this);
+    blanking_ = std::make_unique<NodeBlanking>(pnh_, params_.projector, params_.continuous && params_.blank);
     // Queue of 1: in continuous mode a slow frame drops the ones behind it, never lags.
     cloud_sub_ = nh_.subscribe("points", 1, &ProjsurfNode::onCloud, this);
     depth_sub_ = nh_.subscribe("depth/image_rect", 1, &ProjsurfNode::onDepth, this);
@@ -203,6 +204,7 @@ ProjsurfNode::Outcome ProjsurfNode::detectOnValidCloud() {
     out.success = true;
     out.message = summary(det);
     rectangle_pub_.publish(toPolygon(det.rectangle, cloud_header_));
+    blanking_->publishFocus(det.rectangle);
     const std::string problem = publishFramebuffer(det.rectangle, cloud_header_);
     if (!problem.empty()) out.message += "; but the picture cannot be shown there: " + problem;
     ROS_INFO("projsurf_node: %s", out.message.c_str());
@@ -247,6 +249,7 @@ void ProjsurfNode::runContinuous() {
     Framebuffer fb;
     if (o.has_target) fb = renderFramebuffer(params_.projector, o.shown, picture_, params_.keystone_tolerance_px);
     if (fb.image.empty()) fb.image = cv::Mat(params_.projector.height, params_.projector.width, CV_8UC3, cv::Scalar::all(0));
+    blanking_->apply(fb.image, cloud_, o.has_target ? &o.shown : nullptr, header);
     const double frame_ms = (ros::WallTime::now() - start).toSec() * 1e3;
 
     nlohmann::json j = detectionToJson(det, detector_.config(), &params_.projector);
@@ -254,6 +257,9 @@ void ProjsurfNode::runContinuous() {
                        {"showing", o.has_target && fb.problem.empty()},
                        {"stamp", header.stamp.toSec()},
                        {"frame_ms", std::round(frame_ms * 1000.0) / 1000.0}};
+    if (blanking_->enabled())
+        j["continuous"]["blanking"] = {{"blanked_pixels", blanking_->blankedPixels()},
+                                       {"ms", std::round(blanking_->lastMs() * 1000.0) / 1000.0}};
     std_msgs::String json;
     json.data = j.dump();
     result_pub_.publish(json);

@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 
+#include "blanking.hpp"
 #include "continuous.hpp"
 #include "params.hpp"
 #include "projsurf/pipeline/detector.hpp"
@@ -73,6 +74,7 @@ private:
     sensor_msgs::CameraInfoConstPtr camera_info_;
     SurfaceDetector detector_;  ///< one for the stream: its buffers are reused frame to frame
     std::unique_ptr<ContinuousMode> continuous_;
+    std::unique_ptr<NodeBlanking> blanking_;  ///< ~blanked, ~focus_distance
     ros::WallTime last_file_write_;
     double rate_hz_ = 0.0;  ///< running estimate of the continuous-mode frame rate
     ros::WallTime last_frame_;

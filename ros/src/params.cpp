@@ -92,6 +92,7 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
     p.projector = readCalibration(p.calib);
     get(pnh, "image", p.image);
     get(pnh, "continuous", p.continuous);
+    get(pnh, "blank", p.blank);
 
     DetectorConfig &c = p.detector;
     if (pnh.hasParam("aspect")) {

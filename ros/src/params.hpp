@@ -16,6 +16,7 @@ struct NodeParams {
     std::string calib;        ///< ~calib: projector calibration YAML (required)
     std::string image;        ///< ~image: picture to show (optional; the `image` topic overrides it)
     bool continuous = false;  ///< ~continuous: detect on every cloud and keep the picture steady
+    bool blank = true;        ///< ~blank: continuous mode blacks out what stands in the beam (contract "Blanking")
     Projector projector;      ///< read from ~calib
     /// ~aspect, ~gravity, ~method, ~hull and the CLI's pipeline options: ~max_tilt, ~seed,
     /// ~voxel_leaf, ~ransac_distance, ~max_outliers, ~cell, ~max_planes, ~max_outlier_fraction

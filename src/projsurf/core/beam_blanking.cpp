@@ -56,12 +56,32 @@ void chamfer(cv::Mat &d) {
     }
 }
 
+/// Angle between neighbouring pixels of an organized cloud (rad), from two points half the
+/// image apart on one of a few rows; 0 when it cannot tell.
+double pixelAngle(const Cloud &cloud) {
+    if (!cloud.organized() || cloud.width < 8) return 0.0;
+    const int c1 = cloud.width / 4, c2 = 3 * cloud.width / 4;
+    for (const int row : {cloud.height / 2, cloud.height / 4, 3 * cloud.height / 4, cloud.height / 8}) {
+        const Point &a = cloud.points[static_cast<std::size_t>(row) * cloud.width + c1];
+        const Point &b = cloud.points[static_cast<std::size_t>(row) * cloud.width + c2];
+        if (!isFinite(a) || !isFinite(b) || a.norm() < 1e-3f || b.norm() < 1e-3f) continue;
+        const double cos_ab = std::clamp(static_cast<double>(a.normalized().dot(b.normalized())), -1.0, 1.0);
+        return std::acos(cos_ab) / (c2 - c1);
+    }
+    return 0.0;
+}
+
 }  // namespace
 
 BeamBlanker::BeamBlanker(const Projector &projector, const BlankingOptions &options)
     : projector_(projector), options_(options) {
+    configure(std::max(1, static_cast<int>(std::lround(options_.cell_angle * std::max(projector_.fx(), projector_.fy())))));
+    mask_ = cv::Mat::zeros(projector_.height, projector_.width, CV_8U);
+}
+
+void BeamBlanker::configure(int cell_px) {
     const double focal = std::max(projector_.fx(), projector_.fy());
-    cell_ = std::max(1, static_cast<int>(std::lround(options_.cell_angle * focal)));
+    cell_ = cell_px;
     // The widest angle from the axis: at the corners of the framebuffer, one margin further out.
     const double corner_x = 0.5 * projector_.width / projector_.fx(), corner_y = 0.5 * projector_.height / projector_.fy();
     off_axis_ = std::sqrt(1.0 + corner_x * corner_x + corner_y * corner_y);
@@ -70,13 +90,18 @@ BeamBlanker::BeamBlanker(const Projector &projector, const BlankingOptions &opti
     off_axis_ = std::sqrt(1.0 + off_axis_ * off_axis_);
     grid_w_ = (projector_.width + cell_ - 1) / cell_ + 2 * pad_;
     grid_h_ = (projector_.height + cell_ - 1) / cell_ + 2 * pad_;
-    mask_ = cv::Mat::zeros(projector_.height, projector_.width, CV_8U);
 }
 
 const cv::Mat &BeamBlanker::compute(const Cloud &cloud, const Plane &plane) {
     blanked_ = 0;
     candidates_ = 0;
     noise_k_ = 0.0;
+    {
+        const double focal = std::max(projector_.fx(), projector_.fy());
+        const double angle = std::max(options_.cell_angle, options_.cell_per_pixel * pixelAngle(cloud));
+        const int cell = std::max(1, static_cast<int>(std::lround(angle * focal)));
+        if (cell != cell_) configure(cell);
+    }
     const Eigen::Vector3f o = projector_.origin.cast<float>();
     const Eigen::Vector3f n = plane.normal.cast<float>();
     const float d = static_cast<float>(plane.d);

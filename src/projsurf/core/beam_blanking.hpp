@@ -29,9 +29,12 @@ namespace projsurf {
 struct BlankingOptions {
     double min_gap = 0.05;      ///< m, nearer the lens than the plane by more than this (contract)
     double ray_margin = 0.03;   ///< m, within this of the ray (contract)
-    /// rad, side of a grid cell seen from the lens: a little more than one pixel of a VGA
-    /// depth camera (Kinect v1 fx 525 px: 1.9 mrad), so a surface leaves no empty cells.
+    /// rad, side of a grid cell seen from the lens, at least: a little more than one pixel of
+    /// a VGA depth camera (Kinect v1 fx 525 px: 1.9 mrad), so a surface leaves no empty cells.
     double cell_angle = 0.0025;
+    /// Organized clouds: cells are at least this many of the cloud's own pixels across
+    /// (measured on the cloud: a 320x240 cloud gets cells twice as wide).
+    double cell_per_pixel = 1.3;
     double min_depth = 0.3;     ///< m along the projector axis: nearer points are the robot itself (RGB-D cameras read from ~0.3-0.5 m)
     bool filter_noise = true;   ///< keep connected groups only (false: every obstructing point counts)
     /// The gap must exceed this many sigmas of the wall noise measured on the cloud (0: the
@@ -61,6 +64,9 @@ public:
     const BlankingOptions &options() const { return options_; }
 
 private:
+    /// Grid geometry for cells of `cell_px` framebuffer pixels.
+    void configure(int cell_px);
+
     Projector projector_;
     BlankingOptions options_;
     int cell_ = 4;       ///< framebuffer px per grid cell
