@@ -101,3 +101,22 @@ TEST(CliBlanking, BadArgumentsAreOneClearLine) {
     }
     fs::remove_all(dir);
 }
+
+TEST(CliBlanking, DemoShowsAPersonWalkingInAndTheBlankedPicture) {
+    const fs::path dir = freshDir("people_demo_walk_in");
+    const auto r = cli("demo --out " + (dir / "demo").string() + " --seed 2", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "demo" / "walk_in.png"));
+    EXPECT_TRUE(fs::exists(dir / "demo" / "walk_in_compare.png"));
+    // Every walk-in frame: no lit pixel on the person, and the last one has them in the beam.
+    int frames = 0;
+    for (std::size_t at = r.out.find("walk-in frame"); at != std::string::npos; at = r.out.find("walk-in frame", at + 1)) {
+        const std::string line = r.out.substr(at, r.out.find('\n', at) - at);
+        EXPECT_NE(line.find("; 0 of "), std::string::npos) << line;
+        ++frames;
+    }
+    EXPECT_EQ(frames, 3) << r.out;
+    const cv::Mat compare = cv::imread((dir / "demo" / "walk_in_compare.png").string());
+    EXPECT_GT(compare.cols, compare.rows);
+    fs::remove_all(dir);
+}

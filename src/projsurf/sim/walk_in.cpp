@@ -1,6 +1,9 @@
 #include "projsurf/sim/walk_in.hpp"
 
+#include <chrono>
 #include <opencv2/imgproc.hpp>
+
+#include "projsurf/core/beam_blanking.hpp"
 
 namespace projsurf::sim {
 namespace {
@@ -92,6 +95,31 @@ BeamScore scoreBlanking(const Scene &scene, const Plane &wall, const Projector &
         }
     }
     return score;
+}
+
+std::vector<WalkInShot> walkInShots(const Scene &scene, const Plane &wall, const Projector &real,
+                                    const Projector &believed, const Plane &plane, const cv::Mat &framebuffer,
+                                    const PinholeView &viewer, const Lighting &light, double person_z, unsigned seed,
+                                    int frames) {
+    std::vector<WalkInShot> shots;
+    BeamBlanker blanker(believed);
+    const auto scenes = walkInScenes(scene, -1.1, -0.25, frames, person_z);
+    for (int k = 0; k < frames; ++k) {
+        WalkInShot shot;
+        shot.person_x = frames > 1 ? -1.1 + 0.85 * k / (frames - 1) : -1.1;
+        const RgbdFrame seen = renderFrame(scenes[k], SensorModel(), seed + 1000 + k);
+        const auto t0 = std::chrono::steady_clock::now();
+        const cv::Mat &mask = blanker.compute(seen.cloud, plane);
+        shot.mask_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+        cv::Mat blanked = framebuffer.clone();
+        applyBlanking(blanked, mask);
+        shot.blanked_pixels = blanker.blankedPixels();
+        shot.score = scoreBlanking(scenes[k], wall, real, framebuffer, blanked);
+        shot.view = renderView(scenes[k], viewer, Projection{real, blanked}, light);
+        shot.view_unblanked = renderView(scenes[k], viewer, Projection{real, framebuffer}, light);
+        shots.push_back(std::move(shot));
+    }
+    return shots;
 }
 
 }  // namespace projsurf::sim

@@ -6,6 +6,7 @@
 
 #include "projsurf/core/plane.hpp"
 #include "projsurf/core/projector.hpp"
+#include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scene.hpp"
 
 namespace projsurf::sim {
@@ -35,5 +36,24 @@ struct BeamScore {
 /// meet the person would have met the wall).
 BeamScore scoreBlanking(const Scene &scene, const Plane &wall, const Projector &projector, const cv::Mat &before,
                         const cv::Mat &after, double far_m = 0.10);
+
+/// One frame of the demo's walk-in: what an audience sees, with the framebuffer blanked for
+/// the frame's cloud (and, for comparison, without).
+struct WalkInShot {
+    double person_x = 0.0;   ///< m, camera frame
+    cv::Mat view;            ///< BGR, the blanked picture projected
+    cv::Mat view_unblanked;  ///< BGR, the same frame without blanking
+    int blanked_pixels = 0;
+    double mask_ms = 0.0;    ///< time of the mask
+    BeamScore score;         ///< through the true projector
+};
+
+/// A person walks in at depth `person_z` (m) in `frames` steps from x = -1.1 m to -0.25 m
+/// (camera frame) in front of `scene`; each frame is seen by `sensor`, blanked with the
+/// believed projector on `plane` (the detection's), and shown through the true projector.
+std::vector<WalkInShot> walkInShots(const Scene &scene, const Plane &wall, const Projector &real,
+                                    const Projector &believed, const Plane &plane, const cv::Mat &framebuffer,
+                                    const PinholeView &viewer, const Lighting &light, double person_z, unsigned seed,
+                                    int frames = 3);
 
 }  // namespace projsurf::sim
