@@ -240,7 +240,18 @@ const cv::Mat &BeamBlanker::compute(const Cloud &cloud, const Plane &plane) {
             std::memset(row_.data() + gx * cell_, g[gx], static_cast<std::size_t>(std::min(cell_, w - gx * cell_)));
         for (int y = gy * cell_; y < std::min(h, (gy + 1) * cell_); ++y) std::memcpy(mask_.ptr<uchar>(y), row_.data(), w);
     }
-    blanked_ = cv::countNonZero(mask_);
+    // Blanked pixels, counted on the grid: each cell covers cell_ x cell_ pixels (clipped at
+    // the framebuffer's right and bottom edges).
+    long blanked = 0;
+    for (int gy = 0; gy * cell_ < h; ++gy) {
+        const uchar *g = grown_.ptr<uchar>(gy + pad_) + pad_;
+        const int rows = std::min(cell_, h - gy * cell_);
+        long cols = 0;
+        for (int gx = 0; gx * cell_ < w; ++gx)
+            if (g[gx]) cols += std::min(cell_, w - gx * cell_);
+        blanked += cols * rows;
+    }
+    blanked_ = static_cast<int>(blanked);
     return mask_;
 }
 
