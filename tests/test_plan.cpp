@@ -61,7 +61,10 @@ TEST(Plan, LargestPictureAfterTheMoveIsRealised) {
         const char *scenario;
         double distance, angle;
     };
-    for (const Case c : {Case{"wall", 1.2, 0.0}, Case{"wall", 1.5, 35.0}, Case{"small_obstacles", 1.3, 10.0}}) {
+    for (const Case c : {Case{"wall", 1.0, 0.0}, Case{"wall", 1.2, 0.0}, Case{"wall", 1.5, 35.0}, Case{"wall", 2.0, 17.19},
+                         Case{"wall", 3.0, 30.0}, Case{"small_obstacles", 1.3, 10.0}, Case{"closet", 1.5, 0.0},
+                         Case{"big_obstacle", 1.5, 17.19}, Case{"corner", 1.5, 0.0}, Case{"desk", 1.5, 10.0},
+                         Case{"poster", 1.2, 20.0}}) {
         const Realised r = planAndMove(c.scenario, c.distance, c.angle, PlanOptions{});
         ASSERT_TRUE(r.plan.found) << c.scenario << ": " << r.plan.reason;
         const double predicted = r.plan.predicted.area();
@@ -72,7 +75,12 @@ TEST(Plan, LargestPictureAfterTheMoveIsRealised) {
                     r.before, predicted, r.after, 100.0 * r.after / predicted, r.after / std::max(r.before, 1e-9));
         EXPECT_LE(r.plan.translation.norm(), 2.0 + 1e-9);
         EXPECT_GE(r.after, 0.95 * predicted) << c.scenario;
-        EXPECT_GE(r.after, 1.5 * r.before) << c.scenario << ": a robot this close should gain";
+        // A robot this close can gain; at 3 m the depth camera's range (PlanOptions::max_distance) leaves less.
+        if (c.distance <= 2.0) {
+            EXPECT_GE(r.after, 1.5 * r.before) << c.scenario << ": a robot this close should gain";
+        } else {
+            EXPECT_GE(r.after, r.before) << c.scenario;
+        }
     }
 }
 

@@ -113,7 +113,11 @@ PlanResult planStand(const Cloud &cloud, const Projector &projector, const Detec
         cells = surface & footprintCells(raster, fp->uv);
         Eigen::Vector2d centre = Eigen::Vector2d::Zero();
         for (const auto &w : fp->uv) centre += 0.25 * w;
-        return largestFreeRectangle(cells, raster, frame, aspect, centre);
+        auto rect = largestFreeRectangle(cells, raster, frame, aspect, centre);
+        if (rect)
+            for (const auto &c : rect->corners)
+                if ((c - t).norm() > o.max_distance) return std::nullopt;
+        return rect;
     };
     const Eigen::Vector3d g = gravity.normalized();
     if (const auto r = evaluate(Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero())) out.today = *r;

@@ -9,8 +9,8 @@
 // (the one holding the largest picture seen) is planned on. Each candidate pose moves the real
 // projector; its footprint on that surface, intersected with the free cells, holds the
 // predicted rectangle. A pose is refused when the robot's disc, or the straight way there,
-// meets space the cloud shows as occupied (points off the floor), or the surface is nearer
-// than the robot's radius.
+// meets space the cloud shows as occupied (points off the floor), when the surface is nearer
+// than the robot's radius, or when the picture would lie beyond the depth camera's good range.
 #include <Eigen/Core>
 #include <string>
 
@@ -28,6 +28,9 @@ struct PlanOptions {
     double robot_radius = 0.3;   ///< m, the robot's footprint on the floor (a small mobile base)
     double cell = 0.02;          ///< m, free-surface raster of the plan (coarser than detection's 0.01: speed)
     double obstacle_height = 0.08;  ///< m above the floor: higher points occupy (floor noise and thresholds below)
+    /// m, the picture's farthest corner from the moved camera at most: the depth camera must
+    /// still see the wall to detect and track it (Kinect v1: 1.7 cm noise at 3.5 m, K&OE 2012).
+    double max_distance = 3.5;
 };
 
 struct PlanResult {
