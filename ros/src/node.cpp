@@ -51,6 +51,8 @@ ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams p
     markers_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
     detect_srv_ = pnh_.advertiseService("detect", &ProjsurfNode::onDetect, this);
     blanking_ = std::make_unique<NodeBlanking>(pnh_, params_.projector, params_.continuous && params_.blank);
+    planner_ = std::make_unique<NodePlanner>(pnh_, params_.projector, params_.detector, params_.plan);
+    plan_srv_ = pnh_.advertiseService("plan", &ProjsurfNode::onPlan, this);
     // Queue of 1: in continuous mode a slow frame drops the ones behind it, never lags.
     cloud_sub_ = nh_.subscribe("points", 1, &ProjsurfNode::onCloud, this);
     depth_sub_ = nh_.subscribe("depth/image_rect", 1, &ProjsurfNode::onDepth, this);
@@ -222,6 +224,30 @@ bool ProjsurfNode::onDetect(std_srvs::Trigger::Request &, std_srvs::Trigger::Res
     }
     res.success = o.success;
     res.message = o.message;
+    return true;
+}
+
+bool ProjsurfNode::onPlan(std_srvs::Trigger::Request &, std_srvs::Trigger::Response &res) {
+    res.success = false;
+    if (!have_cloud_) {
+        res.message = "no cloud received yet";
+        return true;
+    }
+    try {
+        std::string problem;
+        const Eigen::Vector3d gravity = gravityFor(cloud_header_, problem);
+        Eigen::Isometry3d fixed_from_camera = Eigen::Isometry3d::Identity();
+        std::string frame = cloud_header_.frame_id;
+        if (!params_.fixed_frame.empty() &&
+            lookup(params_.fixed_frame, cloud_header_.frame_id, cloud_header_.stamp, fixed_from_camera, problem))
+            frame = params_.fixed_frame;
+        const NodePlanner::Answer a = planner_->plan(cloud_, gravity, fixed_from_camera, frame, cloud_header_.stamp);
+        res.success = a.found;
+        res.message = a.message;
+    } catch (const std::exception &e) {  // never take the node down for one bad frame
+        res.message = std::string("plan failed: ") + e.what();
+    }
+    ROS_INFO("projsurf_node: ~plan: %s", res.message.c_str());
     return true;
 }
 

@@ -9,6 +9,7 @@
 #include "projsurf/core/projector.hpp"
 #include "projsurf/core/steady_tracker.hpp"
 #include "projsurf/pipeline/detector.hpp"
+#include "projsurf/pipeline/stand_planner.hpp"
 
 namespace projsurf::ros_node {
 
@@ -17,6 +18,7 @@ struct NodeParams {
     std::string image;        ///< ~image: picture to show (optional; the `image` topic overrides it)
     bool continuous = false;  ///< ~continuous: detect on every cloud and keep the picture steady
     bool blank = true;        ///< ~blank: continuous mode blacks out what stands in the beam (contract "Blanking")
+    PlanOptions plan;         ///< ~plan_width, ~plan_max_move: the ~plan service (contract "Where to stand")
     Projector projector;      ///< read from ~calib
     /// ~aspect, ~gravity, ~method, ~hull and the CLI's pipeline options: ~max_tilt, ~seed,
     /// ~voxel_leaf, ~ransac_distance, ~max_outliers, ~cell, ~max_planes, ~max_outlier_fraction

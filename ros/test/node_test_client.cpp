@@ -3,6 +3,7 @@
 // publishes. Also writes a rosbag and reads it back (Bag.*; needs no master).
 // Every wait is bounded.
 #include <geometry_msgs/PolygonStamped.h>
+#include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
@@ -558,6 +559,78 @@ TEST_F(NodeTest, ContinuousModeBlanksAPersonWalkingIntoTheBeam) {
                 "cloud published -> ~blanked received: median %.1f ms, max %.1f ms over %zu frames\n",
                 lit_on_person, on_person, elsewhere > 0 ? 100.0 * lit_elsewhere / elsewhere : 100.0,
                 latency_ms[latency_ms.size() / 2], latency_ms.back(), latency_ms.size());
+}
+
+// ~plan (contract "Where to stand"): a robot 1 m from the front wall asks where to stand;
+// from there, ~detect finds at least 95 % of the predicted picture.
+
+TEST_F(NodeTest, PlanServiceMovesTheRobotToABiggerPicture) {
+    const std::string ns = env("PROJSURF_ONESHOT_NS", "/oneshot");
+    Inbox<geometry_msgs::PolygonStamped> rects;
+    rects.open(*nh_, ns + "/projsurf/rectangle");
+    std::mutex mutex;
+    std::vector<geometry_msgs::PoseStamped> poses;
+    ros::Subscriber psub = nh_->subscribe<geometry_msgs::PoseStamped>(ns + "/projsurf/plan_pose", 10, [&](const geometry_msgs::PoseStampedConstPtr &m) {
+        std::lock_guard<std::mutex> lock(mutex);
+        poses.push_back(*m);
+    });
+    ros::Publisher pub = nh_->advertise<sensor_msgs::PointCloud2>(ns + "/points", 1, true);
+    const std::string plan_service = ns + "/projsurf/plan", detect_service = ns + "/projsurf/detect";
+    ASSERT_TRUE(ros::service::waitForService(plan_service, ros::Duration(60.0))) << plan_service << " never came up";
+    ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0));
+
+    const Eigen::Isometry3d start = cameraPose(1.0, 0.0, 0.0);  // 1 m from the front wall
+    SceneOptions scene;
+    scene.side_wall = false;
+    ros::Time stamp = ros::Time::now();
+    pub.publish(ros_node::toPointCloud2(renderScene(start, scene), header("camera_optical", stamp)));
+    std_srvs::Trigger detect;
+    ASSERT_TRUE(waitFor([&] {
+        detect = std_srvs::Trigger();
+        return ros::service::call(detect_service, detect) && detect.response.message.find("no cloud") == std::string::npos;
+    }, 20.0));
+    geometry_msgs::PolygonStamped rect;
+    ASSERT_TRUE(rects.waitStamp(stamp, 20.0, rect));
+    auto area = [](const geometry_msgs::PolygonStamped &r) {
+        const auto c = corners(r);
+        return (c[1] - c[0]).norm() * (c[3] - c[0]).norm();
+    };
+    const double before = area(rect);
+
+    std_srvs::Trigger plan;
+    ASSERT_TRUE(ros::service::call(plan_service, plan));
+    ASSERT_TRUE(plan.response.success) << plan.response.message;
+    const auto j = nlohmann::json::parse(plan.response.message.substr(plan.response.message.find('{')));
+    const double predicted = j.at("predicted").at("area_m2").get<double>();
+    ASSERT_TRUE(waitFor([&] {
+        std::lock_guard<std::mutex> lock(mutex);
+        return !poses.empty();
+    }, 10.0));
+    geometry_msgs::PoseStamped pose;
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        pose = poses.back();
+    }
+    EXPECT_EQ(pose.header.frame_id, "camera_optical");
+    Eigen::Isometry3d moved = Eigen::Isometry3d::Identity();  // the moved camera, today's camera frame
+    moved.translation() = Eigen::Vector3d(pose.pose.position.x, pose.pose.position.y, pose.pose.position.z);
+    moved.linear() = Eigen::Quaterniond(pose.pose.orientation.w, pose.pose.orientation.x, pose.pose.orientation.y,
+                                        pose.pose.orientation.z).toRotationMatrix();
+    EXPECT_LE(moved.translation().norm(), 2.0 + 1e-6);
+
+    // Go there and look again.
+    stamp = ros::Time::now() + ros::Duration(0.001);
+    pub.publish(ros_node::toPointCloud2(renderScene(start * moved, scene), header("camera_optical", stamp)));
+    ASSERT_TRUE(waitFor([&] {
+        detect = std_srvs::Trigger();
+        return ros::service::call(detect_service, detect) && rects.snapshot().count(stamp) > 0;
+    }, 20.0));
+    ASSERT_TRUE(rects.waitStamp(stamp, 5.0, rect));
+    const double after = area(rect);
+    std::printf("[ measured ] ~plan: move %.2f m; %.3f m^2 before, %.3f predicted, %.3f realised (%.1f %%)\n",
+                moved.translation().norm(), before, predicted, after, 100.0 * after / predicted);
+    EXPECT_GE(after, 0.95 * predicted);
+    EXPECT_GE(after, 1.5 * before);
 }
 
 // ------------------------------------------------------------------------------------------
