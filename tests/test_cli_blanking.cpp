@@ -102,7 +102,7 @@ TEST(CliBlanking, BadArgumentsAreOneClearLine) {
     fs::remove_all(dir);
 }
 
-TEST(CliBlanking, DemoShowsAPersonWalkingInAndTheBlankedPicture) {
+TEST(CliBlanking, DemoShowsAPersonWalkingInTheBlankedPictureAndAPlannedMove) {
     const fs::path dir = freshDir("people_demo_walk_in");
     const auto r = cli("demo --out " + (dir / "demo").string() + " --seed 2", dir);
     ASSERT_EQ(r.status, 0) << r.err;
@@ -118,5 +118,8 @@ TEST(CliBlanking, DemoShowsAPersonWalkingInAndTheBlankedPicture) {
     EXPECT_EQ(frames, 3) << r.out;
     const cv::Mat compare = cv::imread((dir / "demo" / "walk_in_compare.png").string());
     EXPECT_GT(compare.cols, compare.rows);
+    // And the planned move, with the picture before and after it.
+    EXPECT_TRUE(fs::exists(dir / "demo" / "plan.png"));
+    EXPECT_NE(r.out.find("plan: move "), std::string::npos) << r.out;
     fs::remove_all(dir);
 }

@@ -17,6 +17,7 @@
 #include "projsurf/io/plot.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/demo.hpp"
+#include "projsurf/sim/plan_demo.hpp"
 #include "projsurf/sim/walk_in.hpp"
 
 namespace fs = std::filesystem;
@@ -90,6 +91,22 @@ void run(const DemoCliOptions &o) {
                     withCaption(walk.back().view, "(b) blanked by projsurf"), walk_compare);
     }
 
+    // Where the robot should stand for a bigger picture, and the picture shown from there.
+    sim::PlanShot planned;
+    cv::Mat plan_views;
+    if (r.detection.found) {
+        const Projector &believed = r.calibration.ok ? r.calibration.projector : r.true_projector;
+        planned = sim::planShot(r.scenario, r.true_projector, believed, r.frame.cloud, r.config, r.picture,
+                                r.audience_view, r.audience_light, o.seed);
+        if (!planned.view_after.empty()) {
+            char before[120], after[160];
+            std::snprintf(before, sizeof before, "(a) where the robot stands: %.2f m^2", r.detection.rectangle.area());
+            std::snprintf(after, sizeof after, "(b) after the planned move (%.2f m): %.2f m^2 (%.2f predicted)",
+                          planned.plan.translation.norm(), planned.after.rectangle.area(), planned.plan.predicted.area());
+            cv::hconcat(withCaption(r.audience_corrected, before), withCaption(planned.view_after, after), plan_views);
+        }
+    }
+
     fs::create_directories(out, ec);
     if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
     writeImageAtomic((out / "overlay.png").string(), overlay);
@@ -99,6 +116,7 @@ void run(const DemoCliOptions &o) {
     writeImageAtomic((out / "picture.png").string(), r.picture);
     const Projector &believed = r.calibration.ok ? r.calibration.projector : r.true_projector;
     writeCalibration((out / "calib.yaml").string(), believed);
+    if (!plan_views.empty()) writeImageAtomic((out / "plan.png").string(), plan_views);
     if (!walk.empty()) {
         writeImageAtomic((out / "walk_in.png").string(), walk_in);
         writeImageAtomic((out / "walk_in_compare.png").string(), walk_compare);
@@ -134,11 +152,18 @@ void run(const DemoCliOptions &o) {
                     "lit; %.1f %% of the picture 10 cm clear of them lit\n",
                     k + 1, walk[k].person_x, walk[k].blanked_pixels, walk[k].mask_ms, walk[k].score.lit_on_person,
                     walk[k].score.on_person, 100.0 * walk[k].score.farLitShare());
+    if (planned.plan.found)
+        std::printf("plan: move %.2f m: predicted %.3f m^2, found there %.3f m^2 (%.3f m^2 where it stands)\n",
+                    planned.plan.translation.norm(), planned.plan.predicted.area(),
+                    planned.after.found ? planned.after.rectangle.area() : 0.0, r.detection.rectangle.area());
+    else if (r.detection.found)
+        std::printf("plan: %s\n", planned.plan.reason.c_str());
     std::printf("time per stage (ms):");
     for (const auto &[stage, ms] : r.stage_ms) std::printf("\n  %-58s %8.1f", stage.c_str(), ms);
     std::printf("\nwrote %s/: audience.png overlay.png framebuffer.png camera_rgb.png picture.png calib.yaml "
                 "detection.json%s\n",
-                o.out.c_str(), walk.empty() ? "" : " walk_in.png walk_in_compare.png");
+                o.out.c_str(), (std::string(walk.empty() ? "" : " walk_in.png walk_in_compare.png") +
+                                (plan_views.empty() ? "" : " plan.png")).c_str());
     std::fflush(stdout);
 }
 
