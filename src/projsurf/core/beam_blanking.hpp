@@ -5,16 +5,18 @@
 // A cloud point P (camera frame, m) obstructs when it lies on the camera side of the plane,
 // nearer the lens than the plane along the ray lens -> P by more than `min_gap`; every
 // framebuffer pixel whose ray passes within `ray_margin` of such a point is blanked.
+//
 // Sensor noise is not an obstruction. Depth cameras bend a flat wall smoothly by centimetres
-// (Kinect v1: +-3-5 cm at 3 m, fixed per unit, core/wall_shape.hpp), in patches far larger than
-// an arm, so the gap must also exceed `noise_sigmas` times the wall's depth noise measured on
-// this cloud (sigma = k z^2, k from the median |distance| / z^2 of the points near the plane,
-// as a robust sigma); with a clean sensor the contract's 5 cm rules. Then the points are binned into a coarse
-// grid over the framebuffer (cells about one depth-camera pixel across), and only connected
-// groups survive (a 3x3 closing then a 3x3 opening of the grid: an isolated reading, or two,
-// never fill a 3x3 block; an arm a few cm wide fills many). Each surviving cell is then
-// dilated by the margin at its nearest point's depth (a chamfer distance with offsets, so
-// every cell gets its own radius in one linear pass), rounded up to whole cells.
+// (Kinect v1: +-3-5 cm at 3 m, fixed per unit, core/wall_shape.hpp) in patches far larger
+// than an arm, so the gap must also exceed `noise_sigmas` times the wall's depth noise
+// measured on this cloud (sigma = k z^2, k from the median |distance| / z^2 of the points
+// near the plane, as a robust sigma); with a clean sensor the contract's 5 cm rules.
+// The obstructing points are binned into a coarse grid over the framebuffer (cells about one
+// depth-camera pixel across), and only connected groups survive (a 3x3 closing then a 3x3
+// opening of the grid: an isolated reading, or two, never fill a 3x3 block; an arm a few cm
+// wide fills many). Each surviving cell is then dilated by the margin at its nearest point's
+// depth (a chamfer distance with offsets, so every cell gets its own radius in one linear
+// pass), rounded up to whole cells.
 #include <array>
 #include <vector>
 
@@ -35,13 +37,16 @@ struct BlankingOptions {
     /// Organized clouds: cells are at least this many of the cloud's own pixels across
     /// (measured on the cloud: a 320x240 cloud gets cells twice as wide).
     double cell_per_pixel = 1.3;
-    double min_depth = 0.3;     ///< m along the projector axis: nearer points are the robot itself (RGB-D cameras read from ~0.3-0.5 m)
+    /// m along the projector axis: nearer points are the robot itself (RGB-D cameras read
+    /// from about 0.3-0.5 m).
+    double min_depth = 0.3;
     bool filter_noise = true;   ///< keep connected groups only (false: every obstructing point counts)
     /// The gap must exceed this many sigmas of the wall noise measured on the cloud (0: the
     /// contract's min_gap alone). Kinect v1 units in the simulator bend a wall by up to 4.7
     /// sigma in patches the opening does not remove (sim/kinect1_model, 2-3.5 m, measured).
     double noise_sigmas = 4.5;
-    double noise_window = 0.3;  ///< m, points this near the plane measure the noise (a person further out does not)
+    /// m, points this near the plane measure the noise (a person further out does not).
+    double noise_window = 0.3;
 };
 
 /// Computes the mask frame after frame; its buffers are reused (one object per thread).
