@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_blanking.hpp"
 #include "bench_common.hpp"
 #include "pcl_reference.hpp"
 #include "projsurf/core/camera.hpp"
@@ -297,6 +298,20 @@ void BM_KeystoneWarp1280x800(benchmark::State &state) {
     }
 }
 
+// --- blanking -------------------------------------------------------------------------------
+
+void BM_BeamBlanking(benchmark::State &state) {
+    // One VGA cloud per iteration, cycling through the blanking cases (bench_blanking.hpp).
+    static const std::vector<BlankingCase> cases = blankingCases(frames(), sim::exampleProjector());
+    BeamBlanker blanker(sim::exampleProjector());
+    std::size_t k = 0;
+    for (auto _ : state) {
+        const auto &c = cases[k++ % cases.size()];
+        benchmark::DoNotOptimize(blanker.compute(c.cloud, c.plane).data);
+    }
+    state.counters["clouds"] = static_cast<double>(cases.size());
+}
+
 // --- scale: time against the number of pixels ---------------------------------------------
 
 /// The real frames resampled to width x height; one size cached at a time.
@@ -362,6 +377,7 @@ BENCHMARK(BM_SharedRectangleSearch)->Unit(benchmark::kMillisecond)->UseRealTime(
 BENCHMARK(BM_StockCrop)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_StockOutliers)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_StockTotal)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_BeamBlanking)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_KeystoneWarp1280x800)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Arg(4)->Arg(5)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ScaleOursDefault)->Apply(scaleArgs)->Complexity(benchmark::oN)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_ScaleStock)->Apply(scaleArgs)->Complexity(benchmark::oN)->Unit(benchmark::kMillisecond)->UseRealTime();

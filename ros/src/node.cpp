@@ -43,6 +43,9 @@ ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams p
     framebuffer_pub_ = pnh_.advertise<sensor_msgs::Image>("framebuffer", 1, true);
     markers_pub_ = pnh_.advertise<visualization_msgs::MarkerArray>("markers", 1, true);
     detect_srv_ = pnh_.advertiseService("detect", &ProjsurfNode::onDetect, this);
+    blanking_ = std::make_unique<NodeBlanking>(pnh_, params_.projector, params_.continuous && params_.blank);
+    planner_ = std::make_unique<NodePlanner>(pnh_, params_.projector, params_.detector, params_.plan);
+    plan_srv_ = pnh_.advertiseService("plan", &ProjsurfNode::onPlan, this);
     // Queue of 1: in continuous mode a slow frame drops the ones behind it, never lags.
     cloud_sub_ = nh_.subscribe("points", 1, &ProjsurfNode::onCloud, this);
     depth_sub_ = nh_.subscribe("depth/image_rect", 1, &ProjsurfNode::onDepth, this);
@@ -212,7 +215,7 @@ ProjsurfNode::Outcome ProjsurfNode::detectOnValidCloud() {
     Detection det = detector_.detect(cloud_, gravity);
     frontend::enforceMinimumSize(det, params_.minimum, "~min_width", "~min_area");
     std_msgs::String json;
-    json.data = detectionToJson(det, detector_.config()).dump();
+    json.data = detectionToJson(det, detector_.config(), &params_.projector).dump();
     result_pub_.publish(json);
     markers_pub_.publish(toMarkers(det, nullptr, cloud_header_, params_.marker_ns));
     if (!det.found) {
@@ -225,6 +228,7 @@ ProjsurfNode::Outcome ProjsurfNode::detectOnValidCloud() {
     out.success = true;
     out.message = frontend::detectionSummary(det);
     rectangle_pub_.publish(toPolygon(det.rectangle, cloud_header_));
+    blanking_->publishFocus(det.rectangle);
     const std::string problem = publishFramebuffer(det.rectangle, cloud_header_);
     if (!problem.empty()) out.message += "; but the picture cannot be shown there: " + problem;
     ROS_INFO("projsurf_node: %s", out.message.c_str());
@@ -242,6 +246,30 @@ bool ProjsurfNode::onDetect(std_srvs::Trigger::Request &, std_srvs::Trigger::Res
     }
     res.success = o.success;
     res.message = o.message;
+    return true;
+}
+
+bool ProjsurfNode::onPlan(std_srvs::Trigger::Request &, std_srvs::Trigger::Response &res) {
+    res.success = false;
+    if (!have_cloud_) {
+        res.message = "no cloud received yet";
+        return true;
+    }
+    try {
+        std::string problem;
+        const Eigen::Vector3d gravity = gravityFor(cloud_header_, problem);
+        Eigen::Isometry3d fixed_from_camera = Eigen::Isometry3d::Identity();
+        std::string frame = cloud_header_.frame_id;
+        if (!params_.fixed_frame.empty() &&
+            lookup(params_.fixed_frame, cloud_header_.frame_id, cloud_header_.stamp, fixed_from_camera, problem))
+            frame = params_.fixed_frame;
+        const NodePlanner::Answer a = planner_->plan(cloud_, gravity, fixed_from_camera, frame, cloud_header_.stamp);
+        res.success = a.found;
+        res.message = a.message;
+    } catch (const std::exception &e) {  // never take the node down for one bad frame
+        res.message = std::string("plan failed: ") + e.what();
+    }
+    ROS_INFO("projsurf_node: ~plan: %s", res.message.c_str());
     return true;
 }
 
@@ -270,13 +298,17 @@ void ProjsurfNode::runContinuous() {
     frontend::FramebufferRender fb;
     if (o.has_target) fb = frontend::renderFramebuffer(params_.projector, o.shown, picture_, params_.keystone_tolerance_px);
     if (fb.image.empty()) fb.image = cv::Mat(params_.projector.height, params_.projector.width, CV_8UC3, cv::Scalar::all(0));
+    blanking_->apply(fb.image, cloud_, o.has_target ? &o.shown : nullptr, header);
     const double frame_ms = (ros::WallTime::now() - start).toSec() * 1e3;
 
-    nlohmann::json j = detectionToJson(det, detector_.config());
+    nlohmann::json j = detectionToJson(det, detector_.config(), &params_.projector);
     j["continuous"] = {{"event", toString(o.event)},
                        {"showing", o.has_target && fb.problem.empty()},
                        {"stamp", header.stamp.toSec()},
                        {"frame_ms", std::round(frame_ms * 1000.0) / 1000.0}};
+    if (blanking_->enabled())
+        j["continuous"]["blanking"] = {{"blanked_pixels", blanking_->blankedPixels()},
+                                       {"ms", std::round(blanking_->lastMs() * 1000.0) / 1000.0}};
     std_msgs::String json;
     json.data = j.dump();
     result_pub_.publish(json);

@@ -16,7 +16,9 @@
 #include <optional>
 #include <string>
 
+#include "blanking.hpp"
 #include "continuous.hpp"
+#include "plan_service.hpp"
 #include "params.hpp"
 #include "projsurf/frontend/stamp_pairing.hpp"
 #include "projsurf/pipeline/detector.hpp"
@@ -39,6 +41,7 @@ private:
     void onCameraInfo(const sensor_msgs::CameraInfoConstPtr &msg);
     void onImage(const sensor_msgs::ImageConstPtr &msg);
     bool onDetect(std_srvs::Trigger::Request &req, std_srvs::Trigger::Response &res);
+    bool onPlan(std_srvs::Trigger::Request &req, std_srvs::Trigger::Response &res);  ///< ~plan (plan_service.hpp)
 
     void takeCloud(Cloud cloud, const std_msgs::Header &header);
     /// The depth image with this camera_info as a cloud (or rejected).
@@ -63,7 +66,7 @@ private:
     ros::NodeHandle nh_, pnh_;
     ros::Subscriber cloud_sub_, depth_sub_, info_sub_, image_sub_;
     ros::Publisher result_pub_, rectangle_pub_, framebuffer_pub_, markers_pub_;
-    ros::ServiceServer detect_srv_;
+    ros::ServiceServer detect_srv_, plan_srv_;
     std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
     std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
 
@@ -78,6 +81,8 @@ private:
     sensor_msgs::ImageConstPtr pending_depth_;  ///< a depth image whose camera_info has not come yet
     SurfaceDetector detector_;  ///< one for the stream: its buffers are reused frame to frame
     std::unique_ptr<ContinuousMode> continuous_;
+    std::unique_ptr<NodeBlanking> blanking_;  ///< ~blanked, ~focus_distance
+    std::unique_ptr<NodePlanner> planner_;    ///< ~plan
     ros::WallTime last_file_write_;
     double rate_hz_ = 0.0;  ///< running estimate of the continuous-mode frame rate
     ros::WallTime last_frame_;

@@ -59,6 +59,12 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
     p.projector = readCalibration(p.calib);
     get(pnh, "image", p.image);
     get(pnh, "continuous", p.continuous);
+    get(pnh, "blank", p.blank);
+    getNumber(pnh, "plan_width", p.plan.width);
+    getNumber(pnh, "plan_max_move", p.plan.max_move);
+    if (!(p.plan.width >= 0.0 && p.plan.width <= 50.0)) throw InputError(name(pnh, "plan_width"), "must be between 0 and 50 m");
+    if (!(p.plan.max_move >= 0.0 && p.plan.max_move <= 10.0))
+        throw InputError(name(pnh, "plan_max_move"), "must be between 0 and 10 m");
 
     DetectorConfig &c = p.detector;
     if (pnh.hasParam("aspect")) {

@@ -11,6 +11,7 @@
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
 #include "projsurf/pipeline/detector.hpp"
+#include "projsurf/pipeline/stand_planner.hpp"
 
 namespace projsurf::ros_node {
 
@@ -18,6 +19,8 @@ struct NodeParams {
     std::string calib;        ///< ~calib: projector calibration YAML (required)
     std::string image;        ///< ~image: picture to show (optional; the `image` topic overrides it)
     bool continuous = false;  ///< ~continuous: detect on every cloud and keep the picture steady
+    bool blank = true;        ///< ~blank: continuous mode blacks out what stands in the beam (contract "Blanking")
+    PlanOptions plan;         ///< ~plan_width, ~plan_max_move: the ~plan service (contract "Where to stand")
     Projector projector;      ///< read from ~calib
     /// ~aspect, ~gravity, ~method, ~hull and the CLI's pipeline options: ~max_tilt, ~seed,
     /// ~voxel_leaf, ~ransac_distance, ~max_outliers, ~cell, ~max_planes, ~max_outlier_fraction

@@ -3,6 +3,7 @@
 // publishes. Also writes a rosbag and reads it back (Bag.*; needs no master).
 // Every wait is bounded.
 #include <geometry_msgs/PolygonStamped.h>
+#include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
@@ -10,6 +11,7 @@
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
 #include <sensor_msgs/PointCloud2.h>
+#include <std_msgs/Float32.h>
 #include <std_msgs/String.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/transform_broadcaster.h>
@@ -476,6 +478,167 @@ TEST_F(NodeTest, ContinuousModeKeepsThePicturePutOnTheWallWhileTheRobotMoves) {
     }
     std::printf("[ measured ] phase 2: centre moved %.3f m along the wall in %d jumps over %zu frames\n",
                 last.y() - first.y(), jumps, world2.size());
+}
+
+// Continuous mode, robot standing still: a person walks into the beam (contract "Blanking").
+
+TEST_F(NodeTest, ContinuousModeBlanksAPersonWalkingIntoTheBeam) {
+    const std::string ns = env("PROJSURF_STILL_NS", "/still");
+    Inbox<sensor_msgs::Image> fbs, masks;
+    fbs.open(*nh_, ns + "/projsurf/framebuffer");
+    masks.open(*nh_, ns + "/projsurf/blanked");
+    std::mutex mutex;
+    std::map<ros::Time, ros::WallTime> arrived;  // ~blanked arrival, by stamp
+    ros::Subscriber asub = nh_->subscribe<sensor_msgs::Image>(ns + "/projsurf/blanked", 100, [&](const sensor_msgs::ImageConstPtr &m) {
+        std::lock_guard<std::mutex> lock(mutex);
+        arrived[m->header.stamp] = ros::WallTime::now();
+    });
+    float focus = -1.0f;
+    ros::Subscriber fsub = nh_->subscribe<std_msgs::Float32>(ns + "/projsurf/focus_distance", 10, [&](const std_msgs::Float32ConstPtr &m) {
+        std::lock_guard<std::mutex> lock(mutex);
+        focus = m->data;
+    });
+    ros::Publisher pub = nh_->advertise<sensor_msgs::PointCloud2>(ns + "/points", 1);
+    ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 60.0)) << "the node never subscribed";
+
+    // Frames 0-7: the empty wall (the picture is placed); 8-19: a person walks in from the
+    // left, 1.2 m from the camera, to the middle of the beam.
+    const int frames = 20, walk_from = 8;
+    const Projector projector = testProjector();
+    const Eigen::Isometry3d pose = cameraPose(0.0, 0.0, 0.0);
+    std::vector<double> latency_ms;
+    int checked = 0, missing = 0;
+    long lit_on_person = 0, on_person = 0, lit_elsewhere = 0, elsewhere = 0;
+    for (int k = 0; k < frames; ++k) {
+        SceneOptions scene;
+        scene.seed = 300 + k;
+        scene.person = k >= walk_from;
+        scene.person_y = 0.9 - 0.9 * (k - walk_from) / double(frames - 1 - walk_from);
+        const ros::Time stamp = ros::Time::now();
+        const ros::WallTime sent = ros::WallTime::now();
+        pub.publish(ros_node::toPointCloud2(renderScene(pose, scene), header("camera_optical_still", stamp)));
+        sensor_msgs::Image fb, mask;
+        if (!fbs.waitStamp(stamp, 10.0, fb) || !masks.waitStamp(stamp, 10.0, mask)) {
+            ++missing;
+            continue;
+        }
+        {
+            std::lock_guard<std::mutex> lock(mutex);
+            latency_ms.push_back((arrived.at(stamp) - sent).toSec() * 1e3);
+        }
+        ASSERT_EQ(mask.encoding, "mono8");
+        ASSERT_EQ(mask.width, 1280u);
+        ASSERT_EQ(mask.height, 800u);
+        if (!scene.person) continue;
+        ++checked;
+        // Every framebuffer pixel whose ray meets the person is black; far from them the
+        // picture is lit as it was.
+        for (int v = 0; v < 800; v += 2) {
+            for (int u = 0; u < 1280; u += 2) {
+                const Eigen::Vector3d dir = pose.linear() * projector.ray(Eigen::Vector2d(u, v));
+                const Eigen::Vector3d origin = pose * projector.origin;
+                if (hitsPerson(scene, origin, dir)) {
+                    ++on_person;
+                    if (!isBlack(fb, u, v)) ++lit_on_person;
+                } else {
+                    // 10 cm (at the person's distance, more on the wall) clear of them.
+                    const double t = (scene.person_x - origin.x()) / dir.x();
+                    const Eigen::Vector3d p = origin + t * dir;
+                    if (std::abs(p.y() - scene.person_y) > 0.32) {
+                        ++elsewhere;
+                        if (mask.data[static_cast<std::size_t>(v) * mask.step + u] == 0) ++lit_elsewhere;
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_LE(missing, 2);
+    EXPECT_GE(checked, frames - walk_from - 2);
+    EXPECT_GT(on_person, 1000) << "the person never stood in the beam";
+    EXPECT_EQ(lit_on_person, 0);
+    EXPECT_GE(static_cast<double>(lit_elsewhere), 0.95 * elsewhere);
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        EXPECT_NEAR(focus, 2.0, 0.1) << "~focus_distance: the wall is 2 m ahead";
+    }
+    std::sort(latency_ms.begin(), latency_ms.end());
+    ASSERT_FALSE(latency_ms.empty());
+    std::printf("[ measured ] blanking: %ld of %ld sampled pixels on the person lit, %.2f %% of the rest unblanked; "
+                "cloud published -> ~blanked received: median %.1f ms, max %.1f ms over %zu frames\n",
+                lit_on_person, on_person, elsewhere > 0 ? 100.0 * lit_elsewhere / elsewhere : 100.0,
+                latency_ms[latency_ms.size() / 2], latency_ms.back(), latency_ms.size());
+}
+
+// ~plan (contract "Where to stand"): a robot 1 m from the front wall asks where to stand;
+// from there, ~detect finds at least 95 % of the predicted picture.
+
+TEST_F(NodeTest, PlanServiceMovesTheRobotToABiggerPicture) {
+    const std::string ns = env("PROJSURF_ONESHOT_NS", "/oneshot");
+    Inbox<geometry_msgs::PolygonStamped> rects;
+    rects.open(*nh_, ns + "/projsurf/rectangle");
+    std::mutex mutex;
+    std::vector<geometry_msgs::PoseStamped> poses;
+    ros::Subscriber psub = nh_->subscribe<geometry_msgs::PoseStamped>(ns + "/projsurf/plan_pose", 10, [&](const geometry_msgs::PoseStampedConstPtr &m) {
+        std::lock_guard<std::mutex> lock(mutex);
+        poses.push_back(*m);
+    });
+    ros::Publisher pub = nh_->advertise<sensor_msgs::PointCloud2>(ns + "/points", 1, true);
+    const std::string plan_service = ns + "/projsurf/plan", detect_service = ns + "/projsurf/detect";
+    ASSERT_TRUE(ros::service::waitForService(plan_service, ros::Duration(60.0))) << plan_service << " never came up";
+    ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0));
+
+    const Eigen::Isometry3d start = cameraPose(1.0, 0.0, 0.0);  // 1 m from the front wall
+    SceneOptions scene;
+    scene.side_wall = false;
+    ros::Time stamp = ros::Time::now();
+    pub.publish(ros_node::toPointCloud2(renderScene(start, scene), header("camera_optical", stamp)));
+    std_srvs::Trigger detect;
+    ASSERT_TRUE(waitFor([&] {
+        detect = std_srvs::Trigger();
+        return ros::service::call(detect_service, detect) && detect.response.message.find("no cloud") == std::string::npos;
+    }, 20.0));
+    geometry_msgs::PolygonStamped rect;
+    ASSERT_TRUE(rects.waitStamp(stamp, 20.0, rect));
+    auto area = [](const geometry_msgs::PolygonStamped &r) {
+        const auto c = corners(r);
+        return (c[1] - c[0]).norm() * (c[3] - c[0]).norm();
+    };
+    const double before = area(rect);
+
+    std_srvs::Trigger plan;
+    ASSERT_TRUE(ros::service::call(plan_service, plan));
+    ASSERT_TRUE(plan.response.success) << plan.response.message;
+    const auto j = nlohmann::json::parse(plan.response.message.substr(plan.response.message.find('{')));
+    const double predicted = j.at("predicted").at("area_m2").get<double>();
+    ASSERT_TRUE(waitFor([&] {
+        std::lock_guard<std::mutex> lock(mutex);
+        return !poses.empty();
+    }, 10.0));
+    geometry_msgs::PoseStamped pose;
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        pose = poses.back();
+    }
+    EXPECT_EQ(pose.header.frame_id, "camera_optical");
+    Eigen::Isometry3d moved = Eigen::Isometry3d::Identity();  // the moved camera, today's camera frame
+    moved.translation() = Eigen::Vector3d(pose.pose.position.x, pose.pose.position.y, pose.pose.position.z);
+    moved.linear() = Eigen::Quaterniond(pose.pose.orientation.w, pose.pose.orientation.x, pose.pose.orientation.y,
+                                        pose.pose.orientation.z).toRotationMatrix();
+    EXPECT_LE(moved.translation().norm(), 2.0 + 1e-6);
+
+    // Go there and look again.
+    stamp = ros::Time::now() + ros::Duration(0.001);
+    pub.publish(ros_node::toPointCloud2(renderScene(start * moved, scene), header("camera_optical", stamp)));
+    ASSERT_TRUE(waitFor([&] {
+        detect = std_srvs::Trigger();
+        return ros::service::call(detect_service, detect) && rects.snapshot().count(stamp) > 0;
+    }, 20.0));
+    ASSERT_TRUE(rects.waitStamp(stamp, 5.0, rect));
+    const double after = area(rect);
+    std::printf("[ measured ] ~plan: move %.2f m; %.3f m^2 before, %.3f predicted, %.3f realised (%.1f %%)\n",
+                moved.translation().norm(), before, predicted, after, 100.0 * after / predicted);
+    EXPECT_GE(after, 0.95 * predicted);
+    EXPECT_GE(after, 1.5 * before);
 }
 
 // ------------------------------------------------------------------------------------------

@@ -80,5 +80,10 @@ pids+=($!)
     _fixed_frame:=odom _gravity_frame:=odom _tf_timeout:=0.5 >"$tmp/continuous_node.log" 2>&1 &
 pids+=($!)
 
-export PROJSURF_ONESHOT_NS=/oneshot PROJSURF_MOVING_NS=/moving
+# Continuous mode, standing still: blanking what walks into the beam.
+"$build/projsurf_node" __ns:=/still __name:=projsurf _calib:="$tmp/calib.yaml" _continuous:=true \
+    >"$tmp/still_node.log" 2>&1 &
+pids+=($!)
+
+export PROJSURF_ONESHOT_NS=/oneshot PROJSURF_MOVING_NS=/moving PROJSURF_STILL_NS=/still
 timeout --signal=INT --kill-after=10 200 "$client" --gtest_filter='NodeTest.*'

@@ -56,6 +56,11 @@ Cloud renderScene(const Eigen::Isometry3d &odom_from_camera, const SceneOptions 
                 const double far = o.front_wall ? 2.0 : 8.0;
                 hit(t, p, p.x() < far && (!o.side_wall || p.y() > -1.2));
             }
+            if (o.person && std::abs(ray.x()) > 1e-9) {
+                const double t = (o.person_x - origin.x()) / ray.x();
+                const Eigen::Vector3d p = origin + t * ray;
+                hit(t, p, std::abs(p.y() - o.person_y) <= 0.22 && p.z() >= 0.0 && p.z() <= 1.7);
+            }
             Point &out = cloud.points[static_cast<std::size_t>(v) * w + u];
             if (best >= 8.0) {
                 out = Point(nan, nan, nan);
@@ -66,6 +71,14 @@ Cloud renderScene(const Eigen::Isometry3d &odom_from_camera, const SceneOptions 
         }
     }
     return cloud;
+}
+
+bool hitsPerson(const SceneOptions &o, const Eigen::Vector3d &origin, const Eigen::Vector3d &dir) {
+    if (!o.person || std::abs(dir.x()) < 1e-9) return false;
+    const double t = (o.person_x - origin.x()) / dir.x();
+    if (t <= 0.0) return false;
+    const Eigen::Vector3d p = origin + t * dir;
+    return std::abs(p.y() - o.person_y) <= 0.22 && p.z() >= 0.0 && p.z() <= 1.7;  // nearer than the wall at x = 2
 }
 
 Projector testProjector() {

@@ -15,7 +15,13 @@ struct SceneOptions {
     bool side_wall = true;
     double noise_k = 1.425e-3;  ///< 1/m, sigma_z = k z^2 (Kinect-like)
     unsigned seed = 1;
+    /// A person: the slab x = person_x (odom), |y - person_y| <= 0.22 m, 0 <= z <= 1.7 m.
+    bool person = false;
+    double person_x = 1.2, person_y = 0.0;
 };
+
+/// Whether the ray origin + t dir (odom, t > 0) meets the person (it stands in front of every wall).
+bool hitsPerson(const SceneOptions &options, const Eigen::Vector3d &origin, const Eigen::Vector3d &dir);
 
 /// Pose of the camera's optical frame in odom for a robot at (x, y) with heading yaw (rad),
 /// camera 1 m above the floor, looking along the robot's heading.

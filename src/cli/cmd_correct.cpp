@@ -10,10 +10,12 @@
 #include <opencv2/videoio.hpp>
 
 #include "cli/commands.hpp"
+#include "projsurf/core/beam_blanking.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/frontend/progress.hpp"
 #include "projsurf/core/keystone.hpp"
 #include "projsurf/core/keystone_warper.hpp"
+#include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -29,6 +31,7 @@ namespace {
 
 struct CorrectOptions {
     std::string calib, detection, image, video, out, json;
+    std::string cloud, depth, camera;  // the current cloud, for blanking what stands in the beam
     double fps = 0.0;  // output frame rate for video; 0 = the input's (25 when unknown)
 };
 
@@ -38,7 +41,27 @@ nlohmann::json corners(const Corners2 &c) {
     return a;
 }
 
-std::string keystoneJson(const Keystone &k, const std::string &method) {
+/// The blanking mask for the current cloud (contract "Blanking"), or empty without one.
+struct Blanking {
+    cv::Mat mask;  ///< CV_8U framebuffer size, 255 = blanked; empty = no current cloud
+    int pixels = 0;
+};
+
+Blanking blankingFor(const CorrectOptions &o, const Projector &projector, const DetectionFile &det) {
+    Blanking b;
+    if (o.cloud.empty() && o.depth.empty()) return b;
+    const Cloud cloud = o.cloud.empty() ? readDepthCloud(o.depth, o.camera) : readCloud(o.cloud);
+    // The surface the picture was placed on: the plane through the detection's rectangle.
+    const auto &c = det.rectangle.corners;
+    const Eigen::Vector3d normal = (c[1] - c[0]).cross(c[3] - c[0]).normalized();
+    const Plane plane = makePlane(normal, -normal.dot(det.rectangle.center()));
+    BeamBlanker blanker(projector);
+    b.mask = blanker.compute(cloud, plane).clone();
+    b.pixels = blanker.blankedPixels();
+    return b;
+}
+
+std::string keystoneJson(const Keystone &k, const std::string &method, const Blanking &blanking) {
     nlohmann::json j;
     nlohmann::json h = nlohmann::json::array();
     for (int r = 0; r < 3; ++r) h.push_back({k.homography(r, 0), k.homography(r, 1), k.homography(r, 2)});
@@ -53,6 +76,7 @@ std::string keystoneJson(const Keystone &k, const std::string &method) {
     for (const auto &c : k.shown.corners) shown.push_back({c.x(), c.y(), c.z()});
     j["shown"] = {{"corners", shown}, {"width_m", k.shown.width}, {"height_m", k.shown.height}};
     j["method"] = method;
+    if (!blanking.mask.empty()) j["blanked_pixels"] = blanking.pixels;
     return j.dump(2) + "\n";
 }
 
@@ -76,7 +100,7 @@ std::string letterboxNote(const frontend::FramebufferRender &r, const DetectionF
 }
 
 void runVideo(const CorrectOptions &o, const std::string &input, const Projector &projector,
-              const DetectionFile &det) {
+              const DetectionFile &det, const Blanking &blanking) {
     FrameSource source(input);
     cv::Mat frame;
     if (!source.read(frame)) throw InputError(input, "no frame could be read");
@@ -99,6 +123,7 @@ void runVideo(const CorrectOptions &o, const std::string &input, const Projector
         if (frame.size() != k.picture)
             throw InputError(source.current(), "frame " + std::to_string(n) + " has a different size from the first frame");
         warper.warp(frame, fb);
+        if (!blanking.mask.empty()) applyBlanking(fb, blanking.mask);
         if (sequence_out) {
             if (static_cast<std::uint64_t>(n) >= limits::kMaxSequenceFrames)
                 throw InputError(input, "more than " + std::to_string(limits::kMaxSequenceFrames) + " frames");
@@ -117,7 +142,7 @@ void runVideo(const CorrectOptions &o, const std::string &input, const Projector
         QuietStderr quiet;
         writer.release();
     }
-    if (!o.json.empty()) outputs.addFile(o.json, keystoneJson(k, "eq7"));
+    if (!o.json.empty()) outputs.addFile(o.json, keystoneJson(k, "eq7", blanking));
     outputs.commit();
     progress.finish(n);
     std::cout << "projsurf correct: " << n << " frames -> " << o.out << letterboxNote(render, det) << "\n";
@@ -131,6 +156,9 @@ void run(const CorrectOptions &o) {
     // Validate every input and output location before any work.
     const Projector projector = readCalibration(o.calib);
     const DetectionFile det = readDetectionJson(o.detection);
+    if (!o.cloud.empty() && !o.depth.empty()) throw InputError("arguments", "give --cloud or --depth, not both");
+    if (!o.depth.empty() && o.camera.empty()) throw InputError("arguments", "--depth needs --camera camera.yaml");
+    if (!o.camera.empty() && o.depth.empty()) throw InputError("arguments", "--camera goes with --depth");
     requireWritableLocation(o.out);
     if (!o.json.empty()) requireWritableLocation(o.json);
     if (video) {
@@ -141,7 +169,9 @@ void run(const CorrectOptions &o) {
         } else if (videoFourcc(o.out) == 0) {
             throw InputError(o.out, "a corrected video needs a .avi, .mkv, .mp4 or .mov output (or a %04d.png pattern)");
         }
-        runVideo(o, input, projector, det);
+        const Blanking blanking = blankingFor(o, projector, det);
+        runVideo(o, input, projector, det, blanking);
+        if (!blanking.mask.empty()) std::cout << "projsurf correct: blanked_pixels " << blanking.pixels << "\n";
         return;
     }
     requireWritableFile(o.out);
@@ -151,14 +181,18 @@ void run(const CorrectOptions &o) {
     const frontend::FramebufferRender fb =
         frontend::renderFramebuffer(projector, det.rectangle, picture, kKeystoneTolerancePx);
     if (!fb.keystone) throw InputError(o.detection, fb.problem);
+    cv::Mat image = fb.image;
+    const Blanking blanking = blankingFor(o, projector, det);
+    if (!blanking.mask.empty()) applyBlanking(image, blanking.mask);
     // Both outputs, or neither.
     OutputGroup outputs;
-    outputs.addImage(o.out, fb.image);
-    if (!o.json.empty()) outputs.addFile(o.json, keystoneJson(*fb.keystone, "eq7"));
+    outputs.addImage(o.out, image);
+    if (!o.json.empty()) outputs.addFile(o.json, keystoneJson(*fb.keystone, "eq7", blanking));
     outputs.commit();
     std::cout << "projsurf correct: " << picture.cols << "x" << picture.rows << " picture -> " << o.out << " ("
-              << fb.image.cols << "x" << fb.image.rows << " framebuffer)" << (o.json.empty() ? "" : " and " + o.json)
+              << image.cols << "x" << image.rows << " framebuffer)" << (o.json.empty() ? "" : " and " + o.json)
               << letterboxNote(fb, det) << "\n";
+    if (!blanking.mask.empty()) std::cout << "projsurf correct: blanked_pixels " << blanking.pixels << "\n";
 }
 
 }  // namespace
@@ -179,6 +213,11 @@ void addCorrectCommand(CLI::App &app) {
         ->required();
     sub->add_option("--json", opts->json, "also write the homography and the four framebuffer corners");
     sub->add_option("--fps", opts->fps, "frame rate of the corrected video (default: the input's, else 25)");
+    sub->add_option("--cloud", opts->cloud,
+                    "current point cloud (PCD or PLY): black out every pixel whose ray meets something between the "
+                    "lens and the surface (a person walking in); the JSON adds blanked_pixels");
+    sub->add_option("--depth", opts->depth, "current 16-bit depth PNG instead of --cloud; needs --camera");
+    sub->add_option("--camera", opts->camera, "camera intrinsics YAML for --depth");
     sub->callback([opts] { run(*opts); });
 }
 

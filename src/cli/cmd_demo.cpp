@@ -17,6 +17,8 @@
 #include "projsurf/eval/plot.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/eval/demo.hpp"
+#include "projsurf/eval/plan_demo.hpp"
+#include "projsurf/eval/walk_in.hpp"
 
 namespace fs = std::filesystem;
 
@@ -69,6 +71,42 @@ void run(const DemoCliOptions &o) {
     cv::rectangle(framebuffer_view, cv::Rect(0, 0, framebuffer_view.cols, framebuffer_view.rows),
                   cv::Scalar(80, 80, 80), 2);  // the framebuffer's edge, for looking at it on a page
 
+    // A person walks into the beam of the placed picture (issue 13): the picture is blanked
+    // where they stand, frame by frame.
+    std::vector<sim::WalkInShot> walk;
+    cv::Mat walk_in, walk_compare;
+    if (r.keystone && o.distance >= 1.2) {
+        const Projector &believed = r.calibration.ok ? r.calibration.projector : r.true_projector;
+        walk = sim::walkInShots(r.scenario.scene, r.scenario.wall, r.true_projector, believed, r.detection.plane,
+                                r.framebuffer, r.audience_view, r.audience_light, 0.55 * o.distance, o.seed);
+        std::vector<cv::Mat> row;
+        for (std::size_t k = 0; k < walk.size(); ++k) {
+            char caption[160];
+            std::snprintf(caption, sizeof caption, "(%zu) walking in: %d px blanked, %ld lit px on the person",
+                          k + 1, walk[k].blanked_pixels, walk[k].score.lit_on_person);
+            row.push_back(withCaption(walk[k].view, caption));
+        }
+        cv::hconcat(row, walk_in);
+        cv::hconcat(withCaption(walk.back().view_unblanked, "(a) without blanking: the picture lands on the person"),
+                    withCaption(walk.back().view, "(b) blanked by projsurf"), walk_compare);
+    }
+
+    // Where the robot should stand for a bigger picture, and the picture shown from there.
+    sim::PlanShot planned;
+    cv::Mat plan_views;
+    if (r.detection.found) {
+        const Projector &believed = r.calibration.ok ? r.calibration.projector : r.true_projector;
+        planned = sim::planShot(r.scenario, r.true_projector, believed, r.frame.cloud, r.config, r.picture,
+                                r.audience_view, r.audience_light, o.seed);
+        if (!planned.view_after.empty()) {
+            char before[120], after[160];
+            std::snprintf(before, sizeof before, "(a) where the robot stands: %.2f m^2", r.detection.rectangle.area());
+            std::snprintf(after, sizeof after, "(b) after the planned move (%.2f m): %.2f m^2 (%.2f predicted)",
+                          planned.plan.translation.norm(), planned.after.rectangle.area(), planned.plan.predicted.area());
+            cv::hconcat(withCaption(r.audience_corrected, before), withCaption(planned.view_after, after), plan_views);
+        }
+    }
+
     fs::create_directories(out, ec);
     if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
     writeImageAtomic((out / "overlay.png").string(), overlay);
@@ -76,8 +114,14 @@ void run(const DemoCliOptions &o) {
     writeImageAtomic((out / "audience.png").string(), audience);
     writeImageAtomic((out / "camera_rgb.png").string(), r.frame.rgb);
     writeImageAtomic((out / "picture.png").string(), r.picture);
-    writeCalibration((out / "calib.yaml").string(), r.calibration.ok ? r.calibration.projector : r.true_projector);
-    writeFileAtomic((out / "detection.json").string(), detectionToJson(r.detection, r.config).dump(2) + "\n");
+    const Projector &believed = r.calibration.ok ? r.calibration.projector : r.true_projector;
+    writeCalibration((out / "calib.yaml").string(), believed);
+    if (!plan_views.empty()) writeImageAtomic((out / "plan.png").string(), plan_views);
+    if (!walk.empty()) {
+        writeImageAtomic((out / "walk_in.png").string(), walk_in);
+        writeImageAtomic((out / "walk_in_compare.png").string(), walk_compare);
+    }
+    writeFileAtomic((out / "detection.json").string(), detectionToJson(r.detection, r.config, &believed).dump(2) + "\n");
 
     // Summary.
     std::printf("projsurf demo: scenario '%s', wall %.2f m away at %.2f deg, seed %u\n", r.scenario.name.c_str(),
@@ -103,11 +147,23 @@ void run(const DemoCliOptions &o) {
     printErrors("corrected:", r.corrected_on_wall);
     printErrors("uncorrected (as is):", r.uncorrected_on_wall);
     if (!r.keystone_problem.empty()) std::printf("  (no correction: %s)\n", r.keystone_problem.c_str());
+    for (std::size_t k = 0; k < walk.size(); ++k)
+        std::printf("walk-in frame %zu (person at x = %.2f m): %d px blanked in %.2f ms; %ld of %ld px on the person "
+                    "lit; %.1f %% of the picture 10 cm clear of them lit\n",
+                    k + 1, walk[k].person_x, walk[k].blanked_pixels, walk[k].mask_ms, walk[k].score.lit_on_person,
+                    walk[k].score.on_person, 100.0 * walk[k].score.farLitShare());
+    if (planned.plan.found)
+        std::printf("plan: move %.2f m: predicted %.3f m^2, found there %.3f m^2 (%.3f m^2 where it stands)\n",
+                    planned.plan.translation.norm(), planned.plan.predicted.area(),
+                    planned.after.found ? planned.after.rectangle.area() : 0.0, r.detection.rectangle.area());
+    else if (r.detection.found)
+        std::printf("plan: %s\n", planned.plan.reason.c_str());
     std::printf("time per stage (ms):");
     for (const auto &[stage, ms] : r.stage_ms) std::printf("\n  %-58s %8.1f", stage.c_str(), ms);
     std::printf("\nwrote %s/: audience.png overlay.png framebuffer.png camera_rgb.png picture.png calib.yaml "
-                "detection.json\n",
-                o.out.c_str());
+                "detection.json%s\n",
+                o.out.c_str(), (std::string(walk.empty() ? "" : " walk_in.png walk_in_compare.png") +
+                                (plan_views.empty() ? "" : " plan.png")).c_str());
     std::fflush(stdout);
 }
 

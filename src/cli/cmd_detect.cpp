@@ -152,7 +152,7 @@ void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &
         const Eigen::Vector3d down = frontend::resolveGravity(gravity, cloud).gravity;
         Detection det = detectChecked(detector, cloud, down, o.bag + ":" + topic.topic + "#" + std::to_string(info.index));
         frontend::enforceMinimumSize(det, minimum, "--min-width", "--min-area");
-        nlohmann::json j = detectionToJson(det, cfg);
+        nlohmann::json j = detectionToJson(det, cfg, &projector);
         j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", topic.topic}};
         found += det.found ? 1 : 0;
         if (o.json.empty()) std::cout << j.dump() << "\n" << std::flush;
@@ -264,7 +264,7 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     SurfaceDetector detector(projector, cfg);
     Detection det = detectChecked(detector, cloud, gravity, o.cloud.empty() ? o.depth : o.cloud);
     frontend::enforceMinimumSize(det, minimum, "--min-width", "--min-area");
-    const nlohmann::json j = detectionToJson(det, cfg);
+    const nlohmann::json j = detectionToJson(det, cfg, &projector);
     // Both outputs, or neither: written beside their targets, renamed once both are there.
     OutputGroup outputs;
     if (!o.json.empty()) outputs.addFile(o.json, j.dump(2) + "\n");

@@ -20,5 +20,6 @@ void addSimulateCommand(CLI::App &app);   // cmd_simulate.cpp
 void addDemoCommand(CLI::App &app);       // cmd_demo.cpp
 void addEvalCommand(CLI::App &app);       // cmd_eval.cpp
 void addBagCommand(CLI::App &app);        // cmd_bag.cpp
+void addPlanCommand(CLI::App &app);       // cmd_plan.cpp
 
 }  // namespace projsurf::cli

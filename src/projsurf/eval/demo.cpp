@@ -85,6 +85,8 @@ DemoResult runDemo(const DemoOptions &o) {
     light.ambient = 0.22;  // a dim room, a little brighter than the camera's so the wall shows
     res.audience_uncorrected = renderView(res.scenario.scene, viewer, Projection{real, as_is}, light);
     res.audience_corrected = renderView(res.scenario.scene, viewer, Projection{real, res.framebuffer}, light);
+    res.audience_view = viewer;
+    res.audience_light = light;
     res.stage_ms.emplace_back("render the audience views", msSince(t));
     res.stage_ms.emplace_back("total", msSince(t_all));
     return res;

@@ -48,6 +48,8 @@ struct DemoResult {
     WallPicture uncorrected_on_wall;  ///< the whole framebuffer's corners on the real wall (eq. 8)
     cv::Mat audience_uncorrected;  ///< the picture projected as is (keystoned)
     cv::Mat audience_corrected;    ///< the corrected framebuffer projected
+    PinholeView audience_view;     ///< where the audience views are seen from
+    Lighting audience_light;
     std::vector<std::pair<std::string, double>> stage_ms;  ///< in order
 };
 

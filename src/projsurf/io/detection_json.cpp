@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "projsurf/core/focus.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"
@@ -17,7 +18,7 @@ double round6(double v) { return std::round(v * 1e6) / 1e6; }
 
 }  // namespace
 
-nlohmann::json detectionToJson(const Detection &det, const DetectorConfig &config) {
+nlohmann::json detectionToJson(const Detection &det, const DetectorConfig &config, const Projector *projector) {
     nlohmann::json j;
     j["found"] = det.found;
     j["reason"] = det.found ? nlohmann::json(nullptr) : nlohmann::json(det.reason);
@@ -55,6 +56,16 @@ nlohmann::json detectionToJson(const Detection &det, const DetectorConfig &confi
     for (const auto &[k, v] : det.timing_ms) timing[k] = std::round(v * 1000.0) / 1000.0;
     j["timing_ms"] = timing;
     j["gravity"] = vec(det.gravity);
+    if (projector) {
+        if (det.rectangle.area() > 0.0) {
+            const Focus f = focusFor(*projector, det.rectangle);
+            j["focus"] = {{"distance_m", round6(f.distance_m)},
+                          {"nearest_m", round6(f.nearest_m)},
+                          {"farthest_m", round6(f.farthest_m)}};
+        } else {
+            j["focus"] = nullptr;
+        }
+    }
     return j;
 }
 

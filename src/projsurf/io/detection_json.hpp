@@ -8,8 +8,10 @@
 namespace projsurf {
 
 /// The contract's keys (found, reason, plane, rectangle, surface_check, timing_ms) plus
-/// extensions (method, gravity, plane.yaw).
-nlohmann::json detectionToJson(const Detection &detection, const DetectorConfig &config);
+/// extensions (method, gravity, plane.yaw). With the projector, also the contract's `focus`
+/// (core/focus.hpp; null when there is no rectangle).
+nlohmann::json detectionToJson(const Detection &detection, const DetectorConfig &config,
+                               const Projector *projector = nullptr);
 
 /// What `correct` needs from a detection file.
 struct DetectionFile {
