@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
-#include "cli/parse.hpp"
-#include "projsurf/core/gravity.hpp"
+#include "projsurf/frontend/aspect.hpp"
+#include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -37,16 +37,13 @@ void run(const PlanCliOptions &o) {
     if (!(o.plan.width >= 0.0 && o.plan.width <= 50.0)) throw InputError("--width", "must be between 0 and 50 m");
     if (!o.json.empty()) requireWritableFile(o.json);
     DetectorConfig cfg;
-    if (!o.aspect.empty()) cfg.aspect = parseAspect("--aspect", o.aspect);
+    if (!o.aspect.empty()) cfg.aspect = frontend::parseAspect("--aspect", o.aspect);
     const Projector projector = readCalibration(o.calib);
     const Cloud cloud = o.cloud.empty() ? readDepthCloud(o.depth, o.camera) : readCloud(o.cloud);
-    Eigen::Vector3d gravity = SurfaceDetector::levelGravity();
-    if (o.gravity == "auto") {
-        if (const auto g = estimateGravityFromFloor(cloud, gravity)) gravity = g->gravity;
-        else std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
-    } else if (!o.gravity.empty()) {
-        gravity = parseVector3("--gravity", o.gravity);
-    }
+    const frontend::ResolvedGravity resolved = frontend::resolveGravity(frontend::parseGravityChoice("--gravity", o.gravity), cloud);
+    if (o.gravity == "auto" && !resolved.floor_found)
+        std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
+    const Eigen::Vector3d gravity = resolved.gravity;
     const PlanResult r = planStand(cloud, projector, cfg, gravity, o.plan);
     nlohmann::json j;
     j["found"] = r.found;
