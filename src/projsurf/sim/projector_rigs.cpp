@@ -5,6 +5,8 @@
 
 #include <Eigen/Geometry>
 
+#include "projsurf/core/decoded_points.hpp"
+#include "projsurf/core/gray_code.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
 namespace projsurf::sim {
@@ -52,6 +54,27 @@ Projector paperModelOf(const Projector &real) {
     p.fov_v = fov[1];
     return p;
 }
+
+ProjectorFit structuredCalibration(const Projector &truth, const SensorModel &sensor,
+                                   const std::vector<PatternPose> &poses, unsigned seed) {
+    const auto captures = renderPatternCaptures(truth, sensor, poses, seed);
+    std::vector<ProjectorCorrespondence> pairs;
+    for (const auto &cap : captures) {
+        const GrayDecoding d = decodeGray(cap.colour, truth.width, truth.height);
+        const auto lifted = liftDecoding(d, cap.depth, sensor.camera);
+        pairs.insert(pairs.end(), lifted.begin(), lifted.end());
+    }
+    ProjectorFitConfig cfg;
+    cfg.width = truth.width;
+    cfg.height = truth.height;
+    return fitProjector(pairs, cfg);
+}
+
+std::vector<PatternPose> flatWallPoses() {
+    return {{"wall", 1.5, 0.0, 0.0, 0.0}, {"wall", 2.3, 20.0, 0.0, 0.0}, {"wall", 3.0, -15.0, 0.0, 0.0}};
+}
+
+std::vector<PatternPose> reliefPose() { return {{"big_obstacle", 1.6, 0.0, 8.0, 0.0}}; }
 
 std::vector<RigSpec> evalRigs() {
     return {{0.0, 0.0, 1.0, 0.0},   {1.0, 0.0, 1.0, 0.0},    {1.33, 0.0, 1.0, 0.0},  {1.0, 1.0, 1.0, 0.0},

@@ -6,6 +6,9 @@
 #include <vector>
 
 #include "projsurf/core/projector.hpp"
+#include "projsurf/core/projector_fit.hpp"
+#include "projsurf/sim/calibration_captures.hpp"
+#include "projsurf/sim/sensor_model.hpp"
 
 namespace projsurf::sim {
 
@@ -25,6 +28,15 @@ Projector projectorRig(const RigSpec &spec);
 /// What the paper's model of `real` is: same origin and resolution, the axis through the
 /// framebuffer centre, the field of view spanned by the framebuffer (symmetric, zero roll).
 Projector paperModelOf(const Projector &real);
+
+/// Structured-light calibration of `truth` from simulated captures at `poses` (rendered,
+/// decoded, lifted through the simulated depth, fitted).
+ProjectorFit structuredCalibration(const Projector &truth, const SensorModel &sensor,
+                                   const std::vector<PatternPose> &poses, unsigned seed);
+/// Poses for structured light: three positions in front of a plain wall (flat), or one
+/// position where the picture falls on a big box standing against the wall (relief).
+std::vector<PatternPose> flatWallPoses();
+std::vector<PatternPose> reliefPose();
 
 /// The rigs of the eval table: offsets 0-133 %, roll up to +-3 deg, fy/fx 1.005, k1 +-0.05.
 std::vector<RigSpec> evalRigs();
