@@ -12,5 +12,6 @@ void addShowCommand(CLI::App &app);       // cmd_show.cpp
 void addSimulateCommand(CLI::App &app);   // cmd_simulate.cpp
 void addDemoCommand(CLI::App &app);       // cmd_demo.cpp
 void addEvalCommand(CLI::App &app);       // cmd_eval.cpp
+void addPatternsCommand(CLI::App &app);   // cmd_patterns.cpp
 
 }  // namespace projsurf::cli

@@ -50,6 +50,7 @@ int main(int argc, char **argv) {
     projsurf::cli::addSimulateCommand(app);
     projsurf::cli::addDemoCommand(app);
     projsurf::cli::addEvalCommand(app);
+    projsurf::cli::addPatternsCommand(app);
 
     std::vector<std::string> args = glueNegativeValues(argc, argv);
     std::vector<char *> cargs;
