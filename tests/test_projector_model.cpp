@@ -15,6 +15,7 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/experiments.hpp"
+#include "projsurf/sim/projector_eval.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/scenarios.hpp"
 #include "projsurf/sim/scene.hpp"
@@ -240,4 +241,18 @@ TEST(ProjectorModel, FootprintRaysStayInsideTheLitArea) {
             EXPECT_LE(px->y(), p.height - 0.5 + 1e-6);
         }
     }
+}
+
+TEST(ProjectorModel, EvalScoreSeparatesTheTrueModelFromThePapersModel) {
+    const Projector truth = sim::projectorRig({1.0, 2.0, 1.005, -0.05});
+    const sim::SensorModel sensor;
+    const sim::CalibrationScore exact = sim::scoreCalibration(truth, truth, sensor, 4);
+    ASSERT_TRUE(exact.ok) << exact.problem;
+    EXPECT_LT(exact.rms_px, 1e-6);
+    EXPECT_LT(exact.eq8_pct, 0.2);
+    EXPECT_LT(exact.upright_deg, 0.1);
+    EXPECT_LT(exact.corner_mm, 5.0);
+    const sim::CalibrationScore paper = sim::scoreCalibration(sim::paperModelOf(truth), truth, sensor, 4);
+    EXPECT_GT(paper.rms_px, 5.0);
+    EXPECT_GT(paper.upright_deg, 1.0);
 }

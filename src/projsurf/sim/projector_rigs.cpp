@@ -17,7 +17,7 @@ constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 std::string RigSpec::name() const {
     char buf[120];
-    std::snprintf(buf, sizeof buf, "offset %3.0f%% roll %+.1f fy/fx %.3f k1 %+.2f", offset * 100, roll_deg, fy_ratio, k1);
+    std::snprintf(buf, sizeof buf, "offset %3.0f%% roll %+.1f fy x%.3f k1 %+.2f", offset * 100, roll_deg, fy_ratio, k1);
     return buf;
 }
 
@@ -26,7 +26,7 @@ Projector projectorRig(const RigSpec &spec) {
     Projector p = base;
     ProjectorIntrinsics in;
     in.fx = base.fx();
-    in.fy = base.fx() * spec.fy_ratio;
+    in.fy = base.fy() * spec.fy_ratio;
     in.cx = base.cx();
     in.cy = base.cy() + spec.offset * 0.5 * base.height;
     p.intrinsics = in;

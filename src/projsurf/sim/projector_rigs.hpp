@@ -15,7 +15,7 @@ namespace projsurf::sim {
 struct RigSpec {
     double offset = 0.0;    ///< vertical lens offset, fraction: cy = (H-1)/2 + offset H/2 (1.0 = 100 %)
     double roll_deg = 0.0;  ///< rotation about the optical axis, deg
-    double fy_ratio = 1.0;  ///< fy / fx
+    double fy_ratio = 1.0;  ///< fy over the example's fy (fx stays the example's)
     double k1 = 0.0;        ///< radial distortion (OpenCV k1)
     std::string name() const;
 };
