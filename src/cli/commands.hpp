@@ -13,5 +13,6 @@ void addSimulateCommand(CLI::App &app);   // cmd_simulate.cpp
 void addDemoCommand(CLI::App &app);       // cmd_demo.cpp
 void addEvalCommand(CLI::App &app);       // cmd_eval.cpp
 void addPatternsCommand(CLI::App &app);   // cmd_patterns.cpp
+void addVerifyCommand(CLI::App &app);     // cmd_verify.cpp
 
 }  // namespace projsurf::cli

@@ -51,6 +51,7 @@ int main(int argc, char **argv) {
     projsurf::cli::addDemoCommand(app);
     projsurf::cli::addEvalCommand(app);
     projsurf::cli::addPatternsCommand(app);
+    projsurf::cli::addVerifyCommand(app);
 
     std::vector<std::string> args = glueNegativeValues(argc, argv);
     std::vector<char *> cargs;
