@@ -107,7 +107,7 @@ TEST(ProjectorModel, WithoutTheOptionalFieldsNothingChanges) {
     Eigen::Matrix3d r;
     r << p.right(), p.down(), p.axis();
     full.setRotation(r);
-    for (const Eigen::Vector3d q : {Eigen::Vector3d(0.3, -0.2, 2.0), Eigen::Vector3d(-0.5, 0.1, 3.5)}) {
+    for (const Eigen::Vector3d &q : {Eigen::Vector3d(0.3, -0.2, 2.0), Eigen::Vector3d(-0.5, 0.1, 3.5)}) {
         EXPECT_LT((*full.toPixel(q) - *p.toPixel(q)).norm(), 1e-9);
         EXPECT_LT((*pixelByEq7(p, q) - *p.toPixel(q)).norm(), 1e-9);
     }
@@ -138,7 +138,7 @@ TEST(ProjectorModel, FullModelKeysRoundTripAndBadRotationsAreRefused) {
     EXPECT_NEAR(back.fy(), p.fy(), 1e-6);
     EXPECT_NEAR(back.cy(), p.cy(), 1e-6);
     EXPECT_NEAR(back.distortion[0], 0.05, 1e-9);
-    for (const Eigen::Vector3d q : {Eigen::Vector3d(0.3, -0.4, 2.0), Eigen::Vector3d(-0.5, -0.9, 3.5)})
+    for (const Eigen::Vector3d &q : {Eigen::Vector3d(0.3, -0.4, 2.0), Eigen::Vector3d(-0.5, -0.9, 3.5)})
         EXPECT_LT((*back.toPixel(q) - *p.toPixel(q)).norm(), 1e-4);
     // fov_deg follows from the intrinsics.
     const auto fov = fieldOfView(p);
@@ -255,4 +255,13 @@ TEST(ProjectorModel, EvalScoreSeparatesTheTrueModelFromThePapersModel) {
     const sim::CalibrationScore paper = sim::scoreCalibration(sim::paperModelOf(truth), truth, sensor, 4);
     EXPECT_GT(paper.rms_px, 5.0);
     EXPECT_GT(paper.upright_deg, 1.0);
+}
+
+TEST(ProjectorModel, DirectionsBeyondTheLensFoldAreNotLit) {
+    Projector p = sim::projectorRig({0.0, 0.0, 1.0, -0.05});
+    // r = tan(angle); r (1 + k1 r^2) peaks at r = 1 / sqrt(3 * 0.05) = 2.58 (69 deg).
+    const Eigen::Vector3d wide = p.origin + std::cos(80 * M_PI / 180) * p.axis() + std::sin(80 * M_PI / 180) * p.right();
+    EXPECT_FALSE(p.toPixel(wide).has_value());
+    const Eigen::Vector3d inside = p.origin + std::cos(15 * M_PI / 180) * p.axis() + std::sin(15 * M_PI / 180) * p.right();
+    EXPECT_TRUE(p.toPixel(inside).has_value());
 }

@@ -67,7 +67,9 @@ TEST(Verify, FindsWhereThePictureLandedWithARightAndAWrongCalibration) {
                     "from the detection's corners\n",
                     believed == &truth ? "right" : "1 deg yaw wrong", worst * 1000, off * 1000);
         EXPECT_LT(worst, 0.005);
-        if (believed == &wrong) EXPECT_GT(off, 0.02);
+        if (believed == &wrong) {
+            EXPECT_GT(off, 0.02);
+        }
     }
 }
 

@@ -63,6 +63,11 @@ std::optional<Eigen::Vector2d> Projector::toPixel(const Eigen::Vector3d &point) 
     if (distorted()) {
         const auto ideal = toIdealPixel(point);
         if (!ideal) return std::nullopt;
+        // Beyond the radius where the radial polynomial stops growing the model folds back
+        // into the picture: such directions are not lit.
+        const double x = (ideal->x() - cx()) / fx(), y = (ideal->y() - cy()) / fy(), r2 = x * x + y * y;
+        const double k1 = distortion[0], k2 = distortion[1], k3 = distortion[4];
+        if (!(1.0 + r2 * (3.0 * k1 + r2 * (5.0 * k2 + r2 * 7.0 * k3)) > 0.0)) return std::nullopt;
         return pixelFromIdeal(*ideal);
     }
     return toIdealPixel(point);

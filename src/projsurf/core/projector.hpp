@@ -63,7 +63,8 @@ struct Projector {
     /// The inverse of distort (Newton iteration); the input itself when not distorted.
     Eigen::Vector2d undistort(const Eigen::Vector2d &distorted_xy) const;
 
-    /// Framebuffer pixel that lights a camera-frame point; nullopt behind the lens.
+    /// Framebuffer pixel that lights a camera-frame point; nullopt behind the lens (or, with
+    /// distortion, beyond the radius where the radial distortion stops growing).
     std::optional<Eigen::Vector2d> toPixel(const Eigen::Vector3d &point) const;
     /// The same without the distortion: the pinhole ("ideal") pixel. Equals toPixel when
     /// not distorted. Points on a plane map to ideal pixels by a homography.
