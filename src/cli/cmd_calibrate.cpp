@@ -12,6 +12,11 @@
 
 #include "cli/commands.hpp"
 #include "projsurf/core/calibration.hpp"
+#include "projsurf/core/decoded_points.hpp"
+#include "projsurf/core/gray_code.hpp"
+#include "projsurf/core/projector_fit.hpp"
+#include "projsurf/io/pattern_files.hpp"
+#include "projsurf/io/structured_report.hpp"
 #include "projsurf/io/calibration_report.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -33,6 +38,7 @@ struct CalibrateOptions {
     std::string fov = "39.3,24.0";     // deg, Aaxa P300 (paper 3.1.2)
     std::string resolution = "1280,800";  // px, Aaxa P300
     int threshold = 50;                // paper 3.1.1
+    bool resolution_given = false;
 };
 
 /// "A,B" -> two finite numbers; InputError naming the option otherwise.
@@ -89,6 +95,47 @@ void writePicture(const CalibrateOptions &o) {
               << "), capture it from 3 or more robot positions; see docs/calibration.md\n";
 }
 
+/// Structured light (contract, "Structured-light calibration"): decode every pose, lift
+/// through its depth, fit the full model, write it with the residuals.
+void runStructured(const CalibrateOptions &o, int res_w, int res_h) {
+    const fs::path dir(o.captures);
+    const std::string list_path = (dir / "patterns.yaml").string();
+    const PatternList list = readPatternList(list_path);
+    if (o.resolution_given && (res_w != list.width || res_h != list.height))
+        throw InputError(list_path, "patterns are " + std::to_string(list.width) + "x" + std::to_string(list.height) +
+                                        " but --resolution says " + std::to_string(res_w) + "x" + std::to_string(res_h));
+    const CameraIntrinsics camera = readCamera((dir / "camera.yaml").string());
+    const std::vector<PoseCaptures> poses = readPoseCaptures(o.captures, list, camera.width, camera.height);
+    std::vector<ProjectorCorrespondence> pairs;
+    std::vector<int> decoded;
+    for (const auto &pose : poses) {
+        const GrayDecoding d = decodeGray(pose.colour, list.width, list.height);
+        const auto lifted = liftDecoding(d, pose.depth, camera);
+        decoded.push_back(d.decoded);
+        pairs.insert(pairs.end(), lifted.begin(), lifted.end());
+    }
+    ProjectorFitConfig cfg;
+    cfg.width = list.width;
+    cfg.height = list.height;
+    const ProjectorFit fit = fitProjector(pairs, cfg);
+    if (!fit.ok) throw InputError(o.captures, fit.problem);
+
+    writeStructuredCalibration(o.out, fit, o.captures, static_cast<int>(poses.size()), utcNow());
+
+    const Projector &p = fit.projector;
+    std::cout << "projsurf calibrate: structured light, " << poses.size() << " pose(s), " << pairs.size()
+              << " decoded pixels with depth -> " << o.out << "\n";
+    for (std::size_t k = 0; k < poses.size(); ++k)
+        std::cout << "  " << poses[k].dir << ": " << decoded[k] << " camera pixels decoded\n";
+    std::cout << fmt("  intrinsics fx %.1f fy %.1f cx %.1f cy %.1f px", p.fx(), p.fy(), p.cx(), p.cy())
+              << fmt(", k1 %.4f k2 %.4f\n", p.distortion[0], p.distortion[1])
+              << fmt("  origin [%.4f, %.4f, %.4f] m", p.origin.x(), p.origin.y(), p.origin.z())
+              << fmt(", axis [%.5f, %.5f, %.5f]\n", p.axis().x(), p.axis().y(), p.axis().z())
+              << fmt("  reprojection rms %.3f px, max %.2f px over %.0f inliers", fit.rms_px, fit.max_px,
+                     static_cast<double>(fit.inliers))
+              << fmt(" (framebuffer coverage %.0f %%, relief %.0f mm)\n", fit.coverage * 100, fit.relief_m * 1000);
+}
+
 void run(const CalibrateOptions &o) {
     if (!o.write_picture.empty()) return writePicture(o);
     if (o.captures.empty()) throw CLI::RequiredError("--captures");
@@ -103,6 +150,8 @@ void run(const CalibrateOptions &o) {
     if (!fs::is_directory(o.captures, ec)) throw InputError(o.captures, "not a directory");
     requireWritableLocation(o.out);
     const fs::path dir(o.captures);
+    if (fs::exists(dir / "patterns.yaml", ec) && fs::is_directory(dir / "pose_0", ec))
+        return runStructured(o, res_w, res_h);
     const CameraIntrinsics camera = readCamera((dir / "camera.yaml").string());
 
     // capture_<k>_rgb.png for k = 0..N-1, each with its capture_<k>_depth.png.
@@ -219,18 +268,21 @@ void addCalibrateCommand(CLI::App &app) {
                 "written but the captures disagree (fit.verdict: redo; take them again before using it, see "
                 "docs/calibration.md); 2 for bad input (nothing written).");
     sub->add_option("--captures", opts->captures,
-                    "folder with camera.yaml and capture_k_rgb.png / capture_k_depth.png, k = 0..N-1 (N >= 3); "
-                    "required unless --write-picture");
+                    "folder with camera.yaml and capture_k_rgb.png / capture_k_depth.png, k = 0..N-1 (N >= 3); or "
+                    "with patterns.yaml and pose_k/ (structured light, see projsurf patterns); required unless --write-picture");
     sub->add_option("--out", opts->out, "calibration YAML to write; required unless --write-picture");
     sub->add_option("--write-picture", opts->write_picture,
                     "write the calibration picture (black, one white disc in the centre) at --resolution "
                     "to this PNG, and nothing else");
     sub->add_option("--fov-deg", opts->fov, "projector's full horizontal,vertical field of view, deg")
         ->capture_default_str();
-    sub->add_option("--resolution", opts->resolution, "projector framebuffer width,height, px")->capture_default_str();
+    auto *res = sub->add_option("--resolution", opts->resolution, "projector framebuffer width,height, px")->capture_default_str();
     sub->add_option("--threshold", opts->threshold, "grey level that separates the disc from the background (0-254)")
         ->capture_default_str();
-    sub->callback([opts] { run(*opts); });
+    sub->callback([opts, res] {
+        opts->resolution_given = res->count() > 0;
+        run(*opts);
+    });
 }
 
 }  // namespace projsurf::cli

@@ -21,6 +21,8 @@
 #include "projsurf/eval/experiments.hpp"
 #include "projsurf/eval/realistic_suite.hpp"
 #include "projsurf/eval/colour_suite.hpp"
+#include "projsurf/eval/projector_eval.hpp"
+#include "projsurf/io/files.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
 namespace fs = std::filesystem;
@@ -38,6 +40,7 @@ struct EvalOptions {
     std::string labels_dir = "labels/real";  // label files of the real frames, relative to the repository root
     bool labels_dir_given = false;
     bool no_progress = false;
+    bool projector_only = false;  // only the projector table (issue 12)
 };
 
 /// The 1-minute load average (Linux), NaN when unknown.
@@ -63,6 +66,20 @@ std::string defaultLabelsDir(const std::string &relative) {
     return relative;
 }
 
+/// The projector table (sim/projector_eval.hpp): DIR/projector.md and a summary line.
+void runProjectorTable(const EvalOptions &o) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto rows = sim::runProjectorEval(o.seed, o.quick);
+    std::error_code ec;
+    fs::create_directories(o.out, ec);
+    if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
+    const std::string md = sim::projectorEvalMarkdown(rows);
+    writeFileAtomic((fs::path(o.out) / "projector.md").string(), md);
+    std::printf("%s", md.c_str());
+    std::printf("%s (%.0f s); wrote %s/projector.md\n", sim::projectorEvalSummary(rows).c_str(),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), o.out.c_str());
+}
+
 void run(const EvalOptions &o, const std::string &command) {
     if (o.out.empty()) throw InputError("--out", "an output directory is required");
     if (o.rounds < 1 || o.rounds > 100) throw InputError("--rounds", "must be between 1 and 100");
@@ -79,6 +96,7 @@ void run(const EvalOptions &o, const std::string &command) {
     std::vector<std::string> label_frames;
     for (const std::string &l : labels) label_frames.push_back(readRealLabel(l).frame);
 
+    if (o.projector_only) return runProjectorTable(o);
     // The default real-frame folder is taken from the working directory, and said (before the
     // long simulation) when it is not there.
     if (!o.real_dir_given && !fs::is_directory(o.real_dir, ec))
@@ -159,6 +177,7 @@ void run(const EvalOptions &o, const std::string &command) {
     std::printf("%s\n", sim::realisticSuiteSummary(realistic).c_str());
     std::printf("%s\n", sim::colourSuiteSummary(colour).c_str());
     if (!labelled.empty()) std::printf("%s\n", labelledSummaryLine(summariseLabelled(labelled)).c_str());
+    if (!o.quick) runProjectorTable(o);
 }
 
 }  // namespace
@@ -177,6 +196,9 @@ void addEvalCommand(CLI::App &app) {
                                    "Folder of real-frame label files (<frame>.yaml); default labels/real of the "
                                    "repository, skipped when missing; '' to skip");
     sub->add_flag("--no-progress", o->no_progress, "No progress bar on stderr");
+    sub->add_flag("--projector-only", o->projector_only,
+                  "Only the real-projector table (disc vs structured-light calibration on simulated lens-offset "
+                  "projectors): DIR/projector.md; with --quick, 3 rigs (the full eval adds it unless --quick)");
     sub->callback([o, real, labels] {
         EvalOptions opts = *o;
         opts.real_dir_given = real->count() > 0;

@@ -21,5 +21,7 @@ void addDemoCommand(CLI::App &app);       // cmd_demo.cpp
 void addEvalCommand(CLI::App &app);       // cmd_eval.cpp
 void addBagCommand(CLI::App &app);        // cmd_bag.cpp
 void addPlanCommand(CLI::App &app);       // cmd_plan.cpp
+void addPatternsCommand(CLI::App &app);   // cmd_patterns.cpp
+void addVerifyCommand(CLI::App &app);     // cmd_verify.cpp
 
 }  // namespace projsurf::cli

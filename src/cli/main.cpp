@@ -52,6 +52,8 @@ int main(int argc, char **argv) {
     projsurf::cli::addEvalCommand(app);
     projsurf::cli::addBagCommand(app);
     projsurf::cli::addPlanCommand(app);
+    projsurf::cli::addPatternsCommand(app);
+    projsurf::cli::addVerifyCommand(app);
 
     std::vector<std::string> args = glueNegativeValues(argc, argv);
     std::vector<char *> cargs;

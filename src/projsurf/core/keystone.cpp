@@ -6,13 +6,14 @@
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
+#include "projsurf/core/keystone_remap.hpp"
 #include "projsurf/core/keystone_warper.hpp"
 
 namespace projsurf {
 
 std::optional<Eigen::Vector2d> pixelFromWorkspace(const Projector &projector, const Eigen::Vector3d &point,
                                           const Corners3 &rays) {
-    const Eigen::Vector3d axis = projector.direction.normalized();
+    const Eigen::Vector3d axis = projector.axis();
     const Eigen::Vector3d right = projector.right(), down = projector.down();
     const Eigen::Vector3d rel = point - projector.origin;
     const double depth = rel.dot(axis);  // the plane perpendicular to the axis through the point
@@ -70,15 +71,19 @@ KeystoneResult computeKeystone(const Projector &projector, const Rectangle &rect
     const Corners3 rays = projector.cornerRays();
     const char *names[4] = {"top-left", "top-right", "bottom-right", "bottom-left"};
     double overshoot = 0.0;
+    const bool full_model = projector.fullModel();
+    Corners2 ideal_px;
     for (int i = 0; i < 4; ++i) {
-        const auto full = pixelFromWorkspace(projector, rect.corners[i], rays);
-        const auto shown = pixelFromWorkspace(projector, k.shown.corners[i], rays);
-        if (!full || !shown) {
+        const auto full = full_model ? projector.toPixel(rect.corners[i]) : pixelFromWorkspace(projector, rect.corners[i], rays);
+        const auto shown = full_model ? projector.toPixel(k.shown.corners[i]) : pixelFromWorkspace(projector, k.shown.corners[i], rays);
+        const auto ideal = full_model ? projector.toIdealPixel(k.shown.corners[i]) : shown;
+        if (!full || !shown || !ideal) {
             result.problem = std::string("the rectangle's ") + names[i] + " corner is behind the projector";
             return result;
         }
         k.rectangle_px[i] = *full;
         k.picture_px[i] = *shown;
+        ideal_px[i] = *ideal;
         const double lo = -0.5, wr = projector.width - 0.5, hr = projector.height - 0.5;
         overshoot = std::max({overshoot, lo - full->x(), full->x() - wr, lo - full->y(), full->y() - hr});
     }
@@ -97,7 +102,7 @@ KeystoneResult computeKeystone(const Projector &projector, const Rectangle &rect
                                           {static_cast<float>(w - 0.5), static_cast<float>(h - 0.5)},
                                           {-0.5f, static_cast<float>(h - 0.5)}};
     std::vector<cv::Point2f> dst;
-    for (const auto &p : k.picture_px) dst.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()));
+    for (const auto &p : ideal_px) dst.emplace_back(static_cast<float>(p.x()), static_cast<float>(p.y()));
     // getPerspectiveTransform solves in double but takes float points; refine the solution in
     // double so the homography maps the corners to well under 1e-3 px.
     cv::Mat H = cv::getPerspectiveTransform(src, dst);
@@ -105,7 +110,7 @@ KeystoneResult computeKeystone(const Projector &projector, const Rectangle &rect
         cv::Mat A(8, 8, CV_64F, cv::Scalar(0)), b(8, 1, CV_64F);
         const double sx[4] = {-0.5, w - 0.5, w - 0.5, -0.5}, sy[4] = {-0.5, -0.5, h - 0.5, h - 0.5};
         for (int i = 0; i < 4; ++i) {
-            const double X = sx[i], Y = sy[i], u = k.picture_px[i].x(), v = k.picture_px[i].y();
+            const double X = sx[i], Y = sy[i], u = ideal_px[i].x(), v = ideal_px[i].y();
             double *r0 = A.ptr<double>(2 * i), *r1 = A.ptr<double>(2 * i + 1);
             r0[0] = X, r0[1] = Y, r0[2] = 1, r0[6] = -u * X, r0[7] = -u * Y;
             r1[3] = X, r1[4] = Y, r1[5] = 1, r1[6] = -v * X, r1[7] = -v * Y;
@@ -119,12 +124,14 @@ KeystoneResult computeKeystone(const Projector &projector, const Rectangle &rect
         }
     }
     k.homography = cv::Matx33d(H);
+    if (projector.distorted()) k.remap = keystoneRemap(projector, k);
     result.keystone = k;
     return result;
 }
 
 cv::Mat warpToFramebuffer(const cv::Mat &picture, const Keystone &k) {
     if (picture.empty()) return cv::Mat(k.framebuffer, picture.type(), cv::Scalar::all(0));
+    if (!k.remap.empty()) return remapToFramebuffer(picture, k);
     if (picture.depth() == CV_8U) return KeystoneWarper::warpOnce(picture, k);
     // Other depths: OpenCV's warp after the same area-averaging prepass.
     if (picture.size() != k.picture)

@@ -40,7 +40,11 @@ struct Keystone {
     Rectangle shown;        ///< the letterboxed part of the rectangle that shows the picture, 3-D
     Corners2 rectangle_px;  ///< framebuffer positions of the detected rectangle's corners
     Corners2 picture_px;    ///< framebuffer positions of the picture's outer corners
-    cv::Matx33d homography; ///< picture pixel -> framebuffer pixel (centres at integers)
+    cv::Matx33d homography; ///< picture pixel -> ideal (undistorted) framebuffer pixel (centres at integers)
+    /// With a distorted projector: per framebuffer pixel, the position it samples in the warp
+    /// source (the picture, or its area-reduced copy, see warpSourceFor), CV_32FC2; the warp is
+    /// then this remap instead of the homography. Empty without distortion.
+    cv::Mat remap;
 };
 
 struct KeystoneResult {
@@ -53,6 +57,8 @@ struct KeystoneResult {
 constexpr double kKeystoneTolerancePx = 0.5;
 
 /// Eq. (7) pixels of the letterboxed rectangle and the picture -> framebuffer homography
+/// (the paper's model; with the full model of the contract, Projector::toPixel for the pixels
+/// and the homography to the corners' ideal pixels, plus `remap` when distorted)
 /// (OpenCV, four exact correspondences: the picture's outer corners (-0.5,-0.5), (w-0.5,-0.5),
 /// (w-0.5,h-0.5), (-0.5,h-0.5) to those pixels). Refuses (problem set) when a corner is behind
 /// the projector or the rectangle leaves the framebuffer by more than `tolerance_px`.

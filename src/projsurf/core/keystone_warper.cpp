@@ -19,6 +19,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "projsurf/core/keystone_remap.hpp"
+
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -461,6 +463,10 @@ void KeystoneWarper::blend(const cv::Mat &src, cv::Mat &framebuffer, int y_begin
 }
 
 void KeystoneWarper::warp(const cv::Mat &picture, cv::Mat &framebuffer) {
+    if (!keystone_.remap.empty()) {  // a distorted projector: the warp is a remap
+        framebuffer = remapToFramebuffer(picture, keystone_);
+        return;
+    }
     const cv::Mat in = picture;  // keeps the pixels alive even if `framebuffer` is the same Mat
     const cv::Mat &src = prepare(in, framebuffer);
     blend(src, framebuffer, 0, framebuffer.rows);
@@ -474,6 +480,7 @@ cv::Mat KeystoneWarper::warp(const cv::Mat &picture) {
 
 cv::Mat KeystoneWarper::warpOnce(const cv::Mat &picture, const Keystone &keystone, Simd simd) {
     // Plan a row, blend it, forget it: no per-pixel tables for the whole framebuffer.
+    if (!keystone.remap.empty()) return remapToFramebuffer(picture, keystone);
     KeystoneWarper once(keystone, false);
     once.simd_ = simd;
     cv::Mat framebuffer;

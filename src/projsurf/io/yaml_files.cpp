@@ -1,6 +1,8 @@
 #include "projsurf/io/yaml_files.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <Eigen/SVD>
 #include <yaml-cpp/yaml.h>
 
 #include "projsurf/io/errors.hpp"
@@ -44,6 +46,49 @@ std::vector<double> numbers(const std::string &path, const YAML::Node &node, con
     std::vector<double> out;
     for (std::size_t i = 0; i < n; ++i) out.push_back(number(path, node[i], what));
     return out;
+}
+
+/// The contract's optional full-model keys (intrinsics, distortion, rotation), when present.
+void readFullModel(const std::string &path, const YAML::Node &p, Projector &proj) {
+    if (p["intrinsics"]) {
+        const YAML::Node k = p["intrinsics"];
+        ProjectorIntrinsics in;
+        in.fx = number(path, child(path, k, "fx", "projector.intrinsics."), "projector.intrinsics.fx");
+        in.fy = number(path, child(path, k, "fy", "projector.intrinsics."), "projector.intrinsics.fy");
+        in.cx = number(path, child(path, k, "cx", "projector.intrinsics."), "projector.intrinsics.cx");
+        in.cy = number(path, child(path, k, "cy", "projector.intrinsics."), "projector.intrinsics.cy");
+        if (!(in.fx > 0 && in.fy > 0)) throw InputError(path, "projector.intrinsics.fx and fy must be positive");
+        const double span = 4.0 * std::max(proj.width, proj.height);
+        if (std::abs(in.cx - 0.5 * proj.width) > span || std::abs(in.cy - 0.5 * proj.height) > span)
+            throw InputError(path, "projector.intrinsics.cx, cy lie implausibly far outside the framebuffer");
+        proj.intrinsics = in;
+    }
+    if (p["distortion"]) {
+        const auto d = numbers(path, p["distortion"], "projector.distortion", 5);
+        for (int i = 0; i < 5; ++i) proj.distortion[i] = d[i];
+        if (std::any_of(d.begin(), d.end(), [](double k) { return std::abs(k) > 10.0; }))
+            throw InputError(path, "projector.distortion has a coefficient beyond +-10: not a projector lens");
+    }
+    if (p["rotation"]) {
+        const YAML::Node r = p["rotation"];
+        if (!r.IsSequence() || r.size() != 3)
+            throw InputError(path, "'projector.rotation' must be a list of 3 rows of 3 numbers");
+        Eigen::Matrix3d R;
+        for (int i = 0; i < 3; ++i) {
+            const auto row = numbers(path, r[i], "projector.rotation", 3);
+            for (int j = 0; j < 3; ++j) R(i, j) = row[j];
+        }
+        if ((R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() > 1e-3)
+            throw InputError(path, "projector.rotation is not orthonormal (to 1e-3)");
+        if (!(R.determinant() > 0)) throw InputError(path, "projector.rotation has determinant -1: not a rotation");
+        const double angle = std::acos(std::clamp(R.col(2).normalized().dot(proj.direction), -1.0, 1.0)) / kDeg;
+        if (!(angle <= 0.5))
+            throw InputError(path, "projector.rotation's third column is " + std::to_string(angle) +
+                                       " deg from projector.axis.direction (at most 0.5 allowed)");
+        // The nearest exact rotation, so toPixel and ray stay inverse to each other.
+        Eigen::JacobiSVD<Eigen::Matrix3d> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
+        proj.setRotation(svd.matrixU() * svd.matrixV().transpose());
+    }
 }
 
 }  // namespace
@@ -91,6 +136,7 @@ Projector readCalibration(const std::string &path) {
     const Eigen::Vector3d dir(d[0], d[1], d[2]);
     if (dir.norm() < 1e-9) throw InputError(path, "projector.axis.direction is the zero vector");
     proj.direction = dir.normalized();
+    readFullModel(path, p, proj);
     if (!isValidProjector(proj))
         throw InputError(path, "projector.axis.direction is (nearly) vertical: the projector's image axes are undefined");
     return proj;
@@ -114,6 +160,21 @@ YAML::Node calibrationNode(const Projector &projector) {
     const Eigen::Vector3d d = projector.direction.normalized();
     p["axis"]["origin"] = seq({o.x(), o.y(), o.z()});
     p["axis"]["direction"] = seq({d.x(), d.y(), d.z()});
+    if (projector.fullModel()) {  // the contract's optional keys; fov_deg then follows from them
+        const auto fov = fieldOfView(projector);
+        p["fov_deg"] = seq({fov[0] / kDeg, fov[1] / kDeg});
+        const Eigen::Vector3d a = projector.axis();
+        p["axis"]["direction"] = seq({a.x(), a.y(), a.z()});
+        p["intrinsics"]["fx"] = projector.fx();
+        p["intrinsics"]["fy"] = projector.fy();
+        p["intrinsics"]["cx"] = projector.cx();
+        p["intrinsics"]["cy"] = projector.cy();
+        const auto &k = projector.distortion;
+        p["distortion"] = seq({k[0], k[1], k[2], k[3], k[4]});
+        const Eigen::Matrix3d R = projector.rotation ? *projector.rotation
+                                                     : (Eigen::Matrix3d() << projector.right(), projector.down(), a).finished();
+        for (int i = 0; i < 3; ++i) p["rotation"].push_back(seq({R(i, 0), R(i, 1), R(i, 2)}));
+    }
     return p;
 }
 

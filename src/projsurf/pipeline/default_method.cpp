@@ -144,7 +144,7 @@ void shapeWall(const Cloud &cloud, const CloudSample &s, const DetectorConfig &c
 /// plane was seen; false when the projector does not reach the plane or the two do not meet.
 bool frameCandidate(const Cloud &cloud, const CloudSample &s, const Projector &projector, const DetectorConfig &cfg,
                     double aspect, PlaneCandidate &c) {
-    const auto footprint = footprintOnPlane(c.plane, c.frame, projector.origin, projector.cornerRays());
+    const auto footprint = footprintOnPlane(c.plane, c.frame, projector.origin, projector.footprintRays());
     if (!footprint) return false;
     c.footprint = *footprint;
     Eigen::Vector2d lo = c.footprint.uv[0], hi = c.footprint.uv[0];

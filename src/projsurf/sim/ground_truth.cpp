@@ -49,7 +49,7 @@ SurfaceTruth surfaceTruth(const Scene &scene, const std::vector<int> &quads, con
     st.label = first.label;
     st.cell = opt.cell;
     st.plane = makePlane(first.normal(), -first.normal().dot(first.corner));
-    const auto on_axis = intersectRay(st.plane, projector.origin, projector.direction.normalized());
+    const auto on_axis = intersectRay(st.plane, projector.origin, projector.axis());
     st.frame = makePlaneFrame(st.plane, gravity, on_axis ? *on_axis : first.center());
 
     // Extent: the surface's quads, cut to the projector footprint when it is bounded.
@@ -97,7 +97,15 @@ SurfaceTruth surfaceTruth(const Scene &scene, const std::vector<int> &quads, con
     auto point_free = [&](const Eigen::Vector3d &p) {
         if (!std::any_of(tests.begin(), tests.end(), [&](const QuadTest &t) { return t.contains(p); })) return false;
         const Eigen::Vector3d pp = proj.toView(p);
-        if (!(pp.z() > 0.0) || !proj.inside(proj.pixelOf(pp))) return false;
+        if (!(pp.z() > 0.0)) return false;
+        if (projector.distorted()) {  // the lit area is the framebuffer through the lens
+            const auto fb = projector.toPixel(p);
+            if (!fb || !(fb->x() >= -0.5 && fb->x() < projector.width - 0.5 && fb->y() >= -0.5 &&
+                         fb->y() < projector.height - 0.5))
+                return false;
+        } else if (!proj.inside(proj.pixelOf(pp))) {
+            return false;
+        }
         if (!(p.z() >= sensor.min_depth && p.z() <= sensor.max_depth)) return false;
         if (!cam.inside(cam.pixelOf(p))) return false;
         if (std::abs(st.plane.normal.dot(p)) < cos_grazing * p.norm()) return false;

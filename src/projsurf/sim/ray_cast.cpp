@@ -36,13 +36,38 @@ PinholeView projectorView(const Projector &p) {
     v.origin = p.origin;
     v.rotation.row(0) = p.right().transpose();
     v.rotation.row(1) = p.down().transpose();
-    v.rotation.row(2) = p.direction.normalized().transpose();
+    v.rotation.row(2) = p.axis().transpose();
     v.fx = p.fx();
     v.fy = p.fy();
     v.cx = p.cx();
     v.cy = p.cy();
     v.width = p.width;
     v.height = p.height;
+    if (p.distorted()) {
+        // The ideal (undistorted) pinhole view covering every lit direction: the bounding box
+        // of the framebuffer's edges in ideal pixels. Framebuffer pixels: Projector::toPixel.
+        double lo_x = HUGE_VAL, hi_x = -HUGE_VAL, lo_y = HUGE_VAL, hi_y = -HUGE_VAL;
+        const int n = 64;
+        for (int i = 0; i <= n; ++i) {
+            const double s = static_cast<double>(i) / n;
+            const Eigen::Vector2d pts[4] = {{-0.5 + s * p.width, -0.5},
+                                            {-0.5 + s * p.width, p.height - 0.5},
+                                            {-0.5, -0.5 + s * p.height},
+                                            {p.width - 0.5, -0.5 + s * p.height}};
+            for (const auto &q : pts) {
+                const Eigen::Vector2d ideal = p.idealFromPixel(q);
+                lo_x = std::min(lo_x, ideal.x());
+                hi_x = std::max(hi_x, ideal.x());
+                lo_y = std::min(lo_y, ideal.y());
+                hi_y = std::max(hi_y, ideal.y());
+            }
+        }
+        const int left = static_cast<int>(std::ceil(-0.5 - lo_x)) + 1, top = static_cast<int>(std::ceil(-0.5 - lo_y)) + 1;
+        v.cx += left;
+        v.cy += top;
+        v.width = static_cast<int>(std::ceil(hi_x + 0.5)) + left + 1;
+        v.height = static_cast<int>(std::ceil(hi_y + 0.5)) + top + 1;
+    }
     return v;
 }
 

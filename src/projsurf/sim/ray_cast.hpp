@@ -38,7 +38,9 @@ struct PinholeView {
 
 /// The RGB-D camera at the origin of its own frame.
 PinholeView cameraView(const CameraIntrinsics &camera);
-/// The projector as the contract defines it (principal point at the framebuffer centre, zero roll).
+/// The projector as a pinhole view (its intrinsics and axes). With distortion it is the ideal
+/// pinhole widened to every lit direction (for shadow maps); framebuffer pixels of points then
+/// come from Projector::toPixel, not from the view.
 PinholeView projectorView(const Projector &projector);
 
 /// A viewer `distance` metres in front of `target` on `plane`, looking straight at it, image

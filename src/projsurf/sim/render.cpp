@@ -33,6 +33,7 @@ cv::Vec3f sampleBilinear(const cv::Mat &img, double x, double y) {
 struct ProjectorLight {
     ShadowMap map;
     PinholeView view;
+    Projector projector;
     cv::Mat framebuffer;
 };
 
@@ -44,6 +45,7 @@ std::optional<ProjectorLight> makeLight(const Scene &scene, const std::optional<
         throw std::invalid_argument("render: the framebuffer must be BGR 8-bit of the projector's resolution");
     ProjectorLight light;
     light.view = projectorView(projection->projector);
+    light.projector = projection->projector;
     light.map = makeShadowMap(scene, light.view, std::min(1.0, static_cast<double>(width) / light.view.width));
     light.framebuffer = fb;
     return light;
@@ -66,8 +68,13 @@ cv::Vec3f shade(const Quad &quad, const Eigen::Vector3d &p, int qi, const std::o
     const cv::Vec3f albedo = albedoAt(quad, p);
     cv::Vec3f c = albedo * static_cast<float>(lighting.ambient) + cv::Vec3f::all(quad.emission);
     if (light && light->map.reaches(p, qi)) {
-        const Eigen::Vector2d px = light->view.pixelOf(light->view.toView(p));
-        if (light->view.inside(px)) {
+        const bool lens = light->projector.distorted();
+        const auto fb_px = lens ? light->projector.toPixel(p) : std::optional<Eigen::Vector2d>();
+        const Eigen::Vector2d px = lens ? (fb_px ? *fb_px : Eigen::Vector2d(-1e9, -1e9))
+                                        : light->view.pixelOf(light->view.toView(p));
+        const bool inside = px.x() >= -0.5 && px.x() < light->framebuffer.cols - 0.5 && px.y() >= -0.5 &&
+                            px.y() < light->framebuffer.rows - 0.5;
+        if (lens ? inside : light->view.inside(px)) {
             const cv::Vec3f fbc = sampleBilinear(light->framebuffer, px.x(), px.y());
             c += albedo.mul(fbc) * static_cast<float>(lighting.projector_gain);
         }

@@ -1,0 +1,42 @@
+// projsurf patterns: write the structured-light patterns (Gray-code columns and rows with their
+// inverses, white, black) and patterns.yaml, the order to project them in.
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "cli/parse.hpp"
+#include "projsurf/io/errors.hpp"
+#include "projsurf/io/pattern_files.hpp"
+
+namespace projsurf::cli {
+namespace {
+
+struct PatternsOptions {
+    std::string out;
+    std::string resolution = "1280,800";  // px, Aaxa P300 (paper 3.1.2)
+};
+
+void run(const PatternsOptions &o) {
+    const Eigen::Vector2d wh = parsePair("--resolution", o.resolution);
+    const double w = wh.x(), h = wh.y();
+    if (w < 2 || h < 2 || w > 16384 || h > 16384 || w != static_cast<int>(w) || h != static_cast<int>(h))
+        throw InputError("--resolution", "must be two whole numbers between 2 and 16384");
+    const PatternList list = writePatternSet(o.out, static_cast<int>(w), static_cast<int>(h));
+    std::cout << "projsurf patterns: " << list.names.size() << " patterns " << list.width << "x" << list.height
+              << " -> " << o.out << "/patterns/, order in " << o.out << "/patterns.yaml\n"
+              << "  at each robot position k, project them full screen in that order and save the colour capture of "
+                 "each as "
+              << o.out << "/pose_k/<name>.png, plus one depth.png; add camera.yaml; then projsurf calibrate --captures "
+              << o.out << " (see docs/projector.md)\n";
+}
+
+}  // namespace
+
+void addPatternsCommand(CLI::App &app) {
+    auto opts = std::make_shared<PatternsOptions>();
+    auto *sub = app.add_subcommand("patterns", "write the structured-light patterns for projector calibration");
+    sub->add_option("--out", opts->out, "folder to write patterns/ and patterns.yaml into")->required();
+    sub->add_option("--resolution", opts->resolution, "projector framebuffer width,height, px")->capture_default_str();
+    sub->callback([opts] { run(*opts); });
+}
+
+}  // namespace projsurf::cli

@@ -1,0 +1,144 @@
+// projsurf verify: the closed-loop check. The framebuffer `correct` wrote is projected and
+// captured; verify finds the picture in the colour image, lifts its corners through the depth
+// and reports where they landed against where the detection meant them to, with eq. 8.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <opencv2/imgcodecs.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/parse.hpp"
+#include "projsurf/core/keystone.hpp"
+#include "projsurf/core/projected_picture.hpp"
+#include "projsurf/io/detection_json.hpp"
+#include "projsurf/io/errors.hpp"
+#include "projsurf/io/files.hpp"
+#include "projsurf/io/yaml_files.hpp"
+
+namespace fs = std::filesystem;
+
+namespace projsurf::cli {
+namespace {
+
+struct VerifyOptions {
+    std::string calib, detection, framebuffer, captures, json, write_card, resolution = "1280,800";
+    double tolerance = 0.005;  // m: the corner target
+};
+
+std::string vec3(const Eigen::Vector3d &v) {
+    char buf[120];
+    std::snprintf(buf, sizeof buf, "[%.5f, %.5f, %.5f]", v.x(), v.y(), v.z());
+    return buf;
+}
+
+void run(const VerifyOptions &o) {
+    if (!o.write_card.empty()) {
+        const Eigen::Vector2d wh = parsePair("--resolution", o.resolution);
+        if (wh.x() < 8 || wh.y() < 8 || wh.x() > 16384 || wh.y() > 16384)
+            throw InputError("--resolution", "must be two whole numbers between 8 and 16384");
+        requireWritableFile(o.write_card);
+        requireImageWriter(o.write_card);
+        writeImageAtomic(o.write_card, testCard(static_cast<int>(wh.x()), static_cast<int>(wh.y())));
+        std::cout << "projsurf verify: test card -> " << o.write_card
+                  << "; correct it (projsurf correct --image " << o.write_card
+                  << " ...), project the framebuffer, capture rgb.png and depth.png\n";
+        return;
+    }
+    for (const auto &[name, value] : {std::pair<const char *, const std::string &>{"--calib", o.calib},
+                                      {"--detection", o.detection},
+                                      {"--framebuffer", o.framebuffer},
+                                      {"--captures", o.captures}})
+        if (value.empty()) throw CLI::RequiredError(name);
+    if (!(o.tolerance > 0 && o.tolerance < 1)) throw InputError("--tolerance", "must be between 0 and 1 m");
+    if (!o.json.empty()) requireWritableFile(o.json);
+    const Projector projector = readCalibration(o.calib);
+    const DetectionFile det = readDetectionJson(o.detection);
+    const cv::Mat fb = readImage(o.framebuffer, cv::IMREAD_COLOR);
+    if (fb.cols != projector.width || fb.rows != projector.height)
+        throw InputError(o.framebuffer, "is " + std::to_string(fb.cols) + "x" + std::to_string(fb.rows) +
+                                            " but the calibration's framebuffer is " + std::to_string(projector.width) +
+                                            "x" + std::to_string(projector.height));
+    const fs::path dir(o.captures);
+    const CameraIntrinsics camera = readCamera((dir / "camera.yaml").string());
+    const std::uint64_t pixels = static_cast<std::uint64_t>(camera.width) * camera.height;
+    const std::string rgb_path = (dir / "rgb.png").string(), depth_path = (dir / "depth.png").string();
+    const cv::Mat rgb = readImage(rgb_path, cv::IMREAD_COLOR, pixels);
+    const cv::Mat depth = readImage(depth_path, cv::IMREAD_UNCHANGED, pixels);
+    if (depth.type() != CV_16UC1) throw InputError(depth_path, "expected a 16-bit single-channel depth PNG");
+    if (rgb.cols != camera.width || rgb.rows != camera.height)
+        throw InputError(rgb_path, "size differs from camera.yaml");
+    if (depth.size() != rgb.size()) throw InputError(depth_path, "size differs from rgb.png");
+    const auto lit = litFramebufferCorners(fb);
+    if (!lit) throw InputError(o.framebuffer, "is all black: nothing was projected");
+
+    // Where the picture was meant to land: the detection's rectangle, letterboxed to the
+    // picture's aspect (the lit framebuffer corners cast onto the detected plane).
+    Rectangle meant = det.rectangle;
+    {
+        Corners3 cast;
+        bool ok = true;
+        for (int i = 0; i < 4 && ok; ++i) {
+            const auto hit = castToWall(projector, (*lit)[i], det.plane);
+            ok = hit.has_value();
+            if (ok) cast[i] = *hit;
+        }
+        if (ok) {
+            const double w = 0.5 * ((cast[1] - cast[0]).norm() + (cast[2] - cast[3]).norm());
+            const double h = 0.5 * ((cast[3] - cast[0]).norm() + (cast[2] - cast[1]).norm());
+            const double aspect = w / h, rect_aspect = det.rectangle.width / det.rectangle.height;
+            if (std::abs(aspect / rect_aspect - 1.0) > 0.02) meant = letterbox(det.rectangle, aspect);
+        }
+    }
+
+    const FoundPicture found = findProjectedPicture(rgb, depth, camera);
+    std::string json;
+    if (!found.found) {
+        json = "{\"found\": false, \"reason\": \"" + found.reason + "\"}\n";
+        std::cout << "projsurf verify: picture not found: " << found.reason << "\n";
+    } else {
+        double worst = 0;
+        std::string corners, errors;
+        for (int i = 0; i < 4; ++i) {
+            const double e = (found.corners[i] - meant.corners[i]).norm();
+            worst = std::max(worst, e);
+            corners += (i ? ", " : "") + vec3(found.corners[i]);
+            char buf[40];
+            std::snprintf(buf, sizeof buf, "%s%.4f", i ? ", " : "", e);
+            errors += buf;
+        }
+        const ShapeErrors eq8 = shapeErrors(found.corners);
+        const bool passed = worst <= o.tolerance;
+        char buf[600];
+        std::snprintf(buf, sizeof buf,
+                      "{\"found\": true, \"corners\": [%s], \"corner_error_m\": [%s], \"max_corner_error_m\": %.4f, "
+                      "\"keystone_pct\": {\"horizontal\": %.3f, \"vertical\": %.3f, \"diagonal\": %.3f}, \"passed\": %s}\n",
+                      corners.c_str(), errors.c_str(), worst, eq8.horizontal_pct, eq8.vertical_pct, eq8.diagonal_pct,
+                      passed ? "true" : "false");
+        json = buf;
+        std::printf("projsurf verify: picture found; corners landed %.1f mm from where they were meant at worst "
+                    "(tolerance %.1f mm): %s\n  eq. 8: horizontal %.2f %%, vertical %.2f %%, diagonal %.2f %%\n",
+                    worst * 1000, o.tolerance * 1000, passed ? "passed" : "FAILED", eq8.horizontal_pct,
+                    eq8.vertical_pct, eq8.diagonal_pct);
+    }
+    if (!o.json.empty()) writeFileAtomic(o.json, json);
+}
+
+}  // namespace
+
+void addVerifyCommand(CLI::App &app) {
+    auto o = std::make_shared<VerifyOptions>();
+    auto *sub = app.add_subcommand("verify", "closed-loop check: find the projected picture in the colour image and "
+                                             "report where its corners landed");
+    sub->add_option("--calib", o->calib, "projector calibration YAML");
+    sub->add_option("--detection", o->detection, "detection JSON the framebuffer was corrected for");
+    sub->add_option("--framebuffer", o->framebuffer, "the framebuffer correct wrote (of the test card) and was projected");
+    sub->add_option("--captures", o->captures, "folder with camera.yaml, rgb.png, depth.png taken while it was projected");
+    sub->add_option("--json", o->json, "write the result JSON here");
+    sub->add_option("--tolerance", o->tolerance, "corner tolerance, m")->capture_default_str();
+    sub->add_option("--write-card", o->write_card, "write the test card (PNG) at --resolution and nothing else");
+    sub->add_option("--resolution", o->resolution, "test card width,height, px (--write-card)")->capture_default_str();
+    sub->callback([o] { run(*o); });
+}
+
+}  // namespace projsurf::cli

@@ -1,0 +1,51 @@
+#pragma once
+// Structured light for projector calibration (issue 12): Gray-code stripes of the framebuffer
+// columns and rows, each with its inverse (a camera pixel's bit is whichever of the pair is
+// brighter, so no global threshold), plus all-white and all-black. Decoding is per camera
+// pixel; bits the camera cannot resolve (stripes finer than a camera pixel, blur) are left
+// open and the pixel's projector coordinate is the centre of the range its resolved bits
+// allow.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+namespace projsurf {
+
+/// One pattern: the framebuffer image and the name it is stored and captured under.
+struct GrayPattern {
+    std::string name;  ///< "white", "black", "col_<b>", "col_<b>_inv", "row_<b>", "row_<b>_inv"
+    enum class Kind { White, Black, Column, Row } kind = Kind::White;
+    int bit = 0;           ///< for Column/Row: bit index, most significant = bits - 1
+    bool inverse = false;
+};
+
+/// The patterns in the order to project: white, black, then columns and rows from the most
+/// significant bit, each followed by its inverse.
+std::vector<GrayPattern> grayPatterns(int width, int height);
+/// Bits to code `n` values.
+int grayBits(int n);
+/// The 8-bit framebuffer image (width x height, CV_8UC1) of a pattern.
+cv::Mat grayPatternImage(const GrayPattern &pattern, int width, int height);
+
+struct GrayDecodeConfig {
+    double min_contrast = 20.0;  ///< white - black, grey levels: below this the pixel is unlit or dark
+    double min_bit_margin = 0.25;  ///< |pattern - inverse| / (white - black) for a bit to count
+    int min_bits = 6;            ///< resolved most-significant bits needed per axis
+};
+
+/// Per camera pixel: the decoded framebuffer position (pixel centres at integers) or NaN.
+struct GrayDecoding {
+    cv::Mat column;      ///< CV_64F, framebuffer u, NaN where not decoded
+    cv::Mat row;         ///< CV_64F, framebuffer v, NaN where not decoded
+    cv::Mat confidence;  ///< CV_8U, 255 where both are decoded
+    int decoded = 0;     ///< pixels with both
+};
+
+/// `captures[i]` is the camera's grey (or colour: converted) image while grayPatterns(width,
+/// height)[i] was projected; all of one size. Throws std::invalid_argument on a count or size
+/// mismatch.
+GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, int width, int height, const GrayDecodeConfig &config = {});
+
+}  // namespace projsurf

@@ -1,0 +1,106 @@
+// projsurf verify (issue 12): the projected picture found in the simulated colour image lands
+// where the true projector puts it, with a right and with a wrong calibration.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+
+#include "cli_run.hpp"
+#include "projsurf/core/projected_picture.hpp"
+#include "projsurf/io/detection_json.hpp"
+#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/eval/experiments.hpp"
+#include "projsurf/sim/projector_rigs.hpp"
+#include "projsurf/sim/render.hpp"
+#include "projsurf/sim/scenarios.hpp"
+
+using namespace projsurf;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Loop {
+    Detection det;
+    Keystone keystone;
+    cv::Mat framebuffer;
+    sim::RgbdFrame seen;
+    Corners3 landed;  ///< where the true projector put the picture's corners
+};
+
+/// Detect with `believed`, correct the test card, project it with `truth`, capture.
+Loop closeLoop(const Projector &believed, const Projector &truth, const sim::Scenario &sc, unsigned seed) {
+    Loop l;
+    const sim::SensorModel sensor;
+    const sim::RgbdFrame before = sim::renderFrame(sc.scene, sensor, seed);
+    l.det = detectSurface(before.cloud, believed, DetectorConfig{}, sc.gravity);
+    EXPECT_TRUE(l.det.found) << l.det.reason;
+    const cv::Mat card = testCard(1280, 800);
+    const auto k = computeKeystone(believed, l.det.rectangle, card.size());
+    EXPECT_TRUE(k.keystone) << k.problem;
+    l.keystone = *k.keystone;
+    l.framebuffer = warpToFramebuffer(card, l.keystone);
+    l.seen = sim::renderFrame(sc.scene, sensor, seed + 1, sim::Projection{truth, l.framebuffer});
+    l.landed = sim::framebufferOnWall(truth, sc.scene, l.keystone.picture_px).corners;
+    return l;
+}
+
+}  // namespace
+
+TEST(Verify, FindsWhereThePictureLandedWithARightAndAWrongCalibration) {
+    const Projector truth = sim::projectorRig({1.0, 1.0, 1.005, -0.05});
+    Projector wrong = truth;
+    wrong.setRotation(Eigen::AngleAxisd(1.0 * M_PI / 180, Eigen::Vector3d::UnitY()).toRotationMatrix() * *truth.rotation);
+    const sim::Scenario sc = sim::makeScenario("wall", 2.0, 20.0);
+    const sim::SensorModel sensor;
+    for (const Projector *believed : std::vector<const Projector *>{&truth, &wrong}) {
+        const Loop l = closeLoop(*believed, truth, sc, 21);
+        const FoundPicture f = findProjectedPicture(l.seen.rgb, l.seen.depth, sensor.camera);
+        ASSERT_TRUE(f.found) << f.reason;
+        double worst = 0, off = 0;
+        for (int i = 0; i < 4; ++i) {
+            worst = std::max(worst, (f.corners[i] - l.landed[i]).norm());
+            off = std::max(off, (l.landed[i] - l.det.rectangle.corners[i]).norm());
+        }
+        std::printf("%s calibration: measured corners within %.1f mm of the true landing points; those are %.1f mm "
+                    "from the detection's corners\n",
+                    believed == &truth ? "right" : "1 deg yaw wrong", worst * 1000, off * 1000);
+        EXPECT_LT(worst, 0.005);
+        if (believed == &wrong) {
+            EXPECT_GT(off, 0.02);
+        }
+    }
+}
+
+TEST(Verify, CliReportsPassedForTheRightCalibrationAndNotFoundForADarkImage) {
+    const fs::path dir = test::freshDir("projector_verify");
+    const Projector truth = sim::projectorRig({1.33, 0.0, 1.0, 0.0});
+    const sim::Scenario sc = sim::makeScenario("wall", 2.0, 15.0);
+    const Loop l = closeLoop(truth, truth, sc, 5);
+    writeCalibration((dir / "calib.yaml").string(), truth);
+    std::ofstream((dir / "det.json").string()) << detectionToJson(l.det, DetectorConfig{}).dump(2);
+    cv::imwrite((dir / "fb.png").string(), l.framebuffer);
+    fs::create_directories(dir / "caps");
+    writeCamera((dir / "caps" / "camera.yaml").string(), sim::SensorModel{}.camera);
+    cv::imwrite((dir / "caps" / "rgb.png").string(), l.seen.rgb);
+    cv::imwrite((dir / "caps" / "depth.png").string(), l.seen.depth);
+    const std::string args = "verify --calib " + (dir / "calib.yaml").string() + " --detection " +
+                             (dir / "det.json").string() + " --framebuffer " + (dir / "fb.png").string() +
+                             " --captures " + (dir / "caps").string() + " --json " + (dir / "v.json").string();
+    const auto r = test::cli(args, dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string json = test::slurp(dir / "v.json");
+    EXPECT_NE(json.find("\"found\": true"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"passed\": true"), std::string::npos) << json;
+    cv::imwrite((dir / "caps" / "rgb.png").string(), cv::Mat(480, 640, CV_8UC3, cv::Scalar(20, 20, 20)));
+    const auto dark = test::cli(args, dir);
+    EXPECT_EQ(dark.status, 0) << dark.err;
+    EXPECT_NE(test::slurp(dir / "v.json").find("\"found\": false"), std::string::npos);
+    // A framebuffer of another size: one line, exit 2.
+    cv::imwrite((dir / "fb.png").string(), cv::Mat(100, 100, CV_8UC3, cv::Scalar(255, 255, 255)));
+    const auto bad = test::cli(args, dir);
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_EQ(bad.err.find('\n'), bad.err.size() - 1) << bad.err;
+    fs::remove_all(dir);
+}
