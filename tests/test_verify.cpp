@@ -36,7 +36,7 @@ Loop closeLoop(const Projector &believed, const Projector &truth, const sim::Sce
     const sim::RgbdFrame before = sim::renderFrame(sc.scene, sensor, seed);
     l.det = detectSurface(before.cloud, believed, DetectorConfig{}, sc.gravity);
     EXPECT_TRUE(l.det.found) << l.det.reason;
-    const cv::Mat card = testCard(1280, 800);
+    const cv::Mat card = verificationCard(1280, 800);
     const auto k = computeKeystone(believed, l.det.rectangle, card.size());
     EXPECT_TRUE(k.keystone) << k.problem;
     l.keystone = *k.keystone;

@@ -15,6 +15,7 @@
 #include "projsurf/core/decoded_points.hpp"
 #include "projsurf/core/gray_code.hpp"
 #include "projsurf/core/projector_fit.hpp"
+#include "projsurf/frontend/resolution.hpp"
 #include "projsurf/io/pattern_files.hpp"
 #include "projsurf/io/structured_report.hpp"
 #include "projsurf/io/calibration_report.hpp"
@@ -67,14 +68,6 @@ std::string fmt(const char *format, double a, double b = 0, double c = 0, double
     return buf;
 }
 
-std::pair<int, int> parseResolution(const std::string &text) {
-    const auto [res_w, res_h] = parseTwo("--resolution", text);
-    if (res_w < 2 || res_h < 2 || res_w > 16384 || res_h > 16384 || res_w != std::floor(res_w) ||
-        res_h != std::floor(res_h))
-        throw InputError("--resolution", "must be two whole numbers between 2 and 16384");
-    return {static_cast<int>(res_w), static_cast<int>(res_h)};
-}
-
 /// The calibration picture at the projector's resolution. The disc's radius is H / 8 (100 px
 /// at 1280x800): the picture the simulated calibrations are made and tested with; see
 /// docs/calibration.md for why that size.
@@ -82,7 +75,7 @@ void writePicture(const CalibrateOptions &o) {
     if (!o.captures.empty() || !o.out.empty())
         throw InputError("--write-picture", "only writes the calibration picture; run calibrate --captures DIR --out "
                                             "calib.yaml separately");
-    const auto [w, h] = parseResolution(o.resolution);
+    const auto [w, h] = frontend::parseResolution("--resolution", o.resolution);
     requireWritableLocation(o.write_picture);
     if (!cv::haveImageWriter(o.write_picture))
         throw InputError(o.write_picture, "cannot write an image with this extension (use .png)");
@@ -144,7 +137,7 @@ void run(const CalibrateOptions &o) {
     const auto [fov_h, fov_v] = parseTwo("--fov-deg", o.fov);
     if (!(fov_h > 0 && fov_h < 170 && fov_v > 0 && fov_v < 170))
         throw InputError("--fov-deg", "angles must be between 0 and 170 degrees");
-    const auto [res_w, res_h] = parseResolution(o.resolution);
+    const auto [res_w, res_h] = frontend::parseResolution("--resolution", o.resolution);
     if (o.threshold < 0 || o.threshold > 254) throw InputError("--threshold", "must be between 0 and 254");
     std::error_code ec;
     if (!fs::is_directory(o.captures, ec)) throw InputError(o.captures, "not a directory");

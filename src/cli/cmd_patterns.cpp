@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "cli/parse.hpp"
+#include "projsurf/frontend/resolution.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/pattern_files.hpp"
 
@@ -16,11 +16,8 @@ struct PatternsOptions {
 };
 
 void run(const PatternsOptions &o) {
-    const Eigen::Vector2d wh = parsePair("--resolution", o.resolution);
-    const double w = wh.x(), h = wh.y();
-    if (w < 2 || h < 2 || w > 16384 || h > 16384 || w != static_cast<int>(w) || h != static_cast<int>(h))
-        throw InputError("--resolution", "must be two whole numbers between 2 and 16384");
-    const PatternList list = writePatternSet(o.out, static_cast<int>(w), static_cast<int>(h));
+    const cv::Size wh = frontend::parseResolution("--resolution", o.resolution);
+    const PatternList list = writePatternSet(o.out, wh.width, wh.height);
     std::cout << "projsurf patterns: " << list.names.size() << " patterns " << list.width << "x" << list.height
               << " -> " << o.out << "/patterns/, order in " << o.out << "/patterns.yaml\n"
               << "  at each robot position k, project them full screen in that order and save the colour capture of "

@@ -8,7 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli/commands.hpp"
-#include "cli/parse.hpp"
+#include "projsurf/frontend/resolution.hpp"
 #include "projsurf/core/keystone.hpp"
 #include "projsurf/core/projected_picture.hpp"
 #include "projsurf/io/detection_json.hpp"
@@ -34,12 +34,10 @@ std::string vec3(const Eigen::Vector3d &v) {
 
 void run(const VerifyOptions &o) {
     if (!o.write_card.empty()) {
-        const Eigen::Vector2d wh = parsePair("--resolution", o.resolution);
-        if (wh.x() < 8 || wh.y() < 8 || wh.x() > 16384 || wh.y() > 16384)
-            throw InputError("--resolution", "must be two whole numbers between 8 and 16384");
+        const cv::Size wh = frontend::parseResolution("--resolution", o.resolution, 8);
         requireWritableFile(o.write_card);
         requireImageWriter(o.write_card);
-        writeImageAtomic(o.write_card, testCard(static_cast<int>(wh.x()), static_cast<int>(wh.y())));
+        writeImageAtomic(o.write_card, verificationCard(wh.width, wh.height));
         std::cout << "projsurf verify: test card -> " << o.write_card
                   << "; correct it (projsurf correct --image " << o.write_card
                   << " ...), project the framebuffer, capture rgb.png and depth.png\n";

@@ -61,7 +61,7 @@ std::optional<Corners2> litFramebufferCorners(const cv::Mat &framebuffer) {
     return out;
 }
 
-cv::Mat testCard(int width, int height) {
+cv::Mat verificationCard(int width, int height) {
     cv::Mat card(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
     cv::circle(card, {width / 2, height / 2}, std::max(2, std::min(width, height) / 10), cv::Scalar(160, 160, 160),
                cv::FILLED);

@@ -36,6 +36,6 @@ FoundPicture findProjectedPicture(const cv::Mat &colour, const cv::Mat &depth, c
 std::optional<Corners2> litFramebufferCorners(const cv::Mat &framebuffer);
 
 /// The white test card verify looks for: white, a grey disc in the centre (orientation-free).
-cv::Mat testCard(int width, int height);
+cv::Mat verificationCard(int width, int height);
 
 }  // namespace projsurf

@@ -1,0 +1,23 @@
+#include "projsurf/frontend/resolution.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "projsurf/io/errors.hpp"
+
+namespace projsurf::frontend {
+
+cv::Size parseResolution(const std::string &what, const std::string &text, int min_side) {
+    constexpr int kMaxSide = 16384;  // px, beyond any projector's framebuffer
+    std::stringstream ss(text);
+    double w = 0, h = 0;
+    char comma = 0;
+    if (!(ss >> w >> comma >> h) || comma != ',' || !(ss >> std::ws).eof())
+        throw InputError(what, "expected W,H (two numbers separated by a comma), got '" + text + "'");
+    if (!(w >= min_side && h >= min_side && w <= kMaxSide && h <= kMaxSide) || w != std::floor(w) || h != std::floor(h))
+        throw InputError(what, "must be two whole numbers between " + std::to_string(min_side) + " and " +
+                                   std::to_string(kMaxSide) + ", got '" + text + "'");
+    return {static_cast<int>(w), static_cast<int>(h)};
+}
+
+}  // namespace projsurf::frontend
