@@ -307,6 +307,106 @@ std::vector<std::vector<Eigen::Vector3d>> freeOutlines(const PlaneCandidate &c) 
     return out;
 }
 
+/// Stage 3: the candidates the projector reaches, the largest rectangle they could hold first.
+std::vector<int> frameCandidates(const Cloud &cloud, const CloudSample &s, const Projector &projector,
+                                 const DetectorConfig &cfg, double aspect, std::vector<PlaneCandidate> &candidates,
+                                 DefaultScratch &scratch) {
+    std::vector<int> usable;
+    for (int k = 0; k < static_cast<int>(candidates.size()); ++k)
+        if (frameCandidate(cloud, s, projector, cfg, aspect, candidates[k])) usable.push_back(k);
+    std::sort(usable.begin(), usable.end(), [&](int a, int b) { return candidates[a].bound > candidates[b].bound; });
+    if (scratch.observations.size() < candidates.size()) scratch.observations.resize(candidates.size());
+    for (std::size_t k = 0; k < candidates.size(); ++k) candidates[k].observed = &scratch.observations[k];
+    if (cloud.hasColour() && scratch.colour.size() < candidates.size()) scratch.colour.resize(candidates.size());
+    return usable;
+}
+
+/// What stage 4 settled on: the accepted candidate, the one whose check is reported (the
+/// accepted one, else the first checked), and every candidate that held a rectangle.
+struct Choice {
+    const PlaneCandidate *chosen = nullptr;
+    const PlaneCandidate *checked = nullptr;
+    SurfaceCheckResult check;
+    std::vector<int> placed;
+};
+
+/// Stage 4: each wall's shape, free space (3.2.2), colour, rectangle and surface check (3.2.3),
+/// candidate by candidate in `usable` order; one that could not hold a bigger rectangle than
+/// the one accepted is not looked at.
+Choice chooseCandidate(const Cloud &cloud, const CloudSample &s, const Projector &projector, const DetectorConfig &cfg,
+                       double aspect, const std::vector<int> &usable, std::vector<PlaneCandidate> &candidates,
+                       DefaultScratch &scratch, StageTimer &time) {
+    Choice r;
+    for (int k : usable) {
+        PlaneCandidate &c = candidates[k];
+        if (r.chosen && c.bound <= r.chosen->rectangle.area()) break;
+        // How the wall departs from its plane (the depth camera's bend) and its noise; on that
+        // shape its points may reach further, so the raster is laid again.
+        shapeWall(cloud, s, cfg, c);
+        const bool framed = frameCandidate(cloud, s, projector, cfg, aspect, c);
+        time.lap("wall_shape");
+        if (!framed) continue;
+        observeFreeSpace(cloud, scratch, projector, cfg, c);
+        time.lap("free_space");
+        if (cloud.hasColour() && cfg.suitability.mode != SuitabilityMode::Off) {
+            judgeColour(cloud, scratch, cfg, static_cast<std::size_t>(k), c);
+            time.lap("suitability");
+        }
+        const bool ok = placeSuitableRectangle(cfg, aspect, c);
+        time.lap("rectangle");
+        if (!ok) continue;
+        r.placed.push_back(k);
+        if (r.chosen && c.rectangle.area() <= r.chosen->rectangle.area()) continue;
+        const SurfaceCheckResult result = checkRectangle(cfg, c);
+        if (result.accepted || !r.chosen) {
+            r.check = result;
+            r.checked = &c;
+        }
+        if (result.accepted) r.chosen = &c;
+        time.lap("surface_check");
+    }
+    if (r.checked) r.check.outlier_indices = checkOutliers(s, scratch.grid, *r.checked);
+    time.lap("surface_check");
+    return r;
+}
+
+/// Stage 5: the answer (the rectangle, or why there is none) and the plane shown with it.
+void describeAnswer(const DetectorConfig &cfg, const std::vector<PlaneCandidate> &candidates,
+                    const std::vector<int> &usable, Choice choice, Detection &det) {
+    std::vector<int> &placed = choice.placed;
+    std::sort(placed.begin(), placed.end(),
+              [&](int a, int b) { return candidates[a].rectangle.area() > candidates[b].rectangle.area(); });
+    const PlaneCandidate &shown =
+        choice.chosen ? *choice.chosen : candidates[!placed.empty() ? placed[0] : (usable.empty() ? 0 : usable[0])];
+    det.plane = shown.plane;
+    det.inliers = shown.inliers;
+    det.orientation_deg = orientationDeg(shown.plane);
+    if (!shown.free.empty()) {
+        describeCandidate(shown, det.debug);
+        det.debug.wall_shape = shown.shape;
+        det.debug.tolerance = shown.tolerance;
+        const auto outlines = freeOutlines(shown);
+        det.debug.hull.insert(det.debug.hull.end(), outlines.begin(), outlines.end());
+    }
+    det.debug.inliers = shown.inlier_indices;
+    if (choice.chosen) {
+        det.found = true;
+        det.rectangle = choice.chosen->rectangle;
+        det.surface_check = choice.check;
+        det.suitability = reportSuitability(cfg, *choice.chosen);
+    } else if (usable.empty()) {
+        det.reason = "the projector workspace does not reach any vertical plane in view";
+    } else if (placed.empty()) {
+        det.reason = "no free area for the picture on any vertical plane";
+    } else {
+        det.rectangle = candidates[placed[0]].rectangle;
+        det.surface_check = choice.check;
+        det.surface_check.accepted = false;
+        det.reason = "the surface check rejected every candidate area";
+    }
+    det.debug.outliers = det.surface_check.outlier_indices;
+}
+
 }  // namespace
 
 Detection detectDefault(const Cloud &cloud, const Projector &projector, const DetectorConfig &cfg,
@@ -320,93 +420,24 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
 
     // 2. Every vertical plane in view, biggest first (3.2.1).
     fillPointGrid(cloud, cfg.free_space.stride, scratch.grid);
-    const bool image = cfg.planes.image_regions && scratch.grid.organized;
     scratch.region_labels.clear();
-    std::vector<PlaneCandidate> candidates = image ? findRegionCandidates(sample, scratch.grid, cfg, gravity, scratch.region_labels, scratch.regions)
-                                                   : findCandidates(sample, cfg, gravity);
+    std::vector<PlaneCandidate> candidates =
+        cfg.planes.image_regions && scratch.grid.organized
+            ? findRegionCandidates(sample, scratch.grid, cfg, gravity, scratch.region_labels, scratch.regions)
+            : findCandidates(sample, cfg, gravity);
     for (const auto &c : candidates) det.debug.candidates.push_back(c.plane);
     time.lap("planes");
     if (candidates.empty()) return time.fail("no vertical plane in view");
 
-
     // 3. Those the projector reaches, the largest rectangle they could hold first.
-    std::vector<int> usable;
-    for (int k = 0; k < static_cast<int>(candidates.size()); ++k)
-        if (frameCandidate(cloud, sample, projector, cfg, aspect, candidates[k])) usable.push_back(k);
-    std::sort(usable.begin(), usable.end(), [&](int a, int b) { return candidates[a].bound > candidates[b].bound; });
-    if (scratch.observations.size() < candidates.size()) scratch.observations.resize(candidates.size());
-    for (std::size_t k = 0; k < candidates.size(); ++k) candidates[k].observed = &scratch.observations[k];
-    if (cloud.hasColour() && scratch.colour.size() < candidates.size()) scratch.colour.resize(candidates.size());
+    const std::vector<int> usable = frameCandidates(cloud, sample, projector, cfg, aspect, candidates, scratch);
     time.lap("free_space");
 
-    // 4. Each wall's shape, free space (3.2.2), rectangle and surface check (3.2.3), candidate
-    // by candidate; one that could not hold a bigger rectangle than the one accepted is not
-    // looked at.
-    const PlaneCandidate *chosen = nullptr, *checked = nullptr;  // accepted; the check reported
-    SurfaceCheckResult check;
-    std::vector<int> placed;
-    for (int k : usable) {
-        PlaneCandidate &c = candidates[k];
-        if (chosen && c.bound <= chosen->rectangle.area()) break;
-        // How the wall departs from its plane (the depth camera's bend) and its noise; on that
-        // shape its points may reach further, so the raster is laid again.
-        shapeWall(cloud, sample, cfg, c);
-        const bool framed = frameCandidate(cloud, sample, projector, cfg, aspect, c);
-        time.lap("wall_shape");
-        if (!framed) continue;
-        observeFreeSpace(cloud, scratch, projector, cfg, c);
-        time.lap("free_space");
-        if (cloud.hasColour() && cfg.suitability.mode != SuitabilityMode::Off) {
-            judgeColour(cloud, scratch, cfg, static_cast<std::size_t>(k), c);
-            time.lap("suitability");
-        }
-        const bool ok = placeSuitableRectangle(cfg, aspect, c);
-        time.lap("rectangle");
-        if (!ok) continue;
-        placed.push_back(k);
-        if (chosen && c.rectangle.area() <= chosen->rectangle.area()) continue;
-        const SurfaceCheckResult result = checkRectangle(cfg, c);
-        if (result.accepted || !chosen) {
-            check = result;
-            checked = &c;
-        }
-        if (result.accepted) chosen = &c;
-        time.lap("surface_check");
-    }
-    if (checked) check.outlier_indices = checkOutliers(sample, scratch.grid, *checked);
-    time.lap("surface_check");
+    // 4. Shape, free space, colour, rectangle and check of each, until none could beat the best.
+    Choice choice = chooseCandidate(cloud, sample, projector, cfg, aspect, usable, candidates, scratch, time);
 
     // 5. The answer, and the plane shown with it.
-    std::sort(placed.begin(), placed.end(),
-              [&](int a, int b) { return candidates[a].rectangle.area() > candidates[b].rectangle.area(); });
-    const PlaneCandidate &shown = chosen ? *chosen : candidates[!placed.empty() ? placed[0] : (usable.empty() ? 0 : usable[0])];
-    det.plane = shown.plane;
-    det.inliers = shown.inliers;
-    det.orientation_deg = orientationDeg(shown.plane);
-    if (!shown.free.empty()) {
-        describeCandidate(shown, det.debug);
-        det.debug.wall_shape = shown.shape;
-        det.debug.tolerance = shown.tolerance;
-        const auto outlines = freeOutlines(shown);
-        det.debug.hull.insert(det.debug.hull.end(), outlines.begin(), outlines.end());
-    }
-    det.debug.inliers = shown.inlier_indices;
-    if (chosen) {
-        det.found = true;
-        det.rectangle = chosen->rectangle;
-        det.surface_check = check;
-        det.suitability = reportSuitability(cfg, *chosen);
-    } else if (usable.empty()) {
-        det.reason = "the projector workspace does not reach any vertical plane in view";
-    } else if (placed.empty()) {
-        det.reason = "no free area for the picture on any vertical plane";
-    } else {
-        det.rectangle = candidates[placed[0]].rectangle;
-        det.surface_check = check;
-        det.surface_check.accepted = false;
-        det.reason = "the surface check rejected every candidate area";
-    }
-    det.debug.outliers = det.surface_check.outlier_indices;
+    describeAnswer(cfg, candidates, usable, std::move(choice), det);
     return time.finish();
 }
 
