@@ -204,7 +204,7 @@ PYBIND11_MODULE(projsurf, m) {
           "The biggest upright rectangle of the aspect ratio (None: the framebuffer's, a number, or 'W:H') that the\n"
           "projector can light on a vertical surface. gravity: camera frame, pointing down (None: a level camera\n"
           "[0, 1, 0]; 'auto': from the floor). min_width (m), min_area (m^2): smaller rectangles are not found\n"
-          "(None: 0.20 m and 0.02 m^2, as `projsurf detect`; 0 with method='paper'). Returns a dict: found, reason, method, plane, rectangle,\n"
+          "(None: 0.15 m and 0.012 m^2, as `projsurf detect`; 0 with method='paper'). Returns a dict: found, reason, method, plane, rectangle,\n"
           "surface_check, timing_ms, gravity (numpy arrays for vectors). Raises InputError for bad points or options.");
 
     m.def("keystone",

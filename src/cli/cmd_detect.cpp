@@ -303,11 +303,11 @@ void addDetectCommand(CLI::App &app) {
     sub->add_option("--method", o->method, "default | paper (the paper's steps, for reproduction)");
     sub->add_option("--hull", o->hull, "paper method: concave | convex hull of the plane");
     sub->add_option("--min-width", o->min_width,
-                    "Narrowest picture worth showing, m (default 0.20: text stays readable at 2 m; 0 with --method "
+                    "Narrowest picture worth showing, m (default 0.15: text stays readable at 1.5 m; 0 with --method "
                     "paper); below it: found false with the reason")
         ->check(CLI::Range(0.0, 100.0));
     sub->add_option("--min-area", o->min_area,
-                    "Smallest picture worth showing, m^2 (default 0.02; 0 with --method paper)")
+                    "Smallest picture worth showing, m^2 (default 0.012; 0 with --method paper)")
         ->check(CLI::Range(0.0, 10000.0));
     auto &c = o->config;
     sub->add_option("--max-tilt", c.max_tilt, "Vertical tolerance, rad (paper 3.2.1)")->check(CLI::Range(0.0, 1.5));
