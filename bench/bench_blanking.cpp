@@ -1,9 +1,9 @@
 #include "bench_blanking.hpp"
 
+#include "projsurf/eval/walk_in.hpp"
 #include "projsurf/pipeline/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/scenarios.hpp"
-#include "projsurf/eval/walk_in.hpp"
 
 namespace projsurf::bench {
 
@@ -16,8 +16,8 @@ std::vector<BlankingCase> blankingCases(const std::vector<BenchFrame> &real, con
     const Plane plane = det.found ? det.plane : sc.wall;
     out.push_back({"sim: empty wall 2.5 m, Kinect v1", empty.cloud, plane});
     const auto walk = sim::walkInScenes(sc.scene, -0.6, -0.6, 1, 1.4);
-    out.push_back({"sim: person in the beam, Kinect v1", sim::renderSensorFrame(walk[0], kinect, 2, std::nullopt, false).cloud,
-                   plane});
+    out.push_back({"sim: person in the beam, Kinect v1",
+                   sim::renderSensorFrame(walk[0], kinect, 2, std::nullopt, false).cloud, plane});
     for (const auto &f : real) {
         const Detection d = detectSurface(f.cloud, projector, DetectorConfig{}, f.gravity);
         if (d.inliers > 0) out.push_back({"real: " + f.name, f.cloud, d.plane});

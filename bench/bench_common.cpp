@@ -180,12 +180,9 @@ std::string schedulingPolicy() {
     const int policy = sched_getscheduler(0);
     sched_getparam(0, &param);
     switch (policy) {
-    case SCHED_FIFO:
-        return "SCHED_FIFO priority " + std::to_string(param.sched_priority);
-    case SCHED_RR:
-        return "SCHED_RR priority " + std::to_string(param.sched_priority);
-    default:
-        return "SCHED_OTHER (time-shared: on a busy machine the wall clock exceeds the CPU time)";
+    case SCHED_FIFO: return "SCHED_FIFO priority " + std::to_string(param.sched_priority);
+    case SCHED_RR: return "SCHED_RR priority " + std::to_string(param.sched_priority);
+    default: return "SCHED_OTHER (time-shared: on a busy machine the wall clock exceeds the CPU time)";
     }
 }
 
@@ -249,9 +246,7 @@ KeystoneWarp::KeystoneWarp(const Projector &projector, Kind kind) : kind_(kind) 
 
 void KeystoneWarp::run() {
     switch (kind_) {
-    case Kind::Projsurf:
-        out_ = warpToFramebuffer(in_, *keystone_);
-        break;
+    case Kind::Projsurf: out_ = warpToFramebuffer(in_, *keystone_); break;
     case Kind::Bare:
         cv::warpPerspective(in_, out_, cv::Mat(keystone_->homography), out_.size(), cv::INTER_LINEAR,
                             cv::BORDER_CONSTANT, cv::Scalar::all(0));
@@ -263,9 +258,7 @@ void KeystoneWarp::run() {
     }
     case Kind::Warper:
     case Kind::WarperPlain:
-    case Kind::WarperSsse3:
-        warper_->warp(in_, out_);
-        break;
+    case Kind::WarperSsse3: warper_->warp(in_, out_); break;
     }
 }
 
@@ -276,10 +269,10 @@ std::string KeystoneWarp::what() const {
             : kind_ == Kind::Warper ? "projsurf::KeystoneWarper built once per detection, warp per frame "
                                       "(keystone_warper.hpp; projsurf correct's video path)"
             : kind_ == Kind::WarperPlain ? "the same KeystoneWarper with its plain C++ blend instead of SIMD"
-            : kind_ == Kind::WarperSsse3 ? "the same KeystoneWarper with SSSE3 but not AVX2"
-                                    : "projsurf::warpToFramebuffer (keystone.hpp; source positions worked out in every call)")
-        << ", " << in_.cols << "x" << in_.rows << " BGR picture -> " << out_.cols << "x" << out_.rows
-        << " framebuffer";
+            : kind_ == Kind::WarperSsse3
+                ? "the same KeystoneWarper with SSSE3 but not AVX2"
+                : "projsurf::warpToFramebuffer (keystone.hpp; source positions worked out in every call)")
+        << ", " << in_.cols << "x" << in_.rows << " BGR picture -> " << out_.cols << "x" << out_.rows << " framebuffer";
     return out.str();
 }
 

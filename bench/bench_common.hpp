@@ -1,8 +1,8 @@
 #pragma once
 // Shared by the benchmark executables: test frames, statistics, machine facts, pinning,
 // and the keystone warp workload.
-#include <opencv2/core.hpp>
 #include <memory>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
 

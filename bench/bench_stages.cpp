@@ -10,8 +10,8 @@
 
 #include <array>
 #include <cstdlib>
-#include <filesystem>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -80,7 +80,8 @@ const std::vector<StockStages> &stockStages() {
                         n += 1;
                     }
                 const Plane plane = makePlane(s.sac.coefficients.head<3>(), s.sac.coefficients[3]);
-                s.frame = makePlaneFrame(plane, config.gravity, n > 0 ? Eigen::Vector3d(anchor / n) : plane.project({0, 0, 2}));
+                s.frame = makePlaneFrame(plane, config.gravity,
+                                         n > 0 ? Eigen::Vector3d(anchor / n) : plane.project({0, 0, 2}));
                 s.raster = rasterFreeSpace(s.frame, s.hull, projector, config.cell);
                 s.has_raster = s.raster.ok;
             }
@@ -162,7 +163,8 @@ const std::vector<BenchFrame> &colourFrames() {
 void BM_OursDefaultDetectColour(benchmark::State &state) {
     const auto &f = colourFrames();
     DetectorConfig config;
-    config.suitability.mode = std::array{SuitabilityMode::Off, SuitabilityMode::Avoid, SuitabilityMode::Prefer}[state.range(0)];
+    config.suitability.mode =
+        std::array{SuitabilityMode::Off, SuitabilityMode::Avoid, SuitabilityMode::Prefer}[state.range(0)];
     SurfaceDetector detector(sim::exampleProjector(), config);
     std::map<std::string, double> sums;
     std::size_t i = 0;
@@ -378,8 +380,20 @@ BENCHMARK(BM_StockCrop)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_StockOutliers)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_StockTotal)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_BeamBlanking)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_KeystoneWarp1280x800)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Arg(4)->Arg(5)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_ScaleOursDefault)->Apply(scaleArgs)->Complexity(benchmark::oN)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_KeystoneWarp1280x800)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(3)
+    ->Arg(4)
+    ->Arg(5)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_ScaleOursDefault)
+    ->Apply(scaleArgs)
+    ->Complexity(benchmark::oN)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_ScaleStock)->Apply(scaleArgs)->Complexity(benchmark::oN)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 int main(int argc, char **argv) {

@@ -27,9 +27,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double msSince(Clock::time_point t0) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 std::vector<std::vector<Eigen::Vector3d>> loops(const PclCloud &points, const std::vector<pcl::Vertices> &polygons) {
     std::vector<std::vector<Eigen::Vector3d>> out;
@@ -45,9 +43,9 @@ std::vector<std::vector<Eigen::Vector3d>> loops(const PclCloud &points, const st
 }  // namespace
 
 const std::vector<std::string> &stockStageNames() {
-    static const std::vector<std::string> names = {"voxel_grid", "ransac",      "extract_project",
+    static const std::vector<std::string> names = {"voxel_grid",   "ransac",      "extract_project",
                                                    "concave_hull", "convex_hull", "workspace_raster",
-                                                   "rectangle",  "crop",        "outliers"};
+                                                   "rectangle",    "crop",        "outliers"};
     return names;
 }
 
@@ -92,8 +90,8 @@ SacPlane segmentVerticalPlane(const PclCloud::ConstPtr &cloud, const StockConfig
     pcl::ModelCoefficients coefficients;
     seg.segment(inliers, coefficients);
     if (inliers.indices.empty() || coefficients.values.size() != 4) return result;
-    result.coefficients = Eigen::Vector4d(coefficients.values[0], coefficients.values[1], coefficients.values[2],
-                                          coefficients.values[3]);
+    result.coefficients =
+        Eigen::Vector4d(coefficients.values[0], coefficients.values[1], coefficients.values[2], coefficients.values[3]);
     result.inliers.assign(inliers.indices.begin(), inliers.indices.end());
     return result;
 }

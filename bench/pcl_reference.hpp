@@ -31,17 +31,17 @@ namespace projsurf::bench {
 using PclCloud = pcl::PointCloud<pcl::PointXYZ>;
 
 struct StockConfig {
-    double voxel_leaf = 0.05;          ///< m, paper 3.2.1
-    double eps_angle = 0.1;            ///< rad, normal off horizontal, paper 3.2.1
-    double distance = 0.05;            ///< m, RANSAC inlier band (paper gives none; = voxel side)
-    int max_iterations = 1000;         ///< SACSegmentation's default
-    double alpha = 0.1;                ///< m, ConcaveHull alpha (2 voxels)
-    double cell = 0.02;                ///< m, raster cell of M1/M2
-    double outlier_distance = 0.05;    ///< m, paper 3.2.3
-    int max_outliers = 5000;           ///< paper 4.3
-    double aspect = 0.0;               ///< width / height; 0 = the projector framebuffer's
+    double voxel_leaf = 0.05;                ///< m, paper 3.2.1
+    double eps_angle = 0.1;                  ///< rad, normal off horizontal, paper 3.2.1
+    double distance = 0.05;                  ///< m, RANSAC inlier band (paper gives none; = voxel side)
+    int max_iterations = 1000;               ///< SACSegmentation's default
+    double alpha = 0.1;                      ///< m, ConcaveHull alpha (2 voxels)
+    double cell = 0.02;                      ///< m, raster cell of M1/M2
+    double outlier_distance = 0.05;          ///< m, paper 3.2.3
+    int max_outliers = 5000;                 ///< paper 4.3
+    double aspect = 0.0;                     ///< width / height; 0 = the projector framebuffer's
     Eigen::Vector3d gravity{0.0, 1.0, 0.0};  ///< camera frame
-    bool convex_too = true;            ///< also time pcl::ConvexHull (not counted in "total")
+    bool convex_too = true;                  ///< also time pcl::ConvexHull (not counted in "total")
 };
 
 /// Stage names in pipeline order; "convex_hull" is the paper's alternative hull and is

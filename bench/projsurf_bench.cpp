@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <pcl/pcl_config.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -16,7 +17,6 @@
 #include <map>
 #include <opencv2/core.hpp>
 #include <opencv2/core/utility.hpp>
-#include <pcl/pcl_config.h>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -73,7 +73,7 @@ struct Outcome {
 
 struct Pipeline {
     std::string name;
-    std::function<void(const BenchFrame &)> prepare;       ///< untimed per-frame setup
+    std::function<void(const BenchFrame &)> prepare;        ///< untimed per-frame setup
     std::function<Run(const BenchFrame &, Outcome &)> run;  ///< one timed detection
 };
 
@@ -142,10 +142,10 @@ Pipeline stockPipeline(const Projector &projector) {
 }
 
 struct Measured {
-    std::vector<Run> runs;                       ///< every timed repetition of every frame
-    std::vector<double> frame_median_ms;         ///< per frame
-    std::vector<Outcome> outcomes;               ///< per frame (last repetition)
-    std::vector<std::string> stage_order;        ///< first-seen order
+    std::vector<Run> runs;                 ///< every timed repetition of every frame
+    std::vector<double> frame_median_ms;   ///< per frame
+    std::vector<Outcome> outcomes;         ///< per frame (last repetition)
+    std::vector<std::string> stage_order;  ///< first-seen order
 };
 
 void sortStages(std::vector<std::string> &stages);
@@ -176,10 +176,10 @@ int moduleIndex(const std::string &key);
 
 /// Pipeline order: by paper module, then by the known order of the stage names.
 void sortStages(std::vector<std::string> &stages) {
-    static const std::vector<std::string> known = {
-        "sample", "voxel_grid", "normals", "ransac", "planes", "plane", "extract_project", "hull",
-        "concave_hull", "convex_hull", "workspace_raster", "free_space", "rectangle", "crop", "outliers",
-        "surface_check"};
+    static const std::vector<std::string> known = {"sample",       "voxel_grid",  "normals",          "ransac",
+                                                   "planes",       "plane",       "extract_project",  "hull",
+                                                   "concave_hull", "convex_hull", "workspace_raster", "free_space",
+                                                   "rectangle",    "crop",        "outliers",         "surface_check"};
     auto rank = [&](const std::string &k) {
         const auto it = std::find(known.begin(), known.end(), k);
         return std::make_tuple(moduleIndex(k), static_cast<int>(it - known.begin()), k);
@@ -305,8 +305,8 @@ void reportFrameSet(const std::string &title, const std::vector<BenchFrame> &fra
     std::size_t points = 0;
     for (const auto &f : frames) points += f.finite;
     std::cout << "## " << title << "\n\n";
-    std::cout << frames.size() << " frames, " << frames.front().depth.cols << "x" << frames.front().depth.rows
-              << ", " << points / frames.size() << " valid points per frame on average; " << o.reps
+    std::cout << frames.size() << " frames, " << frames.front().depth.cols << "x" << frames.front().depth.rows << ", "
+              << points / frames.size() << " valid points per frame on average; " << o.reps
               << " timed repetitions per frame after " << o.warmup
               << " warm-ups; statistics over all frames x repetitions (ms).\n\n";
 
@@ -316,9 +316,9 @@ void reportFrameSet(const std::string &title, const std::vector<BenchFrame> &fra
     const Stats stock_total = wallStats(stock);
     for (std::size_t i = 0; i < pipelines.size(); ++i) {
         const Stats s = wallStats(results[i]);
-        std::cout << "| " << pipelines[i].name << " | " << fmt(s.median) << " | " << spread(s) << " | "
-                  << fmt(s.max) << " | " << ratio(stock_total.median, s.median) << " | "
-                  << fmt(cpuStats(results[i]).median) << " |\n";
+        std::cout << "| " << pipelines[i].name << " | " << fmt(s.median) << " | " << spread(s) << " | " << fmt(s.max)
+                  << " | " << ratio(stock_total.median, s.median) << " | " << fmt(cpuStats(results[i]).median)
+                  << " |\n";
     }
     std::cout << "\nWall-clock times (steady_clock); the last column is the thread's CPU time for the same runs "
                  "(close to the wall clock when nothing else ran on the core).\n\n";
@@ -329,8 +329,8 @@ void reportFrameSet(const std::string &title, const std::vector<BenchFrame> &fra
     for (const auto &module : kModules) {
         const Stats a = moduleStats(ours, module), b = moduleStats(stock, module);
         if (a.max == 0.0 && b.max == 0.0) continue;
-        std::cout << "| " << module << " | " << fmt(a.median) << " | " << spread(a) << " | " << fmt(b.median)
-                  << " | " << spread(b) << " | " << ratio(b.median, a.median) << " |\n";
+        std::cout << "| " << module << " | " << fmt(a.median) << " | " << spread(a) << " | " << fmt(b.median) << " | "
+                  << spread(b) << " | " << ratio(b.median, a.median) << " |\n";
     }
     std::cout << "| **total** | **" << fmt(wallStats(ours).median) << "** | " << spread(wallStats(ours)) << " | **"
               << fmt(stock_total.median) << "** | " << spread(stock_total) << " | **"
@@ -344,8 +344,8 @@ void reportFrameSet(const std::string &title, const std::vector<BenchFrame> &fra
         for (const auto &stage : m.stage_order) {
             const Stats s = stageStats(m, stage);
             const std::string module = moduleOf(stage);
-            std::cout << "| " << stage << " | " << (module.empty() ? "(alternative, not in total)" : module)
-                      << " | " << fmt(s.median) << " | " << spread(s) << " | "
+            std::cout << "| " << stage << " | " << (module.empty() ? "(alternative, not in total)" : module) << " | "
+                      << fmt(s.median) << " | " << spread(s) << " | "
                       << (total.median > 0 && !module.empty() ? fmt(100.0 * s.median / total.median) + " %" : "-")
                       << " |\n";
         }
@@ -380,22 +380,24 @@ void reportFrameSet(const std::string &title, const std::vector<BenchFrame> &fra
                         M_PI) +
                     "°";
         std::cout << "| " << frames[f].name << " | " << frames[f].finite << " | " << fmt(results[0].frame_median_ms[f])
-                  << " | " << a.planes << " | " << fmt(results[1].frame_median_ms[f]) << " | " << fmt(results[2].frame_median_ms[f])
-                  << " | " << ratio(results[2].frame_median_ms[f], results[0].frame_median_ms[f]) << " | "
-                  << outcome(a) << " | " << outcome(results[1].outcomes[f]) << " | " << outcome(b) << " | " << angle
-                  << " |\n";
+                  << " | " << a.planes << " | " << fmt(results[1].frame_median_ms[f]) << " | "
+                  << fmt(results[2].frame_median_ms[f]) << " | "
+                  << ratio(results[2].frame_median_ms[f], results[0].frame_median_ms[f]) << " | " << outcome(a) << " | "
+                  << outcome(results[1].outcomes[f]) << " | " << outcome(b) << " | " << angle << " |\n";
     }
     std::cout << "\n";
 }
 
 void reportKeystone(const Options &o, const Projector &projector) {
     std::cout << "## Keystone warp\n\n";
-    std::cout << "A picture of the framebuffer's size shown in a detected rectangle on a wall 2 m ahead turned 20°; "
-                 "per frame (the homography is computed once per detection). KeystoneWarper is the warp for a stream of "
-                 "frames; warpToFramebuffer is one picture per keystone (it also works out the source positions).\n\n";
+    std::cout
+        << "A picture of the framebuffer's size shown in a detected rectangle on a wall 2 m ahead turned 20°; "
+           "per frame (the homography is computed once per detection). KeystoneWarper is the warp for a stream of "
+           "frames; warpToFramebuffer is one picture per keystone (it also works out the source positions).\n\n";
     std::cout << "| warp | median ms | p10–p90 ms | max ms | target |\n|---|---:|---:|---:|---:|\n";
-    for (const auto kind : {KeystoneWarp::Kind::Warper, KeystoneWarp::Kind::WarperSsse3, KeystoneWarp::Kind::WarperPlain,
-                            KeystoneWarp::Kind::Projsurf, KeystoneWarp::Kind::Bare, KeystoneWarp::Kind::Remap}) {
+    for (const auto kind :
+         {KeystoneWarp::Kind::Warper, KeystoneWarp::Kind::WarperSsse3, KeystoneWarp::Kind::WarperPlain,
+          KeystoneWarp::Kind::Projsurf, KeystoneWarp::Kind::Bare, KeystoneWarp::Kind::Remap}) {
         KeystoneWarp warp(projector, kind);
         const int warmup = o.quick ? 0 : 10, reps = o.quick ? 1 : 300;
         for (int i = 0; i < warmup; ++i) warp.run();
@@ -504,8 +506,7 @@ void reportScale(const std::vector<BenchFrame> &frames, const Options &o, const 
     std::cout << "## Time against the number of points\n\n";
     std::cout << "Each of the " << frames.size()
               << " frames' depth images resampled (nearest neighbour, intrinsics scaled) to the size; " << reps
-              << " timed repetitions per frame after " << warmup
-              << " warm-ups; median over frames x repetitions.\n\n";
+              << " timed repetitions per frame after " << warmup << " warm-ups; median over frames x repetitions.\n\n";
     std::cout << "| size | pixels | valid points (mean) | default ms | default ns/pixel | stock ms | stock ns/pixel | "
                  "stock / default |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
     std::vector<double> px, ours_ms, stock_ms;
@@ -559,9 +560,11 @@ void reportScale(const std::vector<BenchFrame> &frames, const Options &o, const 
 int main(int argc, char **argv) {
     Options o;
     o.data = defaultRealDir();
-    CLI::App app{"projsurf_bench: detector stages vs a stock-PCL pipeline of the paper's steps, keystone warp, "
-                 "memory; Markdown on stdout"};
-    auto *data_option = app.add_option("--data", o.data, "folder of real frames (sub-folders with depth.png + camera.yaml)");
+    CLI::App app{
+        "projsurf_bench: detector stages vs a stock-PCL pipeline of the paper's steps, keystone warp, "
+        "memory; Markdown on stdout"};
+    auto *data_option =
+        app.add_option("--data", o.data, "folder of real frames (sub-folders with depth.png + camera.yaml)");
     app.add_option("--reps", o.reps, "timed repetitions per frame")->check(CLI::Range(1, 100000));
     app.add_option("--warmup", o.warmup, "untimed repetitions per frame first")->check(CLI::Range(0, 100000));
     app.add_option("--frames", o.max_frames, "use only the first N frames (0 = all)")->check(CLI::Range(0, 100000));

@@ -3,12 +3,12 @@
 // each input is written to a file of the right extension in a private folder first. An
 // InputError is the expected answer to a bad input; anything else escaping (another
 // exception, a crash, a sanitizer report) is a finding.
+#include <unistd.h>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "projsurf/io/errors.hpp"
 

@@ -2,13 +2,13 @@
 // --captures 3` and `projsurf detect --json`): every reader gets small valid files of each
 // variant it reads, so that the fuzzers start from inside the formats.
 // usage: projsurf_fuzz_seeds SIM_DIR DETECTION_JSON CORPUS_DIR
+#include <pcl/io/pcd_io.h>
+#include <pcl/point_types.h>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
-#include <pcl/io/pcd_io.h>
-#include <pcl/point_types.h>
 #include <sstream>
 
 #include "../tests/bag_writer.hpp"
@@ -52,7 +52,8 @@ int main(int argc, char **argv) {
     small.width = 32;
     small.height = 24;
     for (int r = 0; r < 24; ++r)
-        for (int c = 0; c < 32; ++c) small.points.push_back(full.points[static_cast<std::size_t>(r * 20) * full.width + c * 20]);
+        for (int c = 0; c < 32; ++c)
+            small.points.push_back(full.points[static_cast<std::size_t>(r * 20) * full.width + c * 20]);
     Cloud flat = small;
     flat.width = static_cast<int>(flat.points.size());
     flat.height = 1;
@@ -70,7 +71,8 @@ int main(int argc, char **argv) {
     std::ostringstream ply;
     std::size_t finite = 0;
     for (const Point &p : flat.points) finite += isFinite(p);
-    ply << "ply\nformat ascii 1.0\nelement vertex " << finite << "\nproperty float x\nproperty float y\nproperty float z\n"
+    ply << "ply\nformat ascii 1.0\nelement vertex " << finite
+        << "\nproperty float x\nproperty float y\nproperty float z\n"
         << "element face 0\nproperty list uchar int vertex_indices\nend_header\n";
     for (const Point &p : flat.points)
         if (isFinite(p)) ply << p.x() << " " << p.y() << " " << p.z() << "\n";

@@ -93,14 +93,15 @@ inline std::string bagWithClouds(const std::vector<Cloud> &clouds, const std::st
                            serializeCloud(clouds[k], static_cast<std::uint32_t>(100 + k), "camera_optical"));
     }
     const std::string magic = "#ROSBAG V2.0\n";
-    const std::string chunk_record =
-        bagRecord({{"op", "\x05"}, {"compression", "none"}, {"size", u32Bytes(static_cast<std::uint32_t>(chunk.size()))}}, chunk);
+    const std::string chunk_record = bagRecord(
+        {{"op", "\x05"}, {"compression", "none"}, {"size", u32Bytes(static_cast<std::uint32_t>(chunk.size()))}}, chunk);
     // The bag header record is padded to 4096 bytes (as rosbag does); its index_pos is known
     // once its own size is.
     auto header = [&](std::uint64_t index_pos) {
         std::string ip;
         putU64(ip, index_pos);
-        const BagFields f = {{"op", "\x03"}, {"index_pos", ip}, {"conn_count", u32Bytes(1)}, {"chunk_count", u32Bytes(1)}};
+        const BagFields f = {
+            {"op", "\x03"}, {"index_pos", ip}, {"conn_count", u32Bytes(1)}, {"chunk_count", u32Bytes(1)}};
         const std::string fields = bagFields(f);
         return bagRecord(f, std::string(4096 - 8 - fields.size(), ' '));
     };

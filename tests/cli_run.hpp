@@ -2,12 +2,12 @@
 // Running the projsurf CLI from a test: exit status, stdout and stderr; a folder to run it in.
 #include <sys/wait.h>
 
+#include <unistd.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 namespace projsurf::test {
 
@@ -27,8 +27,8 @@ inline std::string slurp(const std::filesystem::path &path) {
 /// `dir` and the capture files are removed again (tests check what the command leaves behind).
 inline CliRun cli(const std::string &args, const std::filesystem::path &dir, int timeout_s = 120) {
     const std::filesystem::path o = dir / "cli_stdout.log", e = dir / "cli_stderr.log";
-    const std::string cmd = "timeout " + std::to_string(timeout_s) + " " + std::string(PROJSURF_CLI) + " " + args + " >" +
-                            o.string() + " 2>" + e.string();
+    const std::string cmd = "timeout " + std::to_string(timeout_s) + " " + std::string(PROJSURF_CLI) + " " + args +
+                            " >" + o.string() + " 2>" + e.string();
     const int s = std::system(cmd.c_str());
     CliRun r{WIFEXITED(s) ? WEXITSTATUS(s) : -1, slurp(o), slurp(e)};
     std::filesystem::remove(o);

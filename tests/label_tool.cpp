@@ -6,7 +6,8 @@
 //          --aim u,v: aim the projector at the surface point seen at pixel (u, v)
 //          --refine "name;name": shrink every obstacle drawn as a box, except those named, to what the
 //                   depth shows inside it: readings more than 2.5 cm in front of the plane of the
-//                   surface whose regions hold the pixel (else the nearest plane), or no reading (closed 5x5, grown by 3 px within the box, pieces of >= 20 px)
+//                   surface whose regions hold the pixel (else the nearest plane), or no reading (closed 5x5, grown by
+//                   3 px within the box, pieces of >= 20 px)
 //          then fits the surfaces, recomputes the reference best rectangle and writes the label.
 //   baseline <real_dir> <labels_dir> [margin]  prints the regression baseline (labels/baseline.yaml):
 //          today's detector per frame, right or not, and its area ratio minus `margin` (default 0.05),
@@ -22,11 +23,11 @@
 #include <string>
 
 #include "projsurf/core/gravity.hpp"
-#include "projsurf/io/cloud_io.hpp"
 #include "projsurf/eval/label_overlay.hpp"
-#include "projsurf/eval/labelled_eval.hpp"
 #include "projsurf/eval/label_reference.hpp"
+#include "projsurf/eval/labelled_eval.hpp"
 #include "projsurf/eval/real_labels.hpp"
+#include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
@@ -63,7 +64,8 @@ void holes(RealLabel &l, const Cloud &cloud, int min_pixels) {
     cv::Mat region(cloud.height, cloud.width, CV_8U, cv::Scalar(0));
     auto pts = [](const LabelPolygon &p) {
         std::vector<cv::Point> out;
-        for (const auto &q : p.pixels) out.emplace_back(static_cast<int>(std::lround(q.x())), static_cast<int>(std::lround(q.y())));
+        for (const auto &q : p.pixels)
+            out.emplace_back(static_cast<int>(std::lround(q.x())), static_cast<int>(std::lround(q.y())));
         return std::vector<std::vector<cv::Point>>{out};
     };
     for (const auto &s : l.surfaces)
@@ -103,7 +105,8 @@ void refineObstacles(RealLabel &l, const Cloud &cloud, const std::string &keep_l
         if (!k.empty()) keep.push_back(k);
     auto pts = [](const LabelPolygon &p) {
         std::vector<cv::Point> out;
-        for (const auto &q : p.pixels) out.emplace_back(static_cast<int>(std::lround(q.x())), static_cast<int>(std::lround(q.y())));
+        for (const auto &q : p.pixels)
+            out.emplace_back(static_cast<int>(std::lround(q.x())), static_cast<int>(std::lround(q.y())));
         return std::vector<std::vector<cv::Point>>{out};
     };
     cv::Mat proud(cloud.height, cloud.width, CV_8U, cv::Scalar(0));
@@ -170,18 +173,19 @@ int main(int argc, char **argv) {
     try {
         if (std::string(argv[1]) == "baseline") {
             const double margin = argc > 4 ? std::stod(argv[4]) : 0.05;
-            std::printf("# Regression floor of the labelled real-frame suite, checked by tests/test_real_labels.cpp.\n"
-                        "# Per frame: whether today's default detector is right (valid, or nothing found where the\n"
-                        "# label has no usable surface) and its area ratio to the label's best minus %.2f\n"
-                        "# (at most 0.90, the target: a valid answer may exceed the best, see labels/README.md).\n"
-                        "# Made by: build/tests/projsurf_label_tool baseline %s %s %.2f\n"
-                        "# Raise it as the detector improves.\nframes:\n",
-                        margin, argv[2], argv[3], margin);
+            std::printf(
+                "# Regression floor of the labelled real-frame suite, checked by tests/test_real_labels.cpp.\n"
+                "# Per frame: whether today's default detector is right (valid, or nothing found where the\n"
+                "# label has no usable surface) and its area ratio to the label's best minus %.2f\n"
+                "# (at most 0.90, the target: a valid answer may exceed the best, see labels/README.md).\n"
+                "# Made by: build/tests/projsurf_label_tool baseline %s %s %.2f\n"
+                "# Raise it as the detector improves.\nframes:\n",
+                margin, argv[2], argv[3], margin);
             for (const auto &path : listLabelFiles(argv[3])) {
                 const LabelledFrame f = evaluateLabelledFrame(path, argv[2], DetectorConfig{}, {});
                 std::printf("  %s: {right: %s, min_ratio: %.2f}  # ratio %.3f\n", f.name.c_str(),
-                            f.score.right ? "true" : "false", std::clamp(std::floor((f.score.ratio - margin) * 100) / 100, 0.0, 0.9),
-                            f.score.ratio);
+                            f.score.right ? "true" : "false",
+                            std::clamp(std::floor((f.score.ratio - margin) * 100) / 100, 0.0, 0.9), f.score.ratio);
             }
             return 0;
         }
@@ -220,14 +224,16 @@ int main(int argc, char **argv) {
         bool do_refine = false;
         for (int i = 4; i < argc; ++i) {
             const std::string a = argv[i];
-            if (a == "--holes" && i + 1 < argc) holes(l, cloud, std::stoi(argv[++i]));
-            else if (a == "--overlay" && i + 1 < argc) overlay = argv[++i];
-            else if (a == "--residual" && i + 1 < argc) residual = argv[++i];
+            if (a == "--holes" && i + 1 < argc)
+                holes(l, cloud, std::stoi(argv[++i]));
+            else if (a == "--overlay" && i + 1 < argc)
+                overlay = argv[++i];
+            else if (a == "--residual" && i + 1 < argc)
+                residual = argv[++i];
             else if (a == "--refine" && i + 1 < argc) {
                 refine = argv[++i];
                 do_refine = true;
-            }
-            else if (a == "--aim" && i + 1 < argc) {
+            } else if (a == "--aim" && i + 1 < argc) {
                 double u = 0, v = 0;
                 if (std::sscanf(argv[++i], "%lf,%lf", &u, &v) != 2) throw std::runtime_error("--aim u,v");
                 int s = 0;
@@ -240,7 +246,8 @@ int main(int argc, char **argv) {
                 const auto hit = intersectRay(fit.plane, Eigen::Vector3d::Zero(), ray);
                 if (!hit) throw std::runtime_error("--aim: the pixel does not see the plane");
                 l.projector.direction = (*hit - l.projector.origin).normalized();
-            } else throw std::runtime_error("unknown option " + a);
+            } else
+                throw std::runtime_error("unknown option " + a);
         }
         l.best = referenceBest(cloud, cam, l);
         if (do_refine) {
@@ -279,10 +286,14 @@ int main(int argc, char **argv) {
                             if (std::abs(d) < std::abs(r)) r = d;
                         }
                     cv::Vec3b c(90, 90, 90);
-                    if (std::abs(r) < 0.02) c = cv::Vec3b(200, 200, 200);
-                    else if (std::abs(r) < 0.04) c = cv::Vec3b(0, 220, 255);
-                    else if (r > 0 && r < 0.5) c = cv::Vec3b(0, 0, 255);
-                    else if (r < 0 && r > -0.5) c = cv::Vec3b(255, 80, 0);
+                    if (std::abs(r) < 0.02)
+                        c = cv::Vec3b(200, 200, 200);
+                    else if (std::abs(r) < 0.04)
+                        c = cv::Vec3b(0, 220, 255);
+                    else if (r > 0 && r < 0.5)
+                        c = cv::Vec3b(0, 0, 255);
+                    else if (r < 0 && r > -0.5)
+                        c = cv::Vec3b(255, 80, 0);
                     img.at<cv::Vec3b>(v, u) = c;
                 }
             cv::Mat over = renderLabelOverlay(img, l, cam, nullptr, 0.0);

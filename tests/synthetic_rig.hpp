@@ -56,8 +56,10 @@ inline Rectangle rectangleInWorkspace(const Projector &proj, const Plane &plane,
     const Eigen::Vector2d c(0.5 * (x0 + x1), 0.5 * (y0 + y1));
     double w = fill * (x1 - x0), h = fill * (y1 - y0);
     const double aspect = proj.aspect();
-    if (w / h > aspect) w = h * aspect;
-    else h = w / aspect;
+    if (w / h > aspect)
+        w = h * aspect;
+    else
+        h = w / aspect;
     return makeRectangle(frame, c - Eigen::Vector2d(w / 2, h / 2), c + Eigen::Vector2d(w / 2, h / 2));
 }
 
@@ -78,12 +80,12 @@ inline std::vector<Point> noisyWallCloud(const Plane &plane, const CameraIntrins
 }
 
 struct CaptureOptions {
-    double disc_radius_px = 100.0;  ///< radius of the white disc in the projector framebuffer
-    bool noise = true;              ///< Kinect depth noise + colour noise
-    double hole_fraction = 0.05;    ///< random pixels with no depth reading
+    double disc_radius_px = 100.0;    ///< radius of the white disc in the projector framebuffer
+    bool noise = true;                ///< Kinect depth noise + colour noise
+    double hole_fraction = 0.05;      ///< random pixels with no depth reading
     double disc_hole_fraction = 0.4;  ///< extra missing readings inside the bright disc
-    bool drop_disc_depth = false;   ///< no depth at all around the disc (a refusal case)
-    bool no_disc = false;           ///< nothing projected (a refusal case)
+    bool drop_disc_depth = false;     ///< no depth at all around the disc (a refusal case)
+    bool no_disc = false;             ///< nothing projected (a refusal case)
 };
 
 /// One calibration capture: the calibration picture (black, white disc at the framebuffer

@@ -7,12 +7,12 @@
 
 #include "projsurf/core/beam_blanking.hpp"
 #include "projsurf/core/keystone.hpp"
+#include "projsurf/eval/walk_in.hpp"
 #include "projsurf/pipeline/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 #include "projsurf/sim/test_card.hpp"
-#include "projsurf/eval/walk_in.hpp"
 
 using namespace projsurf;
 
@@ -53,7 +53,8 @@ TEST(Blanking, PointsBehindThePlaneOrNearItBlankNothing) {
     cloud.width = 40;
     cloud.height = 40;
     for (int y = 0; y < 40; ++y)
-        for (int x = 0; x < 40; ++x) cloud.points.emplace_back(-0.2f + 0.01f * x, -0.2f + 0.01f * y, 1.96f);  // 4 cm proud
+        for (int x = 0; x < 40; ++x)
+            cloud.points.emplace_back(-0.2f + 0.01f * x, -0.2f + 0.01f * y, 1.96f);  // 4 cm proud
     BeamBlanker blanker(projector);
     EXPECT_EQ(cv::countNonZero(blanker.compute(cloud, wall)), 0);
     for (auto &p : cloud.points) p.z() = 2.3f;  // behind the wall
@@ -104,10 +105,11 @@ TEST(Blanking, PersonWalkingIntoTheBeam) {
             applyBlanking(fb, blanker.compute(frame.cloud, placed.detection.plane));
             const sim::BeamScore s =
                 sim::scoreBlanking(frames[k], placed.scenario.wall, projector, placed.framebuffer, fb);
-            std::printf("walk-in %.1f m %.2f deg %s frame %zu: %ld px on the person, %ld of them lit; %ld picture px "
-                        "> 10 cm away, %.2f %% lit; %d px blanked\n",
-                        c.distance, c.angle, c.kinect1 ? "kinect1" : "K&OE", k, s.on_person, s.lit_on_person,
-                        s.far_pixels, 100.0 * s.farLitShare(), blanker.blankedPixels());
+            std::printf(
+                "walk-in %.1f m %.2f deg %s frame %zu: %ld px on the person, %ld of them lit; %ld picture px "
+                "> 10 cm away, %.2f %% lit; %d px blanked\n",
+                c.distance, c.angle, c.kinect1 ? "kinect1" : "K&OE", k, s.on_person, s.lit_on_person, s.far_pixels,
+                100.0 * s.farLitShare(), blanker.blankedPixels());
             EXPECT_EQ(s.lit_on_person, 0) << "frame " << k;
             EXPECT_GE(s.farLitShare(), 0.95) << "frame " << k;
             if (k + 1 == frames.size()) {

@@ -145,8 +145,8 @@ TEST(CalibrationSynthetic, RecoversTheAxisFromNoisyCaptures) {
         EXPECT_EQ(cal.projector.width, 1280);
         for (int i = 0; i < 4; ++i) EXPECT_NEAR(cal.pinhole_rays[i].norm(), 1.0, 1e-12);
     }
-    std::printf("axis recovery: worst %.4f deg, origin worst %.2f mm (2 seeds x 5 captures at 1-3 m)\n",
-                worst_angle, worst_origin * 1000);
+    std::printf("axis recovery: worst %.4f deg, origin worst %.2f mm (2 seeds x 5 captures at 1-3 m)\n", worst_angle,
+                worst_origin * 1000);
     EXPECT_LE(worst_angle, 0.5);
     EXPECT_LT(worst_origin, 0.03);
 }
@@ -256,9 +256,10 @@ TEST(CalibrationEndToEnd, EstimatedCalibrationAndNoisyCloud) {
             }
             std::printf("\n");
         }
-    std::printf("worst: %.4f %%; axis error %.4f deg; picture corners off by up to %.1f mm (%.3f %% of the "
-                "rectangle's width)\n",
-                worst, angleBetweenDeg(est.direction, truth.direction), worst_offset * 1000, worst_offset_rel * 100);
+    std::printf(
+        "worst: %.4f %%; axis error %.4f deg; picture corners off by up to %.1f mm (%.3f %% of the "
+        "rectangle's width)\n",
+        worst, angleBetweenDeg(est.direction, truth.direction), worst_offset * 1000, worst_offset_rel * 100);
     EXPECT_LE(worst, 0.5);
     EXPECT_LT(worst_offset_rel, 0.01);
 }
@@ -274,8 +275,8 @@ TEST(CalibrationSimulator, RecoversTheAxisFromTheSimulatorsKinectCaptures) {
         const Calibration cal = calibrateProjector(sim::captureImages(frames), sim::SensorModel{}.camera);
         ASSERT_TRUE(cal.ok()) << cal.message;
         const double angle = angleBetweenDeg(cal.projector.direction, truth.direction);
-        std::printf("simulator seed %u: axis error %.4f deg, origin error %.2f mm, residual max %.2f mm\n", seed,
-                    angle, (cal.projector.origin - truth.origin).norm() * 1000, cal.axis.max_m * 1000);
+        std::printf("simulator seed %u: axis error %.4f deg, origin error %.2f mm, residual max %.2f mm\n", seed, angle,
+                    (cal.projector.origin - truth.origin).norm() * 1000, cal.axis.max_m * 1000);
         worst = std::max(worst, angle);
     }
     EXPECT_LE(worst, 0.5);

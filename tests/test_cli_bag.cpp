@@ -56,7 +56,8 @@ TEST(CliBag, PngFramesToABagThatDetectReadsLikeTheFrames) {
     fs::create_directories(dir / "depth");
     const double angles[3] = {0.0, 10.0, 20.0};
     for (int i = 0; i < 3; ++i)
-        cv::imwrite((dir / "depth" / ("000" + std::to_string(i + 1) + ".png")).string(), wallDepth(cam, 2.0, angles[i]));
+        cv::imwrite((dir / "depth" / ("000" + std::to_string(i + 1) + ".png")).string(),
+                    wallDepth(cam, 2.0, angles[i]));
     const std::string bag = (dir / "frames.bag").string();
     CliRun r = cli("bag --depth-dir " + (dir / "depth").string() + " --camera " + (dir / "camera.yaml").string() +
                        " --out " + bag + " --fps 10",
@@ -82,9 +83,10 @@ TEST(CliBag, PngFramesToABagThatDetectReadsLikeTheFrames) {
         EXPECT_EQ(lines[i]["bag"]["topic"], "/camera/depth/image_rect");
         EXPECT_EQ(lines[i]["bag"]["index"], i);
         const std::string json = (dir / ("f" + std::to_string(i) + ".json")).string();
-        const CliRun one = cli("detect --depth " + (dir / "depth" / ("000" + std::to_string(i + 1) + ".png")).string() +
-                                   " --camera " + (dir / "camera.yaml").string() + " --calib " + kCalib + " --json " + json,
-                               dir);
+        const CliRun one =
+            cli("detect --depth " + (dir / "depth" / ("000" + std::to_string(i + 1) + ".png")).string() + " --camera " +
+                    (dir / "camera.yaml").string() + " --calib " + kCalib + " --json " + json,
+                dir);
         ASSERT_EQ(one.status, 0) << one.err;
         const auto frame = nlohmann::json::parse(slurp(json));
         ASSERT_TRUE(frame["found"].get<bool>());

@@ -3,12 +3,13 @@
 // JSON says how many.
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "cli_run.hpp"
+#include "projsurf/eval/walk_in.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/files.hpp"
@@ -17,7 +18,6 @@
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 #include "projsurf/sim/test_card.hpp"
-#include "projsurf/eval/walk_in.hpp"
 
 namespace fs = std::filesystem;
 using namespace projsurf;
@@ -71,8 +71,8 @@ TEST(CliBlanking, CorrectBlanksThePersonInTheBeam) {
     EXPECT_GT(s.on_person, 10000);
     EXPECT_EQ(s.lit_on_person, 0);
     // The depth PNG gives the same answer within the millimetre rounding.
-    const nlohmann::json from_depth = run("depth", "--depth " + (dir / "now.png").string() + " --camera " +
-                                                       (dir / "camera.yaml").string());
+    const nlohmann::json from_depth =
+        run("depth", "--depth " + (dir / "now.png").string() + " --camera " + (dir / "camera.yaml").string());
     EXPECT_NEAR(from_depth["blanked_pixels"].get<double>(), n, 0.02 * n);
     // The empty wall blanks nothing.
     EXPECT_EQ(run("empty", "--cloud " + (dir / "empty.pcd").string())["blanked_pixels"].get<int>(), 0);
@@ -86,13 +86,15 @@ TEST(CliBlanking, BadArgumentsAreOneClearLine) {
     const sim::RgbdFrame f = sim::renderFrame(sc.scene, sim::SensorModel(), 1);
     DetectorConfig cfg;
     const Projector projector = sim::exampleProjector();
-    writeFileAtomic((dir / "det.json").string(), detectionToJson(detectSurface(f.cloud, projector, cfg, sc.gravity), cfg, &projector).dump());
+    writeFileAtomic((dir / "det.json").string(),
+                    detectionToJson(detectSurface(f.cloud, projector, cfg, sc.gravity), cfg, &projector).dump());
     cv::imwrite((dir / "card.png").string(), sim::testCard(cv::Size(64, 40)));
     const std::string base = "correct --calib " + (dir / "calib.yaml").string() + " --detection " +
                              (dir / "det.json").string() + " --image " + (dir / "card.png").string() + " --out " +
                              (dir / "fb.png").string();
-    for (const std::string &extra : {std::string("--depth x.png"), std::string("--cloud a.pcd --depth b.png --camera c.yaml"),
-                                    "--cloud " + (dir / "missing.pcd").string()}) {
+    for (const std::string &extra :
+         {std::string("--depth x.png"), std::string("--cloud a.pcd --depth b.png --camera c.yaml"),
+          "--cloud " + (dir / "missing.pcd").string()}) {
         const auto r = cli(base + " " + extra, dir);
         EXPECT_EQ(r.status, 2) << extra;
         EXPECT_EQ(r.err.rfind("projsurf: error: ", 0), 0u) << r.err;
@@ -110,7 +112,8 @@ TEST(CliBlanking, DemoShowsAPersonWalkingInTheBlankedPictureAndAPlannedMove) {
     EXPECT_TRUE(fs::exists(dir / "demo" / "walk_in_compare.png"));
     // Every walk-in frame: no lit pixel on the person, and the last one has them in the beam.
     int frames = 0;
-    for (std::size_t at = r.out.find("walk-in frame"); at != std::string::npos; at = r.out.find("walk-in frame", at + 1)) {
+    for (std::size_t at = r.out.find("walk-in frame"); at != std::string::npos;
+         at = r.out.find("walk-in frame", at + 1)) {
         const std::string line = r.out.substr(at, r.out.find('\n', at) - at);
         EXPECT_NE(line.find("; 0 of "), std::string::npos) << line;
         ++frames;

@@ -2,6 +2,12 @@
 // detection JSON + picture/video -> framebuffer, framebuffer -> full screen under Xvfb.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -11,18 +17,12 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 #include <random>
-#include <fcntl.h>
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <sstream>
 #include <thread>
-#include <unistd.h>
-#include <yaml-cpp/yaml.h>
 
+#include "cli_run.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "synthetic_rig.hpp"
-#include "cli_run.hpp"
 
 namespace fs = std::filesystem;
 using namespace projsurf;
@@ -32,7 +32,6 @@ using projsurf::test::freshDir;
 using projsurf::test::slurp;
 
 namespace {
-
 
 /// Writes the synthetic captures of the rig to `dir` (camera.yaml + capture_k_*.png).
 void writeCaptures(const fs::path &dir, const std::vector<CaptureImages> &caps) {
@@ -285,12 +284,12 @@ TEST(CliCorrect, VideoAndImageSequenceFrameByFrame) {
     }
     const std::string base =
         "correct --calib " + (dir / "calib.yaml").string() + " --detection " + (dir / "det.json").string();
-    CliRun r = cli(base + " --image " + in + " --out " + (dir / "out.avi").string() + " --json " +
-                    (dir / "out.json").string(),
-                dir);
+    CliRun r =
+        cli(base + " --image " + in + " --out " + (dir / "out.avi").string() + " --json " + (dir / "out.json").string(),
+            dir);
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("100%"), std::string::npos) << r.out;  // the progress (on stdout in a log)
-    EXPECT_EQ(r.err, "");                                          // stderr: failures only
+    EXPECT_EQ(r.err, "");                                       // stderr: failures only
     cv::VideoCapture cap((dir / "out.avi").string());
     ASSERT_TRUE(cap.isOpened());
     int frames = 0;
@@ -365,8 +364,7 @@ cv::Mat readXwd(const std::string &path) {
                static_cast<uint32_t>(static_cast<uint8_t>(b[off + 3]));
     };
     const uint32_t header = u32(0), format = u32(8), width = u32(16), height = u32(20), byte_order = u32(28),
-                   bpp = u32(44), bpl = u32(48), rmask = u32(56), gmask = u32(60), bmask = u32(64),
-                   ncolors = u32(76);
+                   bpp = u32(44), bpl = u32(48), rmask = u32(56), gmask = u32(60), bmask = u32(64), ncolors = u32(76);
     if (format != 2 || (bpp != 32 && bpp != 24)) return {};
     const std::size_t data = header + 12ull * ncolors;
     if (b.size() < data + static_cast<std::size_t>(bpl) * height) return {};
@@ -385,17 +383,14 @@ cv::Mat readXwd(const std::string &path) {
                 const uint32_t byte = static_cast<uint8_t>(b[off + i]);
                 pix |= byte_order == 0 ? byte << (8 * i) : byte << (8 * (bytes - 1 - i));
             }
-            img.at<cv::Vec3b>(static_cast<int>(y), static_cast<int>(x)) =
-                cv::Vec3b(static_cast<uchar>((pix & bmask) >> shift(bmask)),
-                          static_cast<uchar>((pix & gmask) >> shift(gmask)),
-                          static_cast<uchar>((pix & rmask) >> shift(rmask)));
+            img.at<cv::Vec3b>(static_cast<int>(y), static_cast<int>(x)) = cv::Vec3b(
+                static_cast<uchar>((pix & bmask) >> shift(bmask)), static_cast<uchar>((pix & gmask) >> shift(gmask)),
+                static_cast<uchar>((pix & rmask) >> shift(rmask)));
         }
     return img;
 }
 
-bool onPath(const std::string &tool) {
-    return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0;
-}
+bool onPath(const std::string &tool) { return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0; }
 
 }  // namespace
 
@@ -424,8 +419,8 @@ TEST(CliShow, FramebufferFullScreenUnderXvfb) {
     posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
     // Two screens, as on a robot whose projector is a second output: the picture must go to
     // screen 1 (the framebuffer's size) and leave screen 0 alone.
-    std::vector<std::string> args = {"Xvfb",          display, "-screen", "0", "640x480x24", "-screen", "1",
-                                     "1280x800x24", "-nolisten", "tcp"};
+    std::vector<std::string> args = {"Xvfb",    display, "-screen",     "0",         "640x480x24",
+                                     "-screen", "1",     "1280x800x24", "-nolisten", "tcp"};
     std::vector<char *> argv;
     for (auto &a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -452,8 +447,9 @@ TEST(CliShow, FramebufferFullScreenUnderXvfb) {
 
     CliRun shown;
     std::thread show([&] {
-        shown = cli("show --image " + (dir / "fb.png").string() + " --display " + display + " --screen-index 1 --seconds 4",
-                    dir);
+        shown =
+            cli("show --image " + (dir / "fb.png").string() + " --display " + display + " --screen-index 1 --seconds 4",
+                dir);
     });
     // Screenshot after the window had time to appear (bounded: retry for up to ~8 s).
     cv::Mat shot;

@@ -3,12 +3,12 @@
 // says what it wrote, frame numbers survive, eval says when the real frames are missing.
 #include <gtest/gtest.h>
 
+#include <yaml-cpp/yaml.h>
 #include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <random>
-#include <yaml-cpp/yaml.h>
 
 #include "cli_run.hpp"
 #include "projsurf/io/cloud_io.hpp"
@@ -75,14 +75,16 @@ TEST(CliFirstHour, ACalibrationToRedoExitsThreeAndDetectWarnsAboutIt) {
     turned.direction = (truth.direction + Eigen::Vector3d(0.035, 0.0, 0.0)).normalized();
     std::vector<CaptureImages> caps;
     const auto walls = rig::calibrationWalls();
-    for (std::size_t k = 0; k < walls.size(); ++k) caps.push_back(rig::renderCapture(k < 2 ? truth : turned, walls[k], cam, rng));
+    for (std::size_t k = 0; k < walls.size(); ++k)
+        caps.push_back(rig::renderCapture(k < 2 ? truth : turned, walls[k], cam, rng));
     writeCaptures(dir / "captures", caps);
     const std::string out = (dir / "calib.yaml").string();
     const CliRun r = cli("calibrate --captures " + (dir / "captures").string() + " --out " + out, dir);
     EXPECT_EQ(r.status, 3) << r.out << r.err;
     EXPECT_EQ(YAML::LoadFile(out)["calibration"]["fit"]["verdict"].as<std::string>(), "redo");  // written, to look at
     EXPECT_EQ(lines(r.err), 1) << r.err;
-    EXPECT_NE(r.err.find("projsurf: error: " + out + ": written, but the captures disagree"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("projsurf: error: " + out + ": written, but the captures disagree"), std::string::npos)
+        << r.err;
     EXPECT_EQ(readCalibrationVerdict(out), "redo");
     EXPECT_EQ(readCalibrationVerdict(kCalib), "");  // written by hand: no verdict
 
@@ -91,7 +93,8 @@ TEST(CliFirstHour, ACalibrationToRedoExitsThreeAndDetectWarnsAboutIt) {
     EXPECT_NE(help.out.find("3 when it is written but the captures disagree"), std::string::npos) << help.out;
 
     // detect with it: one warning line, and it still runs.
-    const CliRun d = cli("detect --cloud " + wallPcd(dir) + " --calib " + out + " --json " + (dir / "d.json").string(), dir);
+    const CliRun d =
+        cli("detect --cloud " + wallPcd(dir) + " --calib " + out + " --json " + (dir / "d.json").string(), dir);
     EXPECT_EQ(d.status, 0) << d.err;
     EXPECT_EQ(lines(d.err), 1) << d.err;
     EXPECT_NE(d.err.find("projsurf: warning: " + out + ": its captures disagree (fit verdict redo)"), std::string::npos)
@@ -148,7 +151,8 @@ TEST(CliFirstHour, CorrectSaysWhatItWroteAndKeepsFrameNumbers) {
     CliRun r = cli(base + " --image " + (dir / "wide.png").string() + " --out " + (dir / "fb.png").string(), dir);
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(lines(r.out), 1) << r.out;
-    EXPECT_NE(r.out.find("projsurf correct: 640x400 picture -> " + (dir / "fb.png").string()), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("projsurf correct: 640x400 picture -> " + (dir / "fb.png").string()), std::string::npos)
+        << r.out;
     EXPECT_EQ(r.out.find("letterboxed"), std::string::npos) << r.out;
     // A square picture: letterboxed, and said so.
     cv::imwrite((dir / "square.png").string(), cv::Mat(300, 300, CV_8UC3, cv::Scalar(0, 255, 0)));
@@ -165,7 +169,8 @@ TEST(CliFirstHour, CorrectSaysWhatItWroteAndKeepsFrameNumbers) {
         std::snprintf(name, sizeof name, "%04d.png", i);
         cv::imwrite((dir / "in" / name).string(), cv::Mat(400, 640, CV_8UC3, cv::Scalar(40 * i, 0, 0)));
     }
-    r = cli(base + " --video " + (dir / "in" / "%04d.png").string() + " --out " + (dir / "out" / "%04d.png").string(), dir);
+    r = cli(base + " --video " + (dir / "in" / "%04d.png").string() + " --out " + (dir / "out" / "%04d.png").string(),
+            dir);
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_FALSE(fs::exists(dir / "out" / "0000.png"));
     for (const char *name : {"0001.png", "0002.png", "0003.png"}) EXPECT_TRUE(fs::exists(dir / "out" / name)) << name;

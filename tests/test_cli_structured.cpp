@@ -49,9 +49,8 @@ TEST(CliStructured, CalibratesAnOffsetProjectorFromThreeFlatPoses) {
     EXPECT_NEAR(p.cy(), truth.cy(), 4.0);
     EXPECT_LT(std::acos(std::min(1.0, p.axis().dot(truth.axis()))) * 180 / M_PI, 0.2);
     // --resolution that disagrees with the patterns: one line, exit 2.
-    const auto bad = test::cli("calibrate --captures " + dir.string() + " --out " + (dir / "x.yaml").string() +
-                                   " --resolution 1024,768",
-                               dir);
+    const auto bad = test::cli(
+        "calibrate --captures " + dir.string() + " --out " + (dir / "x.yaml").string() + " --resolution 1024,768", dir);
     EXPECT_EQ(bad.status, 2);
     EXPECT_TRUE(oneLine(bad.err)) << bad.err;
     EXPECT_FALSE(fs::exists(dir / "x.yaml"));

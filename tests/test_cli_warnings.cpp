@@ -2,11 +2,11 @@
 // wrong units are refused with one error line (exit 2).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <regex>
-#include <unistd.h>
 
 #include "cli_run.hpp"
 
@@ -21,7 +21,6 @@ namespace {
 const fs::path kFrame = fs::path(PROJSURF_SHARED_DIR) / "data/real/tum_o3d_fr3_office_partition";
 const std::string kCalib = std::string(PROJSURF_SOURCE_DIR) + "/examples/calib/example_calib.yaml";
 
-
 std::string depthArgs(const fs::path &camera = kFrame / "camera.yaml") {
     return "detect --depth " + (kFrame / "depth.png").string() + " --camera " + camera.string();
 }
@@ -30,7 +29,8 @@ int lines(const std::string &text) { return static_cast<int>(std::count(text.beg
 
 /// `text` with the first match of `from` replaced, written to `path`.
 void writeEdited(const fs::path &from, const fs::path &path, const std::string &pattern, const std::string &with) {
-    std::ofstream(path) << std::regex_replace(slurp(from), std::regex(pattern), with, std::regex_constants::format_first_only);
+    std::ofstream(path) << std::regex_replace(slurp(from), std::regex(pattern), with,
+                                              std::regex_constants::format_first_only);
 }
 
 }  // namespace
@@ -44,7 +44,8 @@ TEST(CliWarnings, TiltedCameraWithoutGravityIsToldToGiveIt) {
     EXPECT_NE(level.err.find("--gravity auto"), std::string::npos) << level.err;
     EXPECT_EQ(lines(level.err), 1) << level.err;
     // Given gravity (or auto): no warning.
-    const auto given = cli(depthArgs() + " --calib " + kCalib + " --gravity auto --json " + (dir / "b.json").string(), dir);
+    const auto given =
+        cli(depthArgs() + " --calib " + kCalib + " --gravity auto --json " + (dir / "b.json").string(), dir);
     EXPECT_EQ(given.status, 0) << given.err;
     EXPECT_EQ(given.err.find("tilted"), std::string::npos) << given.err;
     fs::remove_all(dir);
@@ -68,7 +69,8 @@ TEST(CliWarnings, CalibrationInRadiansOrMillimetresIsRefused) {
     const fs::path dir = freshDir("warnings_units");
     writeEdited(kCalib, dir / "rad.yaml", "fov_deg: \\[[^\\]]*\\]", "fov_deg: [0.686, 0.419]");
     writeEdited(kCalib, dir / "mm.yaml", "origin: \\[[^\\]]*\\]", "origin: [0, 120, 0]");
-    for (const auto &[file, word] : {std::pair<std::string, std::string>{"rad.yaml", "radians"}, {"mm.yaml", "metres"}}) {
+    for (const auto &[file, word] :
+         {std::pair<std::string, std::string>{"rad.yaml", "radians"}, {"mm.yaml", "metres"}}) {
         const auto r = cli("detect --cloud /nonexistent.pcd --calib " + (dir / file).string(), dir);
         EXPECT_EQ(r.status, 2) << file;
         EXPECT_EQ(lines(r.err), 1) << r.err;

@@ -104,8 +104,10 @@ void expectSameCloud(const Cloud &got, const pcl::PointCloud<PointT> &ref, doubl
         const float r[3] = {ref.points[i].x, ref.points[i].y, ref.points[i].z};
         for (int a = 0; a < 3; ++a) {
             const float g = got.points[i][a];
-            const bool ok = std::isnan(r[a]) ? std::isnan(g) : std::abs(g - r[a]) <= rel * std::max(1.0f, std::abs(r[a]));
-            if (!ok && ++mismatches <= 5) ADD_FAILURE() << "point " << i << " axis " << a << ": got " << g << ", expected " << r[a];
+            const bool ok =
+                std::isnan(r[a]) ? std::isnan(g) : std::abs(g - r[a]) <= rel * std::max(1.0f, std::abs(r[a]));
+            if (!ok && ++mismatches <= 5)
+                ADD_FAILURE() << "point " << i << " axis " << a << ": got " << g << ", expected " << r[a];
         }
     }
     EXPECT_EQ(mismatches, 0u);
@@ -129,12 +131,13 @@ void expectCloudError(const std::string &path, const std::string &needle = "") {
     expectInputError([&] { readCloud(path); }, path, needle);
 }
 
-std::string pcdHeader(const std::string &fields, const std::string &size, const std::string &type, const std::string &count,
-                      std::uint64_t width, std::uint64_t height, std::uint64_t points, const std::string &data) {
+std::string pcdHeader(const std::string &fields, const std::string &size, const std::string &type,
+                      const std::string &count, std::uint64_t width, std::uint64_t height, std::uint64_t points,
+                      const std::string &data) {
     std::ostringstream h;
-    h << "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS " << fields << "\nSIZE " << size << "\nTYPE " << type
-      << "\nCOUNT " << count << "\nWIDTH " << width << "\nHEIGHT " << height << "\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " << points
-      << "\nDATA " << data << "\n";
+    h << "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS " << fields << "\nSIZE " << size << "\nTYPE "
+      << type << "\nCOUNT " << count << "\nWIDTH " << width << "\nHEIGHT " << height
+      << "\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " << points << "\nDATA " << data << "\n";
     return h.str();
 }
 
@@ -205,7 +208,8 @@ TEST(CloudIoPcd, ExtraFieldsRgbAndNormalsEveryFormat) {
 TEST(CloudIoPcd, CountGreaterThanOneFieldsAsciiBinaryCompressed) {
     const std::string dir = freshDir();
     // A 4-float descriptor and a 3-ushort field around x y z shift every offset.
-    const std::string fields = "desc x label y z rgb3", size = "4 4 2 4 4 1", type = "F F U F F U", count = "4 1 1 1 1 3";
+    const std::string fields = "desc x label y z rgb3", size = "4 4 2 4 4 1", type = "F F U F F U",
+                      count = "4 1 1 1 1 3";
     const int n = 6;
     pcl::PointCloud<pcl::PointXYZ> ref;
     for (int i = 0; i < n; ++i) ref.push_back(pcl::PointXYZ(0.5f * i, -1.25f * i, 2.0f + i));
@@ -214,7 +218,8 @@ TEST(CloudIoPcd, CountGreaterThanOneFieldsAsciiBinaryCompressed) {
     std::vector<std::string> soa(6);  // field-major blocks for binary_compressed
     for (int i = 0; i < n; ++i) {
         const auto &p = ref.points[i];
-        ascii += "9 9 9 9 " + std::to_string(p.x) + " 65535 " + std::to_string(p.y) + " " + std::to_string(p.z) + " 1 2 3\n";
+        ascii +=
+            "9 9 9 9 " + std::to_string(p.x) + " 65535 " + std::to_string(p.y) + " " + std::to_string(p.z) + " 1 2 3\n";
         std::string desc, label, rgb;
         for (int k = 0; k < 4; ++k) appendLE(desc, 9.0f);
         appendLE<std::uint16_t>(label, 65535);
@@ -284,7 +289,8 @@ TEST(CloudIoPcd, DoubleXyzBinaryAsciiCompressedOrganized) {
     ref.width = w;
     ref.height = h;
     for (int i = 0; i < w * h; ++i)
-        ref.points.push_back(pcl::PointXYZ(static_cast<float>(xs[i]), static_cast<float>(ys[i]), static_cast<float>(zs[i])));
+        ref.points.push_back(
+            pcl::PointXYZ(static_cast<float>(xs[i]), static_cast<float>(ys[i]), static_cast<float>(zs[i])));
     for (const char *name : {"/bin.pcd", "/asc.pcd", "/lzf.pcd"}) {
         SCOPED_TRACE(name);
         expectSameCloud(readCloud(dir + name), ref, 1e-7, true);
@@ -325,7 +331,8 @@ TEST(CloudIoPly, DoublesBothEndiansAsciiAndSkippedElements) {
     const double pts[3][3] = {{0.1, 0.2, 1.5}, {-1.0, 2.5, 3.25}, {1e-3, -4.0, 9.5}};
     // An element before the vertices (with a list) must be skipped; faces after are ignored.
     const std::string head_elem = "element meta 2\nproperty uchar tag\nproperty list uchar int ids\n";
-    const std::string vertex = "element vertex 3\nproperty uchar red\nproperty double x\nproperty float64 y\nproperty double z\n";
+    const std::string vertex =
+        "element vertex 3\nproperty uchar red\nproperty double x\nproperty float64 y\nproperty double z\n";
     const std::string face = "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
     auto body = [&](bool big) {
         std::string s;
@@ -336,7 +343,8 @@ TEST(CloudIoPly, DoublesBothEndiansAsciiAndSkippedElements) {
         put(std::uint8_t{3}), put(std::int32_t{0}), put(std::int32_t{1}), put(std::int32_t{2});
         return s;
     };
-    writeBytes(dir + "/le.ply", "ply\nformat binary_little_endian 1.0\ncomment hand made\n" + head_elem + vertex + face + body(false));
+    writeBytes(dir + "/le.ply",
+               "ply\nformat binary_little_endian 1.0\ncomment hand made\n" + head_elem + vertex + face + body(false));
     writeBytes(dir + "/be.ply", "ply\nformat binary_big_endian 1.0\n" + head_elem + vertex + face + body(true));
     std::ostringstream asc;
     asc.precision(17);
@@ -447,11 +455,14 @@ TEST(CloudIoBadInput, PcdHeaderProblems) {
     check("viewpoint.pcd",
           "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 1\nHEIGHT 1\nVIEWPOINT 0 0 0 1\nPOINTS 1\nDATA ascii\n1 2 3\n",
           "VIEWPOINT");
-    check("width_neg.pcd",
-          "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH -3\nHEIGHT 1\nPOINTS 3\nDATA ascii\n1 2 3\n", "WIDTH");
-    check("unknown_key.pcd", "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 1\nHEIGHT 1\nFOO 1\nDATA ascii\n1 2 3\n", "FOO");
-    check("ascii_word.pcd", pcdHeader("x y z", "4 4 4", "F F F", "1 1 1", 1, 1, 1, "ascii") + "1 two 3\n", "not a number");
-    check("ascii_cols.pcd", pcdHeader("x y z", "4 4 4", "F F F", "1 1 1", 2, 1, 2, "ascii") + "1 2 3\n1 2\n", "expected 3");
+    check("width_neg.pcd", "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH -3\nHEIGHT 1\nPOINTS 3\nDATA ascii\n1 2 3\n",
+          "WIDTH");
+    check("unknown_key.pcd", "FIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nWIDTH 1\nHEIGHT 1\nFOO 1\nDATA ascii\n1 2 3\n",
+          "FOO");
+    check("ascii_word.pcd", pcdHeader("x y z", "4 4 4", "F F F", "1 1 1", 1, 1, 1, "ascii") + "1 two 3\n",
+          "not a number");
+    check("ascii_cols.pcd", pcdHeader("x y z", "4 4 4", "F F F", "1 1 1", 2, 1, 2, "ascii") + "1 2 3\n1 2\n",
+          "expected 3");
 }
 
 TEST(CloudIoBadInput, TruncatedAndHugeClaims) {
@@ -459,16 +470,19 @@ TEST(CloudIoBadInput, TruncatedAndHugeClaims) {
     std::string full = smallBinaryPcd(50);
     writeBytes(dir + "/trunc.pcd", full.substr(0, full.size() - 5));
     expectCloudError(dir + "/trunc.pcd", "truncated");
-    writeBytes(dir + "/trunc_ascii.pcd", pcdHeader("x y z", "4 4 4", "F F F", "1 1 1", 3, 1, 3, "ascii") + "1 2 3\n4 5 6\n");
+    writeBytes(dir + "/trunc_ascii.pcd",
+               pcdHeader("x y z", "4 4 4", "F F F", "1 1 1", 3, 1, 3, "ascii") + "1 2 3\n4 5 6\n");
     expectCloudError(dir + "/trunc_ascii.pcd", "truncated");
     // A header promising 10^12 points over a few bytes must fail at once, without allocating.
     for (const char *data : {"binary", "ascii", "binary_compressed"}) {
-        writeBytes(dir + "/huge.pcd", pcdHeader("x y z", "4 4 4", "F F F", "1 1 1", 1000000000, 1000, 1000000000000ull, data) +
-                                          std::string(24, '\x01'));
+        writeBytes(dir + "/huge.pcd",
+                   pcdHeader("x y z", "4 4 4", "F F F", "1 1 1", 1000000000, 1000, 1000000000000ull, data) +
+                       std::string(24, '\x01'));
         SCOPED_TRACE(data);
         expectCloudError(dir + "/huge.pcd");
     }
-    writeBytes(dir + "/huge_w.pcd", pcdHeader("x y z", "4 4 4", "F F F", "1 1 1", 1000000000000ull, 1, 1000000000000ull, "binary"));
+    writeBytes(dir + "/huge_w.pcd",
+               pcdHeader("x y z", "4 4 4", "F F F", "1 1 1", 1000000000000ull, 1, 1000000000000ull, "binary"));
     expectCloudError(dir + "/huge_w.pcd", "too large");
     // Compressed sizes that lie.
     std::string lzf = pcdHeader("x y z", "4 4 4", "F F F", "1 1 1", 2, 1, 2, "binary_compressed");
@@ -485,15 +499,19 @@ TEST(CloudIoBadInput, TruncatedAndHugeClaims) {
     writeBytes(dir + "/lzf_bad.pcd", bad_stream);
     expectCloudError(dir + "/lzf_bad.pcd", "corrupt");
     // PLY: 10^12 vertices in a few bytes, binary and ascii; a truncated list element before them.
-    writeBytes(dir + "/huge.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000\nproperty float x\n"
-                                  "property float y\nproperty float z\nend_header\n" + std::string(24, '\0'));
+    writeBytes(dir + "/huge.ply",
+               "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000\nproperty float x\n"
+               "property float y\nproperty float z\nend_header\n" +
+                   std::string(24, '\0'));
     expectCloudError(dir + "/huge.ply", "exceeds the limit of 16777216 points");
-    writeBytes(dir + "/huge_ascii.ply", "ply\nformat ascii 1.0\nelement vertex 1000000000000\nproperty float x\n"
-                                        "property float y\nproperty float z\nend_header\n1 2 3\n");
+    writeBytes(dir + "/huge_ascii.ply",
+               "ply\nformat ascii 1.0\nelement vertex 1000000000000\nproperty float x\n"
+               "property float y\nproperty float z\nend_header\n1 2 3\n");
     expectCloudError(dir + "/huge_ascii.ply", "exceeds the limit of 16777216 points");
-    writeBytes(dir + "/list_first.ply", "ply\nformat binary_little_endian 1.0\nelement face 1000000000000\n"
-                                        "property list uint int idx\nelement vertex 1\nproperty float x\n"
-                                        "property float y\nproperty float z\nend_header\n\xff\xff\xff\xff");
+    writeBytes(dir + "/list_first.ply",
+               "ply\nformat binary_little_endian 1.0\nelement face 1000000000000\n"
+               "property list uint int idx\nelement vertex 1\nproperty float x\n"
+               "property float y\nproperty float z\nend_header\n\xff\xff\xff\xff");
     expectCloudError(dir + "/list_first.ply", "truncated");
 }
 
@@ -501,8 +519,9 @@ TEST(CloudIoBadInput, ZeroPointsAllNanAndPlyProblems) {
     const std::string dir = freshDir();
     writeBytes(dir + "/zero.pcd", pcdHeader("x y z", "4 4 4", "F F F", "1 1 1", 0, 1, 0, "binary"));
     expectCloudError(dir + "/zero.pcd", "zero points");
-    writeBytes(dir + "/zero.ply", "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
-                                  "property float z\nend_header\n");
+    writeBytes(dir + "/zero.ply",
+               "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
+               "property float z\nend_header\n");
     expectCloudError(dir + "/zero.ply", "zero points");
     auto all_nan = randomCloud<pcl::PointXYZ>(4, 3, 0, 1);
     for (auto &p : all_nan.points) p.x = p.y = p.z = std::numeric_limits<float>::quiet_NaN();
@@ -516,11 +535,13 @@ TEST(CloudIoBadInput, ZeroPointsAllNanAndPlyProblems) {
         EXPECT_EQ(countFinite(c), 0u) << name;
     }
 
-    writeBytes(dir + "/list.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-                                  "property float z\nproperty list uchar float extra\nend_header\n1 2 3 2 0 0\n");
+    writeBytes(dir + "/list.ply",
+               "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+               "property float z\nproperty list uchar float extra\nend_header\n1 2 3 2 0 0\n");
     expectCloudError(dir + "/list.ply", "list property");
-    writeBytes(dir + "/nox.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float u\nproperty float y\n"
-                                 "property float z\nend_header\n1 2 3\n");
+    writeBytes(dir + "/nox.ply",
+               "ply\nformat ascii 1.0\nelement vertex 1\nproperty float u\nproperty float y\n"
+               "property float z\nend_header\n1 2 3\n");
     expectCloudError(dir + "/nox.ply", "no x property");
     writeBytes(dir + "/noformat.ply", "ply\nelement vertex 1\nproperty float x\nend_header\n");
     expectCloudError(dir + "/noformat.ply", "format");
@@ -553,11 +574,13 @@ TEST(CloudIoDepth, BadDepthImagesAndCameraFiles) {
     ASSERT_TRUE(cv::imwrite(dir + "/eight.png", cv::Mat(6, 8, CV_8UC1, cv::Scalar(100))));
     expectInputError([&] { readDepthCloud(dir + "/eight.png", dir + "/camera.yaml"); }, dir + "/eight.png", "16-bit");
     ASSERT_TRUE(cv::imwrite(dir + "/color16.png", cv::Mat(6, 8, CV_16UC3, cv::Scalar(1, 2, 3))));
-    expectInputError([&] { readDepthCloud(dir + "/color16.png", dir + "/camera.yaml"); }, dir + "/color16.png", "channel");
+    expectInputError([&] { readDepthCloud(dir + "/color16.png", dir + "/camera.yaml"); }, dir + "/color16.png",
+                     "channel");
     ASSERT_TRUE(cv::imwrite(dir + "/big.png", cv::Mat(7, 8, CV_16UC1, cv::Scalar(100))));
     expectInputError([&] { readDepthCloud(dir + "/big.png", dir + "/camera.yaml"); }, dir + "/big.png", "8x7");
     ASSERT_TRUE(cv::imwrite(dir + "/zeros.png", cv::Mat(6, 8, CV_16UC1, cv::Scalar(0))));
-    expectInputError([&] { readDepthCloud(dir + "/zeros.png", dir + "/camera.yaml"); }, dir + "/zeros.png", "no valid depth");
+    expectInputError([&] { readDepthCloud(dir + "/zeros.png", dir + "/camera.yaml"); }, dir + "/zeros.png",
+                     "no valid depth");
     writeBytes(dir + "/notpng.png", "this is not an image");
     expectInputError([&] { readDepthCloud(dir + "/notpng.png", dir + "/camera.yaml"); }, dir + "/notpng.png");
     expectInputError([&] { readDepthCloud(dir + "/absent.png", dir + "/camera.yaml"); }, dir + "/absent.png");
@@ -596,24 +619,31 @@ TEST(CloudIoFuzz, MutatedPcdAndPlyLoadOrThrowInputError) {
     ASSERT_EQ(pcl::io::savePCDFileBinaryCompressed(dir + "/base_lzf.pcd", ref), 0);
     ASSERT_EQ(pcl::io::savePLYFileBinary(dir + "/base.ply", randomCloud<pcl::PointXYZ>(60, 1, 0, 78)), 0);
     ASSERT_EQ(pcl::io::savePLYFileASCII(dir + "/base_ascii.ply", randomCloud<pcl::PointXYZ>(30, 1, 0, 79)), 0);
-    const std::string bases[] = {dir + "/base_bin.pcd", dir + "/base_lzf.pcd", dir + "/base.ply", dir + "/base_ascii.ply"};
+    const std::string bases[] = {dir + "/base_bin.pcd", dir + "/base_lzf.pcd", dir + "/base.ply",
+                                 dir + "/base_ascii.ply"};
     std::mt19937 rng(2026);
     int loaded = 0, rejected = 0;
     for (int iter = 0; iter < 2000; ++iter) {
         const std::string &base = bases[iter % 4];
         std::string bytes = readBytes(base);
-        const std::size_t header_end = std::min(bytes.size(), bytes.find(base.find(".ply") != std::string::npos ? "end_header" : "DATA") + 30);
+        const std::size_t header_end =
+            std::min(bytes.size(), bytes.find(base.find(".ply") != std::string::npos ? "end_header" : "DATA") + 30);
         const int kind = static_cast<int>(rng() % 5);
         const int edits = 1 + static_cast<int>(rng() % 4);
         for (int e = 0; e < edits && !bytes.empty(); ++e) {
             // Half the edits land in the header, where the parsing decisions are.
             const std::size_t limit = (rng() % 2) ? header_end : bytes.size();
             const std::size_t at = rng() % std::max<std::size_t>(1, limit);
-            if (kind == 0) bytes[at] = static_cast<char>(bytes[at] ^ (1 << (rng() % 8)));               // bit flip
-            else if (kind == 1) bytes[at] = static_cast<char>(rng());                                    // byte set
-            else if (kind == 2) bytes.resize(rng() % bytes.size());                                       // truncation
-            else if (kind == 3) bytes[at] = "0123456789 \n-"[rng() % 13];                                 // digit / separator
-            else bytes.insert(at, 1 + rng() % 8, static_cast<char>(rng()));                              // insertion
+            if (kind == 0)
+                bytes[at] = static_cast<char>(bytes[at] ^ (1 << (rng() % 8)));  // bit flip
+            else if (kind == 1)
+                bytes[at] = static_cast<char>(rng());  // byte set
+            else if (kind == 2)
+                bytes.resize(rng() % bytes.size());  // truncation
+            else if (kind == 3)
+                bytes[at] = "0123456789 \n-"[rng() % 13];  // digit / separator
+            else
+                bytes.insert(at, 1 + rng() % 8, static_cast<char>(rng()));  // insertion
         }
         const std::string path = dir + "/m" + base.substr(base.rfind('.'));
         writeBytes(path, bytes);

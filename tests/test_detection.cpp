@@ -5,11 +5,11 @@
 #include <random>
 
 #include "projsurf/core/gravity.hpp"
+#include "projsurf/eval/scoring.hpp"
 #include "projsurf/pipeline/detector.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
-#include "projsurf/eval/scoring.hpp"
 
 using namespace projsurf;
 
@@ -71,20 +71,22 @@ TEST_P(DetectionScenes, DefaultFindsTheBestValidRectangle) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    PaperAndMore, DetectionScenes,
-    ::testing::Values(std::make_tuple("wall", 1.0, 27.5), std::make_tuple("wall", 2.0, 17.19),
-                      std::make_tuple("wall", 3.0, 27.5), std::make_tuple("wall", 2.5, -12.06),
-                      std::make_tuple("closet", 2.0, -26.01), std::make_tuple("closet", 3.0, -16.62),
-                      std::make_tuple("small_obstacles", 2.0, 17.19), std::make_tuple("big_obstacle", 2.0, 27.5),
-                      std::make_tuple("door", 2.0, 10.0), std::make_tuple("window", 2.5, 0.0),
-                      std::make_tuple("poster", 2.0, 17.19), std::make_tuple("person", 2.5, 10.0)),
-    [](const auto &info) {
-        std::string n = std::get<0>(info.param) + "_" + std::to_string(static_cast<int>(std::get<1>(info.param) * 10)) +
-                        "_" + std::to_string(static_cast<int>(std::abs(std::get<2>(info.param)))) +
-                        (std::get<2>(info.param) < 0 ? "neg" : "");
-        return n;
-    });
+INSTANTIATE_TEST_SUITE_P(PaperAndMore, DetectionScenes,
+                         ::testing::Values(std::make_tuple("wall", 1.0, 27.5), std::make_tuple("wall", 2.0, 17.19),
+                                           std::make_tuple("wall", 3.0, 27.5), std::make_tuple("wall", 2.5, -12.06),
+                                           std::make_tuple("closet", 2.0, -26.01),
+                                           std::make_tuple("closet", 3.0, -16.62),
+                                           std::make_tuple("small_obstacles", 2.0, 17.19),
+                                           std::make_tuple("big_obstacle", 2.0, 27.5),
+                                           std::make_tuple("door", 2.0, 10.0), std::make_tuple("window", 2.5, 0.0),
+                                           std::make_tuple("poster", 2.0, 17.19), std::make_tuple("person", 2.5, 10.0)),
+                         [](const auto &info) {
+                             std::string n = std::get<0>(info.param) + "_" +
+                                             std::to_string(static_cast<int>(std::get<1>(info.param) * 10)) + "_" +
+                                             std::to_string(static_cast<int>(std::abs(std::get<2>(info.param)))) +
+                                             (std::get<2>(info.param) < 0 ? "neg" : "");
+                             return n;
+                         });
 
 TEST(Detection, RolledCameraWithGravityGivenStaysUpright) {
     const Outcome o = runScene("rolled", 2.0, 10.0, 3, Method::Default, 4.0);

@@ -78,9 +78,10 @@ TEST(VerticalPlanes, FindsBothWallsButNotTheFloorAndMergesASlice) {
     std::vector<Point> pts;
     std::mt19937 rng(1);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-    for (int i = 0; i < 3000; ++i) pts.emplace_back(u(rng), u(rng), i % 2 ? 3.0f : 3.02f);  // back wall, two 2 cm slices
-    for (int i = 0; i < 1500; ++i) pts.emplace_back(1.5f, u(rng), 2.0f + u(rng));            // side wall
-    for (int i = 0; i < 3000; ++i) pts.emplace_back(u(rng), 1.0f, 2.0f + u(rng));            // floor (y down)
+    for (int i = 0; i < 3000; ++i)
+        pts.emplace_back(u(rng), u(rng), i % 2 ? 3.0f : 3.02f);                    // back wall, two 2 cm slices
+    for (int i = 0; i < 1500; ++i) pts.emplace_back(1.5f, u(rng), 2.0f + u(rng));  // side wall
+    for (int i = 0; i < 3000; ++i) pts.emplace_back(u(rng), 1.0f, 2.0f + u(rng));  // floor (y down)
     std::vector<float> band(pts.size(), 0.015f);  // narrower than the slices are apart: RANSAC takes one at a time
     VerticalPlaneOptions opt;
     opt.min_points = 200;
@@ -90,7 +91,7 @@ TEST(VerticalPlanes, FindsBothWallsButNotTheFloorAndMergesASlice) {
     EXPECT_GT(std::abs(planes[0].plane.normal.z()), 0.99);  // the back wall, both slices
     EXPECT_NEAR(std::abs(planes[0].plane.d), 3.01, 0.02);
     EXPECT_GE(planes[0].inliers.size(), 2900u);
-    EXPECT_GT(std::abs(planes[1].plane.normal.x()), 0.99);  // the side wall
+    EXPECT_GT(std::abs(planes[1].plane.normal.x()), 0.99);                      // the side wall
     for (const auto &p : planes) EXPECT_LT(std::abs(p.plane.normal.y()), 0.1);  // never the floor
 }
 
@@ -99,12 +100,12 @@ TEST(ObservedFreeSurface, ClosesSampleGapsIgnoresLoneNoiseAndSaysWhyCellsAreNotF
     for (int r = 0; r < 40; ++r)
         for (int c = 0; c < 60; c += 2) o.support.at<int>(r, c) = 3;  // every other column sampled
     for (int r = 10; r < 40; ++r)
-        for (int c = 30; c < 40; ++c) o.support.at<int>(r, c) = 0;    // no reading here
-    o.shadow.at<int>(5, 5) = 1;                                      // a lone noisy point
+        for (int c = 30; c < 40; ++c) o.support.at<int>(r, c) = 0;  // no reading here
+    o.shadow.at<int>(5, 5) = 1;                                     // a lone noisy point
     for (int r = 20; r < 26; ++r)
-        for (int c = 5; c < 15; ++c) o.shadow.at<int>(r, c) = 2;     // something in front
+        for (int c = 5; c < 15; ++c) o.shadow.at<int>(r, c) = 2;  // something in front
     for (int r = 2; r < 6; ++r)
-        for (int c = 45; c < 55; ++c) o.behind.at<int>(r, c) = 9;    // seen through
+        for (int c = 45; c < 55; ++c) o.behind.at<int>(r, c) = 9;  // seen through
     const SurfaceCells cells = observedFreeSurface(o, 1, 2);
     auto state = [&](int r, int c) { return static_cast<CellState>(cells.state.at<uchar>(r, c)); };
     EXPECT_EQ(state(5, 5), CellState::Free);  // the lone point is noise, the gap is closed
@@ -218,7 +219,8 @@ TEST(WallShape, FollowsASmoothBendButNotWhatStandsProudOfTheWall) {
     EXPECT_NEAR(shape->noise_k * 2.5 * 2.5, 0.004, 0.0015);
     EXPECT_NEAR(localNoiseK(cloud, sample, band, wall, 2.5, 8) * 2.5 * 2.5, 0.004, 0.001);
     // Too few points: no shape.
-    EXPECT_FALSE(fitWallShape({pts.begin(), pts.begin() + 10}, {band.begin(), band.begin() + 10}, wall, frame).has_value());
+    EXPECT_FALSE(
+        fitWallShape({pts.begin(), pts.begin() + 10}, {band.begin(), band.begin() + 10}, wall, frame).has_value());
 }
 
 TEST(PlanarRegions, FindsEachWallOfACornerOnceAndNeverTheFloorWhateverTheOrder) {

@@ -2,6 +2,7 @@
 // demo and eval commands end to end.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstdlib>
@@ -10,7 +11,6 @@
 #include <set>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 #include "projsurf/eval/experiments.hpp"
 #include "projsurf/sim/ground_truth.hpp"
@@ -113,7 +113,8 @@ TEST(EvalScoring, PaperCriterionGroupsByPoseAndMethod) {
     EXPECT_NEAR(trials[1].paper_area_error, 0.5, 1e-12);
     EXPECT_TRUE(trials[2].paper_success);
     EXPECT_TRUE(trials[3].paper_success);
-    const sim::Summary s = sim::summarize(sim::select(trials, [](const sim::Trial &t) { return t.method == "paper-concave"; }));
+    const sim::Summary s =
+        sim::summarize(sim::select(trials, [](const sim::Trial &t) { return t.method == "paper-concave"; }));
     EXPECT_EQ(s.n, 3);
     EXPECT_EQ(s.paper_success, 2);
     EXPECT_NEAR(s.paperRatePct(), 200.0 / 3.0, 1e-9);
@@ -177,13 +178,14 @@ TEST(EvalKeystone, ExactCalibrationGivesARectangleAndAWrongOneDoesNot) {
     // A calibration whose axis is 1.5 degrees off: the picture lands distorted (and shifted).
     Projector wrong = w.projector;
     wrong.direction = Eigen::AngleAxisd(1.5 * M_PI / 180.0, Eigen::Vector3d::UnitY()) * wrong.direction;
-    const sim::WallPicture off = sim::pictureOnWall(wrong, w.projector, w.scenario.scene,
-                                                    transformedAboutCenter(w.truth.best.rectangle, Eigen::Matrix3d::Identity(), 0.8),
-                                                    picture);
+    const sim::WallPicture off =
+        sim::pictureOnWall(wrong, w.projector, w.scenario.scene,
+                           transformedAboutCenter(w.truth.best.rectangle, Eigen::Matrix3d::Identity(), 0.8), picture);
     ASSERT_TRUE(off.ok) << off.problem;
     EXPECT_GT(off.errors.worst_pct(), 0.3);
     // The uncorrected framebuffer on a wall at 17 degrees is clearly keystoned.
-    const sim::WallPicture raw = sim::framebufferOnWall(w.projector, w.scenario.scene, w.projector.framebufferCorners());
+    const sim::WallPicture raw =
+        sim::framebufferOnWall(w.projector, w.scenario.scene, w.projector.framebufferCorners());
     ASSERT_TRUE(raw.ok);
     EXPECT_GT(raw.errors.worst_pct(), 5.0);
 }
@@ -231,12 +233,12 @@ TEST(EvalCli, QuickEvalWritesTheReport) {
         << readText(dir / "log.txt");
     const std::string md = readText(out / "report.md");
     for (const char *h : {"## Headline", "## Table 1: concave vs convex hull", "## Table 2: uncluttered and cluttered",
-                          "## Figure 15: surface-check outliers", "## Table 3: keystone errors", "## Time per detection",
-                          "## Real frames", "| Distance (m) | 2 | Average |", "published, success (%)",
-                          "success, paper's criterion (%)", "success, ground truth (%)"})
+                          "## Figure 15: surface-check outliers", "## Table 3: keystone errors",
+                          "## Time per detection", "## Real frames", "| Distance (m) | 2 | Average |",
+                          "published, success (%)", "success, paper's criterion (%)", "success, ground truth (%)"})
         EXPECT_NE(md.find(h), std::string::npos) << h;
-    for (const char *f : {"success_uncluttered.png", "success_cluttered.png", "outliers.png", "keystone.png", "timing.png",
-                          "gallery/contact_sheet.png"})
+    for (const char *f : {"success_uncluttered.png", "success_cluttered.png", "outliers.png", "keystone.png",
+                          "timing.png", "gallery/contact_sheet.png"})
         EXPECT_TRUE(fs::exists(out / f)) << f;
     fs::remove_all(dir);
 }

@@ -2,12 +2,12 @@
 // rectangle, against the simulator's truth (the same places on the real wall).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 #include "projsurf/core/focus.hpp"
 #include "projsurf/io/detection_json.hpp"
@@ -87,8 +87,8 @@ TEST(Focus, WithinOneCentimetreOfTheSimulatorsTruth) {
         }
     }
     EXPECT_EQ(checked, 9);
-    std::printf("focus vs the simulator's truth over %d wall poses (1.5-3.5 m, 0-30 deg): worst error %.1f mm\n", checked,
-                1000.0 * worst);
+    std::printf("focus vs the simulator's truth over %d wall poses (1.5-3.5 m, 0-30 deg): worst error %.1f mm\n",
+                checked, 1000.0 * worst);
 }
 
 TEST(Focus, DetectionJsonCarriesItAndTheReaderAcceptsBoth) {

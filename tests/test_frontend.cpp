@@ -86,8 +86,10 @@ TEST(FrontendGravity, ParsesLevelAutoAndVectors) {
     EXPECT_EQ(parseGravityChoice("--gravity", "0,0.9,0.4").gravity, Eigen::Vector3d(0, 0.9, 0.4));
     EXPECT_EQ(parseGravityChoice("~gravity", "0 2 0").gravity, Eigen::Vector3d(0, 2, 0));
     EXPECT_EQ(messageOf([] { parseGravityChoice("--gravity", "0,0,0"); }), "--gravity: the vector is zero");
-    EXPECT_NE(messageOf([] { parseGravityChoice("--gravity", "1,2"); }).find("expected three numbers"), std::string::npos);
-    EXPECT_NE(messageOf([] { parseGravityChoice("--gravity", "down"); }).find("expected three numbers"), std::string::npos);
+    EXPECT_NE(messageOf([] { parseGravityChoice("--gravity", "1,2"); }).find("expected three numbers"),
+              std::string::npos);
+    EXPECT_NE(messageOf([] { parseGravityChoice("--gravity", "down"); }).find("expected three numbers"),
+              std::string::npos);
     const double nan3[3] = {0, std::nan(""), 1};
     EXPECT_EQ(messageOf([&] { gravityChoiceFrom("gravity", nan3, 3); }), "gravity: the vector is not finite");
 }
@@ -104,7 +106,8 @@ TEST(FrontendGravity, AutoTakesDownFromTheFloorElseKeepsTheFallback) {
     EXPECT_NEAR(*tilt, 25.0, 1.0);
 
     // A wall only: no floor, the fallback (a level camera) is kept.
-    Cloud wall = depthToCloud(cv::Mat(120, 160, CV_16UC1, cv::Scalar(2000)), pinholeCamera("c", 160, 120, 130, 130, 79.5, 59.5));
+    Cloud wall =
+        depthToCloud(cv::Mat(120, 160, CV_16UC1, cv::Scalar(2000)), pinholeCamera("c", 160, 120, 130, 130, 79.5, 59.5));
     const ResolvedGravity none = resolveGravity(choice, wall);
     EXPECT_FALSE(none.floor_found);
     EXPECT_EQ(none.gravity, Eigen::Vector3d(0, 1, 0));
@@ -140,8 +143,9 @@ TEST(FrontendDepthImage, MillimetresAndMetresGiveTheSameCloud) {
 
 TEST(FrontendDepthImage, RefusesOtherTypesSizesAndCameras) {
     const CameraIntrinsics cam = pinholeCamera("camera_info", 8, 6, 5.0, 5.0, 3.5, 2.5);
-    EXPECT_NE(messageOf([&] { depthImageToCloud("depth", cv::Mat(6, 8, CV_8UC1, cv::Scalar(1)), cam); })
-                  .find("expected a 16-bit depth image"),
+    EXPECT_NE(messageOf([&] {
+                  depthImageToCloud("depth", cv::Mat(6, 8, CV_8UC1, cv::Scalar(1)), cam);
+              }).find("expected a 16-bit depth image"),
               std::string::npos);
     EXPECT_EQ(messageOf([&] { depthImageToCloud("depth", cv::Mat(5, 8, CV_16UC1, cv::Scalar(1)), cam); }),
               "depth: image is 8x5, the camera's is 8x6");
@@ -166,7 +170,7 @@ TEST(FrontendTestCard, ShowsWhichWayIsUp) {
     };
     EXPECT_GT(orange(200), 3 * orange(500));
     EXPECT_GT(orange(500), 0);
-    EXPECT_EQ(orange(740), 0);  // below the tail
+    EXPECT_EQ(orange(740), 0);                                      // below the tail
     EXPECT_EQ(card.at<cv::Vec3b>(0, 0), cv::Vec3b(255, 255, 255));  // the border
 }
 

@@ -1,6 +1,6 @@
 // Geometry against independent formulas: ray-plane, Euler-Rodrigues vs Eigen, corner rays.
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include "projsurf/core/euler_rodrigues.hpp"
 #include "projsurf/core/plane.hpp"

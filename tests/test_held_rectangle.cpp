@@ -28,7 +28,8 @@ Cloud viewOf(const Plane &wall, cv::Rect box = cv::Rect()) {
     for (int v = 0; v < cam.height; ++v)
         for (int u = 0; u < cam.width; ++u) {
             const auto hit = intersectRay(wall, Eigen::Vector3d::Zero(), cam.backProject(u, v, 1.0));
-            if (hit && hit->z() > 0) depth.at<std::uint16_t>(v, u) = static_cast<std::uint16_t>(hit->z() * 1000.0 + 0.5);
+            if (hit && hit->z() > 0)
+                depth.at<std::uint16_t>(v, u) = static_cast<std::uint16_t>(hit->z() * 1000.0 + 0.5);
             if (box.contains({u, v})) depth.at<std::uint16_t>(v, u) = 1000;
         }
     return depthToCloud(depth, cam);

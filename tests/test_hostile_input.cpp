@@ -4,6 +4,9 @@
 // temporary) left behind; a valid but odd input (all-NaN cloud, far points) exit 0.
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -14,17 +17,14 @@
 #include <opencv2/imgcodecs.hpp>
 #include <random>
 #include <sstream>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "bag_writer.hpp"
+#include "cli_run.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/limits.hpp"
 #include "projsurf/io/rosbag_clouds.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "cli_run.hpp"
 
 namespace fs = std::filesystem;
 using namespace projsurf;
@@ -45,19 +45,19 @@ int tmpLeftovers(const fs::path &dir) {
 
 /// A simulated frame (cloud, depth, camera, calibration, captures) shared by the cases.
 class Hostile : public ::testing::Test {
-  protected:
+protected:
     static void SetUpTestSuite() {
         sim_ = fs::temp_directory_path() / ("projsurf_hostile_sim_" + std::to_string(::getpid()));
         fs::remove_all(sim_);
-        const std::string cmd = std::string(PROJSURF_CLI) + " simulate --scenario wall --captures 3 --out " + sim_.string() +
-                                " >/dev/null 2>&1";
+        const std::string cmd = std::string(PROJSURF_CLI) + " simulate --scenario wall --captures 3 --out " +
+                                sim_.string() + " >/dev/null 2>&1";
         ASSERT_EQ(std::system(cmd.c_str()), 0);
     }
     static void TearDownTestSuite() { fs::remove_all(sim_); }
     void SetUp() override {
         dir_ = fs::temp_directory_path() /
-               ("projsurf_hostile_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-                std::to_string(::getpid()));
+               ("projsurf_hostile_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                "_" + std::to_string(::getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }
@@ -84,7 +84,9 @@ class Hostile : public ::testing::Test {
         for (const auto &o : outputs) EXPECT_FALSE(fs::exists(o)) << o << " was written";
         EXPECT_EQ(tmpLeftovers(dir_), 0);
     }
-    std::string detectArgs(const std::string &cloud) const { return "detect --calib " + sim("calib.yaml") + " --cloud " + cloud; }
+    std::string detectArgs(const std::string &cloud) const {
+        return "detect --calib " + sim("calib.yaml") + " --cloud " + cloud;
+    }
 
     static fs::path sim_;
     fs::path dir_;
@@ -102,7 +104,7 @@ std::string pngHeader(std::uint32_t w, std::uint32_t h) {
     be(w);
     be(h);
     s += std::string("\x10\x00\x00\x00\x00", 5);  // 16-bit grey
-    be(0);                                         // CRC (not checked: never decoded)
+    be(0);                                        // CRC (not checked: never decoded)
     return s + std::string(1000, '\0');
 }
 
@@ -123,9 +125,9 @@ TEST_F(Hostile, BagsAreCheckedRecordByRecord) {
     const Cloud cloud = readCloud(sim("cloud.pcd"));
     const std::string good = bagtest::bagWithClouds({cloud, cloud}, "/points");
     writeBytes(at("good.bag"), good);
-    const CliRun ok = cli("detect --calib " + sim("calib.yaml") + " --bag " + at("good.bag") + " --topic /points --json " +
-                           at("good.jsonl"),
-                       dir_);
+    const CliRun ok = cli("detect --calib " + sim("calib.yaml") + " --bag " + at("good.bag") +
+                              " --topic /points --json " + at("good.jsonl"),
+                          dir_);
     ASSERT_EQ(ok.status, 0) << ok.err;
     EXPECT_EQ(ok.err, "");
     EXPECT_EQ(std::count(std::istreambuf_iterator<char>(std::ifstream(at("good.jsonl")).rdbuf()), {}, '\n'), 2);
@@ -133,14 +135,16 @@ TEST_F(Hostile, BagsAreCheckedRecordByRecord) {
     // The finding: a header field length far beyond its header (rosbag read past the buffer).
     std::string bad = good;
     const std::size_t chunk = bad.find("compression=none") - 4;  // the first field of the chunk's header
-    bad.replace(chunk, 4, std::string("\x00\x00\x01\x00", 4));  // 65536 bytes, in a header of ~40
+    bad.replace(chunk, 4, std::string("\x00\x00\x01\x00", 4));   // 65536 bytes, in a header of ~40
     writeBytes(at("field.bag"), bad);
-    refused("detect --calib " + sim("calib.yaml") + " --bag " + at("field.bag") + " --topic /points --json " + at("o.jsonl"),
+    refused("detect --calib " + sim("calib.yaml") + " --bag " + at("field.bag") + " --topic /points --json " +
+                at("o.jsonl"),
             at("field.bag"), "corrupt ROS bag", {at("o.jsonl")});
     // A record announcing more data than the file has; a chunk announcing 4 GB.
     std::string cut = good.substr(0, good.size() - 100);
     writeBytes(at("cut.bag"), cut);
-    refused("detect --calib " + sim("calib.yaml") + " --bag " + at("cut.bag") + " --topic /points", at("cut.bag"), "ROS bag");
+    refused("detect --calib " + sim("calib.yaml") + " --bag " + at("cut.bag") + " --topic /points", at("cut.bag"),
+            "ROS bag");
     std::string big = good;
     const std::size_t size_field = big.find("size=") + 5;
     big.replace(size_field, 4, std::string("\xff\xff\xff\xff", 4));
@@ -177,9 +181,9 @@ TEST_F(Hostile, FarAndNonFinitePointsAreAFrameNotACrash) {
     std::vector<std::array<float, 3>> pts;
     for (int i = 0; i < 400; ++i) {
         const float u = static_cast<float>(i % 20) / 10.0f - 1.0f, v = static_cast<float>(i / 20) / 10.0f - 1.0f;
-        pts.push_back({u, v, 2.0f});                  // a wall
-        pts.push_back({u * 1e12f, v * 1e12f, 1e12f}); // very far
-        pts.push_back({u * 3e38f, 1e30f, 3e38f});     // near the float range
+        pts.push_back({u, v, 2.0f});                   // a wall
+        pts.push_back({u * 1e12f, v * 1e12f, 1e12f});  // very far
+        pts.push_back({u * 3e38f, 1e30f, 3e38f});      // near the float range
     }
     pts.push_back({nan, 0, 1});
     pts.push_back({inf, -inf, inf});
@@ -191,10 +195,11 @@ TEST_F(Hostile, FarAndNonFinitePointsAreAFrameNotACrash) {
         EXPECT_NO_THROW((void)nlohmann::json::parse(r.out)) << r.out;
     }
     // A depth_scale that turns every reading into kilometres and beyond.
-    writeBytes(at("camera.yaml"), "camera: {width: 640, height: 480, fx: 525, fy: 525, cx: 319.5, cy: 239.5, depth_scale: 1e-9}\n");
-    const CliRun r = cli("detect --calib " + sim("calib.yaml") + " --depth " + sim("depth.png") + " --camera " + at("camera.yaml") +
-                          " --overlay " + at("far.png"),
-                      dir_);
+    writeBytes(at("camera.yaml"),
+               "camera: {width: 640, height: 480, fx: 525, fy: 525, cx: 319.5, cy: 239.5, depth_scale: 1e-9}\n");
+    const CliRun r = cli("detect --calib " + sim("calib.yaml") + " --depth " + sim("depth.png") + " --camera " +
+                             at("camera.yaml") + " --overlay " + at("far.png"),
+                         dir_);
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_TRUE(fs::exists(at("far.png")));
 }
@@ -217,34 +222,41 @@ TEST_F(Hostile, AllNanCloudIsFoundFalseWithAReason) {
 
 TEST_F(Hostile, CompressedPcdBeyondTheLimitsIsRefusedBeforeDecompressing) {
     // 2^24 points of 48 bytes = 768 MiB once decompressed (> 512 MiB), in a few bytes.
-    std::string pcd = "VERSION 0.7\nFIELDS x y z pad\nSIZE 4 4 4 4\nTYPE F F F F\nCOUNT 1 1 1 9\nWIDTH 4096\nHEIGHT 4096\n"
-                      "POINTS 16777216\nDATA binary_compressed\n";
+    std::string pcd =
+        "VERSION 0.7\nFIELDS x y z pad\nSIZE 4 4 4 4\nTYPE F F F F\nCOUNT 1 1 1 9\nWIDTH 4096\nHEIGHT 4096\n"
+        "POINTS 16777216\nDATA binary_compressed\n";
     bagtest::putU32(pcd, 10000000);
     bagtest::putU32(pcd, 48u << 24);
     pcd += std::string(10000000, '\0');
     writeBytes(at("bomb.pcd"), pcd);
-    refused(detectArgs(at("bomb.pcd")) + " --json " + at("o.json"), at("bomb.pcd"), "exceeds the limit", {at("o.json")});
+    refused(detectArgs(at("bomb.pcd")) + " --json " + at("o.json"), at("bomb.pcd"), "exceeds the limit",
+            {at("o.json")});
     // More points than the limit.
-    writeBytes(at("many.pcd"), "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 5000\nHEIGHT 5000\n"
-                               "POINTS 25000000\nDATA binary_compressed\n" + std::string(16, '\0'));
+    writeBytes(at("many.pcd"),
+               "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 5000\nHEIGHT 5000\n"
+               "POINTS 25000000\nDATA binary_compressed\n" +
+                   std::string(16, '\0'));
     refused(detectArgs(at("many.pcd")), at("many.pcd"), "exceeds the limit of 16777216 points");
 }
 
 TEST_F(Hostile, HugeImagesAreRefusedFromTheirHeader) {
     writeBytes(at("huge_depth.png"), pngHeader(16384, 16384));
-    refused("detect --calib " + sim("calib.yaml") + " --depth " + at("huge_depth.png") + " --camera " + sim("camera.yaml") +
-                " --json " + at("o.json"),
+    refused("detect --calib " + sim("calib.yaml") + " --depth " + at("huge_depth.png") + " --camera " +
+                sim("camera.yaml") + " --json " + at("o.json"),
             at("huge_depth.png"), "exceeds the limit", {at("o.json")});
     writeBytes(at("huge_picture.png"), pngHeader(30000, 30000));
-    const CliRun det = cli("detect --calib " + sim("calib.yaml") + " --cloud " + sim("cloud.pcd") + " --json " + at("det.json"), dir_);
+    const CliRun det =
+        cli("detect --calib " + sim("calib.yaml") + " --cloud " + sim("cloud.pcd") + " --json " + at("det.json"), dir_);
     ASSERT_EQ(det.status, 0) << det.err;
-    refused("correct --calib " + sim("calib.yaml") + " --detection " + at("det.json") + " --image " + at("huge_picture.png") +
-                " --out " + at("fb.png") + " --json " + at("k.json"),
+    refused("correct --calib " + sim("calib.yaml") + " --detection " + at("det.json") + " --image " +
+                at("huge_picture.png") + " --out " + at("fb.png") + " --json " + at("k.json"),
             at("huge_picture.png"), "exceeds the limit", {at("fb.png"), at("k.json")});
     // A framebuffer of 16384 x 16384 (1.2 GB per frame).
-    writeBytes(at("calib.yaml"), "projector:\n  resolution: [16384, 16384]\n  fov_deg: [40, 25]\n  axis:\n"
-                                 "    origin: [0, 0.12, 0]\n    direction: [0, 0, 1]\n");
-    refused("detect --calib " + at("calib.yaml") + " --cloud " + sim("cloud.pcd"), at("calib.yaml"), "exceeds the limit");
+    writeBytes(at("calib.yaml"),
+               "projector:\n  resolution: [16384, 16384]\n  fov_deg: [40, 25]\n  axis:\n"
+               "    origin: [0, 0.12, 0]\n    direction: [0, 0, 1]\n");
+    refused("detect --calib " + at("calib.yaml") + " --cloud " + sim("cloud.pcd"), at("calib.yaml"),
+            "exceeds the limit");
     // Not an image format projsurf reads; a truncated PNG (libpng would print its own lines).
     writeBytes(at("junk.png"), "GIF89a" + std::string(100, 'x'));
     refused("correct --calib " + sim("calib.yaml") + " --detection " + at("det.json") + " --image " + at("junk.png") +
@@ -262,9 +274,9 @@ TEST_F(Hostile, ThinDepthFrameGivesASmallOverlay) {
     writeBytes(at("camera.yaml"), "camera: {width: 1, height: 2000, fx: 525, fy: 525, cx: 0, cy: 1000}\n");
     cv::Mat depth(2000, 1, CV_16UC1, cv::Scalar(2000));
     ASSERT_TRUE(cv::imwrite(at("thin.png"), depth));
-    const CliRun r = cli("detect --calib " + sim("calib.yaml") + " --depth " + at("thin.png") + " --camera " + at("camera.yaml") +
-                          " --overlay " + at("thin_overlay.png") + " --json " + at("thin.json"),
-                      dir_);
+    const CliRun r = cli("detect --calib " + sim("calib.yaml") + " --depth " + at("thin.png") + " --camera " +
+                             at("camera.yaml") + " --overlay " + at("thin_overlay.png") + " --json " + at("thin.json"),
+                         dir_);
     ASSERT_EQ(r.status, 0) << r.err;
     const cv::Mat overlay = cv::imread(at("thin_overlay.png"));
     ASSERT_FALSE(overlay.empty());

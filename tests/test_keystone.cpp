@@ -14,8 +14,8 @@ using namespace projsurf;
 
 namespace {
 
-const double kDistances[3] = {1.0, 2.0, 3.0};        // m, paper section 4.4
-const double kAngles[3] = {27.5, 17.19, -12.06};     // deg, paper section 4.4
+const double kDistances[3] = {1.0, 2.0, 3.0};     // m, paper section 4.4
+const double kAngles[3] = {27.5, 17.19, -12.06};  // deg, paper section 4.4
 
 /// Casts the picture's framebuffer corners through `truth` onto `wall`: where the corrected
 /// picture's corners really appear.
@@ -153,8 +153,8 @@ TEST(KeystoneWarp, PicturePixelsLandInsideTheQuadAndBlackOutside) {
     const cv::Vec3b colours[4] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}, {255, 255, 255}};
     for (int i = 0; i < 4; ++i) {
         const cv::Vec3d q = k.homography * cv::Vec3d(qx[i], qy[i], 1.0);
-        const cv::Vec3b got = fb.at<cv::Vec3b>(static_cast<int>(std::lround(q[1] / q[2])),
-                                               static_cast<int>(std::lround(q[0] / q[2])));
+        const cv::Vec3b got =
+            fb.at<cv::Vec3b>(static_cast<int>(std::lround(q[1] / q[2])), static_cast<int>(std::lround(q[0] / q[2])));
         EXPECT_EQ(got, colours[i]) << "quadrant " << i;
     }
     int lit_outside = 0, dark_inside = 0;
@@ -225,7 +225,7 @@ TEST(KeystoneRoundTrip, ExactCalibrationAtThePapersDistancesAndAngles) {
     std::printf("worst: %.2e %%; with the paper's Euler-Rodrigues corner rays in eq. (7): %.3f %%\n", worst,
                 worst_stock);
     EXPECT_LE(worst, 0.2);
-    EXPECT_LT(worst, 1e-6);  // exact geometry: only rounding
+    EXPECT_LT(worst, 1e-6);        // exact geometry: only rounding
     EXPECT_LT(worst_stock, 3.46);  // the paper's worst reported error
 }
 
@@ -287,10 +287,10 @@ TEST(KeystoneRoundTrip, LensOffsetAlongTheAxis) {
                 for (int i = 0; i < 4; ++i)
                     worst_outside_mm = std::max(worst_outside_mm, 1000 * (c[i] - k.keystone->shown.corners[i]).norm());
             }
-        std::printf("lens %.0f mm off z = 0: worst eq. (8) error %.4f %%, corners displaced up to %.1f mm\n",
-                    dz * 1000, worst, worst_outside_mm);
-        EXPECT_LT(worst, 1e-6);                  // still an undistorted rectangle
-        EXPECT_GT(worst_outside_mm, previous);   // but displaced, more with a larger offset
+        std::printf("lens %.0f mm off z = 0: worst eq. (8) error %.4f %%, corners displaced up to %.1f mm\n", dz * 1000,
+                    worst, worst_outside_mm);
+        EXPECT_LT(worst, 1e-6);                        // still an undistorted rectangle
+        EXPECT_GT(worst_outside_mm, previous);         // but displaced, more with a larger offset
         EXPECT_LT(worst_outside_mm, 400 * dz + 1e-9);  // under 0.4 mm per mm of offset
         previous = worst_outside_mm;
     }

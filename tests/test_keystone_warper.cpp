@@ -233,7 +233,7 @@ TEST(KeystoneWarper, PlainAndSimdBlendsAgree) {
     // exactly; run lengths of 1, 2 and 3 pixels included (the small quad's corners).
     const cv::Size size(640, 480);
     const Keystone tiny = keystoneOnto(size, {Eigen::Vector2d(600, 400), Eigen::Vector2d(606.3, 401.2),
-                                             Eigen::Vector2d(605.1, 405.9), Eigen::Vector2d(599.4, 404.6)});
+                                              Eigen::Vector2d(605.1, 405.9), Eigen::Vector2d(599.4, 404.6)});
     for (const int type : {CV_8UC3, CV_8UC4, CV_8UC1}) {
         const cv::Mat pic = noisePicture(size, type, 21);
         for (const Keystone &k : {mildKeystone(size), strongKeystone(size), tiny}) {

@@ -61,18 +61,19 @@ TEST(Plan, LargestPictureAfterTheMoveIsRealised) {
         const char *scenario;
         double distance, angle;
     };
-    for (const Case c : {Case{"wall", 1.0, 0.0}, Case{"wall", 1.2, 0.0}, Case{"wall", 1.5, 35.0}, Case{"wall", 2.0, 17.19},
-                         Case{"wall", 3.0, 30.0}, Case{"small_obstacles", 1.3, 10.0}, Case{"closet", 1.5, 0.0},
-                         Case{"big_obstacle", 1.5, 17.19}, Case{"corner", 1.5, 0.0}, Case{"desk", 1.5, 10.0},
-                         Case{"poster", 1.2, 20.0}}) {
+    for (const Case c : {Case{"wall", 1.0, 0.0}, Case{"wall", 1.2, 0.0}, Case{"wall", 1.5, 35.0},
+                         Case{"wall", 2.0, 17.19}, Case{"wall", 3.0, 30.0}, Case{"small_obstacles", 1.3, 10.0},
+                         Case{"closet", 1.5, 0.0}, Case{"big_obstacle", 1.5, 17.19}, Case{"corner", 1.5, 0.0},
+                         Case{"desk", 1.5, 10.0}, Case{"poster", 1.2, 20.0}}) {
         const Realised r = planAndMove(c.scenario, c.distance, c.angle, PlanOptions{});
         ASSERT_TRUE(r.plan.found) << c.scenario << ": " << r.plan.reason;
         const double predicted = r.plan.predicted.area();
-        std::printf("plan %s %.1f m %.0f deg: move %.2f m, turn %.1f deg; today %.3f m^2, predicted %.3f m^2, "
-                    "realised %.3f m^2 (%.1f %% of predicted, %.2fx today)\n",
-                    c.scenario, c.distance, c.angle, r.plan.translation.norm(),
-                    std::acos(std::clamp((r.plan.rotation.trace() - 1.0) / 2.0, -1.0, 1.0)) * 180.0 / 3.14159265358979,
-                    r.before, predicted, r.after, 100.0 * r.after / predicted, r.after / std::max(r.before, 1e-9));
+        std::printf(
+            "plan %s %.1f m %.0f deg: move %.2f m, turn %.1f deg; today %.3f m^2, predicted %.3f m^2, "
+            "realised %.3f m^2 (%.1f %% of predicted, %.2fx today)\n",
+            c.scenario, c.distance, c.angle, r.plan.translation.norm(),
+            std::acos(std::clamp((r.plan.rotation.trace() - 1.0) / 2.0, -1.0, 1.0)) * 180.0 / 3.14159265358979,
+            r.before, predicted, r.after, 100.0 * r.after / predicted, r.after / std::max(r.before, 1e-9));
         EXPECT_LE(r.plan.translation.norm(), 2.0 + 1e-9);
         EXPECT_GE(r.after, 0.95 * predicted) << c.scenario;
         // A robot this close can gain; at 3 m the depth camera's range (PlanOptions::max_distance) leaves less.

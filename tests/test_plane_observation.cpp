@@ -68,7 +68,7 @@ TEST(PointGrid, KeepsEveryStepthPixelAndMarksMissingOnes) {
     ASSERT_EQ(grid.rows, 2);
     EXPECT_EQ(grid.cloudIndex(1, 2), 14);
     EXPECT_FLOAT_EQ(grid.x[1 * 3 + 2], 14.0f);
-    EXPECT_TRUE(std::isnan(grid.z[1 * 3 + 1]));  // pixel (2, 2) is missing
+    EXPECT_TRUE(std::isnan(grid.z[1 * 3 + 1]));                                            // pixel (2, 2) is missing
     EXPECT_TRUE(std::isnan(grid.x[0]) && std::isnan(grid.y[0]) && std::isnan(grid.z[0]));  // an infinite reading too
     // Pixels [1, 4) x [1, 3) hold grid columns 1 (pixel 2) and rows 1 (pixel 2).
     EXPECT_EQ(grid.gridBox(cv::Rect(1, 1, 3, 2)), cv::Rect(1, 1, 1, 1));
@@ -120,8 +120,8 @@ TEST(PlaneObservation, SortsPointsIntoSupportHolesAndShadows) {
     EXPECT_EQ(cv::sum(obs.off)[0], 2);
     EXPECT_EQ(at(obs.off, w.cellOf(hole.x(), hole.y())), 1);
     EXPECT_EQ(at(obs.off, w.cellOf(obstacle_uv.x(), obstacle_uv.y())), 1);
-    std::vector<int> off = offPlanePoints(grid, grid.gridBox({}), w.plane, w.frame, w.raster, DepthTolerance{},
-                                          {-1.4, -1.1}, {1.4, 1.1});
+    std::vector<int> off =
+        offPlanePoints(grid, grid.gridBox({}), w.plane, w.frame, w.raster, DepthTolerance{}, {-1.4, -1.1}, {1.4, 1.1});
     std::sort(off.begin(), off.end());
     EXPECT_EQ(off, (std::vector<int>{10 * 64 + 10, 30 * 64 + 40}));
     // Only those whose camera ray crosses the wall inside the rectangle asked about.
@@ -172,8 +172,9 @@ TEST(PlaneObservation, SurfaceCheckAgreesWithThePointByPointReference) {
             // differs along a 2.1 m perimeter, under 2 % of the points here.
             EXPECT_NEAR(got.points, ref.points, 0.02 * ref.points) << u << " " << v;
             EXPECT_NEAR(got.outliers, ref.outliers, 0.02 * ref.points + 2) << u << " " << v;
-            EXPECT_EQ(got.outliers, static_cast<int>(offPlanePoints(grid, grid.gridBox({}), wall, pf, raster,
-                                                                    DepthTolerance{}, lo, hi).size()));
+            EXPECT_EQ(got.outliers,
+                      static_cast<int>(
+                          offPlanePoints(grid, grid.gridBox({}), wall, pf, raster, DepthTolerance{}, lo, hi).size()));
             if (std::abs(ref.outliers - 0.03 * ref.points) > 0.01 * ref.points) {
                 EXPECT_EQ(got.accepted, ref.accepted) << u << " " << v;
             }

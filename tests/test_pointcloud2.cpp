@@ -24,8 +24,10 @@ Packed pack(const std::vector<Eigen::Vector3f> &pts, std::uint32_t width, std::u
     p.view.height = height;
     p.view.point_step = 32;
     p.view.row_step = width * 32 + 8;  // rows may be padded
-    p.view.fields = {{"x", 0, kPointFieldFloat32, 1}, {"y", 4, kPointFieldFloat32, 1},
-                     {"z", 8, kPointFieldFloat32, 1}, {"rgb", 16, kPointFieldFloat32, 1}};
+    p.view.fields = {{"x", 0, kPointFieldFloat32, 1},
+                     {"y", 4, kPointFieldFloat32, 1},
+                     {"z", 8, kPointFieldFloat32, 1},
+                     {"rgb", 16, kPointFieldFloat32, 1}};
     p.bytes.assign(static_cast<std::size_t>(p.view.row_step) * height, 0xAB);
     for (std::uint32_t r = 0; r < height; ++r)
         for (std::uint32_t c = 0; c < width; ++c) {

@@ -2,20 +2,20 @@
 // optional calibration keys; and the keystone with it against the paper's model.
 #include <gtest/gtest.h>
 
+#include <yaml-cpp/yaml.h>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <random>
-#include <yaml-cpp/yaml.h>
 
 #include "projsurf/core/keystone.hpp"
 #include "projsurf/core/keystone_remap.hpp"
 #include "projsurf/core/keystone_warper.hpp"
 #include "projsurf/core/plane_frame.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/yaml_files.hpp"
 #include "projsurf/eval/experiments.hpp"
 #include "projsurf/eval/projector_eval.hpp"
+#include "projsurf/io/errors.hpp"
+#include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/scenarios.hpp"
 #include "projsurf/sim/scene.hpp"
@@ -145,8 +145,9 @@ TEST(ProjectorModel, FullModelKeysRoundTripAndBadRotationsAreRefused) {
     EXPECT_NEAR(back.fov_h, fov[0], 1e-6);
     EXPECT_NEAR(back.fov_v, fov[1], 1e-6);
 
-    const std::string head = "projector:\n  resolution: [1280, 800]\n  fov_deg: [39.3, 24.0]\n  axis:\n"
-                             "    origin: [0.0, 0.12, 0.0]\n    direction: [0.0, 0.0, 1.0]\n";
+    const std::string head =
+        "projector:\n  resolution: [1280, 800]\n  fov_deg: [39.3, 24.0]\n  axis:\n"
+        "    origin: [0.0, 0.12, 0.0]\n    direction: [0.0, 0.0, 1.0]\n";
     const std::string ok_rot = "  rotation:\n    - [1, 0, 0]\n    - [0, 1, 0]\n    - [0, 0, 1]\n";
     EXPECT_NO_THROW(readCalibration(tmpFile("rot_ok.yaml", head + ok_rot)));
     EXPECT_THROW(readCalibration(tmpFile("rot_scaled.yaml", head + "  rotation:\n    - [1.01, 0, 0]\n    - [0, 1, 0]\n"
@@ -157,12 +158,13 @@ TEST(ProjectorModel, FullModelKeysRoundTripAndBadRotationsAreRefused) {
                  InputError);
     const double c = std::cos(M_PI / 180), s = std::sin(M_PI / 180);  // 1 deg yaw: third column off the axis
     EXPECT_THROW(readCalibration(tmpFile("rot_off.yaml", head + "  rotation:\n    - [" + std::to_string(c) + ", 0, " +
-                                                                std::to_string(s) + "]\n    - [0, 1, 0]\n    - [" +
-                                                                std::to_string(-s) + ", 0, " + std::to_string(c) + "]\n")),
+                                                             std::to_string(s) + "]\n    - [0, 1, 0]\n    - [" +
+                                                             std::to_string(-s) + ", 0, " + std::to_string(c) + "]\n")),
                  InputError);
     EXPECT_THROW(readCalibration(tmpFile("dist_short.yaml", head + "  distortion: [0.1, 0]\n")), InputError);
-    EXPECT_THROW(readCalibration(tmpFile("intr_bad.yaml", head + "  intrinsics: {fx: -5, fy: 1800, cx: 639.5, cy: 799.5}\n")),
-                 InputError);
+    EXPECT_THROW(
+        readCalibration(tmpFile("intr_bad.yaml", head + "  intrinsics: {fx: -5, fy: 1800, cx: 639.5, cy: 799.5}\n")),
+        InputError);
 }
 
 TEST(ProjectorModel, OffsetProjectorCorrectedWithTheFullModelIsARectangle) {
@@ -178,7 +180,8 @@ TEST(ProjectorModel, OffsetProjectorCorrectedWithTheFullModelIsARectangle) {
             // The corners land on the rectangle (letterboxed: same aspect, so the same corners).
             for (int i = 0; i < 4; ++i) EXPECT_LT((full.corners[i] - rect.corners[i]).norm(), 1e-3);
             // The paper's model of the same projector: a visibly trapezoidal picture.
-            const sim::WallPicture paper = sim::pictureOnWall(sim::paperModelOf(real), real, wall.scene, rect, picture, 1e9);
+            const sim::WallPicture paper =
+                sim::pictureOnWall(sim::paperModelOf(real), real, wall.scene, rect, picture, 1e9);
             ASSERT_TRUE(paper.ok) << paper.problem;
             EXPECT_GT(paper.errors.worst_pct(), 3.0) << spec.name() << " yaw " << yaw;
             if (spec.offset == 1.0 && yaw == 0.0) {
@@ -212,16 +215,19 @@ TEST(ProjectorModel, DistortedKeystoneIsARemapThatShowsTheWholePicture) {
             const auto hit = castToWall(real, Eigen::Vector2d(u, v), wall.plane);
             ASSERT_TRUE(hit);
             const Eigen::Vector2d uv = frame.toPlane(*hit);
-            if (uv.x() < lo.x() - 0.003 || uv.x() > hi.x() + 0.003 || uv.y() < lo.y() - 0.003 || uv.y() > hi.y() + 0.003)
+            if (uv.x() < lo.x() - 0.003 || uv.x() > hi.x() + 0.003 || uv.y() < lo.y() - 0.003 ||
+                uv.y() > hi.y() + 0.003)
                 ++outside;
         }
     EXPECT_GT(lit, 1000);
     EXPECT_EQ(outside, 0);
     for (const auto &c : k.keystone->picture_px) {
-        const int u = std::clamp(static_cast<int>(std::lround(c.x())), 1, 1278), v = std::clamp(static_cast<int>(std::lround(c.y())), 1, 798);
+        const int u = std::clamp(static_cast<int>(std::lround(c.x())), 1, 1278),
+                  v = std::clamp(static_cast<int>(std::lround(c.y())), 1, 798);
         int near_lit = 0;
         for (int dv = -2; dv <= 2; ++dv)
-            for (int du = -2; du <= 2; ++du) near_lit += fb.at<cv::Vec3b>(std::clamp(v + dv, 0, 799), std::clamp(u + du, 0, 1279))[0] > 128;
+            for (int du = -2; du <= 2; ++du)
+                near_lit += fb.at<cv::Vec3b>(std::clamp(v + dv, 0, 799), std::clamp(u + du, 0, 1279))[0] > 128;
         EXPECT_GT(near_lit, 0);
     }
     // The warper class gives the same framebuffer.
@@ -260,8 +266,10 @@ TEST(ProjectorModel, EvalScoreSeparatesTheTrueModelFromThePapersModel) {
 TEST(ProjectorModel, DirectionsBeyondTheLensFoldAreNotLit) {
     Projector p = sim::projectorRig({0.0, 0.0, 1.0, -0.05});
     // r = tan(angle); r (1 + k1 r^2) peaks at r = 1 / sqrt(3 * 0.05) = 2.58 (69 deg).
-    const Eigen::Vector3d wide = p.origin + std::cos(80 * M_PI / 180) * p.axis() + std::sin(80 * M_PI / 180) * p.right();
+    const Eigen::Vector3d wide =
+        p.origin + std::cos(80 * M_PI / 180) * p.axis() + std::sin(80 * M_PI / 180) * p.right();
     EXPECT_FALSE(p.toPixel(wide).has_value());
-    const Eigen::Vector3d inside = p.origin + std::cos(15 * M_PI / 180) * p.axis() + std::sin(15 * M_PI / 180) * p.right();
+    const Eigen::Vector3d inside =
+        p.origin + std::cos(15 * M_PI / 180) * p.axis() + std::sin(15 * M_PI / 180) * p.right();
     EXPECT_TRUE(p.toPixel(inside).has_value());
 }

@@ -3,20 +3,20 @@
 // calibration's own disc finder locates at the principal point.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "cli_run.hpp"
 #include "projsurf/core/calibration.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/scenarios.hpp"
-#include "cli_run.hpp"
 
 namespace fs = std::filesystem;
 using namespace projsurf;
@@ -25,10 +25,7 @@ using projsurf::test::CliRun;
 using projsurf::test::freshDir;
 using projsurf::test::slurp;
 
-namespace {
-
-
-}  // namespace
+namespace {}  // namespace
 
 TEST(QuickStart, ExampleCalibrationIsTheSimulatorsExampleProjector) {
     const Projector file = readCalibration(std::string(PROJSURF_SOURCE_DIR) + "/examples/calib/example_calib.yaml");
@@ -46,8 +43,8 @@ TEST(QuickStart, WritePictureGivesTheDiscAtThePrincipalPoint) {
     for (const auto &[w, h] : {std::pair<int, int>{1280, 800}, {1920, 1080}, {854, 480}}) {
         const fs::path png = dir / ("disc_" + std::to_string(w) + ".png");
         const CliRun r = cli("calibrate --write-picture " + png.string() + " --resolution " + std::to_string(w) + "," +
-                              std::to_string(h),
-                          dir);
+                                 std::to_string(h),
+                             dir);
         ASSERT_EQ(r.status, 0) << r.err;
         EXPECT_NE(r.out.find("calibration picture"), std::string::npos) << r.out;
         const cv::Mat picture = cv::imread(png.string(), cv::IMREAD_UNCHANGED);

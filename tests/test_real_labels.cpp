@@ -3,23 +3,23 @@
 // on every labelled real frame against labels/baseline.yaml.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
-#include <unistd.h>
-#include <nlohmann/json.hpp>
-#include <yaml-cpp/yaml.h>
 
-#include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/errors.hpp"
 #include "projsurf/eval/label_reference.hpp"
 #include "projsurf/eval/labelled_eval.hpp"
 #include "projsurf/eval/real_labels.hpp"
 #include "projsurf/eval/real_scoring.hpp"
+#include "projsurf/io/cloud_io.hpp"
+#include "projsurf/io/errors.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 using namespace projsurf;
@@ -30,7 +30,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 fs::path freshDir(const std::string &name) {
-    const fs::path dir = fs::temp_directory_path() / ("projsurf_test_labels_" + name + "_" + std::to_string(::getpid()));
+    const fs::path dir =
+        fs::temp_directory_path() / ("projsurf_test_labels_" + name + "_" + std::to_string(::getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;
@@ -112,8 +113,8 @@ TEST(RealLabels, ReadsAndWritesBackUnchanged) {
     l.best.surface = "wall";
     l.best.width = 1.2;
     l.best.height = 0.75;
-    l.best.corners = {Eigen::Vector3d(-0.6, -0.4, 2.0), Eigen::Vector3d(0.6, -0.4, 2.0), Eigen::Vector3d(0.6, 0.35, 2.0),
-                      Eigen::Vector3d(-0.6, 0.35, 2.0)};
+    l.best.corners = {Eigen::Vector3d(-0.6, -0.4, 2.0), Eigen::Vector3d(0.6, -0.4, 2.0),
+                      Eigen::Vector3d(0.6, 0.35, 2.0), Eigen::Vector3d(-0.6, 0.35, 2.0)};
     const std::string again = (dir / "again.yaml").string();
     writeRealLabel(again, l);
     const RealLabel r = readRealLabel(again);
@@ -170,7 +171,8 @@ TEST(RealLabels, ReferenceFindsTheKnownBestRectangle) {
     SyntheticWall wall(2.0);
     // Readings 30 cm in front of the wall on a patch of the free half: the robust fit ignores them.
     for (int v = 300; v < 340; ++v)
-        for (int u = 400; u < 470; ++u) wall.cloud.points[v * 640 + u] = wall.camera.backProject(u, v, 1.7).cast<float>();
+        for (int u = 400; u < 470; ++u)
+            wall.cloud.points[v * 640 + u] = wall.camera.backProject(u, v, 1.7).cast<float>();
     RealLabel l = syntheticLabel(dir);
     const SurfaceFit fit = fitLabelSurface(wall.cloud, wall.camera, l, 0);
     ASSERT_TRUE(fit.ok);
@@ -212,7 +214,9 @@ TEST(RealLabels, ScoringRules) {
     l.best = referenceBest(wall.cloud, wall.camera, l);
     ASSERT_TRUE(l.best.found);
     const PlaneFrame frame = makePlaneFrame(l.surfaces[0].plane, l.gravity, Eigen::Vector3d(0, 0, 2));
-    auto rect = [&](double x0, double y0, double w, double h) { return makeRectangle(frame, {x0, y0}, {x0 + w, y0 + h}); };
+    auto rect = [&](double x0, double y0, double w, double h) {
+        return makeRectangle(frame, {x0, y0}, {x0 + w, y0 + h});
+    };
 
     // The label's own best is valid with ratio 1.
     Rectangle best;
@@ -329,7 +333,8 @@ TEST(RealLabelSuite, LabelsAndDetectorHoldTheBaseline) {
         ASSERT_NE(b, baseline.end()) << label.frame << " has no line in labels/baseline.yaml";
         if (b->second.right) {
             EXPECT_TRUE(f.score.right) << label.frame << ": was right, now "
-                                       << (f.score.found ? "a " + std::to_string(f.score.area) + " m^2 rectangle: " : "")
+                                       << (f.score.found ? "a " + std::to_string(f.score.area) + " m^2 rectangle: "
+                                                         : "")
                                        << f.score.why;
         }
         EXPECT_GE(f.score.ratio, b->second.min_ratio)

@@ -46,8 +46,8 @@ TEST(LargestAspectRect, MatchesAnExhaustiveSearch) {
         const int rows = 1 + static_cast<int>(rng() % 30), cols = 1 + static_cast<int>(rng() % 45);
         cv::Mat mask(rows, cols, CV_8UC1, cv::Scalar(255));
         for (int b = static_cast<int>(rng() % 6); b > 0; --b)
-            cv::circle(mask, {static_cast<int>(rng() % cols), static_cast<int>(rng() % rows)}, 1 + static_cast<int>(rng() % 6),
-                       0, -1);
+            cv::circle(mask, {static_cast<int>(rng() % cols), static_cast<int>(rng() % rows)},
+                       1 + static_cast<int>(rng() % 6), 0, -1);
         if (trial % 3 == 0)
             for (int k = 0; k < rows * cols / 40; ++k) mask.at<uchar>(rng() % rows, rng() % cols) = 0;
         const double aspect = 0.4 + (rng() % 1000) / 400.0;

@@ -17,12 +17,12 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "projsurf/eval/experiments.hpp"
+#include "projsurf/eval/realistic_suite.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
-#include "projsurf/eval/experiments.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/noise_field.hpp"
-#include "projsurf/eval/realistic_suite.hpp"
 #include "projsurf/sim/scenarios_realistic.hpp"
 #include "projsurf/sim/wall_frame.hpp"
 #include "projsurf/sim/wall_residual_stats.hpp"
@@ -62,7 +62,8 @@ int freeAt(const GroundTruth &gt, const WallFrame &w, double s, double h) {
         const Eigen::Vector2d uv = st.frame.toPlane(w.at(s, h, 0.0));
         const int col = static_cast<int>(std::floor((uv.x() - st.grid_origin.x()) / st.cell));
         const int row = static_cast<int>(std::floor((st.grid_origin.y() - uv.y()) / st.cell));
-        if (row < 0 || col < 0 || row >= st.free_mask.rows || col >= st.free_mask.cols) return -1;  // outside the footprint
+        if (row < 0 || col < 0 || row >= st.free_mask.rows || col >= st.free_mask.cols)
+            return -1;  // outside the footprint
         return st.free_mask.at<uchar>(row, col) != 0;
     }
     return -1;
@@ -157,7 +158,8 @@ TEST(SensorModels, SystematicErrorsAreFixedPerUnit) {
     const Scenario sc = makeRealisticScenario("plain_bowed", 2.5, 0.0);
     auto depth = [&](int unit, unsigned seed) {
         cv::Mat d;
-        renderSensorFrame(sc.scene, makeDepthSensor(SensorKind::Kinect1, unit), seed, std::nullopt, false).depth.convertTo(d, CV_64F);
+        renderSensorFrame(sc.scene, makeDepthSensor(SensorKind::Kinect1, unit), seed, std::nullopt, false)
+            .depth.convertTo(d, CV_64F);
         return d;
     };
     auto smoothDiff = [](const cv::Mat &x, const cv::Mat &y) {
@@ -167,8 +169,8 @@ TEST(SensorModels, SystematicErrorsAreFixedPerUnit) {
         return cv::norm(sm(cv::Rect(40, 40, 560, 300)), cv::NORM_L2) / std::sqrt(560.0 * 300.0);  // mm RMS
     };
     const double same_unit = smoothDiff(depth(2, 1), depth(2, 2)), other_unit = smoothDiff(depth(2, 1), depth(5, 1));
-    EXPECT_LT(same_unit, 1.5) << same_unit;   // mm
-    EXPECT_GT(other_unit, 5.0) << other_unit; // mm
+    EXPECT_LT(same_unit, 1.5) << same_unit;    // mm
+    EXPECT_GT(other_unit, 5.0) << other_unit;  // mm
     // Same unit, same seed: the same frame.
     EXPECT_EQ(cv::norm(depth(2, 9), depth(2, 9), cv::NORM_INF), 0.0);
 }
@@ -412,8 +414,8 @@ TEST(SensorModels, SimulateWritesATofCloudOfTheRightSize) {
     EXPECT_GT(cv::norm(depth, cv::imread(dir + "/depth.png", cv::IMREAD_UNCHANGED), cv::NORM_INF), 0.0);
     // The paper experiments' independent-noise Kinect stays available, frame for frame.
     ASSERT_EQ(std::system(("timeout 120 " + std::string(PROJSURF_CLI) +
-                           " simulate --scenario wall --distance 2.0 --seed 5 --sensor kinect1-independent --out " + dir +
-                           "/ind >/dev/null 2>&1")
+                           " simulate --scenario wall --distance 2.0 --seed 5 --sensor kinect1-independent --out " +
+                           dir + "/ind >/dev/null 2>&1")
                               .c_str()),
               0);
     const cv::Mat ind = cv::imread(dir + "/ind/depth.png", cv::IMREAD_UNCHANGED);
@@ -421,8 +423,8 @@ TEST(SensorModels, SimulateWritesATofCloudOfTheRightSize) {
     ASSERT_EQ(ind.size(), old.depth.size());
     EXPECT_EQ(cv::norm(ind, old.depth, cv::NORM_INF), 0.0);
     // A bad sensor name: exit 2 with one error line.
-    const int bad = std::system(("timeout 60 " + std::string(PROJSURF_CLI) + " simulate --scenario wall --sensor kinect9 --out " +
-                                 dir + "/bad >/dev/null 2>&1")
+    const int bad = std::system(("timeout 60 " + std::string(PROJSURF_CLI) +
+                                 " simulate --scenario wall --sensor kinect9 --out " + dir + "/bad >/dev/null 2>&1")
                                     .c_str());
     EXPECT_EQ(WEXITSTATUS(bad), 2);
     EXPECT_FALSE(fs::exists(dir + "/bad"));

@@ -6,6 +6,8 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -13,16 +15,14 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <string>
 
+#include "cli_run.hpp"
 #include "projsurf/core/plane.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/ray_cast.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
-#include "cli_run.hpp"
 
 using namespace projsurf;
 using namespace projsurf::sim;
@@ -43,7 +43,8 @@ std::pair<double, double> depthResidualStats(const Scenario &s, const SensorMode
     for (int v = 0; v < truth.depth.rows; ++v)
         for (int u = 0; u < truth.depth.cols; ++u) {
             const std::size_t i = static_cast<std::size_t>(v) * truth.cloud.width + u;
-            if (!isLabel(s, truth, u, v, "wall") || !isFinite(noisy.cloud.points[i]) || !isFinite(truth.cloud.points[i]))
+            if (!isLabel(s, truth, u, v, "wall") || !isFinite(noisy.cloud.points[i]) ||
+                !isFinite(truth.cloud.points[i]))
                 continue;
             const double e = double(noisy.cloud.points[i].z()) - double(truth.cloud.points[i].z());
             sum += e;
@@ -315,9 +316,9 @@ TEST(SimTruth, PlainWallRectangleIsLimitedByTheProjectorFootprint) {
 
 TEST(SimTruth, RectangleAvoidsObstacles) {
     const Projector projector = exampleProjector();
-    const double plain = computeGroundTruth(makeScenario("wall", 2.0, 17.19).scene, SensorModel(), projector,
-                                            Eigen::Vector3d::UnitY())
-                             .best.rectangle.area();
+    const double plain =
+        computeGroundTruth(makeScenario("wall", 2.0, 17.19).scene, SensorModel(), projector, Eigen::Vector3d::UnitY())
+            .best.rectangle.area();
     for (const std::string name : {"small_obstacles", "big_obstacle", "person", "desk"}) {
         const Scenario s = makeScenario(name, 2.0, 17.19);
         const GroundTruth gt = computeGroundTruth(s.scene, SensorModel(), projector, s.gravity);
@@ -349,8 +350,8 @@ TEST(SimTruth, ClosetFrontWinsNearAndPosterIsNotAnObstacle) {
     EXPECT_EQ(g1.surfaces.size(), 4u);  // wall, closet front and both closet sides
     EXPECT_EQ(g1.best.label, "closet");
     // The poster is flat on the wall: the truth equals the plain wall's.
-    const GroundTruth plain = computeGroundTruth(makeScenario("wall", 2.0, 17.19).scene, SensorModel(), projector,
-                                                 Eigen::Vector3d::UnitY());
+    const GroundTruth plain =
+        computeGroundTruth(makeScenario("wall", 2.0, 17.19).scene, SensorModel(), projector, Eigen::Vector3d::UnitY());
     const Scenario poster = makeScenario("poster", 2.0, 17.19);
     const GroundTruth gp = computeGroundTruth(poster.scene, SensorModel(), projector, poster.gravity);
     EXPECT_NEAR(gp.best.rectangle.area(), plain.best.rectangle.area(), 1e-9);
@@ -392,7 +393,8 @@ std::string freshDir(const std::string &name) {
 TEST(SimCli, WritesTheContractFilesAndTheTruth) {
     const std::string tmp = freshDir("cli");
     const std::string out = tmp + "/frame";
-    const projsurf::test::CliRun r = runSimulate("--scenario big_obstacle --distance 2.5 --angle-deg 17.19 --seed 4 --captures 3 --out " + out, tmp);
+    const projsurf::test::CliRun r =
+        runSimulate("--scenario big_obstacle --distance 2.5 --angle-deg 17.19 --seed 4 --captures 3 --out " + out, tmp);
     ASSERT_EQ(r.status, 0) << r.err;
     for (const char *f : {"cloud.pcd", "depth.png", "rgb.png", "camera.yaml", "calib.yaml", "truth.json",
                           "captures/camera.yaml", "captures/capture_0_rgb.png", "captures/capture_2_depth.png"})
@@ -417,10 +419,12 @@ TEST(SimCli, WritesTheContractFilesAndTheTruth) {
 TEST(SimCli, BadArgumentsExitTwoAndWriteNothing) {
     const std::string tmp = freshDir("bad");
     const std::string out = tmp + "/never";
-    for (const std::string &args : std::vector<std::string>{"--scenario nonsense --out " + out, "--scenario wall --distance 0.1 --out " + out, std::string("--scenario wall"),
-          "--scenario wall --captures 2 --out " + out, "--scenario wall --aspect 16x9 --out " + out,
-          "--scenario wall --calib /nonexistent/calib.yaml --out " + out,
-          "--scenario wall --picture /nonexistent/p.png --out " + out}) {
+    for (const std::string &args :
+         std::vector<std::string>{"--scenario nonsense --out " + out, "--scenario wall --distance 0.1 --out " + out,
+                                  std::string("--scenario wall"), "--scenario wall --captures 2 --out " + out,
+                                  "--scenario wall --aspect 16x9 --out " + out,
+                                  "--scenario wall --calib /nonexistent/calib.yaml --out " + out,
+                                  "--scenario wall --picture /nonexistent/p.png --out " + out}) {
         const projsurf::test::CliRun r = runSimulate(args, tmp);
         EXPECT_EQ(r.status, 2) << args;
         EXPECT_NE(r.err.find("error"), std::string::npos) << args << ": " << r.err;
@@ -492,7 +496,8 @@ TEST(SimTruth, RequireDepthLeavesOutTheIrShadow) {
     const auto &c = measured.best.rectangle.corners;
     for (int i = 0; i <= 10; ++i)
         for (int j = 0; j <= 10; ++j) {
-            const Eigen::Vector3d p = c[3] + (0.001 + 0.0998 * i) * (c[2] - c[3]) + (0.001 + 0.0998 * j) * (c[0] - c[3]);
+            const Eigen::Vector3d p =
+                c[3] + (0.001 + 0.0998 * i) * (c[2] - c[3]) + (0.001 + 0.0998 * j) * (c[0] - c[3]);
             EXPECT_FALSE(segmentBlocked(s.scene, SensorModel().emitter, p, 0.01)) << i << "," << j;
         }
 }

@@ -141,7 +141,7 @@ TEST(SteadyTracker, FitsProjectorChecksEveryCornerAgainstTheFramebuffer) {
     // At 2 m the footprint is about 1.43 m x 0.85 m around (0, 0.12).
     const Rectangle inside = rectOn(2.0, 0.0, 0.12, 1.2, 0.75);
     EXPECT_TRUE(fitsProjector(p, inside));
-    EXPECT_FALSE(fitsProjector(p, rectOn(2.0, 0.2, 0.12, 1.2, 0.75)));    // right edge out
+    EXPECT_FALSE(fitsProjector(p, rectOn(2.0, 0.2, 0.12, 1.2, 0.75)));         // right edge out
     EXPECT_FALSE(fitsProjector(p, rectOn(2.0, 0.0, 0.12, 1.2, 0.75), 200.0));  // margin too big
-    EXPECT_FALSE(fitsProjector(p, rectOn(-2.0, 0.0, 0.12, 1.2, 0.75)));   // behind the lens
+    EXPECT_FALSE(fitsProjector(p, rectOn(-2.0, 0.0, 0.12, 1.2, 0.75)));        // behind the lens
 }

@@ -12,10 +12,10 @@
 #include "projsurf/core/plane_frame.hpp"
 #include "projsurf/core/point_grid.hpp"
 #include "projsurf/core/surface_suitability.hpp"
+#include "projsurf/eval/colour_suite.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/pipeline/detector.hpp"
-#include "projsurf/eval/colour_suite.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/exact_depth.hpp"
 #include "projsurf/sim/ray_cast.hpp"
@@ -75,8 +75,8 @@ CellSuitability judge(const Cloud &cloud, const WallRaster &w) {
     PointGrid grid;
     fillPointGrid(cloud, 2, grid);
     CellSuitability s;
-    cellSuitability(grid, grid.gridBox(cv::Rect()), cloud.colours, w.plane, w.frame, w.raster, DepthTolerance{}, WallShape{},
-                    SuitabilityOptions{}, s);
+    cellSuitability(grid, grid.gridBox(cv::Rect()), cloud.colours, w.plane, w.frame, w.raster, DepthTolerance{},
+                    WallShape{}, SuitabilityOptions{}, s);
     return s;
 }
 
@@ -102,8 +102,8 @@ TEST(Suitability, DarkAndEdgyCellsAreFlaggedPlainOnesNot) {
 
 TEST(Suitability, PlainWallOfAnyRoomPaintIsFit) {
     const double z = 3.0;
-    for (const cv::Scalar &paint : {cv::Scalar(210, 215, 220), cv::Scalar(150, 190, 215), cv::Scalar(80, 110, 175),
-                                   cv::Scalar(105, 105, 105)}) {
+    for (const cv::Scalar &paint :
+         {cv::Scalar(210, 215, 220), cv::Scalar(150, 190, 215), cv::Scalar(80, 110, 175), cv::Scalar(105, 105, 105)}) {
         Cloud cloud = wallCloud(z);
         cv::Mat img(kCam.height, kCam.width, CV_8UC3, paint);
         cv::Mat noise(img.size(), CV_8SC3);
@@ -211,7 +211,8 @@ TEST(Suitability, DetectorAvoidsThePicturesAndReportsIt) {
     EXPECT_LT(avoid.rectangle.area(), plain.rectangle.area());  // without colour it covers a picture
     const auto j = detectionToJson(avoid, cfg);
     ASSERT_TRUE(j.contains("suitability"));
-    for (const char *key : {"mode", "mean_albedo", "texture", "unsuitable_share"}) EXPECT_TRUE(j["suitability"].contains(key));
+    for (const char *key : {"mode", "mean_albedo", "texture", "unsuitable_share"})
+        EXPECT_TRUE(j["suitability"].contains(key));
     // The overlay's states: unfit cells are marked in the shown plane's cell states.
     int unfit = 0;
     for (CellState s : {CellState::Glare, CellState::Dark, CellState::Textured, CellState::Saturated})
@@ -240,8 +241,10 @@ TEST(Suitability, ColourSuiteQuickMeetsTheUnfitTarget) {
     ASSERT_EQ(r.rows.size(), o.cases.size());
     for (const auto &row : r.rows) {
         EXPECT_EQ(row.found, row.rounds) << row.scene.scene;
-        if (row.plain) EXPECT_LE(row.worst_plain_pct, 2.0) << row.scene.scene;
-        else EXPECT_LE(row.max_unfit_pct, 2.0) << row.scene.scene;
+        if (row.plain)
+            EXPECT_LE(row.worst_plain_pct, 2.0) << row.scene.scene;
+        else
+            EXPECT_LE(row.max_unfit_pct, 2.0) << row.scene.scene;
     }
     EXPECT_NE(sim::colourSuiteMarkdown(r).find("| pictures |"), std::string::npos);
 }
@@ -278,8 +281,8 @@ TEST(SuitabilityCli, ModesParsedColourKeyOnlyWithColour) {
     ASSERT_EQ(none.status, 0) << none.err;
     EXPECT_EQ(test::slurp(dir / "none.json").find("\"suitability\""), std::string::npos);
 
-    const auto avoid = test::cli(detectArgs(dir) + " --rgb " + (dir / "rgb.png").string() + " --json " +
-                                     (dir / "avoid.json").string(), dir);
+    const auto avoid = test::cli(
+        detectArgs(dir) + " --rgb " + (dir / "rgb.png").string() + " --json " + (dir / "avoid.json").string(), dir);
     ASSERT_EQ(avoid.status, 0) << avoid.err;
     EXPECT_EQ(avoid.err, "");
     const std::string j = test::slurp(dir / "avoid.json");
@@ -287,15 +290,18 @@ TEST(SuitabilityCli, ModesParsedColourKeyOnlyWithColour) {
     EXPECT_NE(j.find("\"mode\": \"avoid\""), std::string::npos);
 
     const auto off = test::cli(detectArgs(dir) + " --rgb " + (dir / "rgb.png").string() + " --suitability off --json " +
-                                   (dir / "off.json").string(), dir);
+                                   (dir / "off.json").string(),
+                               dir);
     ASSERT_EQ(off.status, 0) << off.err;
     EXPECT_EQ(test::slurp(dir / "off.json").find("\"suitability\""), std::string::npos);
 
-    const auto prefer = test::cli(detectArgs(dir) + " --rgb " + (dir / "rgb.png").string() + " --suitability prefer", dir);
+    const auto prefer =
+        test::cli(detectArgs(dir) + " --rgb " + (dir / "rgb.png").string() + " --suitability prefer", dir);
     ASSERT_EQ(prefer.status, 0) << prefer.err;
     EXPECT_NE(prefer.out.find("\"mode\": \"prefer\""), std::string::npos);
 
-    const auto bad = test::cli(detectArgs(dir) + " --rgb " + (dir / "rgb.png").string() + " --suitability sometimes", dir);
+    const auto bad =
+        test::cli(detectArgs(dir) + " --rgb " + (dir / "rgb.png").string() + " --suitability sometimes", dir);
     EXPECT_EQ(bad.status, 2);
     EXPECT_EQ(bad.err, "projsurf: error: --suitability: expected 'off', 'avoid' or 'prefer', got 'sometimes'\n");
     fs::remove_all(dir);
@@ -305,7 +311,8 @@ TEST(SuitabilityCli, UnregisteredColourIsCaughtByTheCheckNotTheName) {
     const fs::path dir = writeColourFrame("suitability_unreg");
     for (const char *name : {"rgb_unregistered.png", "colour.png"}) {
         const fs::path rgb = dir / name;
-        const auto r = test::cli(detectArgs(dir) + " --rgb " + rgb.string() + " --json " + (dir / "u.json").string(), dir);
+        const auto r =
+            test::cli(detectArgs(dir) + " --rgb " + rgb.string() + " --json " + (dir / "u.json").string(), dir);
         ASSERT_EQ(r.status, 0) << r.err;
         const std::string expect = "projsurf: warning: " + rgb.string() + ": colour is not registered to the depth (";
         EXPECT_EQ(r.err.rfind(expect, 0), 0u) << r.err;

@@ -8,10 +8,10 @@
 
 #include "cli_run.hpp"
 #include "projsurf/core/projected_picture.hpp"
+#include "projsurf/eval/experiments.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/pipeline/detector.hpp"
-#include "projsurf/eval/experiments.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
@@ -51,7 +51,8 @@ Loop closeLoop(const Projector &believed, const Projector &truth, const sim::Sce
 TEST(Verify, FindsWhereThePictureLandedWithARightAndAWrongCalibration) {
     const Projector truth = sim::projectorRig({1.0, 1.0, 1.005, -0.05});
     Projector wrong = truth;
-    wrong.setRotation(Eigen::AngleAxisd(1.0 * M_PI / 180, Eigen::Vector3d::UnitY()).toRotationMatrix() * *truth.rotation);
+    wrong.setRotation(Eigen::AngleAxisd(1.0 * M_PI / 180, Eigen::Vector3d::UnitY()).toRotationMatrix() *
+                      *truth.rotation);
     const sim::Scenario sc = sim::makeScenario("wall", 2.0, 20.0);
     const sim::SensorModel sensor;
     for (const Projector *believed : std::vector<const Projector *>{&truth, &wrong}) {
@@ -63,9 +64,10 @@ TEST(Verify, FindsWhereThePictureLandedWithARightAndAWrongCalibration) {
             worst = std::max(worst, (f.corners[i] - l.landed[i]).norm());
             off = std::max(off, (l.landed[i] - l.det.rectangle.corners[i]).norm());
         }
-        std::printf("%s calibration: measured corners within %.1f mm of the true landing points; those are %.1f mm "
-                    "from the detection's corners\n",
-                    believed == &truth ? "right" : "1 deg yaw wrong", worst * 1000, off * 1000);
+        std::printf(
+            "%s calibration: measured corners within %.1f mm of the true landing points; those are %.1f mm "
+            "from the detection's corners\n",
+            believed == &truth ? "right" : "1 deg yaw wrong", worst * 1000, off * 1000);
         EXPECT_LT(worst, 0.005);
         if (believed == &wrong) {
             EXPECT_GT(off, 0.02);

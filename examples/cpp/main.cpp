@@ -40,8 +40,7 @@ int main(int argc, char **argv) {
                   << det.rectangle.center().norm() << " m away\n";
 
         const cv::Mat picture = makePicture();  // any 8-bit image, e.g. from cv::imread
-        const projsurf::KeystoneResult keystone =
-            projsurf::computeKeystone(projector, det.rectangle, picture.size());
+        const projsurf::KeystoneResult keystone = projsurf::computeKeystone(projector, det.rectangle, picture.size());
         if (!keystone.keystone) {
             std::cout << "cannot show it: " << keystone.problem << "\n";
             return 0;

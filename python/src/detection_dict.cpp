@@ -39,10 +39,10 @@ py::dict detectionToDict(const Detection &det, const DetectorConfig &config) {
     d["surface_check"] = py::dict("points"_a = det.surface_check.points, "outliers"_a = det.surface_check.outliers,
                                   "accepted"_a = det.surface_check.accepted);
     if (det.suitability.used)  // as the JSON: only when colour was used
-        d["suitability"] = py::dict("mode"_a = det.suitability.mode, "mean_albedo"_a = det.suitability.mean_albedo,
-                                    "texture"_a = det.suitability.texture,
-                                    "unsuitable_share"_a = det.suitability.unsuitable_share,
-                                    "wall_luminance"_a = det.suitability.wall_luminance);
+        d["suitability"] =
+            py::dict("mode"_a = det.suitability.mode, "mean_albedo"_a = det.suitability.mean_albedo,
+                     "texture"_a = det.suitability.texture, "unsuitable_share"_a = det.suitability.unsuitable_share,
+                     "wall_luminance"_a = det.suitability.wall_luminance);
     d["timing_ms"] = py::cast(det.timing_ms);
     const Eigen::Vector3d g = det.gravity;
     d["gravity"] = py::array_t<double>(3, g.data());
@@ -56,9 +56,10 @@ Rectangle rectangleFromDetection(const py::handle &detection) {
         if (!d.contains("found") || !d.contains("rectangle"))
             throw InputError("detection", "expected the dict of projsurf.detect (keys 'found', 'rectangle')");
         if (!py::bool_(d["found"])) {
-            std::string reason = d.contains("reason") && !d["reason"].is_none() ? std::string(py::str(d["reason"])) : "";
-            throw InputError("detection", "the detection found no surface" +
-                                              (reason.empty() ? std::string() : " (" + reason + ")"));
+            std::string reason =
+                d.contains("reason") && !d["reason"].is_none() ? std::string(py::str(d["reason"])) : "";
+            throw InputError("detection",
+                             "the detection found no surface" + (reason.empty() ? std::string() : " (" + reason + ")"));
         }
         const py::object rect = d["rectangle"];
         if (!py::isinstance<py::dict>(rect) || !rect.contains("corners"))
@@ -86,7 +87,8 @@ Rectangle rectangleFromDetection(const py::handle &detection) {
     r.width = (k[1] - k[0]).norm();
     r.height = (k[3] - k[0]).norm();
     const double w2 = (k[2] - k[3]).norm(), h2 = (k[2] - k[1]).norm();
-    if (!(r.width > 1e-6 && r.height > 1e-6)) throw InputError("detection", "'rectangle.corners' do not span a rectangle");
+    if (!(r.width > 1e-6 && r.height > 1e-6))
+        throw InputError("detection", "'rectangle.corners' do not span a rectangle");
     const double tol = 1e-3 * std::max(r.width, r.height) + 1e-6;
     if (std::abs(w2 - r.width) > tol || std::abs(h2 - r.height) > tol ||
         std::abs((k[1] - k[0]).normalized().dot((k[3] - k[0]).normalized())) > 1e-3)

@@ -47,12 +47,18 @@ DetectorOptions detectorOptions(const py::object &aspect, const py::object &grav
                                 const py::object &min_area) {
     DetectorOptions o;
     o.config.aspect = aspectFrom(aspect);
-    if (method == "paper") o.config.method = Method::Paper;
-    else if (method == "default") o.config.method = Method::Default;
-    else throw InputError("method", "expected 'default' or 'paper', got '" + method + "'");
-    if (hull == "concave") o.config.paper.hull = HullKind::Concave;
-    else if (hull == "convex") o.config.paper.hull = HullKind::Convex;
-    else throw InputError("hull", "expected 'concave' or 'convex', got '" + hull + "'");
+    if (method == "paper")
+        o.config.method = Method::Paper;
+    else if (method == "default")
+        o.config.method = Method::Default;
+    else
+        throw InputError("method", "expected 'default' or 'paper', got '" + method + "'");
+    if (hull == "concave")
+        o.config.paper.hull = HullKind::Concave;
+    else if (hull == "convex")
+        o.config.paper.hull = HullKind::Convex;
+    else
+        throw InputError("hull", "expected 'concave' or 'convex', got '" + hull + "'");
     o.config.seed = seed;
     const frontend::MinimumSize defaults = frontend::defaultMinimumSize(o.config.method);
     o.minimum.width = minimumFrom("min_width", min_width, defaults.width);
@@ -66,8 +72,8 @@ DetectorOptions detectorOptions(const py::object &aspect, const py::object &grav
         } catch (const py::error_already_set &) {
         }
         if (!g || g.size() != 3)
-            throw InputError("gravity", "expected three numbers gx,gy,gz or 'auto', got '" +
-                                            std::string(py::str(gravity)) + "'");
+            throw InputError("gravity",
+                             "expected three numbers gx,gy,gz or 'auto', got '" + std::string(py::str(gravity)) + "'");
         o.gravity = frontend::gravityChoiceFrom("gravity", g.data(), 3);
     }
     return o;

@@ -55,8 +55,8 @@ py::array arrayFromMat(const cv::Mat &mat) {
     const py::ssize_t elem = static_cast<py::ssize_t>(mat.elemSize1());
     const py::ssize_t step = static_cast<py::ssize_t>(mat.step[0]);
     if (mat.channels() == 1)
-        return py::array(dtypeOf(mat.depth()), {py::ssize_t(mat.rows), py::ssize_t(mat.cols)},
-                         {step, elem}, owned->data, release);
+        return py::array(dtypeOf(mat.depth()), {py::ssize_t(mat.rows), py::ssize_t(mat.cols)}, {step, elem},
+                         owned->data, release);
     return py::array(dtypeOf(mat.depth()), {py::ssize_t(mat.rows), py::ssize_t(mat.cols), py::ssize_t(mat.channels())},
                      {step, elem * mat.channels(), elem}, owned->data, release);
 }

@@ -114,8 +114,9 @@ private:
 PYBIND11_MODULE(projsurf, m) {
     using namespace projsurf;
     using namespace projsurf::python;
-    m.doc() = "projsurf: where a robot's projector can show a picture on a wall, and its keystone correction.\n"
-              "Camera optical frame (x right, y down, z forward), metres; degrees only where a name says _deg.";
+    m.doc() =
+        "projsurf: where a robot's projector can show a picture on a wall, and its keystone correction.\n"
+        "Camera optical frame (x right, y down, z forward), metres; degrees only where a name says _deg.";
 
     // Same one-line messages as the CLI's "projsurf: error: <file>: <problem>" (without the prefix).
     py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
@@ -128,12 +129,16 @@ PYBIND11_MODULE(projsurf, m) {
              "Defaults: the example calibration (examples/calib/example_calib.yaml).")
         .def_readonly("width", &Projector::width, "framebuffer width, px")
         .def_readonly("height", &Projector::height, "framebuffer height, px")
-        .def_property_readonly("fov_deg", [](const Projector &p) { return std::make_pair(p.fov_h / kDeg, p.fov_v / kDeg); },
-                               "full horizontal, vertical field of view, deg")
-        .def_property_readonly("origin", [](const Projector &p) { return p.origin; }, "lens centre, camera frame, m")
-        .def_property_readonly("direction", [](const Projector &p) { return p.direction; }, "central axis, unit")
-        .def("to_pixel", [](const Projector &p, const Eigen::Vector3d &point) { return p.toPixel(point); }, "point"_a,
-             "framebuffer pixel (u, v) that lights a camera-frame point; None behind the lens")
+        .def_property_readonly(
+            "fov_deg", [](const Projector &p) { return std::make_pair(p.fov_h / kDeg, p.fov_v / kDeg); },
+            "full horizontal, vertical field of view, deg")
+        .def_property_readonly(
+            "origin", [](const Projector &p) { return p.origin; }, "lens centre, camera frame, m")
+        .def_property_readonly(
+            "direction", [](const Projector &p) { return p.direction; }, "central axis, unit")
+        .def(
+            "to_pixel", [](const Projector &p, const Eigen::Vector3d &point) { return p.toPixel(point); }, "point"_a,
+            "framebuffer pixel (u, v) that lights a camera-frame point; None behind the lens")
         .def("__repr__", [](const Projector &p) {
             return py::str("Projector(resolution=({}, {}), fov_deg=({:.3f}, {:.3f}), origin={}, direction={})")
                 .format(p.width, p.height, p.fov_h / kDeg, p.fov_v / kDeg,
@@ -145,36 +150,42 @@ PYBIND11_MODULE(projsurf, m) {
           "Reads a calibration YAML (the contract's keys; others are ignored). Raises InputError.");
     m.def("write_calibration", &writeCalibration, "path"_a, "projector"_a,
           "Writes a calibration YAML with the contract's keys (atomically). Raises InputError.");
-    m.def("read_cloud", [](const std::string &path) { return arrayFromCloud(readCloud(path)); }, "path"_a,
-          "Reads a PCD or PLY file: float32 (H, W, 3) when organized, else (N, 3). Raises InputError.");
-    m.def("read_depth_cloud",
-          [](const std::string &depth_png, const std::string &camera_yaml) {
-              return arrayFromCloud(readDepthCloud(depth_png, camera_yaml));
-          },
-          "depth_png"_a, "camera_yaml"_a,
-          "A 16-bit depth PNG and the camera YAML as an organized (H, W, 3) float32 cloud. Raises InputError.");
+    m.def(
+        "read_cloud", [](const std::string &path) { return arrayFromCloud(readCloud(path)); }, "path"_a,
+        "Reads a PCD or PLY file: float32 (H, W, 3) when organized, else (N, 3). Raises InputError.");
+    m.def(
+        "read_depth_cloud",
+        [](const std::string &depth_png, const std::string &camera_yaml) {
+            return arrayFromCloud(readDepthCloud(depth_png, camera_yaml));
+        },
+        "depth_png"_a, "camera_yaml"_a,
+        "A 16-bit depth PNG and the camera YAML as an organized (H, W, 3) float32 cloud. Raises InputError.");
 
-    m.def("depth_to_cloud",
-          [](const py::array &depth, double fx, double fy, double cx, double cy, double depth_scale) {
-              py::object keep;
-              const cv::Mat d = matFromArray(depth, "depth", keep);
-              if (d.type() != CV_16UC1) throw InputError("depth", "expected an (H, W) uint16 depth image (0 = no reading)");
-              const CameraIntrinsics camera = frontend::pinholeCamera("camera", d.cols, d.rows, fx, fy, cx, cy, depth_scale);
-              return arrayFromCloud(frontend::depthImageToCloud("depth", d, camera));
-          },
-          "depth"_a, py::kw_only(), "fx"_a, "fy"_a, "cx"_a, "cy"_a, "depth_scale"_a = 1000.0,
-          "An (H, W) uint16 depth image (depth_scale units per metre, 0 = no reading) and its pinhole\n"
-          "(px) as an organized (H, W, 3) float32 cloud, NaN where there is no reading. Raises InputError.");
-    m.def("read_image", [](const std::string &path) { return arrayFromMat(readImage(path, cv::IMREAD_UNCHANGED)); },
-          "path"_a,
-          "Reads an image file as OpenCV does (channels in B, G, R order; 8 or 16 bits). Raises InputError.");
-    m.def("write_image",
-          [](const std::string &path, const py::array &image) {
-              py::object keep;
-              writeImageAtomic(path, matFromArray(image, "image", keep));
-          },
-          "path"_a, "image"_a,
-          "Writes an image by the path's extension (channels taken as B, G, R), atomically. Raises InputError.");
+    m.def(
+        "depth_to_cloud",
+        [](const py::array &depth, double fx, double fy, double cx, double cy, double depth_scale) {
+            py::object keep;
+            const cv::Mat d = matFromArray(depth, "depth", keep);
+            if (d.type() != CV_16UC1)
+                throw InputError("depth", "expected an (H, W) uint16 depth image (0 = no reading)");
+            const CameraIntrinsics camera =
+                frontend::pinholeCamera("camera", d.cols, d.rows, fx, fy, cx, cy, depth_scale);
+            return arrayFromCloud(frontend::depthImageToCloud("depth", d, camera));
+        },
+        "depth"_a, py::kw_only(), "fx"_a, "fy"_a, "cx"_a, "cy"_a, "depth_scale"_a = 1000.0,
+        "An (H, W) uint16 depth image (depth_scale units per metre, 0 = no reading) and its pinhole\n"
+        "(px) as an organized (H, W, 3) float32 cloud, NaN where there is no reading. Raises InputError.");
+    m.def(
+        "read_image", [](const std::string &path) { return arrayFromMat(readImage(path, cv::IMREAD_UNCHANGED)); },
+        "path"_a, "Reads an image file as OpenCV does (channels in B, G, R order; 8 or 16 bits). Raises InputError.");
+    m.def(
+        "write_image",
+        [](const std::string &path, const py::array &image) {
+            py::object keep;
+            writeImageAtomic(path, matFromArray(image, "image", keep));
+        },
+        "path"_a, "image"_a,
+        "Writes an image by the path's extension (channels taken as B, G, R), atomically. Raises InputError.");
 
     py::class_<Detector>(m, "Detector", "Detection over a stream of clouds (reuses its buffers from frame to frame).")
         .def(py::init([](const Projector &projector, const py::object &aspect, const py::object &gravity,
@@ -191,55 +202,60 @@ PYBIND11_MODULE(projsurf, m) {
              "Returns the detection as a dict with the keys of the detection JSON.")
         .def_property_readonly("projector", &Detector::projector);
 
-    m.def("detect",
-          [](const py::object &points, const Projector &projector, const py::object &aspect, const py::object &gravity,
-             const std::string &method, const std::string &hull, unsigned seed, const py::object &min_width,
-             const py::object &min_area, const py::object &colour) {
-              Detector detector(projector, detectorOptions(aspect, gravity, method, hull, seed, min_width, min_area));
-              return detector.detect(points, colour);
-          },
-          "points"_a, "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(),
-          "method"_a = "default", "hull"_a = "concave", "seed"_a = 42u, "min_width"_a = py::none(),
-          "min_area"_a = py::none(), "colour"_a = py::none(),
-          "The biggest upright rectangle of the aspect ratio (None: the framebuffer's, a number, or 'W:H') that the\n"
-          "projector can light on a vertical surface. gravity: camera frame, pointing down (None: a level camera\n"
-          "[0, 1, 0]; 'auto': from the floor). min_width (m), min_area (m^2): smaller rectangles are not found\n"
-          "(None: 0.15 m and 0.012 m^2, as `projsurf detect`; 0 with method='paper'). Returns a dict: found, reason, method, plane, rectangle,\n"
-          "surface_check, timing_ms, gravity (numpy arrays for vectors). Raises InputError for bad points or options.");
+    m.def(
+        "detect",
+        [](const py::object &points, const Projector &projector, const py::object &aspect, const py::object &gravity,
+           const std::string &method, const std::string &hull, unsigned seed, const py::object &min_width,
+           const py::object &min_area, const py::object &colour) {
+            Detector detector(projector, detectorOptions(aspect, gravity, method, hull, seed, min_width, min_area));
+            return detector.detect(points, colour);
+        },
+        "points"_a, "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(),
+        "method"_a = "default", "hull"_a = "concave", "seed"_a = 42u, "min_width"_a = py::none(),
+        "min_area"_a = py::none(), "colour"_a = py::none(),
+        "The biggest upright rectangle of the aspect ratio (None: the framebuffer's, a number, or 'W:H') that the\n"
+        "projector can light on a vertical surface. gravity: camera frame, pointing down (None: a level camera\n"
+        "[0, 1, 0]; 'auto': from the floor). min_width (m), min_area (m^2): smaller rectangles are not found\n"
+        "(None: 0.15 m and 0.012 m^2, as `projsurf detect`; 0 with method='paper'). Returns a dict: found, reason, "
+        "method, plane, rectangle,\n"
+        "surface_check, timing_ms, gravity (numpy arrays for vectors). Raises InputError for bad points or options.");
 
-    m.def("keystone",
-          [](const Projector &projector, const py::object &detection, std::pair<int, int> picture_size,
-             double tolerance_px) {
-              const Keystone k = keystoneFor(projector, detection, {picture_size.first, picture_size.second}, tolerance_px);
-              Eigen::Matrix3d h;
-              for (int r = 0; r < 3; ++r)
-                  for (int c = 0; c < 3; ++c) h(r, c) = k.homography(r, c);
-              return py::dict("homography"_a = h, "rectangle_px"_a = corners2(k.rectangle_px),
-                              "picture_px"_a = corners2(k.picture_px),
-                              "framebuffer_size"_a = std::make_pair(k.framebuffer.width, k.framebuffer.height));
-          },
-          "projector"_a, "detection"_a, "picture_size"_a, "tolerance_px"_a = kKeystoneTolerancePx,
-          "picture_size: (width, height) px. homography maps picture pixels to framebuffer pixels (centres at\n"
-          "integers); rectangle_px / picture_px: (4, 2) framebuffer positions (TL, TR, BR, BL). Raises InputError\n"
-          "when the detection found nothing or its rectangle cannot be shown.");
+    m.def(
+        "keystone",
+        [](const Projector &projector, const py::object &detection, std::pair<int, int> picture_size,
+           double tolerance_px) {
+            const Keystone k =
+                keystoneFor(projector, detection, {picture_size.first, picture_size.second}, tolerance_px);
+            Eigen::Matrix3d h;
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c) h(r, c) = k.homography(r, c);
+            return py::dict("homography"_a = h, "rectangle_px"_a = corners2(k.rectangle_px),
+                            "picture_px"_a = corners2(k.picture_px),
+                            "framebuffer_size"_a = std::make_pair(k.framebuffer.width, k.framebuffer.height));
+        },
+        "projector"_a, "detection"_a, "picture_size"_a, "tolerance_px"_a = kKeystoneTolerancePx,
+        "picture_size: (width, height) px. homography maps picture pixels to framebuffer pixels (centres at\n"
+        "integers); rectangle_px / picture_px: (4, 2) framebuffer positions (TL, TR, BR, BL). Raises InputError\n"
+        "when the detection found nothing or its rectangle cannot be shown.");
 
-    m.def("correct",
-          [](const py::array &image, const Projector &projector, const py::object &detection, double tolerance_px) {
-              py::object keep;
-              const cv::Mat picture = matFromArray(image, "image", keep);
-              const Keystone k = keystoneFor(projector, detection, picture.size(), tolerance_px);
-              cv::Mat framebuffer;
-              {
-                  py::gil_scoped_release unlocked;
-                  framebuffer = warpToFramebuffer(picture, k);
-              }
-              return arrayFromMat(framebuffer);
-          },
-          "image"_a, "projector"_a, "detection"_a, "tolerance_px"_a = kKeystoneTolerancePx,
-          "Keystone correction: the projector framebuffer (the calibration's resolution, black around) showing\n"
-          "`image` ((H, W) or (H, W, C), uint8, uint16 or float32; channels kept in their order) whole and\n"
-          "undistorted in the detected rectangle (letterboxed, never stretched). The image is read in place.\n"
-          "detection: the dict of detect(), or (4, 3) corners. Raises InputError.");
+    m.def(
+        "correct",
+        [](const py::array &image, const Projector &projector, const py::object &detection, double tolerance_px) {
+            py::object keep;
+            const cv::Mat picture = matFromArray(image, "image", keep);
+            const Keystone k = keystoneFor(projector, detection, picture.size(), tolerance_px);
+            cv::Mat framebuffer;
+            {
+                py::gil_scoped_release unlocked;
+                framebuffer = warpToFramebuffer(picture, k);
+            }
+            return arrayFromMat(framebuffer);
+        },
+        "image"_a, "projector"_a, "detection"_a, "tolerance_px"_a = kKeystoneTolerancePx,
+        "Keystone correction: the projector framebuffer (the calibration's resolution, black around) showing\n"
+        "`image` ((H, W) or (H, W, C), uint8, uint16 or float32; channels kept in their order) whole and\n"
+        "undistorted in the detected rectangle (letterboxed, never stretched). The image is read in place.\n"
+        "detection: the dict of detect(), or (4, 3) corners. Raises InputError.");
 
     m.attr("__version__") = PROJSURF_VERSION;
 }

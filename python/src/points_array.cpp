@@ -20,8 +20,8 @@ std::string shapeText(const py::array &a) {
 
 /// Copies rows x cols points whose x, y, z are `T`s at the given byte strides.
 template <typename T>
-void copyPoints(const py::array &a, py::ssize_t rows, py::ssize_t cols, py::ssize_t row_stride,
-                py::ssize_t col_stride, py::ssize_t xyz_stride, Cloud &cloud) {
+void copyPoints(const py::array &a, py::ssize_t rows, py::ssize_t cols, py::ssize_t row_stride, py::ssize_t col_stride,
+                py::ssize_t xyz_stride, Cloud &cloud) {
     const auto *base = static_cast<const char *>(a.data());
     float *out = cloud.points.data()->data();
     if (std::is_same<T, float>::value && xyz_stride == sizeof(float) && col_stride == 3 * sizeof(float) &&
@@ -49,7 +49,8 @@ Cloud cloudFromPoints(const py::handle &points) {
     if (!a) throw InputError("points", "expected an (N, 3) or (H, W, 3) array, or an object with .points");
     const py::dtype dt = a.dtype();
     if (dt.kind() != 'f' && dt.kind() != 'i' && dt.kind() != 'u')
-        throw InputError("points", "expected numbers, got an array of dtype " + py::str(py::handle(dt)).cast<std::string>());
+        throw InputError("points",
+                         "expected numbers, got an array of dtype " + py::str(py::handle(dt)).cast<std::string>());
     if (!dt.is(py::dtype::of<float>()) && !dt.is(py::dtype::of<double>()))
         a = py::array_t<double, py::array::forcecast>::ensure(a);  // integers: through double
 

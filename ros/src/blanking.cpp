@@ -19,7 +19,8 @@ sensor_msgs::Image toMono8(const cv::Mat &mask, const std_msgs::Header &header) 
     msg.is_bigendian = 0;
     msg.step = static_cast<std::uint32_t>(mask.cols);
     msg.data.resize(static_cast<std::size_t>(mask.rows) * mask.cols);
-    for (int y = 0; y < mask.rows; ++y) std::memcpy(&msg.data[static_cast<std::size_t>(y) * mask.cols], mask.ptr(y), mask.cols);
+    for (int y = 0; y < mask.rows; ++y)
+        std::memcpy(&msg.data[static_cast<std::size_t>(y) * mask.cols], mask.ptr(y), mask.cols);
     return msg;
 }
 
@@ -37,7 +38,8 @@ void NodeBlanking::publishFocus(const Rectangle &rectangle) {
     focus_pub_.publish(f);
 }
 
-void NodeBlanking::apply(cv::Mat &framebuffer, const Cloud &cloud, const Rectangle *shown, const std_msgs::Header &header) {
+void NodeBlanking::apply(cv::Mat &framebuffer, const Cloud &cloud, const Rectangle *shown,
+                         const std_msgs::Header &header) {
     blanked_ = 0;
     if (shown) publishFocus(*shown);
     if (!blank_) return;

@@ -34,12 +34,18 @@ Cloud toCloud(const sensor_msgs::Image &depth, const sensor_msgs::CameraInfo &in
 
 cv::Mat toBgr(const sensor_msgs::Image &msg) {
     int type, code = -1;
-    if (msg.encoding == enc::BGR8) type = CV_8UC3;
-    else if (msg.encoding == enc::RGB8) type = CV_8UC3, code = cv::COLOR_RGB2BGR;
-    else if (msg.encoding == enc::BGRA8) type = CV_8UC4, code = cv::COLOR_BGRA2BGR;
-    else if (msg.encoding == enc::RGBA8) type = CV_8UC4, code = cv::COLOR_RGBA2BGR;
-    else if (msg.encoding == enc::MONO8) type = CV_8UC1, code = cv::COLOR_GRAY2BGR;
-    else throw InputError("image", "encoding '" + msg.encoding + "' (expected bgr8, rgb8, bgra8, rgba8 or mono8)");
+    if (msg.encoding == enc::BGR8)
+        type = CV_8UC3;
+    else if (msg.encoding == enc::RGB8)
+        type = CV_8UC3, code = cv::COLOR_RGB2BGR;
+    else if (msg.encoding == enc::BGRA8)
+        type = CV_8UC4, code = cv::COLOR_BGRA2BGR;
+    else if (msg.encoding == enc::RGBA8)
+        type = CV_8UC4, code = cv::COLOR_RGBA2BGR;
+    else if (msg.encoding == enc::MONO8)
+        type = CV_8UC1, code = cv::COLOR_GRAY2BGR;
+    else
+        throw InputError("image", "encoding '" + msg.encoding + "' (expected bgr8, rgb8, bgra8, rgba8 or mono8)");
     if (msg.width == 0 || msg.height == 0) throw InputError("image", "is empty");
     const std::size_t row = static_cast<std::size_t>(msg.width) * CV_ELEM_SIZE(type);
     if (msg.step < row || msg.data.size() < static_cast<std::size_t>(msg.step) * msg.height)
@@ -47,8 +53,10 @@ cv::Mat toBgr(const sensor_msgs::Image &msg) {
     const cv::Mat view(static_cast<int>(msg.height), static_cast<int>(msg.width), type,
                        const_cast<std::uint8_t *>(msg.data.data()), msg.step);
     cv::Mat out;
-    if (code < 0) out = view.clone();
-    else cv::cvtColor(view, out, code);
+    if (code < 0)
+        out = view.clone();
+    else
+        cv::cvtColor(view, out, code);
     return out;
 }
 
@@ -111,8 +119,8 @@ geometry_msgs::Point point(const Eigen::Vector3d &v) {
     return p;
 }
 
-visualization_msgs::Marker marker(const std_msgs::Header &header, const std::string &ns, int id, int type,
-                                  float r, float g, float b, float a) {
+visualization_msgs::Marker marker(const std_msgs::Header &header, const std::string &ns, int id, int type, float r,
+                                  float g, float b, float a) {
     visualization_msgs::Marker m;
     m.header = header;
     m.ns = ns;
@@ -166,7 +174,8 @@ visualization_msgs::MarkerArray toMarkers(const Detection &det, const Rectangle 
         auto plane = marker(header, ns, 1, visualization_msgs::Marker::TRIANGLE_LIST, 0.2f, 0.5f, 1.0f, 0.25f);
         for (int i : {0, 1, 2, 0, 2, 3}) plane.points.push_back(point(q[i]));
         if (f.right.norm() > 0.5) out.markers.push_back(plane);
-        if (det.debug.has_workspace) out.markers.push_back(outline(header, ns, 2, det.debug.workspace, 0.1f, 0.9f, 0.1f));
+        if (det.debug.has_workspace)
+            out.markers.push_back(outline(header, ns, 2, det.debug.workspace, 0.1f, 0.9f, 0.1f));
     }
     const Rectangle *rect = shown != nullptr ? shown : (det.found ? &det.rectangle : nullptr);
     if (rect != nullptr) {

@@ -21,7 +21,8 @@ namespace {
 
 Eigen::Isometry3d toEigen(const geometry_msgs::Transform &t) {
     Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-    T.linear() = Eigen::Quaterniond(t.rotation.w, t.rotation.x, t.rotation.y, t.rotation.z).normalized().toRotationMatrix();
+    T.linear() =
+        Eigen::Quaterniond(t.rotation.w, t.rotation.x, t.rotation.y, t.rotation.z).normalized().toRotationMatrix();
     T.translation() = Eigen::Vector3d(t.translation.x, t.translation.y, t.translation.z);
     return T;
 }
@@ -30,8 +31,10 @@ Eigen::Isometry3d toEigen(const geometry_msgs::Transform &t) {
 
 ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams params)
     : params_(std::move(params)), nh_(nh), pnh_(pnh), detector_(params_.projector, params_.detector) {
-    if (!params_.image.empty()) picture_ = readImage(params_.image, cv::IMREAD_COLOR);
-    else picture_ = frontend::testCard({params_.projector.width, params_.projector.height});
+    if (!params_.image.empty())
+        picture_ = readImage(params_.image, cv::IMREAD_COLOR);
+    else
+        picture_ = frontend::testCard({params_.projector.width, params_.projector.height});
     if (!params_.gravity_frame.empty() || !params_.fixed_frame.empty()) {
         tf_buffer_ = std::make_unique<tf2_ros::Buffer>(ros::Duration(30.0));
         tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, nh_);
@@ -69,7 +72,8 @@ void ProjsurfNode::onImage(const sensor_msgs::ImageConstPtr &msg) {
 void ProjsurfNode::onCameraInfo(const sensor_msgs::CameraInfoConstPtr &msg) {
     camera_infos_.add(msg->header.stamp.toSec(), msg);
     // The depth image of this stamp came first: now it has its camera_info.
-    if (pending_depth_ && std::abs(pending_depth_->header.stamp.toSec() - msg->header.stamp.toSec()) <= frontend::kSameStampS) {
+    if (pending_depth_ &&
+        std::abs(pending_depth_->header.stamp.toSec() - msg->header.stamp.toSec()) <= frontend::kSameStampS) {
         const sensor_msgs::ImageConstPtr depth = pending_depth_;
         pending_depth_.reset();
         takeDepth(*depth, *msg);
@@ -88,11 +92,13 @@ void ProjsurfNode::onDepth(const sensor_msgs::ImageConstPtr &msg) {
     double at = 0.0;
     if (pending_depth_) {
         if (const auto *info = camera_infos_.nearest(pending_depth_->header.stamp.toSec(), at)) {
-            ROS_WARN_THROTTLE(5.0, "projsurf_node: no camera_info with the depth image's stamp %.3f on %s; using the one of %.3f",
-                              pending_depth_->header.stamp.toSec(), info_sub_.getTopic().c_str(), at);
+            ROS_WARN_THROTTLE(
+                5.0, "projsurf_node: no camera_info with the depth image's stamp %.3f on %s; using the one of %.3f",
+                pending_depth_->header.stamp.toSec(), info_sub_.getTopic().c_str(), at);
             takeDepth(*pending_depth_, **info);
         } else {
-            ROS_WARN_THROTTLE(5.0, "projsurf_node: depth image without camera_info on %s yet", info_sub_.getTopic().c_str());
+            ROS_WARN_THROTTLE(5.0, "projsurf_node: depth image without camera_info on %s yet",
+                              info_sub_.getTopic().c_str());
         }
     }
     pending_depth_ = msg;
@@ -278,7 +284,8 @@ void ProjsurfNode::runContinuous() {
     const std_msgs::Header header = cloud_header_;
     Eigen::Isometry3d fixed_from_camera = Eigen::Isometry3d::Identity();
     std::string problem;
-    if (!params_.fixed_frame.empty() && !lookup(params_.fixed_frame, header.frame_id, header.stamp, fixed_from_camera, problem)) {
+    if (!params_.fixed_frame.empty() &&
+        !lookup(params_.fixed_frame, header.frame_id, header.stamp, fixed_from_camera, problem)) {
         ROS_WARN_THROTTLE(5.0, "projsurf_node: skipping a cloud: %s", problem.c_str());
         return;
     }
@@ -296,8 +303,10 @@ void ProjsurfNode::runContinuous() {
     const ContinuousMode::Output o = continuous_->update(det, cloud_, fixed_from_camera, detector_.config());
     // Re-warp every frame: the robot moved, so the same place on the wall has new pixels.
     frontend::FramebufferRender fb;
-    if (o.has_target) fb = frontend::renderFramebuffer(params_.projector, o.shown, picture_, params_.keystone_tolerance_px);
-    if (fb.image.empty()) fb.image = cv::Mat(params_.projector.height, params_.projector.width, CV_8UC3, cv::Scalar::all(0));
+    if (o.has_target)
+        fb = frontend::renderFramebuffer(params_.projector, o.shown, picture_, params_.keystone_tolerance_px);
+    if (fb.image.empty())
+        fb.image = cv::Mat(params_.projector.height, params_.projector.width, CV_8UC3, cv::Scalar::all(0));
     blanking_->apply(fb.image, cloud_, o.has_target ? &o.shown : nullptr, header);
     const double frame_ms = (ros::WallTime::now() - start).toSec() * 1e3;
 

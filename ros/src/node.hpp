@@ -18,8 +18,8 @@
 
 #include "blanking.hpp"
 #include "continuous.hpp"
-#include "plan_service.hpp"
 #include "params.hpp"
+#include "plan_service.hpp"
 #include "projsurf/frontend/stamp_pairing.hpp"
 #include "projsurf/pipeline/detector.hpp"
 
@@ -55,8 +55,8 @@ private:
     /// Gravity for this cloud (camera frame): from tf2 when ~gravity_frame is set, from the
     /// floor with ~gravity auto, else ~gravity.
     Eigen::Vector3d gravityFor(const std_msgs::Header &header, std::string &problem);
-    bool lookup(const std::string &target, const std::string &source, const ros::Time &stamp,
-                Eigen::Isometry3d &pose, std::string &problem);
+    bool lookup(const std::string &target, const std::string &source, const ros::Time &stamp, Eigen::Isometry3d &pose,
+                std::string &problem);
     /// Warps the picture into `rect` (camera frame) and publishes it; empty string on success.
     std::string publishFramebuffer(const Rectangle &rect, const std_msgs::Header &header);
     void publishBlack(const std_msgs::Header &header);
@@ -70,16 +70,16 @@ private:
     std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
     std::unique_ptr<tf2_ros::TransformListener> tf_listener_;
 
-    cv::Mat picture_;              ///< BGR picture to show
+    cv::Mat picture_;  ///< BGR picture to show
     bool picture_from_topic_ = false;
-    Cloud cloud_;                  ///< latest cloud
+    Cloud cloud_;  ///< latest cloud
     std_msgs::Header cloud_header_;
     bool have_cloud_ = false;
-    std::string rejected_;         ///< why the latest cloud was rejected; empty when it was used
+    std::string rejected_;  ///< why the latest cloud was rejected; empty when it was used
     /// camera_info by stamp: each depth image is paired with the one of its own stamp.
     frontend::StampedBuffer<sensor_msgs::CameraInfoConstPtr> camera_infos_;
     sensor_msgs::ImageConstPtr pending_depth_;  ///< a depth image whose camera_info has not come yet
-    SurfaceDetector detector_;  ///< one for the stream: its buffers are reused frame to frame
+    SurfaceDetector detector_;                  ///< one for the stream: its buffers are reused frame to frame
     std::unique_ptr<ContinuousMode> continuous_;
     std::unique_ptr<NodeBlanking> blanking_;  ///< ~blanked, ~focus_distance
     std::unique_ptr<NodePlanner> planner_;    ///< ~plan

@@ -25,9 +25,12 @@ void getNumber(const ros::NodeHandle &pnh, const std::string &key, double &value
     if (!pnh.hasParam(key)) return;
     double d;
     int i;
-    if (pnh.getParam(key, d)) value = d;
-    else if (pnh.getParam(key, i)) value = i;
-    else throw InputError(name(pnh, key), "must be a number");
+    if (pnh.getParam(key, d))
+        value = d;
+    else if (pnh.getParam(key, i))
+        value = i;
+    else
+        throw InputError(name(pnh, key), "must be a number");
     if (!std::isfinite(value)) throw InputError(name(pnh, key), "must be finite");
 }
 
@@ -62,7 +65,8 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
     get(pnh, "blank", p.blank);
     getNumber(pnh, "plan_width", p.plan.width);
     getNumber(pnh, "plan_max_move", p.plan.max_move);
-    if (!(p.plan.width >= 0.0 && p.plan.width <= 50.0)) throw InputError(name(pnh, "plan_width"), "must be between 0 and 50 m");
+    if (!(p.plan.width >= 0.0 && p.plan.width <= 50.0))
+        throw InputError(name(pnh, "plan_width"), "must be between 0 and 50 m");
     if (!(p.plan.max_move >= 0.0 && p.plan.max_move <= 10.0))
         throw InputError(name(pnh, "plan_max_move"), "must be between 0 and 10 m");
 
@@ -82,12 +86,18 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
     std::string method = "default", hull = "concave";
     get(pnh, "method", method);
     get(pnh, "hull", hull);
-    if (method == "default") c.method = Method::Default;
-    else if (method == "paper") c.method = Method::Paper;
-    else throw InputError(name(pnh, "method"), "expected 'default' or 'paper', got '" + method + "'");
-    if (hull == "concave") c.paper.hull = HullKind::Concave;
-    else if (hull == "convex") c.paper.hull = HullKind::Convex;
-    else throw InputError(name(pnh, "hull"), "expected 'concave' or 'convex', got '" + hull + "'");
+    if (method == "default")
+        c.method = Method::Default;
+    else if (method == "paper")
+        c.method = Method::Paper;
+    else
+        throw InputError(name(pnh, "method"), "expected 'default' or 'paper', got '" + method + "'");
+    if (hull == "concave")
+        c.paper.hull = HullKind::Concave;
+    else if (hull == "convex")
+        c.paper.hull = HullKind::Convex;
+    else
+        throw InputError(name(pnh, "hull"), "expected 'concave' or 'convex', got '" + hull + "'");
     getPositive(pnh, "max_tilt", c.max_tilt);
     int seed = static_cast<int>(c.seed);
     getCount(pnh, "seed", seed, 0);

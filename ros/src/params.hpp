@@ -39,13 +39,14 @@ struct NodeParams {
     /// ~fixed_frame: a frame that does not move with the robot (odom, map); continuous mode
     /// keeps the picture put in it. Empty: the camera frame (a robot standing still).
     std::string fixed_frame;
-    double tf_timeout = 0.1;        ///< ~tf_timeout, s: wait for a transform at a cloud's stamp
-    SteadyConfig steady;            ///< ~steady_scale, ~switch_frames, ~hold_frames, ~plane_smoothing, ...
+    double tf_timeout = 0.1;  ///< ~tf_timeout, s: wait for a transform at a cloud's stamp
+    SteadyConfig steady;      ///< ~steady_scale, ~switch_frames, ~hold_frames, ~plane_smoothing, ...
     /// ~keystone_tolerance_px: a rectangle may leave the framebuffer by this much and still be
     /// shown (its edge clipped); the detector's raster puts corners up to a few px outside.
     double keystone_tolerance_px = 4.0;
-    double fit_margin_px = 2.0;     ///< ~fit_margin_px: the held picture must stay this far inside the framebuffer
-    std::string framebuffer_file;   ///< ~framebuffer_file: also write each new framebuffer PNG here (for `projsurf show`)
+    double fit_margin_px = 2.0;  ///< ~fit_margin_px: the held picture must stay this far inside the framebuffer
+    std::string
+        framebuffer_file;  ///< ~framebuffer_file: also write each new framebuffer PNG here (for `projsurf show`)
     std::string marker_ns = "projsurf";  ///< ~marker_ns: namespace of the RViz markers
 };
 

@@ -67,7 +67,8 @@ NodePlanner::Answer NodePlanner::plan(const Cloud &cloud, const Eigen::Vector3d 
 
     nlohmann::json j;
     j["translation"] = {r.translation.x(), r.translation.y(), r.translation.z()};
-    j["predicted"] = {{"width_m", r.predicted.width}, {"height_m", r.predicted.height}, {"area_m2", r.predicted.area()}};
+    j["predicted"] = {
+        {"width_m", r.predicted.width}, {"height_m", r.predicted.height}, {"area_m2", r.predicted.area()}};
     j["today_area_m2"] = r.today.area();
     char buf[200];
     std::snprintf(buf, sizeof buf, "move %.2f m, turn %.1f deg: %.2f x %.2f m (%.2f m^2; %.2f m^2 without moving); ",

@@ -15,7 +15,8 @@ namespace projsurf::ros_node {
 
 class NodePlanner {
 public:
-    NodePlanner(ros::NodeHandle &pnh, const Projector &projector, const DetectorConfig &config, const PlanOptions &options);
+    NodePlanner(ros::NodeHandle &pnh, const Projector &projector, const DetectorConfig &config,
+                const PlanOptions &options);
 
     struct Answer {
         bool found = false;

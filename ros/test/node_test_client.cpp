@@ -20,8 +20,8 @@
 #include <sys/wait.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -70,10 +70,12 @@ struct Inbox {
         });
     }
     bool waitStamp(const ros::Time &stamp, double seconds, Msg &out) {
-        const bool ok = waitFor([&] {
-            std::lock_guard<std::mutex> lock(mutex);
-            return by_stamp.count(stamp) > 0;
-        }, seconds);
+        const bool ok = waitFor(
+            [&] {
+                std::lock_guard<std::mutex> lock(mutex);
+                return by_stamp.count(stamp) > 0;
+            },
+            seconds);
         if (!ok) return false;
         std::lock_guard<std::mutex> lock(mutex);
         out = by_stamp.at(stamp);
@@ -94,7 +96,8 @@ std_msgs::Header header(const std::string &frame, const ros::Time &stamp) {
 
 std::array<Eigen::Vector3d, 4> corners(const geometry_msgs::PolygonStamped &p) {
     std::array<Eigen::Vector3d, 4> c;
-    for (int i = 0; i < 4; ++i) c[i] = Eigen::Vector3d(p.polygon.points[i].x, p.polygon.points[i].y, p.polygon.points[i].z);
+    for (int i = 0; i < 4; ++i)
+        c[i] = Eigen::Vector3d(p.polygon.points[i].x, p.polygon.points[i].y, p.polygon.points[i].z);
     return c;
 }
 
@@ -130,10 +133,11 @@ TEST_F(NodeTest, DetectServiceFindsTheWallAndPublishesRectangleAndFramebuffer) {
     std::mutex mutex;
     std::vector<std::string> results;
     std::vector<visualization_msgs::MarkerArray> markers;
-    ros::Subscriber rsub = nh_->subscribe<std_msgs::String>(ns + "/projsurf/result", 10, [&](const std_msgs::StringConstPtr &m) {
-        std::lock_guard<std::mutex> lock(mutex);
-        results.push_back(m->data);
-    });
+    ros::Subscriber rsub =
+        nh_->subscribe<std_msgs::String>(ns + "/projsurf/result", 10, [&](const std_msgs::StringConstPtr &m) {
+            std::lock_guard<std::mutex> lock(mutex);
+            results.push_back(m->data);
+        });
     ros::Subscriber msub = nh_->subscribe<visualization_msgs::MarkerArray>(
         ns + "/projsurf/markers", 10, [&](const visualization_msgs::MarkerArrayConstPtr &m) {
             std::lock_guard<std::mutex> lock(mutex);
@@ -154,10 +158,12 @@ TEST_F(NodeTest, DetectServiceFindsTheWallAndPublishesRectangleAndFramebuffer) {
     pub.publish(ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", stamp)));
     // The service answers on the latest cloud; wait until the node has it.
     std_srvs::Trigger call;
-    ASSERT_TRUE(waitFor([&] {
-        call = std_srvs::Trigger();
-        return ros::service::call(service, call) && call.response.message.find("no cloud") == std::string::npos;
-    }, 20.0));
+    ASSERT_TRUE(waitFor(
+        [&] {
+            call = std_srvs::Trigger();
+            return ros::service::call(service, call) && call.response.message.find("no cloud") == std::string::npos;
+        },
+        20.0));
     ASSERT_TRUE(call.response.success) << call.response.message;
     EXPECT_FALSE(call.response.message.empty());
 
@@ -207,10 +213,12 @@ TEST_F(NodeTest, DetectServiceFindsTheWallAndPublishesRectangleAndFramebuffer) {
     EXPECT_GE(outside_checked, 1) << "the projector's keystone leaves black framebuffer corners";
 
     // ~result is the contract's JSON for the same rectangle; ~markers show it.
-    ASSERT_TRUE(waitFor([&] {
-        std::lock_guard<std::mutex> lock(mutex);
-        return !results.empty() && !markers.empty();
-    }, 10.0));
+    ASSERT_TRUE(waitFor(
+        [&] {
+            std::lock_guard<std::mutex> lock(mutex);
+            return !results.empty() && !markers.empty();
+        },
+        10.0));
     std::lock_guard<std::mutex> lock(mutex);
     const auto j = nlohmann::json::parse(results.back());
     EXPECT_TRUE(j.at("found").get<bool>());
@@ -238,10 +246,12 @@ TEST_F(NodeTest, DetectServiceSaysWhyWhenThereIsNoWall) {
     sensor_msgs::Image fb;
     std_srvs::Trigger call;
     // Call until the answer is about this cloud (its framebuffer carries the stamp).
-    ASSERT_TRUE(waitFor([&] {
-        call = std_srvs::Trigger();
-        return ros::service::call(service, call) && fbs.waitStamp(stamp, 0.5, fb);
-    }, 20.0));
+    ASSERT_TRUE(waitFor(
+        [&] {
+            call = std_srvs::Trigger();
+            return ros::service::call(service, call) && fbs.waitStamp(stamp, 0.5, fb);
+        },
+        20.0));
     EXPECT_FALSE(call.response.success);
     EXPECT_FALSE(call.response.message.empty());
     EXPECT_EQ(call.response.message.find("no cloud"), std::string::npos) << call.response.message;
@@ -256,30 +266,42 @@ TEST_F(NodeTest, DetectServiceSaysWhenTheLatestCloudWasRejected) {
     const std::string service = ns + "/projsurf/detect";
     ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(60.0)));
     ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0));
-    pub.publish(ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", ros::Time::now())));
+    pub.publish(
+        ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", ros::Time::now())));
     std_srvs::Trigger call;
-    ASSERT_TRUE(waitFor([&] {
-        call = std_srvs::Trigger();
-        return ros::service::call(service, call) && call.response.success;
-    }, 20.0)) << call.response.message;
+    ASSERT_TRUE(waitFor(
+        [&] {
+            call = std_srvs::Trigger();
+            return ros::service::call(service, call) && call.response.success;
+        },
+        20.0))
+        << call.response.message;
     // A hostile cloud: its z field is gone (renamed), so it cannot be used.
-    sensor_msgs::PointCloud2 bad = ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", ros::Time(4242.5)));
+    sensor_msgs::PointCloud2 bad =
+        ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", ros::Time(4242.5)));
     for (auto &f : bad.fields)
         if (f.name == "z") f.name = "q";
     pub.publish(bad);
-    ASSERT_TRUE(waitFor([&] {
-        call = std_srvs::Trigger();
-        return ros::service::call(service, call) && call.response.message.find("rejected") != std::string::npos;
-    }, 20.0)) << "~detect never said the latest cloud was rejected: " << call.response.message;
+    ASSERT_TRUE(waitFor(
+        [&] {
+            call = std_srvs::Trigger();
+            return ros::service::call(service, call) && call.response.message.find("rejected") != std::string::npos;
+        },
+        20.0))
+        << "~detect never said the latest cloud was rejected: " << call.response.message;
     EXPECT_NE(call.response.message.find("4242.500"), std::string::npos) << call.response.message;  // which one
     EXPECT_NE(call.response.message.find("'z'"), std::string::npos) << "and why: " << call.response.message;
     EXPECT_NE(call.response.message.find("last valid cloud"), std::string::npos) << call.response.message;
     // A good cloud again: the answer is about it, nothing rejected.
-    pub.publish(ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", ros::Time::now())));
-    ASSERT_TRUE(waitFor([&] {
-        call = std_srvs::Trigger();
-        return ros::service::call(service, call) && call.response.message.find("rejected") == std::string::npos;
-    }, 20.0)) << call.response.message;
+    pub.publish(
+        ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", ros::Time::now())));
+    ASSERT_TRUE(waitFor(
+        [&] {
+            call = std_srvs::Trigger();
+            return ros::service::call(service, call) && call.response.message.find("rejected") == std::string::npos;
+        },
+        20.0))
+        << call.response.message;
     EXPECT_TRUE(call.response.success) << call.response.message;
 }
 
@@ -294,9 +316,12 @@ TEST_F(NodeTest, DepthImageInputAndThePictureFromTheImageTopic) {
     ros::Publisher picture_pub = nh_->advertise<sensor_msgs::Image>(ns + "/image", 1, true);
     const std::string service = ns + "/projsurf/detect";
     ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(60.0)));
-    ASSERT_TRUE(waitFor([&] {
-        return info_pub.getNumSubscribers() > 0 && depth_pub.getNumSubscribers() > 0 && picture_pub.getNumSubscribers() > 0;
-    }, 30.0));
+    ASSERT_TRUE(waitFor(
+        [&] {
+            return info_pub.getNumSubscribers() > 0 && depth_pub.getNumSubscribers() > 0 &&
+                   picture_pub.getNumSubscribers() > 0;
+        },
+        30.0));
 
     // The picture: plain green, 640x400 (the framebuffer's aspect, so it fills the rectangle).
     sensor_msgs::Image picture;
@@ -343,10 +368,13 @@ TEST_F(NodeTest, DepthImageInputAndThePictureFromTheImageTopic) {
 
     sensor_msgs::Image fb;
     std_srvs::Trigger call;
-    ASSERT_TRUE(waitFor([&] {
-        call = std_srvs::Trigger();
-        return ros::service::call(service, call) && fbs.waitStamp(stamp, 0.5, fb);
-    }, 20.0)) << "no framebuffer for the depth image";
+    ASSERT_TRUE(waitFor(
+        [&] {
+            call = std_srvs::Trigger();
+            return ros::service::call(service, call) && fbs.waitStamp(stamp, 0.5, fb);
+        },
+        20.0))
+        << "no framebuffer for the depth image";
     EXPECT_TRUE(call.response.success) << call.response.message;
     geometry_msgs::PolygonStamped rect;
     ASSERT_TRUE(rects.waitStamp(stamp, 10.0, rect));
@@ -356,7 +384,8 @@ TEST_F(NodeTest, DepthImageInputAndThePictureFromTheImageTopic) {
     for (const auto &p : corners(rect)) centre += 0.25 * p;
     const auto px = testProjector().toPixel(centre);
     ASSERT_TRUE(px.has_value());
-    const std::uint8_t *bgr = &fb.data[static_cast<std::size_t>(std::lround(px->y())) * fb.step + 3 * std::lround(px->x())];
+    const std::uint8_t *bgr =
+        &fb.data[static_cast<std::size_t>(std::lround(px->y())) * fb.step + 3 * std::lround(px->x())];
     EXPECT_LT(bgr[0], 20);
     EXPECT_GT(bgr[1], 235);
     EXPECT_LT(bgr[2], 20);
@@ -373,11 +402,12 @@ TEST_F(NodeTest, ContinuousModeKeepsThePicturePutOnTheWallWhileTheRobotMoves) {
     fbs.open(*nh_, ns + "/projsurf/framebuffer");
     std::mutex mutex;
     std::map<double, nlohmann::json> results;  // by stamp
-    ros::Subscriber rsub = nh_->subscribe<std_msgs::String>(ns + "/projsurf/result", 100, [&](const std_msgs::StringConstPtr &m) {
-        auto j = nlohmann::json::parse(m->data);
-        std::lock_guard<std::mutex> lock(mutex);
-        results[j.at("continuous").at("stamp").get<double>()] = j;
-    });
+    ros::Subscriber rsub =
+        nh_->subscribe<std_msgs::String>(ns + "/projsurf/result", 100, [&](const std_msgs::StringConstPtr &m) {
+            auto j = nlohmann::json::parse(m->data);
+            std::lock_guard<std::mutex> lock(mutex);
+            results[j.at("continuous").at("stamp").get<double>()] = j;
+        });
     ros::Publisher pub = nh_->advertise<sensor_msgs::PointCloud2>(ns + "/points", 1);
     tf2_ros::TransformBroadcaster tf;
     ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 60.0)) << "the node never subscribed";
@@ -459,7 +489,8 @@ TEST_F(NodeTest, ContinuousModeKeepsThePicturePutOnTheWallWhileTheRobotMoves) {
 
     // Phase 2: the picture had to move (the robot went 0.6 m sideways) and did, along the wall,
     // ending where the robot now is (left of where it started).
-    const Eigen::Vector3d first = 0.25 * (world1.front()[0] + world1.front()[1] + world1.front()[2] + world1.front()[3]);
+    const Eigen::Vector3d first =
+        0.25 * (world1.front()[0] + world1.front()[1] + world1.front()[2] + world1.front()[3]);
     const Eigen::Vector3d last = 0.25 * (world2.back()[0] + world2.back()[1] + world2.back()[2] + world2.back()[3]);
     EXPECT_GT(last.y() - first.y(), 0.3);
     // ... and it moved in few jumps, not every frame.
@@ -473,8 +504,10 @@ TEST_F(NodeTest, ContinuousModeKeepsThePicturePutOnTheWallWhileTheRobotMoves) {
         for (const auto &[stamp, j] : results) ms.push_back(j.at("continuous").at("frame_ms").get<double>());
         std::sort(ms.begin(), ms.end());
         if (!ms.empty())
-            std::printf("[ measured ] continuous frame (320x240 cloud: detect + steady + 1280x800 warp): median %.1f ms, max %.1f ms over %zu frames\n",
-                        ms[ms.size() / 2], ms.back(), ms.size());
+            std::printf(
+                "[ measured ] continuous frame (320x240 cloud: detect + steady + 1280x800 warp): median %.1f ms, max "
+                "%.1f ms over %zu frames\n",
+                ms[ms.size() / 2], ms.back(), ms.size());
     }
     std::printf("[ measured ] phase 2: centre moved %.3f m along the wall in %d jumps over %zu frames\n",
                 last.y() - first.y(), jumps, world2.size());
@@ -489,15 +522,17 @@ TEST_F(NodeTest, ContinuousModeBlanksAPersonWalkingIntoTheBeam) {
     masks.open(*nh_, ns + "/projsurf/blanked");
     std::mutex mutex;
     std::map<ros::Time, ros::WallTime> arrived;  // ~blanked arrival, by stamp
-    ros::Subscriber asub = nh_->subscribe<sensor_msgs::Image>(ns + "/projsurf/blanked", 100, [&](const sensor_msgs::ImageConstPtr &m) {
-        std::lock_guard<std::mutex> lock(mutex);
-        arrived[m->header.stamp] = ros::WallTime::now();
-    });
+    ros::Subscriber asub =
+        nh_->subscribe<sensor_msgs::Image>(ns + "/projsurf/blanked", 100, [&](const sensor_msgs::ImageConstPtr &m) {
+            std::lock_guard<std::mutex> lock(mutex);
+            arrived[m->header.stamp] = ros::WallTime::now();
+        });
     float focus = -1.0f;
-    ros::Subscriber fsub = nh_->subscribe<std_msgs::Float32>(ns + "/projsurf/focus_distance", 10, [&](const std_msgs::Float32ConstPtr &m) {
-        std::lock_guard<std::mutex> lock(mutex);
-        focus = m->data;
-    });
+    ros::Subscriber fsub =
+        nh_->subscribe<std_msgs::Float32>(ns + "/projsurf/focus_distance", 10, [&](const std_msgs::Float32ConstPtr &m) {
+            std::lock_guard<std::mutex> lock(mutex);
+            focus = m->data;
+        });
     ros::Publisher pub = nh_->advertise<sensor_msgs::PointCloud2>(ns + "/points", 1);
     ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 60.0)) << "the node never subscribed";
 
@@ -563,10 +598,11 @@ TEST_F(NodeTest, ContinuousModeBlanksAPersonWalkingIntoTheBeam) {
     }
     std::sort(latency_ms.begin(), latency_ms.end());
     ASSERT_FALSE(latency_ms.empty());
-    std::printf("[ measured ] blanking: %ld of %ld sampled pixels on the person lit, %.2f %% of the rest unblanked; "
-                "cloud published -> ~blanked received: median %.1f ms, max %.1f ms over %zu frames\n",
-                lit_on_person, on_person, elsewhere > 0 ? 100.0 * lit_elsewhere / elsewhere : 100.0,
-                latency_ms[latency_ms.size() / 2], latency_ms.back(), latency_ms.size());
+    std::printf(
+        "[ measured ] blanking: %ld of %ld sampled pixels on the person lit, %.2f %% of the rest unblanked; "
+        "cloud published -> ~blanked received: median %.1f ms, max %.1f ms over %zu frames\n",
+        lit_on_person, on_person, elsewhere > 0 ? 100.0 * lit_elsewhere / elsewhere : 100.0,
+        latency_ms[latency_ms.size() / 2], latency_ms.back(), latency_ms.size());
 }
 
 // ~plan (contract "Where to stand"): a robot 1 m from the front wall asks where to stand;
@@ -578,10 +614,11 @@ TEST_F(NodeTest, PlanServiceMovesTheRobotToABiggerPicture) {
     rects.open(*nh_, ns + "/projsurf/rectangle");
     std::mutex mutex;
     std::vector<geometry_msgs::PoseStamped> poses;
-    ros::Subscriber psub = nh_->subscribe<geometry_msgs::PoseStamped>(ns + "/projsurf/plan_pose", 10, [&](const geometry_msgs::PoseStampedConstPtr &m) {
-        std::lock_guard<std::mutex> lock(mutex);
-        poses.push_back(*m);
-    });
+    ros::Subscriber psub = nh_->subscribe<geometry_msgs::PoseStamped>(ns + "/projsurf/plan_pose", 10,
+                                                                      [&](const geometry_msgs::PoseStampedConstPtr &m) {
+                                                                          std::lock_guard<std::mutex> lock(mutex);
+                                                                          poses.push_back(*m);
+                                                                      });
     ros::Publisher pub = nh_->advertise<sensor_msgs::PointCloud2>(ns + "/points", 1, true);
     const std::string plan_service = ns + "/projsurf/plan", detect_service = ns + "/projsurf/detect";
     ASSERT_TRUE(ros::service::waitForService(plan_service, ros::Duration(60.0))) << plan_service << " never came up";
@@ -593,10 +630,13 @@ TEST_F(NodeTest, PlanServiceMovesTheRobotToABiggerPicture) {
     ros::Time stamp = ros::Time::now();
     pub.publish(ros_node::toPointCloud2(renderScene(start, scene), header("camera_optical", stamp)));
     std_srvs::Trigger detect;
-    ASSERT_TRUE(waitFor([&] {
-        detect = std_srvs::Trigger();
-        return ros::service::call(detect_service, detect) && detect.response.message.find("no cloud") == std::string::npos;
-    }, 20.0));
+    ASSERT_TRUE(waitFor(
+        [&] {
+            detect = std_srvs::Trigger();
+            return ros::service::call(detect_service, detect) &&
+                   detect.response.message.find("no cloud") == std::string::npos;
+        },
+        20.0));
     geometry_msgs::PolygonStamped rect;
     ASSERT_TRUE(rects.waitStamp(stamp, 20.0, rect));
     auto area = [](const geometry_msgs::PolygonStamped &r) {
@@ -610,10 +650,12 @@ TEST_F(NodeTest, PlanServiceMovesTheRobotToABiggerPicture) {
     ASSERT_TRUE(plan.response.success) << plan.response.message;
     const auto j = nlohmann::json::parse(plan.response.message.substr(plan.response.message.find('{')));
     const double predicted = j.at("predicted").at("area_m2").get<double>();
-    ASSERT_TRUE(waitFor([&] {
-        std::lock_guard<std::mutex> lock(mutex);
-        return !poses.empty();
-    }, 10.0));
+    ASSERT_TRUE(waitFor(
+        [&] {
+            std::lock_guard<std::mutex> lock(mutex);
+            return !poses.empty();
+        },
+        10.0));
     geometry_msgs::PoseStamped pose;
     {
         std::lock_guard<std::mutex> lock(mutex);
@@ -623,16 +665,19 @@ TEST_F(NodeTest, PlanServiceMovesTheRobotToABiggerPicture) {
     Eigen::Isometry3d moved = Eigen::Isometry3d::Identity();  // the moved camera, today's camera frame
     moved.translation() = Eigen::Vector3d(pose.pose.position.x, pose.pose.position.y, pose.pose.position.z);
     moved.linear() = Eigen::Quaterniond(pose.pose.orientation.w, pose.pose.orientation.x, pose.pose.orientation.y,
-                                        pose.pose.orientation.z).toRotationMatrix();
+                                        pose.pose.orientation.z)
+                         .toRotationMatrix();
     EXPECT_LE(moved.translation().norm(), 2.0 + 1e-6);
 
     // Go there and look again.
     stamp = ros::Time::now() + ros::Duration(0.001);
     pub.publish(ros_node::toPointCloud2(renderScene(start * moved, scene), header("camera_optical", stamp)));
-    ASSERT_TRUE(waitFor([&] {
-        detect = std_srvs::Trigger();
-        return ros::service::call(detect_service, detect) && rects.snapshot().count(stamp) > 0;
-    }, 20.0));
+    ASSERT_TRUE(waitFor(
+        [&] {
+            detect = std_srvs::Trigger();
+            return ros::service::call(detect_service, detect) && rects.snapshot().count(stamp) > 0;
+        },
+        20.0));
     ASSERT_TRUE(rects.waitStamp(stamp, 5.0, rect));
     const double after = area(rect);
     std::printf("[ measured ] ~plan: move %.2f m; %.3f m^2 before, %.3f predicted, %.3f realised (%.1f %%)\n",
@@ -654,7 +699,9 @@ protected:
         SceneOptions floor_only;
         floor_only.front_wall = floor_only.side_wall = false;
         const std::vector<std::pair<Eigen::Isometry3d, SceneOptions>> frames = {
-            {cameraPose(0, 0, 0), SceneOptions{}}, {cameraPose(0, 0, 0), floor_only}, {cameraPose(0.3, 0.2, 0.1), SceneOptions{}}};
+            {cameraPose(0, 0, 0), SceneOptions{}},
+            {cameraPose(0, 0, 0), floor_only},
+            {cameraPose(0.3, 0.2, 0.1), SceneOptions{}}};
         for (std::size_t i = 0; i < frames.size(); ++i) {
             const ros::Time t(100.0 + i);
             clouds_.push_back(renderScene(frames[i].first, frames[i].second));
@@ -713,7 +760,8 @@ TEST_F(Bag, CompressedChunksReadTheSame) {
             ASSERT_EQ(got[i].size(), clouds_[i].size());
             std::size_t same = 0;
             for (std::size_t k = 0; k < got[i].size(); ++k)
-                same += (got[i].points[k] == clouds_[i].points[k]) || (!isFinite(got[i].points[k]) && !isFinite(clouds_[i].points[k]));
+                same += (got[i].points[k] == clouds_[i].points[k]) ||
+                        (!isFinite(got[i].points[k]) && !isFinite(clouds_[i].points[k]));
             EXPECT_EQ(same, got[i].size()) << "message " << i << ", compression " << static_cast<int>(compression);
         }
     }
@@ -746,7 +794,6 @@ TEST_F(Bag, BadBagsAndTopicsAreInputErrorsNamingTheProblem) {
     }
     EXPECT_NE(message(cut, "/camera/points").find("cut.bag"), std::string::npos);
 }
-
 
 /// Runs a shell command; returns its exit status and what it printed (stdout + stderr).
 std::pair<int, std::string> runCommand(const std::string &cmd) {
@@ -798,7 +845,8 @@ TEST_F(Bag, DetectBagWritesOneJsonLinePerCloud) {
     EXPECT_NE(text3.find("projsurf: error: " + bag_path_ + ": no topic '/nope'"), std::string::npos) << text3;
     EXPECT_FALSE(std::ifstream(out3).good());
     // The bag's one cloud topic is taken without --topic (issue 14).
-    const auto [rc4, text4] = runCommand("timeout 60 '" + cli + "' detect --bag '" + bag_path_ + "' --calib '" + calib + "'");
+    const auto [rc4, text4] =
+        runCommand("timeout 60 '" + cli + "' detect --bag '" + bag_path_ + "' --calib '" + calib + "'");
     EXPECT_EQ(rc4, 0) << text4;
     EXPECT_EQ(std::count(text4.begin(), text4.end(), '\n'), 3) << text4;
     EXPECT_NE(text4.find("\"topic\":\"/camera/points\""), std::string::npos) << text4;
@@ -817,6 +865,7 @@ int main(int argc, char **argv) {
         const double seconds = std::stod(argv[2]);
         return waitFor([] { return ros::master::check(); }, seconds) ? 0 : 1;
     }
-    ros::init(argc, argv, "projsurf_test_client", ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
+    ros::init(argc, argv, "projsurf_test_client",
+              ros::init_options::AnonymousName | ros::init_options::NoSigintHandler);
     return RUN_ALL_TESTS();
 }

@@ -24,8 +24,8 @@ struct BagOptions {
     std::string topic = "/camera/depth/image_rect";  // the node's depth/image_rect under /camera
     std::string info_topic;                          // default: camera_info beside the depth topic
     std::string frame_id = "camera_depth_optical_frame";
-    double fps = 30.0;    // Hz, a depth camera's usual rate
-    double start = 1.0;   // s, the first frame's stamp (0 would read as "no stamp")
+    double fps = 30.0;   // Hz, a depth camera's usual rate
+    double start = 1.0;  // s, the first frame's stamp (0 would read as "no stamp")
 };
 
 /// The depth PNGs of `dir`, in name order (0001.png, 0002.png, ... or any names that sort).
@@ -56,7 +56,8 @@ void run(const BagOptions &o) {
 
     BagWriter bag;
     const std::uint32_t depth_conn = bag.addConnection(o.topic, kImageType, kImageMd5, kImageDefinition);
-    const std::uint32_t info_conn = bag.addConnection(info_topic, kCameraInfoType, kCameraInfoMd5, kCameraInfoDefinition);
+    const std::uint32_t info_conn =
+        bag.addConnection(info_topic, kCameraInfoType, kCameraInfoMd5, kCameraInfoDefinition);
     const double to_mm = 1000.0 / camera.depth_scale;  // the bag holds millimetres (16UC1, REP 118)
     for (std::size_t k = 0; k < frames.size(); ++k) {
         const std::string name = frames[k].string();

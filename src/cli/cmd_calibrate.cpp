@@ -16,12 +16,12 @@
 #include "projsurf/core/gray_code.hpp"
 #include "projsurf/core/projector_fit.hpp"
 #include "projsurf/frontend/resolution.hpp"
-#include "projsurf/io/pattern_files.hpp"
-#include "projsurf/io/structured_report.hpp"
 #include "projsurf/io/calibration_report.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"
+#include "projsurf/io/pattern_files.hpp"
+#include "projsurf/io/structured_report.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/render.hpp"
 
@@ -36,9 +36,9 @@ struct CalibrateOptions {
     std::string captures;
     std::string out;
     std::string write_picture;
-    std::string fov = "39.3,24.0";     // deg, Aaxa P300 (paper 3.1.2)
+    std::string fov = "39.3,24.0";        // deg, Aaxa P300 (paper 3.1.2)
     std::string resolution = "1280,800";  // px, Aaxa P300
-    int threshold = 50;                // paper 3.1.1
+    int threshold = 50;                   // paper 3.1.1
     bool resolution_given = false;
 };
 
@@ -47,8 +47,7 @@ std::pair<double, double> parseTwo(const std::string &option, const std::string 
     std::stringstream ss(text);
     double a = 0, b = 0;
     char comma = 0;
-    if (!(ss >> a >> comma >> b) || comma != ',' || !std::isfinite(a) || !std::isfinite(b) ||
-        !(ss >> std::ws).eof())
+    if (!(ss >> a >> comma >> b) || comma != ',' || !std::isfinite(a) || !std::isfinite(b) || !(ss >> std::ws).eof())
         throw InputError(option, "expected two numbers separated by a comma, got '" + text + "'");
     return {a, b};
 }
@@ -73,8 +72,9 @@ std::string fmt(const char *format, double a, double b = 0, double c = 0, double
 /// docs/calibration.md for why that size.
 void writePicture(const CalibrateOptions &o) {
     if (!o.captures.empty() || !o.out.empty())
-        throw InputError("--write-picture", "only writes the calibration picture; run calibrate --captures DIR --out "
-                                            "calib.yaml separately");
+        throw InputError("--write-picture",
+                         "only writes the calibration picture; run calibrate --captures DIR --out "
+                         "calib.yaml separately");
     const auto [w, h] = frontend::parseResolution("--resolution", o.resolution);
     requireWritableLocation(o.write_picture);
     if (!cv::haveImageWriter(o.write_picture))
@@ -96,7 +96,8 @@ void runStructured(const CalibrateOptions &o, int res_w, int res_h) {
     const PatternList list = readPatternList(list_path);
     if (o.resolution_given && (res_w != list.width || res_h != list.height))
         throw InputError(list_path, "patterns are " + std::to_string(list.width) + "x" + std::to_string(list.height) +
-                                        " but --resolution says " + std::to_string(res_w) + "x" + std::to_string(res_h));
+                                        " but --resolution says " + std::to_string(res_w) + "x" +
+                                        std::to_string(res_h));
     const CameraIntrinsics camera = readCamera((dir / "camera.yaml").string());
     const std::vector<PoseCaptures> poses = readPoseCaptures(o.captures, list, camera.width, camera.height);
     std::vector<ProjectorCorrespondence> pairs;
@@ -234,11 +235,12 @@ void run(const CalibrateOptions &o) {
         if (cal.captures[k].disc.candidates > 1)
             std::cerr << "projsurf: warning: " << rgb_paths[k] << ": " << cal.captures[k].disc.candidates
                       << " bright blobs; used the largest round one"
-                      << fmt(" at (%.0f, %.0f) px", cal.captures[k].disc.centroid.x(), cal.captures[k].disc.centroid.y())
+                      << fmt(" at (%.0f, %.0f) px", cal.captures[k].disc.centroid.x(),
+                             cal.captures[k].disc.centroid.y())
                       << " (raise --threshold or darken the room if that is not the disc)\n";
     const std::string verdict = calibrationVerdict(cal.axis);
-    std::cout << fmt("  fit: residual rms %.2f mm, max %.2f mm, centroids span %.2f m along the axis", cal.axis.rms_m * 1000,
-                     cal.axis.max_m * 1000, cal.axis.spread_m)
+    std::cout << fmt("  fit: residual rms %.2f mm, max %.2f mm, centroids span %.2f m along the axis",
+                     cal.axis.rms_m * 1000, cal.axis.max_m * 1000, cal.axis.spread_m)
               << ": " << verdict << "\n";
     if (verdict == "redo") {
         // Written (to look at), but not to be used: exit 3, so a script stops here.
@@ -257,19 +259,22 @@ void addCalibrateCommand(CLI::App &app) {
     auto *sub = app.add_subcommand(
         "calibrate",
         "find the projector's axis from captures of the calibration picture (--write-picture: write that picture)");
-    sub->footer("Exit status: 0 when the calibration is written and its fit is good or acceptable; 3 when it is "
-                "written but the captures disagree (fit.verdict: redo; take them again before using it, see "
-                "docs/calibration.md); 2 for bad input (nothing written).");
-    sub->add_option("--captures", opts->captures,
-                    "folder with camera.yaml and capture_k_rgb.png / capture_k_depth.png, k = 0..N-1 (N >= 3); or "
-                    "with patterns.yaml and pose_k/ (structured light, see projsurf patterns); required unless --write-picture");
+    sub->footer(
+        "Exit status: 0 when the calibration is written and its fit is good or acceptable; 3 when it is "
+        "written but the captures disagree (fit.verdict: redo; take them again before using it, see "
+        "docs/calibration.md); 2 for bad input (nothing written).");
+    sub->add_option(
+        "--captures", opts->captures,
+        "folder with camera.yaml and capture_k_rgb.png / capture_k_depth.png, k = 0..N-1 (N >= 3); or "
+        "with patterns.yaml and pose_k/ (structured light, see projsurf patterns); required unless --write-picture");
     sub->add_option("--out", opts->out, "calibration YAML to write; required unless --write-picture");
     sub->add_option("--write-picture", opts->write_picture,
                     "write the calibration picture (black, one white disc in the centre) at --resolution "
                     "to this PNG, and nothing else");
     sub->add_option("--fov-deg", opts->fov, "projector's full horizontal,vertical field of view, deg")
         ->capture_default_str();
-    auto *res = sub->add_option("--resolution", opts->resolution, "projector framebuffer width,height, px")->capture_default_str();
+    auto *res = sub->add_option("--resolution", opts->resolution, "projector framebuffer width,height, px")
+                    ->capture_default_str();
     sub->add_option("--threshold", opts->threshold, "grey level that separates the disc from the background (0-254)")
         ->capture_default_str();
     sub->callback([opts, res] {

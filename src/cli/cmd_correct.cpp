@@ -11,10 +11,10 @@
 
 #include "cli/commands.hpp"
 #include "projsurf/core/beam_blanking.hpp"
-#include "projsurf/frontend/framebuffer_render.hpp"
-#include "projsurf/frontend/progress.hpp"
 #include "projsurf/core/keystone.hpp"
 #include "projsurf/core/keystone_warper.hpp"
+#include "projsurf/frontend/framebuffer_render.hpp"
+#include "projsurf/frontend/progress.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
@@ -32,7 +32,7 @@ namespace {
 struct CorrectOptions {
     std::string calib, detection, image, video, out, json;
     std::string cloud, depth, camera;  // the current cloud, for blanking what stands in the beam
-    double fps = 0.0;  // output frame rate for video; 0 = the input's (25 when unknown)
+    double fps = 0.0;                  // output frame rate for video; 0 = the input's (25 when unknown)
 };
 
 nlohmann::json corners(const Corners2 &c) {
@@ -93,14 +93,15 @@ frontend::FramebufferRender keystoneFor(const Projector &projector, const Detect
 std::string letterboxNote(const frontend::FramebufferRender &r, const DetectionFile &det) {
     if (!r.letterboxed) return "";
     char buf[200];
-    std::snprintf(buf, sizeof buf, " (letterboxed: the %dx%d picture fills %.2f x %.2f m of the %.2f x %.2f m rectangle)",
+    std::snprintf(buf, sizeof buf,
+                  " (letterboxed: the %dx%d picture fills %.2f x %.2f m of the %.2f x %.2f m rectangle)",
                   r.keystone->picture.width, r.keystone->picture.height, r.keystone->shown.width,
                   r.keystone->shown.height, det.rectangle.width, det.rectangle.height);
     return buf;
 }
 
-void runVideo(const CorrectOptions &o, const std::string &input, const Projector &projector,
-              const DetectionFile &det, const Blanking &blanking) {
+void runVideo(const CorrectOptions &o, const std::string &input, const Projector &projector, const DetectionFile &det,
+              const Blanking &blanking) {
     FrameSource source(input);
     cv::Mat frame;
     if (!source.read(frame)) throw InputError(input, "no frame could be read");
@@ -121,7 +122,8 @@ void runVideo(const CorrectOptions &o, const std::string &input, const Projector
     cv::Mat fb;
     do {
         if (frame.size() != k.picture)
-            throw InputError(source.current(), "frame " + std::to_string(n) + " has a different size from the first frame");
+            throw InputError(source.current(),
+                             "frame " + std::to_string(n) + " has a different size from the first frame");
         warper.warp(frame, fb);
         if (!blanking.mask.empty()) applyBlanking(fb, blanking.mask);
         if (sequence_out) {
@@ -167,7 +169,8 @@ void run(const CorrectOptions &o) {
                 throw InputError(o.out, "an output pattern needs exactly one frame-number field such as %04d");
             requireImageWriter(o.out);
         } else if (videoFourcc(o.out) == 0) {
-            throw InputError(o.out, "a corrected video needs a .avi, .mkv, .mp4 or .mov output (or a %04d.png pattern)");
+            throw InputError(o.out,
+                             "a corrected video needs a .avi, .mkv, .mp4 or .mov output (or a %04d.png pattern)");
         }
         const Blanking blanking = blankingFor(o, projector, det);
         runVideo(o, input, projector, det, blanking);

@@ -10,15 +10,15 @@
 #include <stdexcept>
 
 #include "cli/commands.hpp"
+#include "projsurf/eval/demo.hpp"
+#include "projsurf/eval/plan_demo.hpp"
+#include "projsurf/eval/plot.hpp"
+#include "projsurf/eval/walk_in.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/overlay.hpp"
-#include "projsurf/eval/plot.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/eval/demo.hpp"
-#include "projsurf/eval/plan_demo.hpp"
-#include "projsurf/eval/walk_in.hpp"
 
 namespace fs = std::filesystem;
 
@@ -82,8 +82,8 @@ void run(const DemoCliOptions &o) {
         std::vector<cv::Mat> row;
         for (std::size_t k = 0; k < walk.size(); ++k) {
             char caption[160];
-            std::snprintf(caption, sizeof caption, "(%zu) walking in: %d px blanked, %ld lit px on the person",
-                          k + 1, walk[k].blanked_pixels, walk[k].score.lit_on_person);
+            std::snprintf(caption, sizeof caption, "(%zu) walking in: %d px blanked, %ld lit px on the person", k + 1,
+                          walk[k].blanked_pixels, walk[k].score.lit_on_person);
             row.push_back(withCaption(walk[k].view, caption));
         }
         cv::hconcat(row, walk_in);
@@ -102,7 +102,8 @@ void run(const DemoCliOptions &o) {
             char before[120], after[160];
             std::snprintf(before, sizeof before, "(a) where the robot stands: %.2f m^2", r.detection.rectangle.area());
             std::snprintf(after, sizeof after, "(b) after the planned move (%.2f m): %.2f m^2 (%.2f predicted)",
-                          planned.plan.translation.norm(), planned.after.rectangle.area(), planned.plan.predicted.area());
+                          planned.plan.translation.norm(), planned.after.rectangle.area(),
+                          planned.plan.predicted.area());
             cv::hconcat(withCaption(r.audience_corrected, before), withCaption(planned.view_after, after), plan_views);
         }
     }
@@ -121,22 +122,24 @@ void run(const DemoCliOptions &o) {
         writeImageAtomic((out / "walk_in.png").string(), walk_in);
         writeImageAtomic((out / "walk_in_compare.png").string(), walk_compare);
     }
-    writeFileAtomic((out / "detection.json").string(), detectionToJson(r.detection, r.config, &believed).dump(2) + "\n");
+    writeFileAtomic((out / "detection.json").string(),
+                    detectionToJson(r.detection, r.config, &believed).dump(2) + "\n");
 
     // Summary.
     std::printf("projsurf demo: scenario '%s', wall %.2f m away at %.2f deg, seed %u\n", r.scenario.name.c_str(),
                 o.distance, o.angle_deg, o.seed);
     if (r.calibration.ok)
-        std::printf("calibration from %d simulated captures: axis off by %.2f deg, lens centre off by %.1f mm "
-                    "(worst centroid %.1f mm from the axis)\n",
-                    d.captures, r.calibration.axis_error_deg, 1000.0 * r.calibration.origin_error_m,
-                    1000.0 * r.calibration.max_residual_m);
+        std::printf(
+            "calibration from %d simulated captures: axis off by %.2f deg, lens centre off by %.1f mm "
+            "(worst centroid %.1f mm from the axis)\n",
+            d.captures, r.calibration.axis_error_deg, 1000.0 * r.calibration.origin_error_m,
+            1000.0 * r.calibration.max_residual_m);
     else
         std::printf("calibration failed (%s); using the true projector\n", r.calibration.message.c_str());
     if (r.detection.found)
-        std::printf("detected: %.2f x %.2f m = %.3f m^2 on a plane at %.1f deg (%d inliers)\n", r.detection.rectangle.width,
-                    r.detection.rectangle.height, r.detection.rectangle.area(), r.detection.orientation_deg,
-                    r.detection.inliers);
+        std::printf("detected: %.2f x %.2f m = %.3f m^2 on a plane at %.1f deg (%d inliers)\n",
+                    r.detection.rectangle.width, r.detection.rectangle.height, r.detection.rectangle.area(),
+                    r.detection.orientation_deg, r.detection.inliers);
     else
         std::printf("not detected: %s\n", r.detection.reason.c_str());
     if (r.truth.found)
@@ -148,10 +151,11 @@ void run(const DemoCliOptions &o) {
     printErrors("uncorrected (as is):", r.uncorrected_on_wall);
     if (!r.keystone_problem.empty()) std::printf("  (no correction: %s)\n", r.keystone_problem.c_str());
     for (std::size_t k = 0; k < walk.size(); ++k)
-        std::printf("walk-in frame %zu (person at x = %.2f m): %d px blanked in %.2f ms; %ld of %ld px on the person "
-                    "lit; %.1f %% of the picture 10 cm clear of them lit\n",
-                    k + 1, walk[k].person_x, walk[k].blanked_pixels, walk[k].mask_ms, walk[k].score.lit_on_person,
-                    walk[k].score.on_person, 100.0 * walk[k].score.farLitShare());
+        std::printf(
+            "walk-in frame %zu (person at x = %.2f m): %d px blanked in %.2f ms; %ld of %ld px on the person "
+            "lit; %.1f %% of the picture 10 cm clear of them lit\n",
+            k + 1, walk[k].person_x, walk[k].blanked_pixels, walk[k].mask_ms, walk[k].score.lit_on_person,
+            walk[k].score.on_person, 100.0 * walk[k].score.farLitShare());
     if (planned.plan.found)
         std::printf("plan: move %.2f m: predicted %.3f m^2, found there %.3f m^2 (%.3f m^2 where it stands)\n",
                     planned.plan.translation.norm(), planned.plan.predicted.area(),
@@ -160,10 +164,12 @@ void run(const DemoCliOptions &o) {
         std::printf("plan: %s\n", planned.plan.reason.c_str());
     std::printf("time per stage (ms):");
     for (const auto &[stage, ms] : r.stage_ms) std::printf("\n  %-58s %8.1f", stage.c_str(), ms);
-    std::printf("\nwrote %s/: audience.png overlay.png framebuffer.png camera_rgb.png picture.png calib.yaml "
-                "detection.json%s\n",
-                o.out.c_str(), (std::string(walk.empty() ? "" : " walk_in.png walk_in_compare.png") +
-                                (plan_views.empty() ? "" : " plan.png")).c_str());
+    std::printf(
+        "\nwrote %s/: audience.png overlay.png framebuffer.png camera_rgb.png picture.png calib.yaml "
+        "detection.json%s\n",
+        o.out.c_str(),
+        (std::string(walk.empty() ? "" : " walk_in.png walk_in_compare.png") + (plan_views.empty() ? "" : " plan.png"))
+            .c_str());
     std::fflush(stdout);
 }
 

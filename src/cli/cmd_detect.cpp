@@ -11,16 +11,16 @@
 #include "projsurf/core/colour_registration.hpp"
 #include "projsurf/core/gravity.hpp"
 #include "projsurf/frontend/aspect.hpp"
+#include "projsurf/frontend/depth_image_cloud.hpp"
+#include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
+#include "projsurf/frontend/stamp_pairing.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/overlay.hpp"
-#include "projsurf/frontend/depth_image_cloud.hpp"
-#include "projsurf/frontend/detection_summary.hpp"
-#include "projsurf/frontend/stamp_pairing.hpp"
 #include "projsurf/io/rosbag_clouds.hpp"
 #include "projsurf/io/rosbag_depth.hpp"
 #include "projsurf/io/yaml_files.hpp"
@@ -31,8 +31,8 @@ namespace {
 constexpr double kTiltWarningDeg = 5.0;  ///< deg, a floor this far from level means the camera is not level
 
 struct DetectOptions {
-    std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity, method = "default",
-        hull = "concave", bag, topic, info_topic, suitability;
+    std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity, method = "default", hull = "concave",
+                                                                                  bag, topic, info_topic, suitability;
     DetectorConfig config;
     double min_width = -1.0, min_area = -1.0;  ///< m, m^2; < 0: the method's default (frontend/minimum_size.hpp)
 };
@@ -68,8 +68,9 @@ void warnIfImplausibleDepth(const Cloud &cloud, const std::string &camera_file) 
     std::nth_element(z.begin(), z.begin() + z.size() / 2, z.end());
     const float median = z[z.size() / 2];
     if (median > 10.0f || median < 0.2f)
-        std::fprintf(stderr, "projsurf: warning: %s: the median depth is %.2f m, outside what RGB-D cameras read; "
-                             "check its depth_scale (depth PNG units per metre)\n",
+        std::fprintf(stderr,
+                     "projsurf: warning: %s: the median depth is %.2f m, outside what RGB-D cameras read; "
+                     "check its depth_scale (depth PNG units per metre)\n",
                      camera_file.c_str(), median);
 }
 
@@ -77,19 +78,23 @@ void warnIfImplausibleDepth(const Cloud &cloud, const std::string &camera_file) 
 /// it is not used at all (one warning line). False when it is not used.
 bool attachRegisteredColour(Cloud &cloud, const cv::Mat &color, const std::string &file) {
     if (!cloud.organized()) {
-        std::fprintf(stderr, "projsurf: warning: %s: colour needs an organized cloud or a depth image to be registered to; not used\n",
-                     file.c_str());
+        std::fprintf(
+            stderr,
+            "projsurf: warning: %s: colour needs an organized cloud or a depth image to be registered to; not used\n",
+            file.c_str());
         return false;
     }
     const RegistrationResult r = checkColourRegistration(cloud, color);
     if (r.checked && !r.registered) {
-        std::fprintf(stderr, "projsurf: warning: %s: colour is not registered to the depth (%s); not used\n", file.c_str(),
-                     r.summary().c_str());
+        std::fprintf(stderr, "projsurf: warning: %s: colour is not registered to the depth (%s); not used\n",
+                     file.c_str(), r.summary().c_str());
         return false;
     }
     if (!r.checked)
-        std::fprintf(stderr, "projsurf: warning: %s: cannot check that the colour is registered to the depth (%s); used as given\n",
-                     file.c_str(), r.summary().c_str());
+        std::fprintf(
+            stderr,
+            "projsurf: warning: %s: cannot check that the colour is registered to the depth (%s); used as given\n",
+            file.c_str(), r.summary().c_str());
     return attachColour(cloud, color);
 }
 
@@ -116,7 +121,8 @@ BagConnection bagTopic(const DetectOptions &o) {
     std::string list;
     for (const BagConnection &c : usable) list += (list.empty() ? "" : ", ") + c.topic + " (" + c.type + ")";
     if (!o.topic.empty())
-        throw InputError(o.bag, "no topic '" + o.topic + "' in the bag (usable topics: " + (list.empty() ? "none" : list) + ")");
+        throw InputError(
+            o.bag, "no topic '" + o.topic + "' in the bag (usable topics: " + (list.empty() ? "none" : list) + ")");
     if (usable.size() == 1) return usable.front();
     if (usable.empty())
         throw InputError(o.bag, "has no sensor_msgs/PointCloud2 topic and no depth sensor_msgs/Image topic");
@@ -135,7 +141,8 @@ std::string cameraInfoTopic(const DetectOptions &o, const std::string &depth_top
         infos.push_back(c.topic);
     }
     if (infos.size() == 1) return infos.front();
-    throw InputError(o.bag, "no camera_info for " + depth_topic + " (looked for " + beside + "; give --camera-info-topic)");
+    throw InputError(o.bag,
+                     "no camera_info for " + depth_topic + " (looked for " + beside + "; give --camera-info-topic)");
 }
 
 /// --bag: one detection per cloud (or depth image) of the topic, one JSON object per line
@@ -150,13 +157,16 @@ void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &
     SurfaceDetector detector(projector, cfg);  // one for the whole bag: its buffers are reused
     auto detectOne = [&](const Cloud &cloud, const BagCloudInfo &info) {
         const Eigen::Vector3d down = frontend::resolveGravity(gravity, cloud).gravity;
-        Detection det = detectChecked(detector, cloud, down, o.bag + ":" + topic.topic + "#" + std::to_string(info.index));
+        Detection det =
+            detectChecked(detector, cloud, down, o.bag + ":" + topic.topic + "#" + std::to_string(info.index));
         frontend::enforceMinimumSize(det, minimum, "--min-width", "--min-area");
         nlohmann::json j = detectionToJson(det, cfg, &projector);
         j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", topic.topic}};
         found += det.found ? 1 : 0;
-        if (o.json.empty()) std::cout << j.dump() << "\n" << std::flush;
-        else lines += j.dump() + "\n";
+        if (o.json.empty())
+            std::cout << j.dump() << "\n" << std::flush;
+        else
+            lines += j.dump() + "\n";
     };
     std::size_t n = 0;
     const char *what = "clouds";
@@ -182,8 +192,9 @@ void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &
             detectOne(frontend::depthImageToCloud(source, m.depth, cam), info);
         });
         if (unpaired > 0)
-            std::fprintf(stderr, "projsurf: warning: %s: %zu of %zu depth images had no camera_info of their stamp on %s; "
-                                 "the nearest was used\n",
+            std::fprintf(stderr,
+                         "projsurf: warning: %s: %zu of %zu depth images had no camera_info of their stamp on %s; "
+                         "the nearest was used\n",
                          o.bag.c_str(), unpaired, n, info_topic.c_str());
     } else {
         n = forEachBagCloud(o.bag, topic.topic, detectOne);
@@ -199,8 +210,10 @@ void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &
 void run(const DetectOptions &o, const CLI::App &sub) {
     // Validate every input before any work, and before any output is written.
     if (!o.bag.empty()) {
-        if (!o.cloud.empty() || !o.depth.empty()) throw InputError("arguments", "give only one of --cloud, --depth or --bag");
-        if (!o.overlay.empty() || !o.rgb.empty()) throw InputError("arguments", "--overlay and --rgb are for one cloud, not --bag");
+        if (!o.cloud.empty() || !o.depth.empty())
+            throw InputError("arguments", "give only one of --cloud, --depth or --bag");
+        if (!o.overlay.empty() || !o.rgb.empty())
+            throw InputError("arguments", "--overlay and --rgb are for one cloud, not --bag");
     } else if (!o.topic.empty() || !o.info_topic.empty()) {
         throw InputError("arguments", "--topic and --camera-info-topic go with --bag");
     } else if (o.cloud.empty() == o.depth.empty()) {
@@ -208,16 +221,26 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     }
     if (!o.depth.empty() && o.camera.empty()) throw InputError("arguments", "--depth needs --camera camera.yaml");
     DetectorConfig cfg = o.config;
-    if (o.method == "paper") cfg.method = Method::Paper;
-    else if (o.method == "default") cfg.method = Method::Default;
-    else throw InputError("--method", "expected 'default' or 'paper', got '" + o.method + "'");
-    if (o.hull == "concave") cfg.paper.hull = HullKind::Concave;
-    else if (o.hull == "convex") cfg.paper.hull = HullKind::Convex;
-    else throw InputError("--hull", "expected 'concave' or 'convex', got '" + o.hull + "'");
-    if (o.suitability == "off") cfg.suitability.mode = SuitabilityMode::Off;
-    else if (o.suitability == "avoid" || o.suitability.empty()) cfg.suitability.mode = SuitabilityMode::Avoid;
-    else if (o.suitability == "prefer") cfg.suitability.mode = SuitabilityMode::Prefer;
-    else throw InputError("--suitability", "expected 'off', 'avoid' or 'prefer', got '" + o.suitability + "'");
+    if (o.method == "paper")
+        cfg.method = Method::Paper;
+    else if (o.method == "default")
+        cfg.method = Method::Default;
+    else
+        throw InputError("--method", "expected 'default' or 'paper', got '" + o.method + "'");
+    if (o.hull == "concave")
+        cfg.paper.hull = HullKind::Concave;
+    else if (o.hull == "convex")
+        cfg.paper.hull = HullKind::Convex;
+    else
+        throw InputError("--hull", "expected 'concave' or 'convex', got '" + o.hull + "'");
+    if (o.suitability == "off")
+        cfg.suitability.mode = SuitabilityMode::Off;
+    else if (o.suitability == "avoid" || o.suitability.empty())
+        cfg.suitability.mode = SuitabilityMode::Avoid;
+    else if (o.suitability == "prefer")
+        cfg.suitability.mode = SuitabilityMode::Prefer;
+    else
+        throw InputError("--suitability", "expected 'off', 'avoid' or 'prefer', got '" + o.suitability + "'");
     warnIfIgnored(sub, cfg.method);
     const frontend::GravityChoice gravity_choice = frontend::parseGravityChoice("--gravity", o.gravity);
     if (!o.aspect.empty()) cfg.aspect = frontend::parseAspect("--aspect", o.aspect);
@@ -227,8 +250,9 @@ void run(const DetectOptions &o, const CLI::App &sub) {
 
     const Projector projector = readCalibration(o.calib);
     if (readCalibrationVerdict(o.calib) == "redo")
-        std::fprintf(stderr, "projsurf: warning: %s: its captures disagree (fit verdict redo); the picture may land "
-                             "off the detected area until you calibrate again\n",
+        std::fprintf(stderr,
+                     "projsurf: warning: %s: its captures disagree (fit verdict redo); the picture may land "
+                     "off the detected area until you calibrate again\n",
                      o.calib.c_str());
     frontend::MinimumSize minimum = frontend::defaultMinimumSize(cfg.method);
     if (o.min_width >= 0.0) minimum.width = o.min_width;
@@ -247,11 +271,14 @@ void run(const DetectOptions &o, const CLI::App &sub) {
         color = readImage(o.rgb, cv::IMREAD_COLOR);
         if (cloud.organized() && (color.cols != cloud.width || color.rows != cloud.height))
             throw InputError(o.rgb, "colour image is " + std::to_string(color.cols) + "x" + std::to_string(color.rows) +
-                                        ", the cloud is " + std::to_string(cloud.width) + "x" + std::to_string(cloud.height));
+                                        ", the cloud is " + std::to_string(cloud.width) + "x" +
+                                        std::to_string(cloud.height));
         if (!attachRegisteredColour(cloud, color, o.rgb)) color.release();
     }
     if (!o.suitability.empty() && o.suitability != "off" && !cloud.hasColour() && cfg.method == Method::Default)
-        std::fprintf(stderr, "projsurf: warning: --suitability %s needs registered colour (--rgb); the surface is judged by depth only\n",
+        std::fprintf(stderr,
+                     "projsurf: warning: --suitability %s needs registered colour (--rgb); the surface is judged by "
+                     "depth only\n",
                      o.suitability.c_str());
 
     const frontend::ResolvedGravity resolved = frontend::resolveGravity(gravity_choice, cloud);
@@ -285,21 +312,25 @@ void addDetectCommand(CLI::App &app) {
     sub->add_option("--cloud", o->cloud, "Point cloud (PCD or PLY, camera optical frame, metres)");
     sub->add_option("--depth", o->depth, "16-bit depth PNG (0 = no reading); needs --camera");
     sub->add_option("--camera", o->camera, "Camera intrinsics YAML for --depth");
-    sub->add_option("--bag", o->bag, "ROS 1 bag: detect on every cloud (or depth image) of --topic, one JSON line per message");
+    sub->add_option("--bag", o->bag,
+                    "ROS 1 bag: detect on every cloud (or depth image) of --topic, one JSON line per message");
     sub->add_option("--topic", o->topic,
                     "--bag's sensor_msgs/PointCloud2 topic, or depth sensor_msgs/Image topic (16UC1 mm or 32FC1 m); "
                     "optional when the bag has one such topic");
     sub->add_option("--camera-info-topic", o->info_topic,
                     "--bag's camera_info for a depth topic (default: camera_info beside it, or the bag's only one)");
-    sub->add_option("--rgb", o->rgb, "Colour PNG registered to the cloud (checked): surface suitability and the overlay");
-    sub->add_option("--suitability", o->suitability,
-                    "With registered colour: off | avoid (default: no picture over dark, glaring, textured or saturated wall) | "
-                    "prefer (trade a little area for a cleaner wall; docs/suitability.md)");
+    sub->add_option("--rgb", o->rgb,
+                    "Colour PNG registered to the cloud (checked): surface suitability and the overlay");
+    sub->add_option(
+        "--suitability", o->suitability,
+        "With registered colour: off | avoid (default: no picture over dark, glaring, textured or saturated wall) | "
+        "prefer (trade a little area for a cleaner wall; docs/suitability.md)");
     sub->add_option("--calib", o->calib, "Projector calibration YAML")->required();
     sub->add_option("--aspect", o->aspect, "Picture aspect ratio W:H (default: the framebuffer's)");
     sub->add_option("--json", o->json, "Write the detection JSON here (else it goes to stdout)");
     sub->add_option("--overlay", o->overlay, "Write a picture of what was detected here (PNG)");
-    sub->add_option("--gravity", o->gravity, "Gravity in the camera frame gx,gy,gz (default 0,1,0), or 'auto' (from the floor)");
+    sub->add_option("--gravity", o->gravity,
+                    "Gravity in the camera frame gx,gy,gz (default 0,1,0), or 'auto' (from the floor)");
     sub->add_option("--method", o->method, "default | paper (the paper's steps, for reproduction)");
     sub->add_option("--hull", o->hull, "paper method: concave | convex hull of the plane");
     sub->add_option("--min-width", o->min_width,
@@ -313,11 +344,15 @@ void addDetectCommand(CLI::App &app) {
     sub->add_option("--max-tilt", c.max_tilt, "Vertical tolerance, rad (paper 3.2.1)")->check(CLI::Range(0.0, 1.5));
     sub->add_option("--seed", c.seed, "RANSAC random seed");
     sub->add_option("--voxel-leaf", c.paper.voxel_leaf, "paper: voxel side, m")->check(CLI::Range(0.001, 1.0));
-    sub->add_option("--ransac-distance", c.paper.ransac_distance, "paper: RANSAC inlier distance, m")->check(CLI::Range(0.001, 1.0));
-    sub->add_option("--max-outliers", c.paper.max_outliers, "paper: outliers that reject a surface")->check(CLI::NonNegativeNumber);
+    sub->add_option("--ransac-distance", c.paper.ransac_distance, "paper: RANSAC inlier distance, m")
+        ->check(CLI::Range(0.001, 1.0));
+    sub->add_option("--max-outliers", c.paper.max_outliers, "paper: outliers that reject a surface")
+        ->check(CLI::NonNegativeNumber);
     sub->add_option("--cell", c.free_space.cell, "default: free-space raster cell, m")->check(CLI::Range(0.002, 0.5));
-    sub->add_option("--max-planes", c.planes.max_planes, "default: vertical planes considered")->check(CLI::Range(1, 20));
-    sub->add_option("--max-outlier-fraction", c.check.max_outlier_fraction, "default: outlier share that rejects an area")
+    sub->add_option("--max-planes", c.planes.max_planes, "default: vertical planes considered")
+        ->check(CLI::Range(1, 20));
+    sub->add_option("--max-outlier-fraction", c.check.max_outlier_fraction,
+                    "default: outlier share that rejects an area")
         ->check(CLI::Range(0.0, 1.0));
     sub->callback([o, sub] { run(*o, *sub); });
 }

@@ -3,25 +3,25 @@
 // Markdown report with charts beside the paper's published numbers.
 #include <chrono>
 #include <cmath>
-#include <thread>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <thread>
 
 #include "cli/commands.hpp"
-#include "projsurf/frontend/progress.hpp"
-#include "projsurf/io/errors.hpp"
+#include "projsurf/eval/colour_suite.hpp"
+#include "projsurf/eval/experiments.hpp"
 #include "projsurf/eval/labelled_eval.hpp"
+#include "projsurf/eval/projector_eval.hpp"
 #include "projsurf/eval/real_gallery.hpp"
 #include "projsurf/eval/real_labels.hpp"
-#include "projsurf/eval/report.hpp"
-#include "projsurf/eval/experiments.hpp"
 #include "projsurf/eval/realistic_suite.hpp"
-#include "projsurf/eval/colour_suite.hpp"
-#include "projsurf/eval/projector_eval.hpp"
+#include "projsurf/eval/report.hpp"
+#include "projsurf/frontend/progress.hpp"
+#include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
@@ -32,8 +32,8 @@ namespace {
 
 struct EvalOptions {
     std::string out;
-    int rounds = 10;       // noise seeds per pose (paper: 10 detection rounds per pose)
-    bool quick = false;    // 2 rounds, 2 m poses only (tests, CI)
+    int rounds = 10;     // noise seeds per pose (paper: 10 detection rounds per pose)
+    bool quick = false;  // 2 rounds, 2 m poses only (tests, CI)
     unsigned seed = 1;
     std::string real_dir = "../shared/data/real";  // relative to the working directory
     bool real_dir_given = false;
@@ -92,7 +92,8 @@ void run(const EvalOptions &o, const std::string &command) {
         throw InputError(o.labels_dir, "is not a directory (--labels)");
     // Bad label files are reported before the long simulation runs.
     const std::string labels_dir = o.labels_dir_given ? o.labels_dir : defaultLabelsDir(o.labels_dir);
-    const std::vector<std::string> labels = labels_dir.empty() ? std::vector<std::string>{} : listLabelFiles(labels_dir);
+    const std::vector<std::string> labels =
+        labels_dir.empty() ? std::vector<std::string>{} : listLabelFiles(labels_dir);
     std::vector<std::string> label_frames;
     for (const std::string &l : labels) label_frames.push_back(readRealLabel(l).frame);
 
@@ -100,7 +101,8 @@ void run(const EvalOptions &o, const std::string &command) {
     // The default real-frame folder is taken from the working directory, and said (before the
     // long simulation) when it is not there.
     if (!o.real_dir_given && !fs::is_directory(o.real_dir, ec))
-        std::fprintf(stderr, "projsurf: note: %s: no such folder (from %s); the report has no real frames (--real-dir)\n",
+        std::fprintf(stderr,
+                     "projsurf: note: %s: no such folder (from %s); the report has no real frames (--real-dir)\n",
                      o.real_dir.c_str(), fs::current_path(ec).string().c_str());
 
     const int rounds = o.quick ? std::min(o.rounds, 2) : o.rounds;
@@ -109,9 +111,9 @@ void run(const EvalOptions &o, const std::string &command) {
     // Drawn on stderr unless --no-progress (a log, too: eval's runs are long).
     std::unique_ptr<frontend::ProgressLine> bar;
     if (!o.no_progress) bar = std::make_unique<frontend::ProgressLine>("eval", "runs", true);
-    const sim::Progress progress = !bar ? sim::Progress() : sim::Progress([&bar](int done, int total, const std::string &what) {
-        bar->update(done, total, what);
-    });
+    const sim::Progress progress =
+        !bar ? sim::Progress()
+             : sim::Progress([&bar](int done, int total, const std::string &what) { bar->update(done, total, what); });
     const sim::EvalResults results = sim::runEval(plan, progress);
     // The realistic suite (realistic sensors and scenes, issue 11), the default method.
     sim::RealisticSuiteOptions ropt = o.quick ? sim::quickRealisticSuite() : sim::RealisticSuiteOptions{};
@@ -134,10 +136,13 @@ void run(const EvalOptions &o, const std::string &command) {
     const std::string &real_dir = o.real_dir;
     const std::vector<std::string> frames = real_dir.empty() ? std::vector<std::string>{} : listFrameFolders(real_dir);
     for (std::size_t i = 0; i < frames.size(); ++i) {
-        if (progress) progress(static_cast<int>(i), static_cast<int>(frames.size()), "real frame " + fs::path(frames[i]).filename().string());
+        if (progress)
+            progress(static_cast<int>(i), static_cast<int>(frames.size()),
+                     "real frame " + fs::path(frames[i]).filename().string());
         gallery.push_back(detectRealFrame(frames[i], sim::exampleProjector(), DetectorConfig{}));
     }
-    if (progress && !frames.empty()) progress(static_cast<int>(frames.size()), static_cast<int>(frames.size()), "real frames");
+    if (progress && !frames.empty())
+        progress(static_cast<int>(frames.size()), static_cast<int>(frames.size()), "real frames");
     if (bar) bar->endLine();
     info.real_dir = frames.empty() ? "" : real_dir;
 
@@ -146,7 +151,9 @@ void run(const EvalOptions &o, const std::string &command) {
     for (std::size_t i = 0; i < labels.size() && !frames.empty(); ++i) {
         // The default labels go with the default frames: a --real-dir of other frames skips them.
         if (!o.labels_dir_given && !fs::is_directory(fs::path(real_dir) / label_frames[i], ec)) continue;
-        if (progress) progress(static_cast<int>(i), static_cast<int>(labels.size()), "labelled " + fs::path(labels[i]).stem().string());
+        if (progress)
+            progress(static_cast<int>(i), static_cast<int>(labels.size()),
+                     "labelled " + fs::path(labels[i]).stem().string());
         labelled.push_back(evaluateLabelledFrame(labels[i], real_dir, DetectorConfig{}, stabilitySeeds()));
     }
     if (progress && !labelled.empty()) {
@@ -184,7 +191,8 @@ void run(const EvalOptions &o, const std::string &command) {
 
 void addEvalCommand(CLI::App &app) {
     auto o = std::make_shared<EvalOptions>();
-    auto *sub = app.add_subcommand("eval", "Re-run the paper's experiments in simulation and write a report with charts");
+    auto *sub =
+        app.add_subcommand("eval", "Re-run the paper's experiments in simulation and write a report with charts");
     sub->add_option("--out", o->out, "Output directory for report.md, charts and gallery/ (created)")->required();
     sub->add_option("--rounds", o->rounds, "Noise seeds per pose (default 10, as in the paper)");
     sub->add_flag("--quick", o->quick, "2 rounds and the 2 m poses only (for tests and CI)");

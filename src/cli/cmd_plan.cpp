@@ -31,16 +31,19 @@ nlohmann::json rectangleJson(const Rectangle &r) {
 }
 
 void run(const PlanCliOptions &o) {
-    if (o.cloud.empty() == o.depth.empty()) throw InputError("arguments", "give exactly one of --cloud FILE or --depth FILE");
+    if (o.cloud.empty() == o.depth.empty())
+        throw InputError("arguments", "give exactly one of --cloud FILE or --depth FILE");
     if (!o.depth.empty() && o.camera.empty()) throw InputError("arguments", "--depth needs --camera camera.yaml");
-    if (!(o.plan.max_move >= 0.0 && o.plan.max_move <= 10.0)) throw InputError("--max-move", "must be between 0 and 10 m");
+    if (!(o.plan.max_move >= 0.0 && o.plan.max_move <= 10.0))
+        throw InputError("--max-move", "must be between 0 and 10 m");
     if (!(o.plan.width >= 0.0 && o.plan.width <= 50.0)) throw InputError("--width", "must be between 0 and 50 m");
     if (!o.json.empty()) requireWritableFile(o.json);
     DetectorConfig cfg;
     if (!o.aspect.empty()) cfg.aspect = frontend::parseAspect("--aspect", o.aspect);
     const Projector projector = readCalibration(o.calib);
     const Cloud cloud = o.cloud.empty() ? readDepthCloud(o.depth, o.camera) : readCloud(o.cloud);
-    const frontend::ResolvedGravity resolved = frontend::resolveGravity(frontend::parseGravityChoice("--gravity", o.gravity), cloud);
+    const frontend::ResolvedGravity resolved =
+        frontend::resolveGravity(frontend::parseGravityChoice("--gravity", o.gravity), cloud);
     if (o.gravity == "auto" && !resolved.floor_found)
         std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
     const Eigen::Vector3d gravity = resolved.gravity;
@@ -67,10 +70,11 @@ void run(const PlanCliOptions &o) {
     outputs.addFile(o.json, j.dump(2) + "\n");
     outputs.commit();
     if (r.found)
-        std::printf("plan: move %.2f m and turn %.1f deg: %.2f x %.2f m (%.2f m^2; %.2f m^2 without moving)\n",
-                    r.translation.norm(),
-                    std::acos(std::max(-1.0, std::min(1.0, (r.rotation.trace() - 1.0) / 2.0))) * 180.0 / 3.14159265358979,
-                    r.predicted.width, r.predicted.height, r.predicted.area(), r.today.area());
+        std::printf(
+            "plan: move %.2f m and turn %.1f deg: %.2f x %.2f m (%.2f m^2; %.2f m^2 without moving)\n",
+            r.translation.norm(),
+            std::acos(std::max(-1.0, std::min(1.0, (r.rotation.trace() - 1.0) / 2.0))) * 180.0 / 3.14159265358979,
+            r.predicted.width, r.predicted.height, r.predicted.area(), r.today.area());
     else
         std::printf("plan: not found: %s\n", r.reason.c_str());
 }

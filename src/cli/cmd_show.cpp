@@ -1,10 +1,10 @@
 // projsurf show: put a framebuffer (image or video) full screen on a display, the way a robot
 // drives its projector (an X display; OpenCV's highgui window).
-#include <chrono>
-#include <cstdlib>
 #include <dlfcn.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <chrono>
+#include <cstdlib>
 #include <iostream>
 #include <opencv2/highgui.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -121,8 +121,9 @@ void run(const ShowOptions &o) {
     const auto screen = xScreenSize(display);
     if (!screen) throw InputError(display, "cannot open this X display");
     if (screen->area() > 0 && screen.value() != image.size())
-        std::cerr << "projsurf: warning: the framebuffer is " << image.cols << "x" << image.rows << " but the screen is "
-                  << screen->width << "x" << screen->height << "; it is stretched to fill the screen\n";
+        std::cerr << "projsurf: warning: the framebuffer is " << image.cols << "x" << image.rows
+                  << " but the screen is " << screen->width << "x" << screen->height
+                  << "; it is stretched to fill the screen\n";
     ::setenv("DISPLAY", display.c_str(), 1);
     if (!std::getenv("XDG_RUNTIME_DIR")) {
         // Qt wants a private runtime directory and warns when it has to pick one itself.
@@ -133,9 +134,7 @@ void run(const ShowOptions &o) {
 
     openFullscreen(image, *screen);
     const auto start = std::chrono::steady_clock::now();
-    auto elapsed = [&] {
-        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    };
+    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     const int frame_ms = std::max(1, static_cast<int>(1000.0 / fps));
     for (;;) {
         cv::imshow(kWindow, image);

@@ -12,11 +12,11 @@
 #include <stdexcept>
 
 #include "cli/commands.hpp"
+#include "projsurf/eval/truth_json.hpp"
 #include "projsurf/frontend/aspect.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
-#include "projsurf/eval/truth_json.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/calibration_captures.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
@@ -38,8 +38,8 @@ struct SimulateOptions {
     double roll_deg = 0.0;   // extra camera roll
     double pitch_deg = 0.0;  // camera pitch, positive looking down
     unsigned seed = 0;
-    std::string calib;       // default: the contract's example projector
-    std::string aspect;      // default: the framebuffer's
+    std::string calib;   // default: the contract's example projector
+    std::string aspect;  // default: the framebuffer's
     std::string picture;
     bool noise_free = false;
     int captures = 0;
@@ -103,7 +103,8 @@ void run(const SimulateOptions &o) {
         throw InputError("--sensor", "expected kinect1, tof, d435 or kinect1-independent, got '" + o.sensor + "'");
     if (o.unit < 0 || o.unit > 1000000) throw InputError("--unit", "must be between 0 and 1000000");
     const std::optional<sim::DepthSensor> realistic =
-        independent || o.noise_free ? std::nullopt : std::optional<sim::DepthSensor>(sim::makeDepthSensor(*kind, o.unit));
+        independent || o.noise_free ? std::nullopt
+                                    : std::optional<sim::DepthSensor>(sim::makeDepthSensor(*kind, o.unit));
     // The independent model at the chosen sensor's camera and range (exact with --noise-free):
     // the frame when there is no realistic sensor, the ground truth's limits, the captures.
     sim::SensorModel sensor = o.noise_free ? sim::SensorModel::ideal() : sim::SensorModel();
@@ -135,10 +136,10 @@ void run(const SimulateOptions &o) {
             // projector's axis meets the wall (or of the true rectangle's centre).
             const Plane &wall = truth.found ? truth.best.plane : scenario->wall;
             const auto axis_hit = intersectRay(wall, projector.origin, projector.direction.normalized());
-            const Eigen::Vector3d target = truth.found ? truth.best.rectangle.center()
-                                                       : axis_hit.value_or(Eigen::Vector3d(0.0, 0.0, o.distance));
-            audience = sim::renderView(scenario->scene, sim::facingView(wall, target, 2.5, scenario->gravity),
-                                       projection);
+            const Eigen::Vector3d target =
+                truth.found ? truth.best.rectangle.center() : axis_hit.value_or(Eigen::Vector3d(0.0, 0.0, o.distance));
+            audience =
+                sim::renderView(scenario->scene, sim::facingView(wall, target, 2.5, scenario->gravity), projection);
         }
     }
     // Calibration captures: a plain wall from N robot positions, 1.2-3.0 m, turned a little.
@@ -167,8 +168,8 @@ void run(const SimulateOptions &o) {
     }
     if (scenario) {
         std::cout << "sensor " << (independent ? std::string(kIndependent) : o.sensor)
-                  << (realistic ? " unit " + std::to_string(o.unit) : std::string()) << " ("
-                  << sensor.camera.width << "x" << sensor.camera.height << "), ";
+                  << (realistic ? " unit " + std::to_string(o.unit) : std::string()) << " (" << sensor.camera.width
+                  << "x" << sensor.camera.height << "), ";
         std::cout << "scenario " << scenario->name << " at " << scenario->distance << " m, " << scenario->angle_deg
                   << " deg: ";
         if (truth.found)
@@ -177,7 +178,8 @@ void run(const SimulateOptions &o) {
         else
             std::cout << "no free rectangle\n";
     }
-    if (!captures.empty()) std::cout << captures.size() << " calibration captures in " << (out / "captures").string() << "\n";
+    if (!captures.empty())
+        std::cout << captures.size() << " calibration captures in " << (out / "captures").string() << "\n";
 }
 
 }  // namespace
@@ -194,8 +196,10 @@ void addSimulateCommand(CLI::App &app) {
     sub->add_option("--seed", opts->seed, "Noise seed (default 0)");
     sub->add_option("--calib", opts->calib, "Projector calibration YAML (default: the contract's example)");
     sub->add_option("--aspect", opts->aspect, "Aspect ratio W:H of the true rectangle (default: the framebuffer's)");
-    sub->add_option("--picture", opts->picture, "Image to project (scaled to the framebuffer), shown in rgb.png and audience.png (a frontal view)");
-    sub->add_flag("--noise-free", opts->noise_free, "Exact depth at the sensor's camera: no noise, quantisation or random dropouts");
+    sub->add_option("--picture", opts->picture,
+                    "Image to project (scaled to the framebuffer), shown in rgb.png and audience.png (a frontal view)");
+    sub->add_flag("--noise-free", opts->noise_free,
+                  "Exact depth at the sensor's camera: no noise, quantisation or random dropouts");
     sub->add_option("--sensor", opts->sensor,
                     "Depth sensor model: kinect1 (default), tof (Kinect v2 class), d435 (RealSense), or "
                     "kinect1-independent (the paper experiments' independent-noise Kinect)");

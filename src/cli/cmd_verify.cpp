@@ -8,9 +8,9 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli/commands.hpp"
-#include "projsurf/frontend/resolution.hpp"
 #include "projsurf/core/keystone.hpp"
 #include "projsurf/core/projected_picture.hpp"
+#include "projsurf/frontend/resolution.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -38,9 +38,8 @@ void run(const VerifyOptions &o) {
         requireWritableFile(o.write_card);
         requireImageWriter(o.write_card);
         writeImageAtomic(o.write_card, verificationCard(wh.width, wh.height));
-        std::cout << "projsurf verify: test card -> " << o.write_card
-                  << "; correct it (projsurf correct --image " << o.write_card
-                  << " ...), project the framebuffer, capture rgb.png and depth.png\n";
+        std::cout << "projsurf verify: test card -> " << o.write_card << "; correct it (projsurf correct --image "
+                  << o.write_card << " ...), project the framebuffer, capture rgb.png and depth.png\n";
         return;
     }
     for (const auto &[name, value] : {std::pair<const char *, const std::string &>{"--calib", o.calib},
@@ -108,16 +107,18 @@ void run(const VerifyOptions &o) {
         const ShapeErrors eq8 = shapeErrors(found.corners);
         const bool passed = worst <= o.tolerance;
         char buf[600];
-        std::snprintf(buf, sizeof buf,
-                      "{\"found\": true, \"corners\": [%s], \"corner_error_m\": [%s], \"max_corner_error_m\": %.4f, "
-                      "\"keystone_pct\": {\"horizontal\": %.3f, \"vertical\": %.3f, \"diagonal\": %.3f}, \"passed\": %s}\n",
-                      corners.c_str(), errors.c_str(), worst, eq8.horizontal_pct, eq8.vertical_pct, eq8.diagonal_pct,
-                      passed ? "true" : "false");
+        std::snprintf(
+            buf, sizeof buf,
+            "{\"found\": true, \"corners\": [%s], \"corner_error_m\": [%s], \"max_corner_error_m\": %.4f, "
+            "\"keystone_pct\": {\"horizontal\": %.3f, \"vertical\": %.3f, \"diagonal\": %.3f}, \"passed\": %s}\n",
+            corners.c_str(), errors.c_str(), worst, eq8.horizontal_pct, eq8.vertical_pct, eq8.diagonal_pct,
+            passed ? "true" : "false");
         json = buf;
-        std::printf("projsurf verify: picture found; corners landed %.1f mm from where they were meant at worst "
-                    "(tolerance %.1f mm): %s\n  eq. 8: horizontal %.2f %%, vertical %.2f %%, diagonal %.2f %%\n",
-                    worst * 1000, o.tolerance * 1000, passed ? "passed" : "FAILED", eq8.horizontal_pct,
-                    eq8.vertical_pct, eq8.diagonal_pct);
+        std::printf(
+            "projsurf verify: picture found; corners landed %.1f mm from where they were meant at worst "
+            "(tolerance %.1f mm): %s\n  eq. 8: horizontal %.2f %%, vertical %.2f %%, diagonal %.2f %%\n",
+            worst * 1000, o.tolerance * 1000, passed ? "passed" : "FAILED", eq8.horizontal_pct, eq8.vertical_pct,
+            eq8.diagonal_pct);
     }
     if (!o.json.empty()) writeFileAtomic(o.json, json);
 }
@@ -126,12 +127,15 @@ void run(const VerifyOptions &o) {
 
 void addVerifyCommand(CLI::App &app) {
     auto o = std::make_shared<VerifyOptions>();
-    auto *sub = app.add_subcommand("verify", "closed-loop check: find the projected picture in the colour image and "
-                                             "report where its corners landed");
+    auto *sub = app.add_subcommand("verify",
+                                   "closed-loop check: find the projected picture in the colour image and "
+                                   "report where its corners landed");
     sub->add_option("--calib", o->calib, "projector calibration YAML");
     sub->add_option("--detection", o->detection, "detection JSON the framebuffer was corrected for");
-    sub->add_option("--framebuffer", o->framebuffer, "the framebuffer correct wrote (of the test card) and was projected");
-    sub->add_option("--captures", o->captures, "folder with camera.yaml, rgb.png, depth.png taken while it was projected");
+    sub->add_option("--framebuffer", o->framebuffer,
+                    "the framebuffer correct wrote (of the test card) and was projected");
+    sub->add_option("--captures", o->captures,
+                    "folder with camera.yaml, rgb.png, depth.png taken while it was projected");
     sub->add_option("--json", o->json, "write the result JSON here");
     sub->add_option("--tolerance", o->tolerance, "corner tolerance, m")->capture_default_str();
     sub->add_option("--write-card", o->write_card, "write the test card (PNG) at --resolution and nothing else");

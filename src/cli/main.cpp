@@ -1,9 +1,9 @@
 // projsurf: find where a robot's projector can show a picture on a wall, and warp the
 // picture so it appears undistorted there. See README.md and the contract (INTERFACE.md).
 #include <cstring>
+#include <iostream>
 #include <new>
 #include <opencv2/core.hpp>
-#include <iostream>
 #include <string>
 #include <vector>
 

@@ -75,7 +75,8 @@ double pixelAngle(const Cloud &cloud) {
 
 BeamBlanker::BeamBlanker(const Projector &projector, const BlankingOptions &options)
     : projector_(projector), options_(options) {
-    configure(std::max(1, static_cast<int>(std::lround(options_.cell_angle * std::max(projector_.fx(), projector_.fy())))));
+    configure(
+        std::max(1, static_cast<int>(std::lround(options_.cell_angle * std::max(projector_.fx(), projector_.fy())))));
     mask_ = cv::Mat::zeros(projector_.height, projector_.width, CV_8U);
 }
 
@@ -83,7 +84,8 @@ void BeamBlanker::configure(int cell_px) {
     const double focal = std::max(projector_.fx(), projector_.fy());
     cell_ = cell_px;
     // The widest angle from the axis: at the corners of the framebuffer, one margin further out.
-    const double corner_x = 0.5 * projector_.width / projector_.fx(), corner_y = 0.5 * projector_.height / projector_.fy();
+    const double corner_x = 0.5 * projector_.width / projector_.fx(),
+                 corner_y = 0.5 * projector_.height / projector_.fy();
     off_axis_ = std::sqrt(1.0 + corner_x * corner_x + corner_y * corner_y);
     pad_ = static_cast<int>(std::ceil(marginCells(options_.ray_margin, focal, cell_, options_.min_depth, off_axis_)));
     off_axis_ = std::hypot(corner_x + pad_ * cell_ / projector_.fx(), corner_y + pad_ * cell_ / projector_.fy());
@@ -148,8 +150,10 @@ const cv::Mat &BeamBlanker::compute(const Cloud &cloud, const Plane &plane) {
     // framebuffer cannot count.
     float min_cos = 1.0f;
     {
-        const double l = -(pad_ * cell_) - 0.5, r = projector_.width + pad_ * cell_, b = projector_.height + pad_ * cell_;
-        for (const auto &c : {Eigen::Vector2d(l, l), Eigen::Vector2d(r, l), Eigen::Vector2d(r, b), Eigen::Vector2d(l, b)})
+        const double l = -(pad_ * cell_) - 0.5, r = projector_.width + pad_ * cell_,
+                     b = projector_.height + pad_ * cell_;
+        for (const auto &c :
+             {Eigen::Vector2d(l, l), Eigen::Vector2d(r, l), Eigen::Vector2d(r, b), Eigen::Vector2d(l, b)})
             min_cos = std::min(min_cos, static_cast<float>(std::abs(plane.normal.dot(projector_.ray(c)))));
     }
     const float pre_gap = min_gap * std::max(min_cos, 0.05f);
@@ -238,7 +242,8 @@ const cv::Mat &BeamBlanker::compute(const Cloud &cloud, const Plane &plane) {
         const uchar *g = grown_.ptr<uchar>(gy + pad_) + pad_;
         for (int gx = 0; gx * cell_ < w; ++gx)
             std::memset(row_.data() + gx * cell_, g[gx], static_cast<std::size_t>(std::min(cell_, w - gx * cell_)));
-        for (int y = gy * cell_; y < std::min(h, (gy + 1) * cell_); ++y) std::memcpy(mask_.ptr<uchar>(y), row_.data(), w);
+        for (int y = gy * cell_; y < std::min(h, (gy + 1) * cell_); ++y)
+            std::memcpy(mask_.ptr<uchar>(y), row_.data(), w);
     }
     // Blanked pixels, counted on the grid: each cell covers cell_ x cell_ pixels (clipped at
     // the framebuffer's right and bottom edges).

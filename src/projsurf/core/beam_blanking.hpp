@@ -29,8 +29,8 @@
 namespace projsurf {
 
 struct BlankingOptions {
-    double min_gap = 0.05;      ///< m, nearer the lens than the plane by more than this (contract)
-    double ray_margin = 0.03;   ///< m, within this of the ray (contract)
+    double min_gap = 0.05;     ///< m, nearer the lens than the plane by more than this (contract)
+    double ray_margin = 0.03;  ///< m, within this of the ray (contract)
     /// rad, side of a grid cell seen from the lens, at least: a little more than one pixel of
     /// a VGA depth camera (Kinect v1 fx 525 px: 1.9 mrad), so a surface leaves no empty cells.
     double cell_angle = 0.0025;
@@ -40,7 +40,7 @@ struct BlankingOptions {
     /// m along the projector axis: nearer points are the robot itself (RGB-D cameras read
     /// from about 0.3-0.5 m).
     double min_depth = 0.3;
-    bool filter_noise = true;   ///< keep connected groups only (false: every obstructing point counts)
+    bool filter_noise = true;  ///< keep connected groups only (false: every obstructing point counts)
     /// The gap must exceed this many sigmas of the wall noise measured on the cloud (0: the
     /// contract's min_gap alone). Kinect v1 units in the simulator bend a wall by up to 4.7
     /// sigma in patches the opening does not remove (sim/kinect1_model, 2-3.5 m, measured).
@@ -74,8 +74,8 @@ private:
 
     Projector projector_;
     BlankingOptions options_;
-    int cell_ = 4;       ///< framebuffer px per grid cell
-    int pad_ = 0;        ///< cells of grid beyond each framebuffer edge
+    int cell_ = 4;           ///< framebuffer px per grid cell
+    int pad_ = 0;            ///< cells of grid beyond each framebuffer edge
     double off_axis_ = 1.0;  ///< 1 / cos of the widest angle from the axis the grid covers
     int grid_w_ = 0, grid_h_ = 0;
     cv::Mat hit_, kept_, nearest_, near3_, scratch_, distance_, grown_, mask_;

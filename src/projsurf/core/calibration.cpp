@@ -16,12 +16,17 @@ constexpr double kPi = 3.14159265358979323846;
 
 cv::Mat toGrey8(const cv::Mat &image) {
     cv::Mat img = image;
-    if (img.depth() == CV_16U) img.convertTo(img, CV_8U, 1.0 / 257.0);
-    else if (img.depth() != CV_8U) img.convertTo(img, CV_8U);
+    if (img.depth() == CV_16U)
+        img.convertTo(img, CV_8U, 1.0 / 257.0);
+    else if (img.depth() != CV_8U)
+        img.convertTo(img, CV_8U);
     cv::Mat grey;
-    if (img.channels() == 3) cv::cvtColor(img, grey, cv::COLOR_BGR2GRAY);
-    else if (img.channels() == 4) cv::cvtColor(img, grey, cv::COLOR_BGRA2GRAY);
-    else grey = img;
+    if (img.channels() == 3)
+        cv::cvtColor(img, grey, cv::COLOR_BGR2GRAY);
+    else if (img.channels() == 4)
+        cv::cvtColor(img, grey, cv::COLOR_BGRA2GRAY);
+    else
+        grey = img;
     return grey;
 }
 
@@ -235,8 +240,8 @@ Calibration calibrateProjector(const std::vector<CaptureImages> &captures, const
     const int n = static_cast<int>(captures.size());
     if (n < config.min_captures)
         return fail(CalibrationFailure::TooFewCaptures, -1,
-                    "found " + std::to_string(n) + " capture(s), need at least " +
-                        std::to_string(config.min_captures) + " taken at different distances from the wall");
+                    "found " + std::to_string(n) + " capture(s), need at least " + std::to_string(config.min_captures) +
+                        " taken at different distances from the wall");
 
     std::vector<Eigen::Vector3d> centroids;
     for (int k = 0; k < n; ++k) {

@@ -18,21 +18,21 @@
 namespace projsurf {
 
 struct DiscConfig {
-    int threshold = 50;           ///< grey level (0-255) of the binarisation; paper 3.1.1
-    int opening_px = 5;           ///< side of the elliptic opening kernel, px (removes specks)
-    double canny_low = 50.0;      ///< Canny hysteresis thresholds on the binary image
+    int threshold = 50;       ///< grey level (0-255) of the binarisation; paper 3.1.1
+    int opening_px = 5;       ///< side of the elliptic opening kernel, px (removes specks)
+    double canny_low = 50.0;  ///< Canny hysteresis thresholds on the binary image
     double canny_high = 150.0;
-    double min_area_px = 30.0;    ///< smallest disc accepted, px^2 (a 3 px radius)
-    double min_circularity = 0.5; ///< 4 pi A / P^2; an ellipse of axis ratio 0.3 still passes
+    double min_area_px = 30.0;     ///< smallest disc accepted, px^2 (a 3 px radius)
+    double min_circularity = 0.5;  ///< 4 pi A / P^2; an ellipse of axis ratio 0.3 still passes
 };
 
 /// The projected disc found in one colour image.
 struct DiscDetection {
     Eigen::Vector2d centroid = Eigen::Vector2d::Zero();  ///< image pixel (centres at integers)
-    double area_px = 0.0;       ///< area enclosed by the disc's contour, px^2
-    double radius_px = 0.0;     ///< sqrt(area / pi)
-    double circularity = 0.0;   ///< 4 pi A / P^2, 1 for a perfect circle
-    int candidates = 0;         ///< bright blobs seen (1 for a clean capture)
+    double area_px = 0.0;                                ///< area enclosed by the disc's contour, px^2
+    double radius_px = 0.0;                              ///< sqrt(area / pi)
+    double circularity = 0.0;                            ///< 4 pi A / P^2, 1 for a perfect circle
+    int candidates = 0;                                  ///< bright blobs seen (1 for a clean capture)
 };
 
 /// Paper 3.1.1: binary threshold, morphological opening, Canny, contours, moments. Picks the
@@ -70,10 +70,10 @@ LiftedDisc liftToDepth(const cv::Mat &depth, const CameraIntrinsics &camera, con
 
 /// A 3-D least-squares line (principal axis of the points) and how well it fits.
 struct AxisFit {
-    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  ///< mean of the points
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();    ///< mean of the points
     Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();  ///< unit, oriented towards +z
-    Eigen::Vector3d origin = Eigen::Vector3d::Zero();    ///< the line's point with z = 0 (A.1)
-    std::vector<double> residuals_m;  ///< distance of each point to the line
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();      ///< the line's point with z = 0 (A.1)
+    std::vector<double> residuals_m;                       ///< distance of each point to the line
     double rms_m = 0.0;
     double max_m = 0.0;
     double spread_m = 0.0;  ///< extent of the points along the line
@@ -86,9 +86,9 @@ std::optional<AxisFit> fitAxisLine(const std::vector<Eigen::Vector3d> &points);
 struct CalibrationConfig {
     DiscConfig disc;
     LiftConfig lift;
-    int min_captures = 3;        ///< contract: N >= 3
-    double min_spread_m = 0.3;   ///< centroids must span at least this along the axis
-    int width = 1280;            ///< framebuffer, px (Aaxa P300, the paper's projector)
+    int min_captures = 3;       ///< contract: N >= 3
+    double min_spread_m = 0.3;  ///< centroids must span at least this along the axis
+    int width = 1280;           ///< framebuffer, px (Aaxa P300, the paper's projector)
     int height = 800;
     double fov_h = 39.3 * 3.14159265358979323846 / 180.0;  ///< rad, paper 3.1.2
     double fov_v = 24.0 * 3.14159265358979323846 / 180.0;  ///< rad, paper 3.1.2
@@ -122,9 +122,9 @@ struct Calibration {
     std::string message;      ///< what went wrong, for the user (empty on success)
     std::vector<CaptureResult> captures;
     AxisFit axis;
-    Projector projector;                           ///< origin = axis.origin, direction = axis.direction
-    std::array<Eigen::Vector3d, 4> paper_rays;     ///< Appendix steps 1-4 (Euler-Rodrigues), unit
-    std::array<Eigen::Vector3d, 4> pinhole_rays;   ///< through the framebuffer's outer corners, unit
+    Projector projector;                          ///< origin = axis.origin, direction = axis.direction
+    std::array<Eigen::Vector3d, 4> paper_rays;    ///< Appendix steps 1-4 (Euler-Rodrigues), unit
+    std::array<Eigen::Vector3d, 4> pinhole_rays;  ///< through the framebuffer's outer corners, unit
     bool ok() const { return failure == CalibrationFailure::None; }
 };
 

@@ -30,7 +30,8 @@ Cloud depthToCloud(const cv::Mat &depth, const CameraIntrinsics &camera) {
     return cloud;
 }
 
-std::optional<CameraIntrinsics> fitIntrinsics(const Cloud &cloud, const std::vector<int> &indices, double max_error_px) {
+std::optional<CameraIntrinsics> fitIntrinsics(const Cloud &cloud, const std::vector<int> &indices,
+                                              double max_error_px) {
     if (!cloud.organized()) return std::nullopt;
     // pixel = f * ratio + c on each axis (ratio = x / z or y / z): two straight-line fits.
     struct Line {

@@ -12,10 +12,10 @@ namespace projsurf {
 struct CameraIntrinsics {
     int width = 640;
     int height = 480;
-    double fx = 525.0;  // px
-    double fy = 525.0;  // px
-    double cx = 319.5;  // px
-    double cy = 239.5;  // px
+    double fx = 525.0;            // px
+    double fy = 525.0;            // px
+    double cx = 319.5;            // px
+    double cy = 239.5;            // px
     double depth_scale = 1000.0;  ///< depth PNG units per metre (1000 = mm)
 
     /// Pixel (u, v) of a camera-frame point; z must be > 0.

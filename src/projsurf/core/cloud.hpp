@@ -21,9 +21,7 @@ struct Cloud {
     /// point. Only colour checked as registered belongs here (core/colour_registration.hpp).
     std::vector<std::array<std::uint8_t, 3>> colours;
 
-    bool organized() const {
-        return height > 1 && static_cast<std::size_t>(width) * height == points.size();
-    }
+    bool organized() const { return height > 1 && static_cast<std::size_t>(width) * height == points.size(); }
     std::size_t size() const { return points.size(); }
     bool hasColour() const { return !colours.empty() && colours.size() == points.size(); }
 };

@@ -11,8 +11,8 @@ namespace projsurf {
 std::string RegistrationResult::summary() const {
     char buf[200];
     if (!checked) {
-        std::snprintf(buf, sizeof buf, "%d depth-edge pixels, edge score %.2f at best shift vs median %.2f", edge_pixels,
-                      score_best, score_median);
+        std::snprintf(buf, sizeof buf, "%d depth-edge pixels, edge score %.2f at best shift vs median %.2f",
+                      edge_pixels, score_best, score_median);
     } else {
         std::snprintf(buf, sizeof buf,
                       "edge score %.2f at offset 0, %.2f times the median shift; best %.2f at %+d,%+d px", score_zero,
@@ -37,13 +37,15 @@ RegistrationResult checkColourRegistration(const Cloud &cloud, const cv::Mat &bg
     auto jump = [&](float aa, float a, float b, float bb, float limit) {
         const float j = std::abs(b - a);
         return std::isfinite(a) && std::isfinite(b) && j > limit &&
-               (!std::isfinite(aa) || j > steep * std::abs(a - aa)) && (!std::isfinite(bb) || j > steep * std::abs(bb - b));
+               (!std::isfinite(aa) || j > steep * std::abs(a - aa)) &&
+               (!std::isfinite(bb) || j > steep * std::abs(bb - b));
     };
     for (int v = m; v < h - m; ++v)
         for (int u = m; u < w - m; ++u) {
             const float c = z(u, v);
             if (!std::isfinite(c)) continue;
-            const float limit = std::max(static_cast<float>(opt.depth_jump), static_cast<float>(opt.depth_jump_share) * c);
+            const float limit =
+                std::max(static_cast<float>(opt.depth_jump), static_cast<float>(opt.depth_jump_share) * c);
             if (jump(z(u - 3, v), z(u - 1, v), z(u + 1, v), z(u + 3, v), limit) ||
                 jump(z(u, v - 3), z(u, v - 1), z(u, v + 1), z(u, v + 3), limit))
                 edges.push_back(v * w + u);
@@ -100,7 +102,8 @@ RegistrationResult checkColourRegistration(const Cloud &cloud, const cv::Mat &bg
 }
 
 bool attachColour(Cloud &cloud, const cv::Mat &bgr) {
-    if (!cloud.organized() || bgr.empty() || bgr.cols != cloud.width || bgr.rows != cloud.height || bgr.type() != CV_8UC3)
+    if (!cloud.organized() || bgr.empty() || bgr.cols != cloud.width || bgr.rows != cloud.height ||
+        bgr.type() != CV_8UC3)
         return false;
     cloud.colours.resize(cloud.points.size());
     for (int v = 0; v < bgr.rows; ++v) {

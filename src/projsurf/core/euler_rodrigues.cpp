@@ -12,8 +12,8 @@ Eigen::Vector3d eulerRodriguesRotate(const Eigen::Vector3d &v, const Eigen::Vect
 }
 
 std::array<Eigen::Vector3d, 4> paperCornerRays(const Eigen::Vector3d &direction, double fov_h, double fov_v) {
-    const Eigen::Vector3d v = direction.normalized();  // step 1 (A.1): v' starts at the origin
-    const double gamma = std::atan2(v.y(), v.z());      // (A.2)
+    const Eigen::Vector3d v = direction.normalized();                  // step 1 (A.1): v' starts at the origin
+    const double gamma = std::atan2(v.y(), v.z());                     // (A.2)
     const Eigen::Vector3d r1(0.0, std::cos(gamma), -std::sin(gamma));  // (A.3), perpendicular to v
     // Positive rotation about R1 (about +y for a forward axis) turns the ray to the right;
     // positive rotation about R2 (about +x) turns it up (-y).

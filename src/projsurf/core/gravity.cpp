@@ -45,7 +45,8 @@ std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, cons
     for (int i = 0; i < static_cast<int>(pts.size()); ++i)
         if (std::abs(best_n.dot(pts[i]) + best_d) <= band) inliers.push_back(i);
     Eigen::Vector3d n = best_n.cast<double>();
-    if (const auto refined = fitPlane(pts, inliers)) n = refined->normal.dot(n) < 0 ? -refined->normal : refined->normal;
+    if (const auto refined = fitPlane(pts, inliers))
+        n = refined->normal.dot(n) < 0 ? -refined->normal : refined->normal;
     GravityEstimate out;
     out.gravity = n.normalized();
     out.floor_points = static_cast<int>(inliers.size());

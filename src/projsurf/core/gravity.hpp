@@ -8,8 +8,8 @@
 namespace projsurf {
 
 struct GravityEstimate {
-    Eigen::Vector3d gravity;  ///< unit, camera frame, pointing down (from the camera to the floor)
-    int floor_points = 0;     ///< sampled points on the floor plane
+    Eigen::Vector3d gravity;      ///< unit, camera frame, pointing down (from the camera to the floor)
+    int floor_points = 0;         ///< sampled points on the floor plane
     double angle_to_prior = 0.0;  ///< rad
 };
 

@@ -52,9 +52,12 @@ namespace {
 
 cv::Mat toGrey(const cv::Mat &m) {
     cv::Mat g;
-    if (m.channels() == 3) cv::cvtColor(m, g, cv::COLOR_BGR2GRAY);
-    else if (m.channels() == 4) cv::cvtColor(m, g, cv::COLOR_BGRA2GRAY);
-    else g = m;
+    if (m.channels() == 3)
+        cv::cvtColor(m, g, cv::COLOR_BGR2GRAY);
+    else if (m.channels() == 4)
+        cv::cvtColor(m, g, cv::COLOR_BGRA2GRAY);
+    else
+        g = m;
     cv::Mat f;
     g.convertTo(f, CV_32F);
     return f;
@@ -93,8 +96,10 @@ GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, int width, int hei
                 int gray = 0, unsure = 0;
                 for (int b = bits - 1; b >= 0; --b, at += 2) {
                     const double diff = grey[at].at<float>(y, x) - grey[at + 1].at<float>(y, x);
-                    if (std::abs(diff) < cfg.min_bit_margin * contrast) unsure |= 1 << b;
-                    else if (diff > 0) gray |= 1 << b;
+                    if (std::abs(diff) < cfg.min_bit_margin * contrast)
+                        unsure |= 1 << b;
+                    else if (diff > 0)
+                        gray |= 1 << b;
                 }
                 auto toBinary = [bits](int g) {
                     int binary = 0;
@@ -117,7 +122,8 @@ GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, int width, int hei
                     // One unsure bit above the resolved ones: on the boundary between two
                     // neighbouring codes (Gray code: only that bit differs), if they are neighbours.
                     const int bit = 1 << (low + __builtin_ctz(high_unsure));
-                    const int a = toBinary(gray & ~mask_low & ~bit) & ~mask_low, b = toBinary((gray & ~mask_low) | bit) & ~mask_low;
+                    const int a = toBinary(gray & ~mask_low & ~bit) & ~mask_low,
+                              b = toBinary((gray & ~mask_low) | bit) & ~mask_low;
                     if (std::abs(a - b) != (1 << low)) break;
                     v = 0.5 * (a + b) + 0.5 * mask_low;
                 } else {

@@ -17,7 +17,7 @@ namespace projsurf {
 struct GrayPattern {
     std::string name;  ///< "white", "black", "col_<b>", "col_<b>_inv", "row_<b>", "row_<b>_inv"
     enum class Kind { White, Black, Column, Row } kind = Kind::White;
-    int bit = 0;           ///< for Column/Row: bit index, most significant = bits - 1
+    int bit = 0;  ///< for Column/Row: bit index, most significant = bits - 1
     bool inverse = false;
 };
 
@@ -30,9 +30,9 @@ int grayBits(int n);
 cv::Mat grayPatternImage(const GrayPattern &pattern, int width, int height);
 
 struct GrayDecodeConfig {
-    double min_contrast = 20.0;  ///< white - black, grey levels: below this the pixel is unlit or dark
+    double min_contrast = 20.0;    ///< white - black, grey levels: below this the pixel is unlit or dark
     double min_bit_margin = 0.25;  ///< |pattern - inverse| / (white - black) for a bit to count
-    int min_bits = 6;            ///< resolved most-significant bits needed per axis
+    int min_bits = 6;              ///< resolved most-significant bits needed per axis
 };
 
 /// Per camera pixel: the decoded framebuffer position (pixel centres at integers) or NaN.
@@ -46,6 +46,7 @@ struct GrayDecoding {
 /// `captures[i]` is the camera's grey (or colour: converted) image while grayPatterns(width,
 /// height)[i] was projected; all of one size. Throws std::invalid_argument on a count or size
 /// mismatch.
-GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, int width, int height, const GrayDecodeConfig &config = {});
+GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, int width, int height,
+                        const GrayDecodeConfig &config = {});
 
 }  // namespace projsurf

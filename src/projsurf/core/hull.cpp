@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
-#include <opencv2/imgproc.hpp>
 #include <map>
+#include <opencv2/imgproc.hpp>
 
 namespace projsurf {
 namespace {
@@ -27,9 +27,8 @@ constexpr double kMaxConcaveExtent = 1e6;
 }  // namespace
 
 std::vector<Eigen::Vector2d> convexHull(std::vector<Eigen::Vector2d> pts) {
-    std::sort(pts.begin(), pts.end(), [](const auto &a, const auto &b) {
-        return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-    });
+    std::sort(pts.begin(), pts.end(),
+              [](const auto &a, const auto &b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
     pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
     if (pts.size() < 3) return pts;
     std::vector<Eigen::Vector2d> hull(2 * pts.size());
@@ -63,9 +62,12 @@ std::vector<Segment2> concaveHullEdges(const std::vector<Eigen::Vector2d> &point
     // non-finite points) there is no usable concave hull (and the casts would overflow).
     if (!((hi - lo).allFinite() && (hi - lo).maxCoeff() < kMaxConcaveExtent)) return {};
     // Subdiv2D works in float; shift to the bounding box so precision is kept.
-    const cv::Rect2f box(0.0f, 0.0f, static_cast<float>(hi.x() - lo.x()) + 1.0f, static_cast<float>(hi.y() - lo.y()) + 1.0f);
-    cv::Subdiv2D subdiv(cv::Rect(0, 0, static_cast<int>(std::ceil(box.width)) + 1, static_cast<int>(std::ceil(box.height)) + 1));
-    for (const auto &p : points) subdiv.insert(cv::Point2f(static_cast<float>(p.x() - lo.x()), static_cast<float>(p.y() - lo.y())));
+    const cv::Rect2f box(0.0f, 0.0f, static_cast<float>(hi.x() - lo.x()) + 1.0f,
+                         static_cast<float>(hi.y() - lo.y()) + 1.0f);
+    cv::Subdiv2D subdiv(
+        cv::Rect(0, 0, static_cast<int>(std::ceil(box.width)) + 1, static_cast<int>(std::ceil(box.height)) + 1));
+    for (const auto &p : points)
+        subdiv.insert(cv::Point2f(static_cast<float>(p.x() - lo.x()), static_cast<float>(p.y() - lo.y())));
     std::vector<cv::Vec6f> triangles;
     subdiv.getTriangleList(triangles);
 
@@ -79,8 +81,10 @@ std::vector<Segment2> concaveHullEdges(const std::vector<Eigen::Vector2d> &point
         if (ka > kb) std::swap(ka, kb);
         const auto k = std::make_pair(ka, kb);
         auto it = edges.find(k);
-        if (it == edges.end()) edges.emplace(k, EdgeCount{a, b, 1});
-        else ++it->second.count;
+        if (it == edges.end())
+            edges.emplace(k, EdgeCount{a, b, 1});
+        else
+            ++it->second.count;
     };
     const double r_max = alpha;
     for (const auto &t : triangles) {
@@ -100,7 +104,8 @@ std::vector<Segment2> concaveHullEdges(const std::vector<Eigen::Vector2d> &point
     std::vector<Segment2> out;
     for (const auto &[k, e] : edges) {
         if (e.count != 1) continue;
-        out.push_back({Eigen::Vector2d(e.a.x + lo.x(), e.a.y + lo.y()), Eigen::Vector2d(e.b.x + lo.x(), e.b.y + lo.y())});
+        out.push_back(
+            {Eigen::Vector2d(e.a.x + lo.x(), e.a.y + lo.y()), Eigen::Vector2d(e.b.x + lo.x(), e.b.y + lo.y())});
     }
     return out;
 }

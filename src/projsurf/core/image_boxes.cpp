@@ -25,8 +25,8 @@ cv::Rect beamImageBox(const CameraIntrinsics &camera, const PlaneFrame &frame, c
                       const Eigen::Vector3d &lens, double near, int margin) {
     const RasterFrame &r = raster;
     std::vector<Eigen::Vector3d> volume;
-    for (const Eigen::Vector2d &corner : {r.toPlane({0, 0}), r.toPlane({r.cols, 0}), r.toPlane({r.cols, r.rows}),
-                                         r.toPlane({0, r.rows})}) {
+    for (const Eigen::Vector2d &corner :
+         {r.toPlane({0, 0}), r.toPlane({r.cols, 0}), r.toPlane({r.cols, r.rows}), r.toPlane({0, r.rows})}) {
         const Eigen::Vector3d x = frame.toCamera(corner);
         // Where the beam towards this corner is at depth `near` (or the lens, if nearer).
         const double s = x.z() - lens.z() > 1e-9 ? std::clamp((near - lens.z()) / (x.z() - lens.z()), 0.0, 1.0) : 0.0;

@@ -6,8 +6,8 @@
 
 #include "projsurf/core/camera.hpp"
 #include "projsurf/core/cloud.hpp"
-#include "projsurf/core/plane_frame.hpp"
 #include "projsurf/core/outline_raster.hpp"
+#include "projsurf/core/plane_frame.hpp"
 
 namespace projsurf {
 

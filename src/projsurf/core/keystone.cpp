@@ -12,7 +12,7 @@
 namespace projsurf {
 
 std::optional<Eigen::Vector2d> pixelFromWorkspace(const Projector &projector, const Eigen::Vector3d &point,
-                                          const Corners3 &rays) {
+                                                  const Corners3 &rays) {
     const Eigen::Vector3d axis = projector.axis();
     const Eigen::Vector3d right = projector.right(), down = projector.down();
     const Eigen::Vector3d rel = point - projector.origin;
@@ -47,8 +47,10 @@ Rectangle letterbox(const Rectangle &rect, double picture_aspect) {
     const Eigen::Vector3d up = ((c[0] - c[3]) + (c[1] - c[2])).normalized();
     const Eigen::Vector3d centre = rect.center();
     double w = width, h = height;
-    if (picture_aspect >= width / height) h = width / picture_aspect;  // wider picture: bars above and below
-    else w = height * picture_aspect;                                  // narrower: bars left and right
+    if (picture_aspect >= width / height)
+        h = width / picture_aspect;  // wider picture: bars above and below
+    else
+        w = height * picture_aspect;  // narrower: bars left and right
     Rectangle out;
     out.width = w;
     out.height = h;
@@ -74,8 +76,10 @@ KeystoneResult computeKeystone(const Projector &projector, const Rectangle &rect
     const bool full_model = projector.fullModel();
     Corners2 ideal_px;
     for (int i = 0; i < 4; ++i) {
-        const auto full = full_model ? projector.toPixel(rect.corners[i]) : pixelFromWorkspace(projector, rect.corners[i], rays);
-        const auto shown = full_model ? projector.toPixel(k.shown.corners[i]) : pixelFromWorkspace(projector, k.shown.corners[i], rays);
+        const auto full =
+            full_model ? projector.toPixel(rect.corners[i]) : pixelFromWorkspace(projector, rect.corners[i], rays);
+        const auto shown = full_model ? projector.toPixel(k.shown.corners[i])
+                                      : pixelFromWorkspace(projector, k.shown.corners[i], rays);
         const auto ideal = full_model ? projector.toIdealPixel(k.shown.corners[i]) : shown;
         if (!full || !shown || !ideal) {
             result.problem = std::string("the rectangle's ") + names[i] + " corner is behind the projector";
@@ -151,8 +155,7 @@ std::optional<Corners2> framebufferCornersFor(const Projector &projector, const 
     return r.keystone->picture_px;
 }
 
-std::optional<Eigen::Vector3d> castToWall(const Projector &projector, const Eigen::Vector2d &pixel,
-                                          const Plane &wall) {
+std::optional<Eigen::Vector3d> castToWall(const Projector &projector, const Eigen::Vector2d &pixel, const Plane &wall) {
     return intersectRay(wall, projector.origin, projector.ray(pixel));
 }
 

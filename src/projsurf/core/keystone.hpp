@@ -25,7 +25,7 @@ using Corners2 = std::array<Eigen::Vector2d, 4>;  ///< same order, framebuffer p
 /// integers, so the workspace edges map to -0.5 and W-0.5. With the pinhole corner rays the
 /// workspace is a true rectangle and this equals Projector::toPixel. nullopt behind the lens.
 std::optional<Eigen::Vector2d> pixelFromWorkspace(const Projector &projector, const Eigen::Vector3d &point,
-                                          const Corners3 &rays);
+                                                  const Corners3 &rays);
 /// Same, with the projector's pinhole corner rays.
 std::optional<Eigen::Vector2d> pixelFromWorkspace(const Projector &projector, const Eigen::Vector3d &point);
 
@@ -35,12 +35,12 @@ Rectangle letterbox(const Rectangle &rect, double picture_aspect);
 
 /// How a picture is put into the framebuffer.
 struct Keystone {
-    cv::Size picture;       ///< picture size the homography was computed for, px
-    cv::Size framebuffer;   ///< calibration resolution, px
-    Rectangle shown;        ///< the letterboxed part of the rectangle that shows the picture, 3-D
-    Corners2 rectangle_px;  ///< framebuffer positions of the detected rectangle's corners
-    Corners2 picture_px;    ///< framebuffer positions of the picture's outer corners
-    cv::Matx33d homography; ///< picture pixel -> ideal (undistorted) framebuffer pixel (centres at integers)
+    cv::Size picture;        ///< picture size the homography was computed for, px
+    cv::Size framebuffer;    ///< calibration resolution, px
+    Rectangle shown;         ///< the letterboxed part of the rectangle that shows the picture, 3-D
+    Corners2 rectangle_px;   ///< framebuffer positions of the detected rectangle's corners
+    Corners2 picture_px;     ///< framebuffer positions of the picture's outer corners
+    cv::Matx33d homography;  ///< picture pixel -> ideal (undistorted) framebuffer pixel (centres at integers)
     /// With a distorted projector: per framebuffer pixel, the position it samples in the warp
     /// source (the picture, or its area-reduced copy, see warpSourceFor), CV_32FC2; the warp is
     /// then this remap instead of the homography. Empty without distortion.

@@ -33,8 +33,8 @@ namespace projsurf {
 
 namespace {
 
-constexpr int kBits = 5;             // source positions in 1/32 px, as OpenCV's INTER_BITS
-constexpr int kSteps = 1 << kBits;   // 32
+constexpr int kBits = 5;                      // source positions in 1/32 px, as OpenCV's INTER_BITS
+constexpr int kSteps = 1 << kBits;            // 32
 constexpr int kRound = 1 << (2 * kBits - 1);  // the weights of a pixel sum to 32 * 32
 
 std::string sizeText(cv::Size s) { return std::to_string(s.width) + "x" + std::to_string(s.height); }
@@ -98,7 +98,8 @@ bool haveSsse3() {
 /// (left, right) with pmaddubsw, then vertical of 16-bit pairs (top, bottom) with pmaddwd:
 /// the same integer sum as the scalar path. Returns the pixel in the low 3 or 4 bytes (the
 /// 4th byte is 0 for 3 channels).
-__attribute__((target("ssse3"), always_inline)) inline std::uint32_t blendSsse3(__m128i ab, __m128i order, std::uint32_t w) {
+__attribute__((target("ssse3"), always_inline)) inline std::uint32_t blendSsse3(__m128i ab, __m128i order,
+                                                                                std::uint32_t w) {
     const __m128i wv = _mm_cvtsi32_si128(static_cast<int>(w));
     const __m128i wx = _mm_shuffle_epi8(wv, _mm_setr_epi8(0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0, 1));
     const __m128i wy = _mm_shuffle_epi8(wv, _mm_setr_epi8(2, -1, 3, -1, 2, -1, 3, -1, 2, -1, 3, -1, 2, -1, 3, -1));
@@ -113,8 +114,8 @@ __attribute__((target("ssse3"), always_inline)) inline std::uint32_t blendSsse3(
 /// follows, no overrun); the bottom row from 2 bytes early (its 6 wanted bytes may end the
 /// picture), so its B0 is byte 10.
 __attribute__((target("ssse3"), always_inline)) inline std::uint32_t pixel3Ssse3(const uchar *src, std::size_t row,
-                                                                                const std::int32_t *idx,
-                                                                                const std::uint32_t *wts, int i) {
+                                                                                 const std::int32_t *idx,
+                                                                                 const std::uint32_t *wts, int i) {
     // Pairs (top left, top right), (bottom left, bottom right) per channel.
     const __m128i order = _mm_setr_epi8(0, 3, 10, 13, 1, 4, 11, 14, 2, 5, 12, 15, -1, -1, -1, -1);
     const uchar *p = src + static_cast<std::size_t>(idx[i]) * 3;
@@ -395,8 +396,7 @@ void KeystoneWarper::planRow(int y) {
 }
 
 const cv::Mat &KeystoneWarper::prepare(const cv::Mat &in, cv::Mat &framebuffer) {
-    if (in.depth() != CV_8U)
-        throw std::invalid_argument("keystone warp: the picture must be 8-bit per channel");
+    if (in.depth() != CV_8U) throw std::invalid_argument("keystone warp: the picture must be 8-bit per channel");
     if (in.size() != keystone_.picture)
         throw std::invalid_argument("keystone warp: the picture is " + sizeText(in.size()) +
                                     " but the keystone was computed for " + sizeText(keystone_.picture));
@@ -421,7 +421,8 @@ void KeystoneWarper::blend(const cv::Mat &src, cv::Mat &framebuffer, int y_begin
     for (int y = y_begin; y < y_end; ++y) {  // black outside the lit span
         uchar *row = framebuffer.ptr<uchar>(y);
         std::memset(row, 0, static_cast<std::size_t>(span_begin_[y]) * cn);
-        std::memset(row + static_cast<std::size_t>(span_end_[y]) * cn, 0, static_cast<std::size_t>(W - span_end_[y]) * cn);
+        std::memset(row + static_cast<std::size_t>(span_end_[y]) * cn, 0,
+                    static_cast<std::size_t>(W - span_end_[y]) * cn);
     }
     const uchar *base = src.ptr<uchar>();
     const std::size_t row_bytes = static_cast<std::size_t>(src.cols) * cn;
@@ -435,8 +436,10 @@ void KeystoneWarper::blend(const cv::Mat &src, cv::Mat &framebuffer, int y_begin
         const std::uint32_t *wts = fast_w_.data() + r.data;
 #ifdef PROJSURF_WARP_SSSE3
         if (simd && cn == 3) {
-            if (avx2) gather3Avx2(base, row_bytes, idx, wts, dst, r.count);
-            else gather3Ssse3(base, row_bytes, idx, wts, dst, r.count);
+            if (avx2)
+                gather3Avx2(base, row_bytes, idx, wts, dst, r.count);
+            else
+                gather3Ssse3(base, row_bytes, idx, wts, dst, r.count);
             continue;
         }
         if (simd && cn == 4) {
@@ -445,17 +448,10 @@ void KeystoneWarper::blend(const cv::Mat &src, cv::Mat &framebuffer, int y_begin
         }
 #endif
         switch (cn) {
-        case 1:
-            gatherScalar<1>(base, row_bytes, idx, wts, dst, r.count);
-            break;
-        case 3:
-            gatherScalar<3>(base, row_bytes, idx, wts, dst, r.count);
-            break;
-        case 4:
-            gatherScalar<4>(base, row_bytes, idx, wts, dst, r.count);
-            break;
-        default:
-            gatherScalar<0>(base, row_bytes, idx, wts, dst, r.count, cn);
+        case 1: gatherScalar<1>(base, row_bytes, idx, wts, dst, r.count); break;
+        case 3: gatherScalar<3>(base, row_bytes, idx, wts, dst, r.count); break;
+        case 4: gatherScalar<4>(base, row_bytes, idx, wts, dst, r.count); break;
+        default: gatherScalar<0>(base, row_bytes, idx, wts, dst, r.count, cn);
         }
     }
     for (const Slow &s : slow_)

@@ -68,7 +68,7 @@ private:
     /// A pixel at the picture's edge: some neighbours are outside and count as black.
     struct Slow {
         int y, x;
-        int sx, sy;        ///< top-left neighbour, picture pixels (may be -1)
+        int sx, sy;           ///< top-left neighbour, picture pixels (may be -1)
         std::uint8_t fx, fy;  ///< position inside the cell, 1/32 px
     };
 
@@ -87,7 +87,7 @@ private:
     cv::Matx33d inverse_;  ///< framebuffer -> source
     bool bounded_ = true;  ///< the quad below is finite (else every column is visited)
     double quad_x_[4] = {}, quad_y_[4] = {}, quad_y_min_ = 0, quad_y_max_ = 0;  ///< where lit pixels can be
-    std::vector<int> row_x_, row_y_;  ///< scratch: one row's source positions, 1/32 px
+    std::vector<int> row_x_, row_y_;          ///< scratch: one row's source positions, 1/32 px
     std::vector<int> span_begin_, span_end_;  ///< per framebuffer row: pixels [begin, end) may be lit
     std::vector<Run> runs_;
     std::vector<std::int32_t> fast_idx_;  ///< sy * source_.width + sx of the top-left neighbour

@@ -19,7 +19,8 @@ SurfaceCells observedFreeSurface(const PlaneObservation &observation, int gap_ce
 
     SurfaceCells out;
     const cv::Mat observed = supported & ~blocked;
-    cv::erode(observed, out.free, cv::getStructuringElement(cv::MORPH_RECT, {3, 3}), {-1, -1}, 1, cv::BORDER_CONSTANT, 0);
+    cv::erode(observed, out.free, cv::getStructuringElement(cv::MORPH_RECT, {3, 3}), {-1, -1}, 1, cv::BORDER_CONSTANT,
+              0);
     out.state = cv::Mat(support.size(), CV_8UC1, cv::Scalar(static_cast<int>(CellState::Edge)));
     out.state.setTo(static_cast<int>(CellState::Free), out.free);
     out.state.setTo(static_cast<int>(CellState::NoReading), ~supported);
@@ -31,7 +32,8 @@ SurfaceCells observedFreeSurface(const PlaneObservation &observation, int gap_ce
 cv::Mat footprintCells(const RasterFrame &raster, const std::array<Eigen::Vector2d, 4> &footprint_uv) {
     cv::Mat cells = cv::Mat::zeros(raster.rows, raster.cols, CV_8UC1);
     // Whole cells inside: the footprint's edges moved in by half a cell diagonal.
-    fillPolygon(cells, raster, insetConvexPolygon({footprint_uv.begin(), footprint_uv.end()}, 0.7072 * raster.cell), 255);
+    fillPolygon(cells, raster, insetConvexPolygon({footprint_uv.begin(), footprint_uv.end()}, 0.7072 * raster.cell),
+                255);
     return cells;
 }
 

@@ -6,8 +6,8 @@
 #include <array>
 #include <opencv2/core.hpp>
 
-#include "projsurf/core/plane_observation.hpp"
 #include "projsurf/core/outline_raster.hpp"
+#include "projsurf/core/plane_observation.hpp"
 
 namespace projsurf {
 
@@ -19,10 +19,10 @@ enum class CellState : uchar {
     InFront = 3,      ///< something between the projector and the wall shadows it
     Edge = 4,         ///< the cell along the edge of the observed wall (its true edge may be a cell in)
     // Free by depth, but unfit by its colour (core/surface_suitability.hpp): 4 + its Unfit value.
-    Glare = 5,        ///< blown out: specular or emissive (glass, a lamp, a screen)
-    Dark = 6,         ///< too dark (low albedo)
-    Textured = 7,     ///< textured or edgy (a framed picture, a calendar, a busy pattern)
-    Saturated = 8,    ///< too saturated a colour
+    Glare = 5,      ///< blown out: specular or emissive (glass, a lamp, a screen)
+    Dark = 6,       ///< too dark (low albedo)
+    Textured = 7,   ///< textured or edgy (a framed picture, a calendar, a busy pattern)
+    Saturated = 8,  ///< too saturated a colour
 };
 
 struct SurfaceCells {

@@ -25,8 +25,10 @@ bool clipToBox(Eigen::Vector2d &a, Eigen::Vector2d &b, const Eigen::Vector2d &lo
                 continue;
             }
             const double r = q[s] / p[s];
-            if (p[s] < 0.0) t0 = std::max(t0, r);
-            else t1 = std::min(t1, r);
+            if (p[s] < 0.0)
+                t0 = std::max(t0, r);
+            else
+                t1 = std::min(t1, r);
         }
     }
     if (t0 > t1) return false;
@@ -122,7 +124,8 @@ std::vector<Eigen::Vector2d> insetConvexPolygon(const std::vector<Eigen::Vector2
         // Corner i is where the moved edges (i-1 -> i) and (i -> i+1) meet.
         const auto &p0 = poly[(i + n - 1) % n], &p1 = poly[i], &p2 = poly[(i + 1) % n];
         const Eigen::Vector2d d1 = (p1 - p0).normalized(), d2 = (p2 - p1).normalized();
-        const Eigen::Vector2d n1 = side * Eigen::Vector2d(-d1.y(), d1.x()), n2 = side * Eigen::Vector2d(-d2.y(), d2.x());
+        const Eigen::Vector2d n1 = side * Eigen::Vector2d(-d1.y(), d1.x()),
+                              n2 = side * Eigen::Vector2d(-d2.y(), d2.x());
         const Eigen::Vector2d a = p0 + distance * n1, b = p1 + distance * n2;
         const double det = d1.x() * (-d2.y()) - d1.y() * (-d2.x());
         if (std::abs(det) < 1e-12) {

@@ -51,7 +51,9 @@ Fit fit(const Moments &m) {
     return f;
 }
 
-double tilt(const Plane &p, const Eigen::Vector3d &down) { return std::asin(std::min(1.0, std::abs(p.normal.dot(down)))); }
+double tilt(const Plane &p, const Eigen::Vector3d &down) {
+    return std::asin(std::min(1.0, std::abs(p.normal.dot(down))));
+}
 
 }  // namespace
 
@@ -103,7 +105,8 @@ std::vector<PlanarRegion> findVerticalRegions(const PointGrid &grid, const Eigen
     std::vector<int> order;
     for (int i = 0; i < static_cast<int>(cell.size()); ++i)
         if (usable[i]) order.push_back(i);
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cell_fit[a].thickness < cell_fit[b].thickness; });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return cell_fit[a].thickness < cell_fit[b].thickness; });
     std::vector<int> region_of(cell.size(), -1);
     struct Grown {
         Moments m;

@@ -46,7 +46,8 @@ std::optional<Plane> fitPlane(const std::vector<Point> &points, const std::vecto
     return makePlane(n, -n.dot(mean));
 }
 
-std::optional<double> intersectLine(const Plane &plane, const Eigen::Vector3d &origin, const Eigen::Vector3d &direction) {
+std::optional<double> intersectLine(const Plane &plane, const Eigen::Vector3d &origin,
+                                    const Eigen::Vector3d &direction) {
     // t = n.(A - P0) / n.(P1 - P0), with A any point of the plane (A = -d n).
     const double denom = plane.normal.dot(direction);
     if (std::abs(denom) < 1e-12) return std::nullopt;

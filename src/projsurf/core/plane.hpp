@@ -29,7 +29,8 @@ std::optional<Plane> fitPlane(const std::vector<Point> &points, const std::vecto
 
 /// Eq. (6): the parameter t of the line origin + t * direction where it meets the plane;
 /// nullopt when parallel.
-std::optional<double> intersectLine(const Plane &plane, const Eigen::Vector3d &origin, const Eigen::Vector3d &direction);
+std::optional<double> intersectLine(const Plane &plane, const Eigen::Vector3d &origin,
+                                    const Eigen::Vector3d &direction);
 
 /// The intersection point of a ray (t > 0) with the plane; nullopt when it misses.
 std::optional<Eigen::Vector3d> intersectRay(const Plane &plane, const Eigen::Vector3d &origin,

@@ -8,9 +8,9 @@
 namespace projsurf {
 
 struct PlaneFrame {
-    Eigen::Vector3d origin = Eigen::Vector3d::Zero();  ///< a point of the plane
-    Eigen::Vector3d right = Eigen::Vector3d::UnitX();  ///< in-plane, perpendicular to gravity
-    Eigen::Vector3d up = -Eigen::Vector3d::UnitY();    ///< in-plane, -gravity projected on the plane
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();    ///< a point of the plane
+    Eigen::Vector3d right = Eigen::Vector3d::UnitX();    ///< in-plane, perpendicular to gravity
+    Eigen::Vector3d up = -Eigen::Vector3d::UnitY();      ///< in-plane, -gravity projected on the plane
     Eigen::Vector3d normal = -Eigen::Vector3d::UnitZ();  ///< towards the camera
 
     Eigen::Vector2d toPlane(const Eigen::Vector3d &p) const {

@@ -1,6 +1,6 @@
 #include "projsurf/core/plane_observation.hpp"
-#include "projsurf/core/target_clones.hpp"
 #include "projsurf/core/clamp_to_int.hpp"
+#include "projsurf/core/target_clones.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -44,7 +44,8 @@ void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane
     const float col0 = static_cast<float>(cr), row0 = static_cast<float>(cu);
     // The projector lens: its height above the plane and its raster position (unclipped).
     const float proj_h = static_cast<float>(plane.signedDistance(projector_origin));
-    const float o_col = static_cast<float>(projector_origin.dot(R)), o_row = static_cast<float>(projector_origin.dot(U));
+    const float o_col = static_cast<float>(projector_origin.dot(R)),
+                o_row = static_cast<float>(projector_origin.dot(U));
     const float band_k = static_cast<float>(tolerance.sigmas * tolerance.noise_k),
                 band_min = static_cast<float>(tolerance.min_band), band_max = static_cast<float>(tolerance.max_band),
                 obstacle_bands = static_cast<float>(tolerance.obstacle_bands),
@@ -71,18 +72,19 @@ void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane
             // Camera ray: t * p lies on the plane.
             const float t = -d / np;
             const float tc = t * pc + col0, tw = t * pw + row0;
-            const std::int32_t ray_in = (std::abs(np) >= 1e-6f) & (t > 0.0f) & (tc >= 0.0f) & (tc < cols) &
-                                        (tw >= 0.0f) & (tw < rows);
+            const std::int32_t ray_in =
+                (std::abs(np) >= 1e-6f) & (t > 0.0f) & (tc >= 0.0f) & (tc < cols) & (tw >= 0.0f) & (tw < rows);
             // Projector ray through p: o + s * (p - o) lies on the plane.
             const float s = proj_h / (proj_h - h);
             const float sc = o_col + s * (pc - o_col) + col0, sw = o_row + s * (pw - o_row) + row0;
-            const float ac = pc + col0, aw = pw + row0;                // on the plane: its foot
-            const float r = h - shape.at(ac, aw);                       // off the wall's shape
+            const float ac = pc + col0, aw = pw + row0;  // on the plane: its foot
+            const float r = h - shape.at(ac, aw);        // off the wall's shape
             const std::int32_t on = (std::abs(r) <= band) & (E[i] == 0), beyond = r < -margin,
                                between = (r > margin) & (h < proj_h);
             const float fc = beyond ? tc : sc, fw = beyond ? tw : sw;  // off it: camera or projector ray
             const float bc = on ? ac : fc, bw = on ? aw : fw;
-            const std::int32_t bin_in = (on | beyond | between) & (bc >= 0.0f) & (bc < cols) & (bw >= 0.0f) & (bw < rows);
+            const std::int32_t bin_in =
+                (on | beyond | between) & (bc >= 0.0f) & (bc < cols) & (bw >= 0.0f) & (bw < rows);
             // Truncation is floor here: both coordinates are known to be >= 0 when used. They
             // are clamped into the raster first (NaN -> 0), so that the conversion is defined
             // for the points the selects below discard too (far, NaN); kept values are unchanged.
@@ -127,8 +129,7 @@ void observePlane(const PointGrid &grid, const cv::Rect &box, const Plane &plane
     thread_local std::vector<std::uint8_t> zeros;
     if (!use && zeros.size() < grid.x.size()) zeros.assign(grid.x.size(), 0);
     observeRows(grid, area, plane, frame, raster, projector_origin, tolerance, RasterShape(shape, raster),
-                use ? exclude->data() : zeros.data(), bins, rays,
-                rays + (rows + 1) * row_cells, out.support_points);
+                use ? exclude->data() : zeros.data(), bins, rays, rays + (rows + 1) * row_cells, out.support_points);
 }
 
 namespace {
@@ -197,7 +198,8 @@ std::vector<int> offPlanePoints(const PointGrid &grid, const cv::Rect &box, cons
             const float tc = t * (r.x() * px + r.y() * py + r.z() * pz) + col0;
             const float tw = t * (u.x() * px + u.y() * py + u.z() * pz) + row0;
             if (!(t > 0.0f) || !(tc >= 0.0f) || !(tw >= 0.0f)) continue;
-            if (!(tc < static_cast<float>(raster.cols)) || !(tw < static_cast<float>(raster.rows))) continue;  // off the raster
+            if (!(tc < static_cast<float>(raster.cols)) || !(tw < static_cast<float>(raster.rows)))
+                continue;  // off the raster
             if (cells.contains(static_cast<int>(tw), static_cast<int>(tc))) out.push_back(grid.cloudIndex(gr, gc));
         }
     return out;

@@ -7,10 +7,10 @@
 #include <utility>
 #include <vector>
 
+#include "projsurf/core/outline_raster.hpp"
 #include "projsurf/core/plane.hpp"
 #include "projsurf/core/plane_frame.hpp"
 #include "projsurf/core/point_grid.hpp"
-#include "projsurf/core/outline_raster.hpp"
 #include "projsurf/core/surface_check.hpp"
 #include "projsurf/core/wall_shape.hpp"
 
@@ -45,7 +45,8 @@ struct PlaneObservation {
 /// support. Reuses `out`'s storage.
 void observePlane(const PointGrid &grid, const cv::Rect &box, const Plane &plane, const PlaneFrame &frame,
                   const RasterFrame &raster, const Eigen::Vector3d &projector_origin, const DepthTolerance &tolerance,
-                  PlaneObservation &out, const WallShape &shape = {}, const std::vector<std::uint8_t> *exclude = nullptr);
+                  PlaneObservation &out, const WallShape &shape = {},
+                  const std::vector<std::uint8_t> *exclude = nullptr);
 
 /// The default surface check (checkSurface's rule) read off an observation: the points whose
 /// camera ray crosses the plane in the cells whose centres lie in [lo, hi] (plane

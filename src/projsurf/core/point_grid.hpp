@@ -19,9 +19,7 @@ struct PointGrid {
     std::vector<float> x, y, z;  ///< row-major; non-finite points are NaN in all three
 
     /// Index into the cloud of grid element (row, col).
-    int cloudIndex(int row, int col) const {
-        return organized ? row * step * cloud_width + col * step : col;
-    }
+    int cloudIndex(int row, int col) const { return organized ? row * step * cloud_width + col * step : col; }
     /// The grid elements whose pixels lie in `pixels` (organized clouds; the whole grid when
     /// `pixels` is empty or the cloud is unorganized).
     cv::Rect gridBox(const cv::Rect &pixels) const;

@@ -13,9 +13,12 @@ namespace {
 
 cv::Mat grey8(const cv::Mat &m) {
     cv::Mat g;
-    if (m.channels() == 3) cv::cvtColor(m, g, cv::COLOR_BGR2GRAY);
-    else if (m.channels() == 4) cv::cvtColor(m, g, cv::COLOR_BGRA2GRAY);
-    else g = m;
+    if (m.channels() == 3)
+        cv::cvtColor(m, g, cv::COLOR_BGR2GRAY);
+    else if (m.channels() == 4)
+        cv::cvtColor(m, g, cv::COLOR_BGRA2GRAY);
+    else
+        g = m;
     if (g.depth() != CV_8U) g.convertTo(g, CV_8U);
     return g;
 }
@@ -96,7 +99,8 @@ FoundPicture findProjectedPicture(const cv::Mat &colour, const cv::Mat &depth, c
     cv::convexHull(contour, hull);
     std::vector<cv::Point> approx;
     const double perimeter = cv::arcLength(hull, true);
-    for (double eps = 0.01; eps <= 0.1 && approx.size() != 4; eps += 0.005) cv::approxPolyDP(hull, approx, eps * perimeter, true);
+    for (double eps = 0.01; eps <= 0.1 && approx.size() != 4; eps += 0.005)
+        cv::approxPolyDP(hull, approx, eps * perimeter, true);
     if (approx.size() != 4) {
         f.reason = "the bright region is not a quadrilateral";
         return f;

@@ -20,10 +20,10 @@ namespace projsurf {
 
 struct FoundPicture {
     bool found = false;
-    std::string reason;            ///< why not found
-    Corners2 image_px{};           ///< TL, TR, BR, BL in the colour image, px
-    Corners3 corners{};            ///< the same lifted to 3-D, camera frame, m
-    Plane plane;                   ///< fitted to the depth inside the picture
+    std::string reason;   ///< why not found
+    Corners2 image_px{};  ///< TL, TR, BR, BL in the colour image, px
+    Corners3 corners{};   ///< the same lifted to 3-D, camera frame, m
+    Plane plane;          ///< fitted to the depth inside the picture
 };
 
 /// `colour`: 8-bit (grey or BGR); `depth`: CV_16UC1 of the same size, registered. The

@@ -20,11 +20,11 @@ struct ProjectorIntrinsics {
 };
 
 struct Projector {
-    int width = 1280;                          ///< framebuffer width, px
-    int height = 800;                          ///< framebuffer height, px
+    int width = 1280;                                      ///< framebuffer width, px
+    int height = 800;                                      ///< framebuffer height, px
     double fov_h = 39.3 * 3.14159265358979323846 / 180.0;  ///< full horizontal FOV, rad (paper 3.1.2)
     double fov_v = 24.0 * 3.14159265358979323846 / 180.0;  ///< full vertical FOV, rad (paper 3.1.2)
-    Eigen::Vector3d origin{0.0, 0.12, 0.0};    ///< lens centre, camera frame, m
+    Eigen::Vector3d origin{0.0, 0.12, 0.0};                ///< lens centre, camera frame, m
     /// Central axis, unit. With `rotation` set it is that rotation's third column (setRotation).
     Eigen::Vector3d direction{0.0, 0.0, 1.0};
 

@@ -61,7 +61,8 @@ bool linearStart(const std::vector<ProjectorCorrespondence> &pairs, Model &m) {
     mean3 /= used;
     mean2 /= used;
     double s3 = 0, s2 = 0;
-    for (std::size_t i = 0; i < n; i += step) s3 += (pairs[i].point - mean3).norm(), s2 += (pairs[i].pixel - mean2).norm();
+    for (std::size_t i = 0; i < n; i += step)
+        s3 += (pairs[i].point - mean3).norm(), s2 += (pairs[i].pixel - mean2).norm();
     s3 = std::sqrt(3.0) / (s3 / used);
     s2 = std::sqrt(2.0) / (s2 / used);
     Eigen::MatrixXd A(2 * used, 12);
@@ -281,8 +282,9 @@ ProjectorFit fitProjector(const std::vector<ProjectorCorrespondence> &all, const
     fit.inliers = s.inliers;
     fit.projector = m.toProjector(cfg.width, cfg.height);
     if (!isValidProjector(fit.projector) || s.inliers < cfg.min_points / 2) {
-        fit.problem = "the fit did not converge to a usable projector; capture again with more of the picture on "
-                      "surfaces the camera sees";
+        fit.problem =
+            "the fit did not converge to a usable projector; capture again with more of the picture on "
+            "surfaces the camera sees";
         return fit;
     }
     fit.ok = true;

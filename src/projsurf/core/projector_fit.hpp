@@ -30,13 +30,13 @@ struct ProjectorFitConfig {
 
 struct ProjectorFit {
     bool ok = false;
-    std::string problem;         ///< why not (what to capture instead)
-    Projector projector;         ///< the full model
+    std::string problem;            ///< why not (what to capture instead)
+    Projector projector;            ///< the full model
     double rms_px = 0, max_px = 0;  ///< reprojection residuals of the inliers, framebuffer px
     std::size_t points = 0, inliers = 0;
-    double coverage = 0;         ///< share of framebuffer cells with points
-    double relief_m = 0;         ///< RMS distance of the points from their best plane
-    int distortion_terms = 0;    ///< 0, 1 (k1) or 2 (k1, k2)
+    double coverage = 0;       ///< share of framebuffer cells with points
+    double relief_m = 0;       ///< RMS distance of the points from their best plane
+    int distortion_terms = 0;  ///< 0, 1 (k1) or 2 (k1, k2)
 };
 
 ProjectorFit fitProjector(const std::vector<ProjectorCorrespondence> &pairs, const ProjectorFitConfig &config = {});

@@ -7,8 +7,9 @@
 
 namespace projsurf {
 
-Rectangle growRectangle(const Rectangle &start, const PlaneFrame &frame, const RasterFrame &raster, const cv::Mat &surface,
-                        const std::array<Eigen::Vector2d, 4> &footprint_uv, double aspect, const GrowthOptions &options) {
+Rectangle growRectangle(const Rectangle &start, const PlaneFrame &frame, const RasterFrame &raster,
+                        const cv::Mat &surface, const std::array<Eigen::Vector2d, 4> &footprint_uv, double aspect,
+                        const GrowthOptions &options) {
     const Eigen::Vector2d lo = frame.toPlane(start.corners[3]), hi = frame.toPlane(start.corners[1]);
     const double cell = raster.cell;
     auto fits = [&](const Eigen::Vector2d &mid, double h) {
@@ -44,8 +45,8 @@ Rectangle growRectangle(const Rectangle &start, const PlaneFrame &frame, const R
     // Slide away from whatever limits it, while that lets it grow.
     for (int round = 0; round < options.max_slides; ++round) {
         bool improved = false;
-        for (const Eigen::Vector2d &dir : {Eigen::Vector2d(1, 0), Eigen::Vector2d(-1, 0), Eigen::Vector2d(0, 1),
-                                           Eigen::Vector2d(0, -1)}) {
+        for (const Eigen::Vector2d &dir :
+             {Eigen::Vector2d(1, 0), Eigen::Vector2d(-1, 0), Eigen::Vector2d(0, 1), Eigen::Vector2d(0, -1)}) {
             const Eigen::Vector2d moved = mid + options.slide_cells * cell * dir;
             if (!fits(moved, h)) continue;
             const double grown = grow(moved, h);

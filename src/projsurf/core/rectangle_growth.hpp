@@ -6,8 +6,8 @@
 #include <array>
 #include <opencv2/core.hpp>
 
-#include "projsurf/core/plane_frame.hpp"
 #include "projsurf/core/outline_raster.hpp"
+#include "projsurf/core/plane_frame.hpp"
 
 namespace projsurf {
 
@@ -20,8 +20,8 @@ struct GrowthOptions {
 
 /// `surface`: CV_8U on `raster`, non-zero = free surface (the footprint not applied);
 /// `footprint_uv`: the projector footprint in plane coordinates; aspect = width / height.
-Rectangle growRectangle(const Rectangle &start, const PlaneFrame &frame, const RasterFrame &raster, const cv::Mat &surface,
-                        const std::array<Eigen::Vector2d, 4> &footprint_uv, double aspect,
+Rectangle growRectangle(const Rectangle &start, const PlaneFrame &frame, const RasterFrame &raster,
+                        const cv::Mat &surface, const std::array<Eigen::Vector2d, 4> &footprint_uv, double aspect,
                         const GrowthOptions &options = {});
 
 /// The rectangle moved in by `margin` on every side (by at most a quarter of its smaller side).

@@ -5,8 +5,8 @@
 #include <opencv2/core.hpp>
 #include <optional>
 
-#include "projsurf/core/plane_frame.hpp"
 #include "projsurf/core/outline_raster.hpp"
+#include "projsurf/core/plane_frame.hpp"
 
 namespace projsurf {
 

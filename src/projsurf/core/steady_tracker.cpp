@@ -7,13 +7,13 @@ namespace projsurf {
 
 const char *toString(SteadyEvent event) {
     switch (event) {
-        case SteadyEvent::None: return "none";
-        case SteadyEvent::Acquired: return "acquired";
-        case SteadyEvent::Kept: return "kept";
-        case SteadyEvent::Moved: return "moved";
-        case SteadyEvent::Switched: return "switched";
-        case SteadyEvent::Held: return "held";
-        case SteadyEvent::Lost: return "lost";
+    case SteadyEvent::None: return "none";
+    case SteadyEvent::Acquired: return "acquired";
+    case SteadyEvent::Kept: return "kept";
+    case SteadyEvent::Moved: return "moved";
+    case SteadyEvent::Switched: return "switched";
+    case SteadyEvent::Held: return "held";
+    case SteadyEvent::Lost: return "lost";
     }
     return "?";
 }

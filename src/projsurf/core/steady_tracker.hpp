@@ -26,9 +26,9 @@ struct SteadyConfig {
 
 /// One frame's evidence, in the fixed frame.
 struct SteadyMeasurement {
-    bool found = false;     ///< the detector found a rectangle in this frame
-    Plane plane;            ///< its plane
-    Rectangle rectangle;    ///< its rectangle (full size, before `scale`)
+    bool found = false;        ///< the detector found a rectangle in this frame
+    Plane plane;               ///< its plane
+    Rectangle rectangle;       ///< its rectangle (full size, before `scale`)
     bool held_usable = false;  ///< the held rectangle still fits the projector and its surface is clear
 };
 

@@ -27,7 +27,7 @@ Box planeBox(const PlaneFrame &frame, const Rectangle &rect) {
 }  // namespace
 
 SurfaceCheckResult checkSurfaceAgainstMeanDepth(const Cloud &cloud, const PlaneFrame &frame, const Rectangle &rect,
-                                     double threshold, int max_outliers) {
+                                                double threshold, int max_outliers) {
     // Rotate so the rectangle is perpendicular to z (plane frame), keep the points inside
     // its limits, compare each z with the mean z (paper Fig. 10).
     const Box box = planeBox(frame, rect);
@@ -61,7 +61,8 @@ SurfaceCheckResult checkSurface(const Cloud &cloud, const PlaneFrame &frame, con
     const Box box = planeBox(frame, rect);
     const Eigen::Vector3f n = frame.normal.cast<float>();
     const float d = static_cast<float>(-frame.normal.dot(frame.origin));
-    const Eigen::Vector3f o = frame.origin.cast<float>(), right = frame.right.cast<float>(), up = frame.up.cast<float>();
+    const Eigen::Vector3f o = frame.origin.cast<float>(), right = frame.right.cast<float>(),
+                          up = frame.up.cast<float>();
     SurfaceCheckResult r;
     auto visit = [&](int i) {
         const Point &p = cloud.points[i];

@@ -11,8 +11,8 @@
 namespace projsurf {
 
 struct SurfaceCheckResult {
-    int points = 0;     ///< points of the original cloud inside the rectangle
-    int outliers = 0;   ///< of those, off the surface
+    int points = 0;    ///< points of the original cloud inside the rectangle
+    int outliers = 0;  ///< of those, off the surface
     bool accepted = false;
     std::vector<int> outlier_indices;
 };
@@ -20,7 +20,7 @@ struct SurfaceCheckResult {
 /// Paper: points whose orthogonal projection falls inside the rectangle; outlier when
 /// (z - mean z)^2 > threshold^2 in the plane-aligned frame; reject above max_outliers.
 SurfaceCheckResult checkSurfaceAgainstMeanDepth(const Cloud &cloud, const PlaneFrame &frame, const Rectangle &rect,
-                                     double threshold, int max_outliers);
+                                                double threshold, int max_outliers);
 
 /// The default method's rule, point by point: points seen through the rectangle (camera ray
 /// meets the plane inside it); outlier when farther from the plane than tolerance.margin(z);

@@ -21,7 +21,8 @@ void fillEnclosed(cv::Mat &unfit, double max_cells) {
         if (cv::contourArea(contours[i]) > max_cells) continue;
         const cv::Rect box = cv::boundingRect(contours[i]);
         const cv::Point p = contours[i].front();
-        const uchar reason = unfit.at<uchar>(p.y, p.x) ? unfit.at<uchar>(p.y, p.x) : static_cast<uchar>(Unfit::Textured);
+        const uchar reason =
+            unfit.at<uchar>(p.y, p.x) ? unfit.at<uchar>(p.y, p.x) : static_cast<uchar>(Unfit::Textured);
         hole = cv::Mat::zeros(box.size(), CV_8U);
         cv::drawContours(hole, contours, static_cast<int>(i), cv::Scalar(255), cv::FILLED, cv::LINE_8, cv::noArray(), 0,
                          -box.tl());
@@ -73,8 +74,9 @@ void windowSums(const std::vector<ColourSums> &in, int rows, int cols, int k, st
 
 }  // namespace
 
-void cellSuitability(const PointGrid &grid, const cv::Rect &box, const std::vector<std::array<std::uint8_t, 3>> &colours,
-                     const Plane &plane, const PlaneFrame &frame, const RasterFrame &raster, const DepthTolerance &tolerance,
+void cellSuitability(const PointGrid &grid, const cv::Rect &box,
+                     const std::vector<std::array<std::uint8_t, 3>> &colours, const Plane &plane,
+                     const PlaneFrame &frame, const RasterFrame &raster, const DepthTolerance &tolerance,
                      const WallShape &shape, const SuitabilityOptions &opt, CellSuitability &out) {
     out.rows = out.cols = 0;
     const int rows = raster.rows, cols = raster.cols;
@@ -102,7 +104,8 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box, const std::vect
             if (!(c >= 0.0f && r >= 0.0f && c < cols && r < rows)) continue;  // NaN fails too
             float h = n3.x() * px + n3.y() * py + n3.z() * pz + d;
             if (!flat)  // the wall's shape at the foot: u = top_left.x + cell col, v = top_left.y - cell row
-                h -= static_cast<float>(shape.height({raster.top_left.x() + c * raster.cell, raster.top_left.y() - r * raster.cell}));
+                h -= static_cast<float>(
+                    shape.height({raster.top_left.x() + c * raster.cell, raster.top_left.y() - r * raster.cell}));
             if (std::abs(h) > tolerance.band(pz)) continue;
             const std::size_t index = static_cast<std::size_t>(grid.cloudIndex(gr, gc));
             if (index >= colours.size()) continue;
@@ -140,8 +143,8 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box, const std::vect
                                 ? static_cast<float>(opt.max_glare_share)
                                 : std::numeric_limits<float>::infinity();
     const float dark = static_cast<float>(std::max(opt.dark_min, opt.dark_relative * out.median_luminance) * 255.0);
-    const float max_chroma = static_cast<float>(opt.max_chroma * 255.0), max_contrast = static_cast<float>(opt.max_contrast),
-                min_samples = static_cast<float>(opt.min_samples);
+    const float max_chroma = static_cast<float>(opt.max_chroma * 255.0),
+                max_contrast = static_cast<float>(opt.max_contrast), min_samples = static_cast<float>(opt.min_samples);
     for (int r = 0; r < rows; ++r) {
         const ColourSums *w = win.data() + static_cast<std::size_t>(r) * cols;
         float *contrast = out.contrast.ptr<float>(r);
@@ -153,10 +156,14 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box, const std::vect
             const float var = std::max(0.0f, s.luminance_sq / s.samples - mean * mean);
             contrast[c] = std::sqrt(var) / std::max(mean, 8.0f);  // Weber-like; near black: its floor
             Unfit why = Unfit::None;
-            if (s.glare > max_glare * s.samples) why = Unfit::Glare;
-            else if (mean < dark) why = Unfit::Dark;
-            else if (contrast[c] > max_contrast) why = Unfit::Textured;
-            else if (s.chroma / s.samples > max_chroma) why = Unfit::Saturated;
+            if (s.glare > max_glare * s.samples)
+                why = Unfit::Glare;
+            else if (mean < dark)
+                why = Unfit::Dark;
+            else if (contrast[c] > max_contrast)
+                why = Unfit::Textured;
+            else if (s.chroma / s.samples > max_chroma)
+                why = Unfit::Saturated;
             unfit[c] = static_cast<uchar>(why);
         }
     }
@@ -164,8 +171,9 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box, const std::vect
     // darkness): that margin is given back.
     if (opt.trim_cells > 0) {
         cv::Mat keep;
-        cv::erode(out.unfit != 0, keep, cv::getStructuringElement(cv::MORPH_RECT, {2 * opt.trim_cells + 1, 2 * opt.trim_cells + 1}),
-                  {-1, -1}, 1, cv::BORDER_REPLICATE);
+        cv::erode(out.unfit != 0, keep,
+                  cv::getStructuringElement(cv::MORPH_RECT, {2 * opt.trim_cells + 1, 2 * opt.trim_cells + 1}), {-1, -1},
+                  1, cv::BORDER_REPLICATE);
         out.unfit.setTo(0, keep == 0);
     }
     fillEnclosed(out.unfit, opt.max_hole / (raster.cell * raster.cell));

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "projsurf/core/depth_tolerance.hpp"
+#include "projsurf/core/outline_raster.hpp"
 #include "projsurf/core/plane.hpp"
 #include "projsurf/core/plane_frame.hpp"
 #include "projsurf/core/point_grid.hpp"
-#include "projsurf/core/outline_raster.hpp"
 #include "projsurf/core/wall_shape.hpp"
 
 namespace projsurf {
@@ -24,33 +24,42 @@ namespace projsurf {
 enum class Unfit : uchar { None = 0, Glare = 1, Dark = 2, Textured = 3, Saturated = 4 };
 
 struct SuitabilityOptions {
-    double window = 0.05;          ///< m, side of the square on the wall the statistics are taken over (5 cells at 1 cm)
-    double dark_relative = 0.45;   ///< darker than this share of the wall's median luminance: too dark (measured, docs/suitability.md)
-    double dark_min = 0.06;        ///< luminance share below which a surface is too dark whatever the wall (near black)
-    double max_chroma = 0.40;      ///< mean (max - min channel) / 255 above this: too saturated (measured, docs/suitability.md)
-    double max_contrast = 0.20;    ///< luminance std / mean over the window above this: textured (measured, docs/suitability.md)
-    double glare_level = 0.98;     ///< a sample whose brightest channel reaches this share of 255 is blown out
-    double max_glare_share = 0.1;  ///< more blown-out samples than this share of the window: glare (specular, emissive; one column of 5)
-    double glare_wall_share = 0.85;///< no glare on a wall whose median luminance reaches this share of glare_level (the camera clipped the wall itself; real frame sun3d_nvblox_studyroom_000116)
-    int row_step = 1;              ///< every this many rows of the point grid are sampled (2 halves the pass but lets a window pane reach 2.1 % of the rectangle; colour suite)
-    int min_samples = 3;           ///< fewer wall samples in the window: colour decides nothing there
-    int trim_cells = 2;            ///< cells the unfit areas are eroded by (the window reaches 2 cells beyond a thing's edge; colour suite)
-    double max_hole = 0.25;        ///< m^2, fit areas enclosed by unfit cells up to this size are unfit too (a picture's plain mat)
+    double window = 0.05;  ///< m, side of the square on the wall the statistics are taken over (5 cells at 1 cm)
+    double dark_relative =
+        0.45;  ///< darker than this share of the wall's median luminance: too dark (measured, docs/suitability.md)
+    double dark_min = 0.06;  ///< luminance share below which a surface is too dark whatever the wall (near black)
+    double max_chroma =
+        0.40;  ///< mean (max - min channel) / 255 above this: too saturated (measured, docs/suitability.md)
+    double max_contrast =
+        0.20;  ///< luminance std / mean over the window above this: textured (measured, docs/suitability.md)
+    double glare_level = 0.98;  ///< a sample whose brightest channel reaches this share of 255 is blown out
+    double max_glare_share =
+        0.1;  ///< more blown-out samples than this share of the window: glare (specular, emissive; one column of 5)
+    double glare_wall_share = 0.85;  ///< no glare on a wall whose median luminance reaches this share of glare_level
+                                     ///< (the camera clipped the wall itself; real frame sun3d_nvblox_studyroom_000116)
+    int row_step = 1;  ///< every this many rows of the point grid are sampled (2 halves the pass but lets a window pane
+                       ///< reach 2.1 % of the rectangle; colour suite)
+    int min_samples = 3;  ///< fewer wall samples in the window: colour decides nothing there
+    int trim_cells =
+        2;  ///< cells the unfit areas are eroded by (the window reaches 2 cells beyond a thing's edge; colour suite)
+    double max_hole =
+        0.25;  ///< m^2, fit areas enclosed by unfit cells up to this size are unfit too (a picture's plain mat)
 };
 
 /// The colour sums of one cell's wall samples (Y and chroma in 8-bit levels).
 struct ColourSums {
-    float samples = 0, luminance = 0, luminance_sq = 0, chroma = 0, glare = 0;  ///< count, sum Y, sum Y^2, sum chroma, blown-out count
+    float samples = 0, luminance = 0, luminance_sq = 0, chroma = 0,
+          glare = 0;  ///< count, sum Y, sum Y^2, sum chroma, blown-out count
 };
 
 /// Per-cell colour sums over the wall samples and the verdicts (raster rows x cols).
 struct CellSuitability {
     int rows = 0, cols = 0;
-    std::vector<ColourSums> sums;  ///< row-major
-    std::vector<ColourSums> window;///< working storage: the window sums
-    cv::Mat contrast;              ///< CV_32F, luminance std / mean over the window about each cell (0 without samples)
-    cv::Mat unfit;                 ///< CV_8U, Unfit per cell
-    double median_luminance = 0.0; ///< share of 255, of the wall samples seen
+    std::vector<ColourSums> sums;    ///< row-major
+    std::vector<ColourSums> window;  ///< working storage: the window sums
+    cv::Mat contrast;  ///< CV_32F, luminance std / mean over the window about each cell (0 without samples)
+    cv::Mat unfit;     ///< CV_8U, Unfit per cell
+    double median_luminance = 0.0;  ///< share of 255, of the wall samples seen
     bool empty() const { return rows == 0; }
 };
 
@@ -58,15 +67,16 @@ struct CellSuitability {
 /// tolerance band of the wall's shape, at their foot on the plane. `colours` are the cloud's
 /// (one per point); `out` is left empty when there are none. Reuses `out`'s storage (a
 /// stream of frames allocates nothing once warm).
-void cellSuitability(const PointGrid &grid, const cv::Rect &box, const std::vector<std::array<std::uint8_t, 3>> &colours,
-                     const Plane &plane, const PlaneFrame &frame, const RasterFrame &raster, const DepthTolerance &tolerance,
+void cellSuitability(const PointGrid &grid, const cv::Rect &box,
+                     const std::vector<std::array<std::uint8_t, 3>> &colours, const Plane &plane,
+                     const PlaneFrame &frame, const RasterFrame &raster, const DepthTolerance &tolerance,
                      const WallShape &shape, const SuitabilityOptions &options, CellSuitability &out);
 
 /// What the picture would lie on: over the cells whose centres are in [lo, hi] (plane coords).
 struct RegionSuitability {
-    double mean_luminance = 0.0;   ///< share of 255 ("mean_albedo" in the JSON)
-    double contrast = 0.0;         ///< mean over its cells of the window contrast ("texture")
-    double unfit_share = 0.0;      ///< share of its cells that are unfit
+    double mean_luminance = 0.0;  ///< share of 255 ("mean_albedo" in the JSON)
+    double contrast = 0.0;        ///< mean over its cells of the window contrast ("texture")
+    double unfit_share = 0.0;     ///< share of its cells that are unfit
     int cells = 0;
 };
 RegionSuitability regionSuitability(const CellSuitability &cells, const RasterFrame &raster, const Eigen::Vector2d &lo,

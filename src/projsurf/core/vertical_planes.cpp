@@ -15,7 +15,8 @@ namespace {
 
 /// Least-squares refits of `plane` on its inliers among `pool`, while it stays vertical.
 Plane refine(const std::vector<Point> &points, const std::vector<float> &band, const std::vector<int> &pool,
-             const Eigen::Vector3d &gravity, const VerticalPlaneOptions &options, Plane plane, std::vector<int> &inliers) {
+             const Eigen::Vector3d &gravity, const VerticalPlaneOptions &options, Plane plane,
+             std::vector<int> &inliers) {
     for (int round = 0; round < options.refine_rounds; ++round) {
         const auto refitted = fitPlane(points, inliers);
         if (!refitted || tiltFromVertical(*refitted, gravity) > options.ransac.max_tilt) break;

@@ -12,11 +12,11 @@
 namespace projsurf {
 
 struct VerticalPlaneOptions {
-    RansacOptions ransac;     ///< per plane (max_tilt is the vertical tolerance)
-    int max_planes = 4;       ///< planes returned at most
-    int min_points = 150;     ///< inliers for a plane to count
-    int refine_rounds = 2;    ///< least-squares refits on the inliers
-    double merge_angle = 0.05;///< rad, normals this parallel (and offsets within the margin) merge
+    RansacOptions ransac;       ///< per plane (max_tilt is the vertical tolerance)
+    int max_planes = 4;         ///< planes returned at most
+    int min_points = 150;       ///< inliers for a plane to count
+    int refine_rounds = 2;      ///< least-squares refits on the inliers
+    double merge_angle = 0.05;  ///< rad, normals this parallel (and offsets within the margin) merge
 };
 
 /// `band[i]` is the inlier distance of points[i]; `tolerance` gives the margin within which two

@@ -84,8 +84,10 @@ std::optional<PlaneInliers> findVerticalPlane(const std::vector<Point> &points, 
             best_d = d;
             const double w = static_cast<double>(score) / subset.size();
             const double p_good = w * w * w;
-            if (p_good >= 1.0) needed = 0;
-            else if (p_good > 0.0) needed = std::log(1.0 - options.probability) / std::log(1.0 - p_good);
+            if (p_good >= 1.0)
+                needed = 0;
+            else if (p_good > 0.0)
+                needed = std::log(1.0 - options.probability) / std::log(1.0 - p_good);
         }
     }
     if (best_score < 3) return std::nullopt;

@@ -19,7 +19,8 @@ std::vector<Point> voxelDownsample(const std::vector<Point> &points, double leaf
         // 21 bits per axis around an offset: +-1 M voxels, i.e. +-50 km at 5 cm. The voxel
         // number is clamped to +-2^40 before converting (a far point must not overflow).
         auto k = [&](float v) {
-            const std::int64_t cell = clampToInt64(std::floor(v * inv), -(std::int64_t{1} << 40), std::int64_t{1} << 40);
+            const std::int64_t cell =
+                clampToInt64(std::floor(v * inv), -(std::int64_t{1} << 40), std::int64_t{1} << 40);
             return static_cast<std::uint64_t>(cell + (1 << 20)) & 0x1FFFFF;
         };
         keyed.emplace_back((k(p.x()) << 42) | (k(p.y()) << 21) | k(p.z()), i);

@@ -71,8 +71,8 @@ DepthTolerance toleranceFor(const WallShape &shape, const DepthTolerance &model,
     return t;
 }
 
-double localNoiseK(const Cloud &cloud, const std::vector<int> &sample, const std::vector<float> &band, const Plane &plane,
-                   double capture_bands, int offset, int min_pairs) {
+double localNoiseK(const Cloud &cloud, const std::vector<int> &sample, const std::vector<float> &band,
+                   const Plane &plane, double capture_bands, int offset, int min_pairs) {
     if (!cloud.organized() || offset < 1) return 0.0;
     const Eigen::Vector3f n = plane.normal.cast<float>();
     const float d = static_cast<float>(plane.d);
@@ -83,7 +83,8 @@ double localNoiseK(const Cloud &cloud, const std::vector<int> &sample, const std
         const float h = n.dot(p) + d, cap = static_cast<float>(capture_bands) * band[k];
         if (!(std::abs(h) <= cap)) continue;
         const int u = i % cloud.width, v = i / cloud.width;
-        for (const int j : {u + offset < cloud.width ? i + offset : -1, v + offset < cloud.height ? i + offset * cloud.width : -1}) {
+        for (const int j :
+             {u + offset < cloud.width ? i + offset : -1, v + offset < cloud.height ? i + offset * cloud.width : -1}) {
             if (j < 0) continue;
             const Point &q = cloud.points[j];
             const float hq = n.dot(q) + d;

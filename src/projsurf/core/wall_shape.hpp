@@ -22,7 +22,8 @@ namespace projsurf {
 struct WallShape {
     Eigen::Vector2d centre = Eigen::Vector2d::Zero();
     Eigen::Matrix<double, 6, 1> c = Eigen::Matrix<double, 6, 1>::Zero();
-    double noise_k = 0.0;  ///< 1/m, measured sigma_z / z^2 (0 = not measured): residual about the shape, or local (localNoiseK)
+    double noise_k =
+        0.0;  ///< 1/m, measured sigma_z / z^2 (0 = not measured): residual about the shape, or local (localNoiseK)
 
     double height(const Eigen::Vector2d &uv) const {
         const double x = uv.x() - centre.x(), y = uv.y() - centre.y();
@@ -36,15 +37,17 @@ struct WallShapeOptions {
     double tukey_bands = 1.5;    ///< Tukey biweight width, in inlier bands (outliers: what stands proud)
     int iterations = 5;          ///< reweighted least-squares rounds
     int min_points = 60;         ///< fewer points: the wall stays flat
-    int max_points = 2000;       ///< more are thinned evenly (six coefficients; same areas on the real frames as 12000, measured)
-    double max_bend = 0.08;      ///< m, a fitted bend larger than this anywhere in the points' extent is refused
+    int max_points =
+        2000;  ///< more are thinned evenly (six coefficients; same areas on the real frames as 12000, measured)
+    double max_bend = 0.08;  ///< m, a fitted bend larger than this anywhere in the points' extent is refused
 };
 
 /// Robust (Tukey-reweighted) fit of the shape to the points near `plane` (`band[i]` is the
 /// inlier distance of points[i]), and the noise about it (median absolute residual over z^2,
 /// scaled to a sigma). nullopt when too few points or the fit bends more than `max_bend`.
 std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const std::vector<float> &band,
-                                      const Plane &plane, const PlaneFrame &frame, const WallShapeOptions &options = {});
+                                      const Plane &plane, const PlaneFrame &frame,
+                                      const WallShapeOptions &options = {});
 
 /// Depth noise of a wall measured between readings `offset` pixels apart in an organized cloud
 /// (right and below each point `sample` lists, both within `capture` m x its band of the
@@ -52,8 +55,8 @@ std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const st
 /// over a few pixels (stereo cameras). Returned as k = sigma_z / z^2 (1/m), from the 90 %
 /// trimmed mean absolute difference (quantised depth makes a median of differences 0); 0 when
 /// fewer than `min_pairs` pairs.
-double localNoiseK(const Cloud &cloud, const std::vector<int> &sample, const std::vector<float> &band, const Plane &plane,
-                   double capture_bands, int offset, int min_pairs = 100);
+double localNoiseK(const Cloud &cloud, const std::vector<int> &sample, const std::vector<float> &band,
+                   const Plane &plane, double capture_bands, int offset, int min_pairs = 100);
 
 /// The tolerance about a fitted shape: the depth-noise coefficient measured on it, kept within
 /// [lo, hi] times the sensor model's (a better sensor tightens the band, a worse one widens it).

@@ -10,9 +10,9 @@
 
 #include "projsurf/core/colour_registration.hpp"
 #include "projsurf/core/rectangle_search.hpp"
+#include "projsurf/eval/experiments.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/exact_depth.hpp"
-#include "projsurf/eval/experiments.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/ray_cast.hpp"
 #include "projsurf/sim/render.hpp"
@@ -31,8 +31,8 @@ struct Paint {
     cv::Vec3f bgr;
 };
 const std::vector<Paint> &paints() {
-    static const std::vector<Paint> p{{"white", {0.84f, 0.86f, 0.87f}},     {"beige", {0.60f, 0.74f, 0.84f}},
-                                      {"pale_blue", {0.84f, 0.74f, 0.62f}}, {"sage", {0.52f, 0.66f, 0.56f}},
+    static const std::vector<Paint> p{{"white", {0.84f, 0.86f, 0.87f}},      {"beige", {0.60f, 0.74f, 0.84f}},
+                                      {"pale_blue", {0.84f, 0.74f, 0.62f}},  {"sage", {0.52f, 0.66f, 0.56f}},
                                       {"terracotta", {0.32f, 0.44f, 0.68f}}, {"grey", {0.42f, 0.42f, 0.42f}}};
     return p;
 }
@@ -54,8 +54,10 @@ void paintPhoto(cv::Mat &t, const cv::Rect &area, cv::RNG &rng) {
     for (int i = 0; i < shapes; ++i) {
         const cv::Point c(rng.uniform(0, area.width), rng.uniform(0, area.height));
         const int r = rng.uniform(2, 15);
-        if (i % 2) cv::circle(roi, c, r, randomColour(rng), cv::FILLED);
-        else cv::rectangle(roi, {c.x - r, c.y - r / 2, 2 * r, r}, randomColour(rng), cv::FILLED);
+        if (i % 2)
+            cv::circle(roi, c, r, randomColour(rng), cv::FILLED);
+        else
+            cv::rectangle(roi, {c.x - r, c.y - r / 2, 2 * r, r}, randomColour(rng), cv::FILLED);
     }
 }
 
@@ -77,7 +79,8 @@ cv::Mat calendar(double w, double h, cv::RNG &rng) {
     for (int y = 4; y < t.rows / 2 - 2; y += cell) cv::line(t, {2, y}, {t.cols - 3, y}, cv::Scalar(0.1, 0.1, 0.1), 1);
     for (int x = 2; x < t.cols - 2; x += cell) cv::line(t, {x, 4}, {x, t.rows / 2 - 4}, cv::Scalar(0.1, 0.1, 0.1), 1);
     for (int y = 6; y < t.rows / 2 - 4; y += cell)
-        for (int x = 4; x < t.cols - 6; x += cell) cv::rectangle(t, {x, y, 3, 4}, cv::Scalar(0.15, 0.15, 0.6), cv::FILLED);
+        for (int x = 4; x < t.cols - 6; x += cell)
+            cv::rectangle(t, {x, y, 3, 4}, cv::Scalar(0.15, 0.15, 0.6), cv::FILLED);
     return t;
 }
 
@@ -116,9 +119,10 @@ const std::vector<std::string> &colourSceneNames() {
 
 const std::vector<ColourCase> &colourSuiteCases() {
     static const std::vector<ColourCase> cases{
-        {"pictures", 2.5, 0.0},       {"pictures", 3.0, 20.0},   {"calendar_poster", 2.0, -10.0}, {"tv_flat", 2.5, 10.0},
-        {"window_pane", 2.5, 0.0},    {"dark_panel", 2.0, 0.0},  {"mixed", 3.0, 0.0},             {"plain_white", 2.5, 0.0},
-        {"plain_beige", 2.0, 15.0},   {"plain_pale_blue", 3.0, 0.0}, {"plain_sage", 2.5, -20.0},  {"plain_terracotta", 2.5, 0.0},
+        {"pictures", 2.5, 0.0},        {"pictures", 3.0, 20.0},    {"calendar_poster", 2.0, -10.0},
+        {"tv_flat", 2.5, 10.0},        {"window_pane", 2.5, 0.0},  {"dark_panel", 2.0, 0.0},
+        {"mixed", 3.0, 0.0},           {"plain_white", 2.5, 0.0},  {"plain_beige", 2.0, 15.0},
+        {"plain_pale_blue", 3.0, 0.0}, {"plain_sage", 2.5, -20.0}, {"plain_terracotta", 2.5, 0.0},
         {"plain_grey", 3.5, 0.0},
     };
     return cases;
@@ -133,7 +137,7 @@ ColourScene makeColourScene(const std::string &name, double distance, double ang
     cs.scenario.name = name;
     Scene &scene = cs.scenario.scene;
     const WallFrame w(distance, angle_deg);
-    cv::RNG rng(0x15u + static_cast<unsigned>(std::hash<std::string>{}(name) & 0xffff));
+    cv::RNG rng(0x15u + static_cast<unsigned>(std::hash<std::string>{}(name)&0xffff));
     auto thing = [&](double s0, double s1, double h0, double h1, const cv::Mat &texture, const cv::Vec3f &albedo,
                      float emission, const std::string &label) {
         addThing(scene, w, s0, s1, h0, h1, texture, albedo, emission, label);
@@ -160,7 +164,8 @@ ColourScene makeColourScene(const std::string &name, double distance, double ang
         thing(-1.45, -0.45, 0.95, 1.55, cv::Mat(), {0.03f, 0.03f, 0.035f}, 0.0f, "tv");
     }
     if (name == "window_pane") {
-        thing(-0.30, 0.60, 1.00, 1.90, cv::Mat(), {0.8f, 0.8f, 0.8f}, 1.0f, "window");  // daylight through frosted glass
+        thing(-0.30, 0.60, 1.00, 1.90, cv::Mat(), {0.8f, 0.8f, 0.8f}, 1.0f,
+              "window");  // daylight through frosted glass
     }
     if (name == "dark_panel") {
         thing(-0.40, 0.50, 0.70, 1.30, cv::Mat(), {0.06f, 0.06f, 0.07f}, 0.0f, "panel");
@@ -195,7 +200,8 @@ std::array<double, 4> wallBoxOf(const Rectangle &r, const WallFrame &w) {
 }
 
 double overlap(const std::array<double, 4> &a, const std::array<double, 4> &b) {
-    return std::max(0.0, std::min(a[1], b[1]) - std::max(a[0], b[0])) * std::max(0.0, std::min(a[3], b[3]) - std::max(a[2], b[2]));
+    return std::max(0.0, std::min(a[1], b[1]) - std::max(a[0], b[0])) *
+           std::max(0.0, std::min(a[3], b[3]) - std::max(a[2], b[2]));
 }
 
 /// % of the rectangle on unfit things.
@@ -215,7 +221,8 @@ double suitableBest(const Detection &off, const ColourScene &cs, const WallFrame
     cv::Mat mask = g.free_space.clone();
     for (int r = 0; r < mask.rows; ++r)
         for (int c = 0; c < mask.cols; ++c) {
-            const Eigen::Vector2d uv(g.grid_origin.x() + (c + 0.5) * g.grid_cell, g.grid_origin.y() - (r + 0.5) * g.grid_cell);
+            const Eigen::Vector2d uv(g.grid_origin.x() + (c + 0.5) * g.grid_cell,
+                                     g.grid_origin.y() - (r + 0.5) * g.grid_cell);
             const Eigen::Vector3d q = g.frame.toCamera(uv) - w.origin;
             const double s = q.dot(w.right), h = q.dot(w.up);
             for (const auto &u : cs.unfit)
@@ -322,12 +329,14 @@ std::string colourSuiteMarkdown(const ColourSuiteResult &result) {
           "fit wall (fit best: the largest rectangle on the detector's own free cells with suitability off, the "
           "unfit things taken out; mean over the rounds); on plain walls the area within 2 % of `off`. Depth truth "
           "best: the simulator's ground truth of the wall by depth alone.\n\n";
-    md << "| scene | distance | angle | depth truth best | fit best | area (avoid) | worst on unfit | worst area / fit best | area (off) | "
+    md << "| scene | distance | angle | depth truth best | fit best | area (avoid) | worst on unfit | worst area / fit "
+          "best | area (off) | "
           "worst on unfit (off) | plain: worst vs off | suitability ms | target |\n";
     md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto &r : result.rows) {
-        md << "| " << r.scene.scene << " | " << fmt("%.1f m", r.scene.distance) << " | " << fmt("%.0f°", r.scene.angle_deg)
-           << " | " << fmt("%.2f m²", r.depth_best) << " | " << fmt("%.2f m²", r.suitable_best) << " | " << fmt("%.2f m²", r.mean_area) << " | "
+        md << "| " << r.scene.scene << " | " << fmt("%.1f m", r.scene.distance) << " | "
+           << fmt("%.0f°", r.scene.angle_deg) << " | " << fmt("%.2f m²", r.depth_best) << " | "
+           << fmt("%.2f m²", r.suitable_best) << " | " << fmt("%.2f m²", r.mean_area) << " | "
            << (r.plain ? std::string("-") : fmt("%.1f %%", r.max_unfit_pct)) << " | "
            << (r.plain ? std::string("-") : fmt("%.0f %%", r.min_area_pct)) << " | " << fmt("%.2f m²", r.mean_area_off)
            << " | " << (r.plain ? std::string("-") : fmt("%.0f %%", r.max_off_unfit_pct)) << " | "
@@ -340,8 +349,9 @@ std::string colourSuiteMarkdown(const ColourSuiteResult &result) {
 std::string colourSuiteSummary(const ColourSuiteResult &result) {
     int ok = 0;
     for (const auto &r : result.rows) ok += r.ok();
-    return "colour suite: " + std::to_string(ok) + " / " + std::to_string(result.rows.size()) + " scenes meet the targets (" +
-           std::to_string(result.rounds) + " rounds each, " + fmt("%.0f s", result.seconds) + ")";
+    return "colour suite: " + std::to_string(ok) + " / " + std::to_string(result.rows.size()) +
+           " scenes meet the targets (" + std::to_string(result.rounds) + " rounds each, " +
+           fmt("%.0f s", result.seconds) + ")";
 }
 
 }  // namespace projsurf::sim

@@ -5,8 +5,8 @@
 // paints. Depth through the realistic Kinect v1 model, registered colour rendered at the same
 // intrinsics under room light with camera noise. Scored per round: the share of the detected
 // rectangle on unfit things, its area against the largest rectangle on fit wall (the depth
-// cells of the detector with suitability off, without the unfit things), and on plain walls its area against --suitability off.
-// Knows nothing of files.
+// cells of the detector with suitability off, without the unfit things), and on plain walls its area against
+// --suitability off. Knows nothing of files.
 #include <array>
 #include <functional>
 #include <string>
@@ -38,11 +38,12 @@ struct ColourScene {
 ColourScene makeColourScene(const std::string &name, double distance, double angle_deg);
 
 struct ColourSuiteOptions {
-    int rounds = 10;           ///< per scene (issue 15: every round)
+    int rounds = 10;  ///< per scene (issue 15: every round)
     unsigned seed = 1;
     double truth_cell = 0.01;  ///< m, as the eval
-    double ambient = 0.8;      ///< room light, fraction of white (a lit room; the sim's default 0.15 is the calibration's dim room)
-    double rgb_noise = 2.0;    ///< colour noise, 8-bit levels (sigma)
+    double ambient =
+        0.8;  ///< room light, fraction of white (a lit room; the sim's default 0.15 is the calibration's dim room)
+    double rgb_noise = 2.0;  ///< colour noise, 8-bit levels (sigma)
     std::vector<ColourCase> cases = colourSuiteCases();
 };
 ColourSuiteOptions quickColourSuite();  ///< 2 rounds
@@ -51,16 +52,17 @@ struct ColourRow {
     ColourCase scene;
     bool plain = false;
     int rounds = 0, found = 0;
-    double max_unfit_pct = 0.0;    ///< worst round: % of the rectangle on unfit things
-    double depth_best = 0.0;       ///< m^2, the depth ground truth's best rectangle (unfit things count as free)
-    double suitable_best = 0.0;    ///< m^2, mean over rounds: the largest rectangle on the detector's free cells (off) without the unfit things
-    double min_area_pct = 0.0;     ///< worst round: area / suitable_best, %
-    double mean_area = 0.0;        ///< m^2, with suitability (avoid)
-    double mean_area_off = 0.0;    ///< m^2, --suitability off
-    double max_off_unfit_pct = 0.0;///< worst round with suitability off: % on unfit things
-    double worst_plain_pct = 0.0;  ///< plain walls: largest |area / area off - 1|, %
-    double suitability_ms = 0.0;   ///< median of the detector's "suitability" stage
-    bool ok() const;               ///< the issue's targets hold for this scene
+    double max_unfit_pct = 0.0;  ///< worst round: % of the rectangle on unfit things
+    double depth_best = 0.0;     ///< m^2, the depth ground truth's best rectangle (unfit things count as free)
+    double suitable_best = 0.0;  ///< m^2, mean over rounds: the largest rectangle on the detector's free cells (off)
+                                 ///< without the unfit things
+    double min_area_pct = 0.0;   ///< worst round: area / suitable_best, %
+    double mean_area = 0.0;      ///< m^2, with suitability (avoid)
+    double mean_area_off = 0.0;  ///< m^2, --suitability off
+    double max_off_unfit_pct = 0.0;  ///< worst round with suitability off: % on unfit things
+    double worst_plain_pct = 0.0;    ///< plain walls: largest |area / area off - 1|, %
+    double suitability_ms = 0.0;     ///< median of the detector's "suitability" stage
+    bool ok() const;                 ///< the issue's targets hold for this scene
 };
 
 struct ColourSuiteResult {

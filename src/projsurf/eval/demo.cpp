@@ -12,9 +12,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double msSince(Clock::time_point t0) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 }  // namespace
 
@@ -29,7 +27,8 @@ DemoResult runDemo(const DemoOptions &o) {
 
     // 1. Calibrate from simulated captures of the disc (paper 3.1).
     res.calibration = calibrateFromSimulation(real, sensor, o.captures, o.seed);
-    res.stage_ms.emplace_back("calibration (render " + std::to_string(o.captures) + " captures + calibrate)", msSince(t));
+    res.stage_ms.emplace_back("calibration (render " + std::to_string(o.captures) + " captures + calibrate)",
+                              msSince(t));
     const Projector believed = res.calibration.ok ? res.calibration.projector : real;
 
     // 2. Look at the scene.
@@ -43,7 +42,8 @@ DemoResult runDemo(const DemoOptions &o) {
     res.picture = o.picture.empty() ? testCard(cv::Size(real.width, real.height)) : o.picture;
     res.config.aspect = static_cast<double>(res.picture.cols) / res.picture.rows;
     res.detection = detectSurface(res.frame.cloud, believed, res.config, res.scenario.gravity);
-    res.stage_ms.emplace_back("detect", res.detection.timing_ms.count("total") ? res.detection.timing_ms.at("total") : 0.0);
+    res.stage_ms.emplace_back("detect",
+                              res.detection.timing_ms.count("total") ? res.detection.timing_ms.at("total") : 0.0);
     t = Clock::now();
     TruthOptions topt;
     topt.aspect = res.config.aspect;
@@ -68,8 +68,7 @@ DemoResult runDemo(const DemoOptions &o) {
     res.stage_ms.emplace_back("correct (eq. 7, homography, warp)", msSince(t));
 
     // 5. Where the pictures land on the real wall (through the TRUE projector) and eq. 8.
-    if (res.keystone)
-        res.corrected_on_wall = framebufferOnWall(real, res.scenario.scene, res.keystone->picture_px);
+    if (res.keystone) res.corrected_on_wall = framebufferOnWall(real, res.scenario.scene, res.keystone->picture_px);
     res.uncorrected_on_wall = framebufferOnWall(real, res.scenario.scene, real.framebufferCorners());
 
     // 6. What the audience sees: the picture as is, and corrected (Fig 1).

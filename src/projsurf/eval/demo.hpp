@@ -11,8 +11,8 @@
 #include <opencv2/core.hpp>
 
 #include "projsurf/core/keystone.hpp"
-#include "projsurf/pipeline/detector.hpp"
 #include "projsurf/eval/experiments.hpp"
+#include "projsurf/pipeline/detector.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
@@ -24,31 +24,31 @@ struct DemoOptions {
     double distance = 2.0;     ///< m
     double angle_deg = 17.19;  ///< one of the paper's angles (4.1)
     unsigned seed = 1;
-    int captures = 5;          ///< calibration captures (paper 3.1.1: 5 positions)
-    cv::Mat picture;           ///< BGR; empty = the test card at the projector's resolution
-    DetectorConfig config;     ///< default method; the seed is set from the scene
+    int captures = 5;                  ///< calibration captures (paper 3.1.1: 5 positions)
+    cv::Mat picture;                   ///< BGR; empty = the test card at the projector's resolution
+    DetectorConfig config;             ///< default method; the seed is set from the scene
     cv::Size audience_size{960, 600};  ///< px of each audience view
     double audience_hfov_deg = 50.0;   ///< horizontal field of view of the audience view
 };
 
 struct DemoResult {
     Scenario scenario;
-    Projector true_projector;      ///< the simulated robot's real projector
-    CalibrationRun calibration;    ///< the projector as calibrated from simulated captures
-    RgbdFrame frame;               ///< what the RGB-D camera saw
+    Projector true_projector;    ///< the simulated robot's real projector
+    CalibrationRun calibration;  ///< the projector as calibrated from simulated captures
+    RgbdFrame frame;             ///< what the RGB-D camera saw
     GroundTruth truth;
     DetectorConfig config;
-    Detection detection;           ///< with the calibrated projector
-    Score score;                   ///< against ground truth
+    Detection detection;  ///< with the calibrated projector
+    Score score;          ///< against ground truth
     cv::Mat picture;
     std::optional<Keystone> keystone;
     std::string keystone_problem;
-    cv::Mat framebuffer;           ///< the corrected framebuffer (black when nothing was found)
+    cv::Mat framebuffer;              ///< the corrected framebuffer (black when nothing was found)
     WallPicture corrected_on_wall;    ///< the corrected picture's corners on the real wall (eq. 8)
     WallPicture uncorrected_on_wall;  ///< the whole framebuffer's corners on the real wall (eq. 8)
-    cv::Mat audience_uncorrected;  ///< the picture projected as is (keystoned)
-    cv::Mat audience_corrected;    ///< the corrected framebuffer projected
-    PinholeView audience_view;     ///< where the audience views are seen from
+    cv::Mat audience_uncorrected;     ///< the picture projected as is (keystoned)
+    cv::Mat audience_corrected;       ///< the corrected framebuffer projected
+    PinholeView audience_view;        ///< where the audience views are seen from
     Lighting audience_light;
     std::vector<std::pair<std::string, double>> stage_ms;  ///< in order
 };

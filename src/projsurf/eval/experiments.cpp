@@ -17,9 +17,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double msSince(Clock::time_point t0) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
+double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 double mean(const std::vector<double> &v) {
     if (v.empty()) return kNaN;
@@ -121,7 +119,8 @@ Trial scoreTrial(const Detection &det, const GroundTruth &truth, const Projector
         Detection shown = det;  // the rectangle the checker judged, as if it had been accepted
         shown.found = true;
         t.checked_valid = scoreDetection(shown, truth, projector, gravity, aspect, slack).valid;
-        if (const SurfaceTruth *s = surfaceOf(det.rectangle, truth, ScoreOptions{}.plane_tolerance)) t.surface = s->label;
+        if (const SurfaceTruth *s = surfaceOf(det.rectangle, truth, ScoreOptions{}.plane_tolerance))
+            t.surface = s->label;
     }
     return t;
 }
@@ -211,7 +210,8 @@ WallPicture pictureOnWall(const Projector &believed, const Projector &real, cons
     }
     WallPicture w = framebufferOnWall(real, scene, k.keystone->picture_px);
     for (const auto &p : k.keystone->picture_px) {
-        const double out = std::max({-0.5 - p.x(), p.x() - (believed.width - 0.5), -0.5 - p.y(), p.y() - (believed.height - 0.5)});
+        const double out =
+            std::max({-0.5 - p.x(), p.x() - (believed.width - 0.5), -0.5 - p.y(), p.y() - (believed.height - 0.5)});
         w.overshoot_px = std::max(w.overshoot_px, out);
     }
     return w;
@@ -253,7 +253,8 @@ EvalPlan paperEvalPlan(int rounds, bool quick, unsigned seed) {
                 job.angle_deg = a;
                 job.keystone = keystone;
                 job.variants.push_back(paperVariant(HullKind::Concave));
-                if (e.scenario == "wall" && !keystone) job.variants.push_back(paperVariant(HullKind::Convex));  // Table 1
+                if (e.scenario == "wall" && !keystone)
+                    job.variants.push_back(paperVariant(HullKind::Convex));  // Table 1
                 job.variants.push_back(defaultVariant());
                 plan.jobs.push_back(job);
             }
@@ -268,7 +269,8 @@ EvalResults runEval(const EvalPlan &plan, const Progress &progress) {
     res.rounds = plan.rounds;
     const SensorModel sensor;  // Kinect v1 class, noisy
     const Projector projector = exampleProjector();
-    const bool any_keystone = std::any_of(plan.jobs.begin(), plan.jobs.end(), [](const PoseJob &j) { return j.keystone; });
+    const bool any_keystone =
+        std::any_of(plan.jobs.begin(), plan.jobs.end(), [](const PoseJob &j) { return j.keystone; });
     const int total = static_cast<int>(plan.jobs.size()) * plan.rounds + (any_keystone ? plan.rounds : 0);
     int done = 0;
     auto tick = [&](const std::string &what) {
@@ -288,7 +290,8 @@ EvalResults runEval(const EvalPlan &plan, const Progress &progress) {
     for (std::size_t j = 0; j < plan.jobs.size(); ++j) {
         const PoseJob &job = plan.jobs[j];
         const Scenario sc = makeScenario(job.scenario, job.distance, job.angle_deg);
-        const std::string pose = (job.keystone ? "table 3: " : "") + describePose(job.scenario, job.distance, job.angle_deg);
+        const std::string pose =
+            (job.keystone ? "table 3: " : "") + describePose(job.scenario, job.distance, job.angle_deg);
         GroundTruth truth;
         if (!job.keystone) {
             TruthOptions topt;
@@ -331,9 +334,9 @@ EvalResults runEval(const EvalPlan &plan, const Progress &progress) {
                 if (!det.found) {
                     k.problem = "not found: " + det.reason;
                 } else {
-                    const WallPicture w = pictureOnWall(cal.projector, projector, sc.scene, det.rectangle,
-                                                        cv::Size(projector.width, projector.height),
-                                                        plan.keystone_tolerance_px);
+                    const WallPicture w =
+                        pictureOnWall(cal.projector, projector, sc.scene, det.rectangle,
+                                      cv::Size(projector.width, projector.height), plan.keystone_tolerance_px);
                     k.shown = w.ok;
                     k.overshoot_px = w.overshoot_px;
                     k.problem = w.problem;

@@ -13,9 +13,9 @@
 
 #include "projsurf/core/calibration.hpp"
 #include "projsurf/core/keystone.hpp"
+#include "projsurf/eval/scoring.hpp"
 #include "projsurf/pipeline/detector.hpp"
 #include "projsurf/sim/scene.hpp"
-#include "projsurf/eval/scoring.hpp"
 #include "projsurf/sim/sensor_model.hpp"
 
 namespace projsurf::sim {
@@ -37,33 +37,34 @@ MethodVariant defaultVariant();
 /// One scored detection on one simulated frame.
 struct Trial {
     std::string scenario;
-    double distance = 0.0;   ///< m
+    double distance = 0.0;  ///< m
     double angle_deg = 0.0;
     int round = 0;
-    unsigned seed = 0;       ///< sensor noise and RANSAC seed
-    std::string method;      ///< MethodVariant::name
+    unsigned seed = 0;   ///< sensor noise and RANSAC seed
+    std::string method;  ///< MethodVariant::name
     bool found = false;
-    bool checked = false;    ///< a rectangle reached the surface check
-    bool accepted = false;   ///< the checker's decision on it
-    bool checked_valid = false;  ///< ground truth (with the framebuffer slack): that rectangle is on a surface, upright and free
+    bool checked = false;   ///< a rectangle reached the surface check
+    bool accepted = false;  ///< the checker's decision on it
+    bool checked_valid =
+        false;  ///< ground truth (with the framebuffer slack): that rectangle is on a surface, upright and free
     int check_points = 0;
     int outliers = 0;
-    double area = 0.0;       ///< m^2 of the found rectangle (0 when not found)
-    double time_ms = 0.0;    ///< detection, in-process
-    std::string surface;     ///< label of the true surface the rectangle is on ("" when none)
-    Score score;             ///< against ground truth
-    bool slack_success = false;  ///< ground truth, but corners may leave the framebuffer by kFramebufferSlackPx
-    bool paper_success = false;     ///< paper 4.1: area within tolerance of the best round (applyPaperCriterion)
-    double paper_area_error = kNaN; ///< best round's area - this area, m^2 (found rounds only)
+    double area = 0.0;               ///< m^2 of the found rectangle (0 when not found)
+    double time_ms = 0.0;            ///< detection, in-process
+    std::string surface;             ///< label of the true surface the rectangle is on ("" when none)
+    Score score;                     ///< against ground truth
+    bool slack_success = false;      ///< ground truth, but corners may leave the framebuffer by kFramebufferSlackPx
+    bool paper_success = false;      ///< paper 4.1: area within tolerance of the best round (applyPaperCriterion)
+    double paper_area_error = kNaN;  ///< best round's area - this area, m^2 (found rounds only)
 };
 
 /// The paper's criterion (section 4.1) over the rounds of one pose and method: the best of
 /// the areas found; a round succeeds when it found something within `tolerance` (m^2) of that
 /// best. `areas[i]` is nullopt when round i found nothing (a failure, no area error).
 struct RoundsVerdict {
-    double best_area = kNaN;            ///< NaN when no round found anything
+    double best_area = kNaN;  ///< NaN when no round found anything
     std::vector<bool> success;
-    std::vector<double> area_error;     ///< best - area, NaN for rounds that found nothing
+    std::vector<double> area_error;  ///< best - area, NaN for rounds that found nothing
 };
 RoundsVerdict paperCriterion(const std::vector<std::optional<double>> &areas, double tolerance = 0.05);
 
@@ -79,16 +80,16 @@ Trial scoreTrial(const Detection &detection, const GroundTruth &truth, const Pro
 /// Aggregates of a set of trials.
 struct Summary {
     int n = 0, found = 0, checked = 0, accepted = 0;
-    int truth_success = 0;        ///< ground truth (scoreDetection)
-    int slack_success = 0;        ///< ground truth with kFramebufferSlackPx
-    int paper_success = 0;        ///< paper criterion
-    int decisions_correct = 0;    ///< checked rounds where accepted == checked_valid
+    int truth_success = 0;           ///< ground truth (scoreDetection)
+    int slack_success = 0;           ///< ground truth with kFramebufferSlackPx
+    int paper_success = 0;           ///< paper criterion
+    int decisions_correct = 0;       ///< checked rounds where accepted == checked_valid
     double truth_area_error = kNaN;  ///< mean |best true area - area| over all rounds (not found: best), m^2
     double paper_area_error = kNaN;  ///< mean (best round - area) over found rounds, m^2
     double mean_area = kNaN;         ///< over found rounds, m^2
     double best_area = kNaN;         ///< mean ground-truth best area, m^2
     double outliers_median = kNaN, outliers_min = kNaN, outliers_max = kNaN;  ///< checked rounds
-    double outlier_share_median = kNaN;   ///< outliers / points checked
+    double outlier_share_median = kNaN;                                       ///< outliers / points checked
     double time_median_ms = kNaN, time_p90_ms = kNaN;
     double truthRatePct() const { return n ? 100.0 * truth_success / n : kNaN; }
     double slackRatePct() const { return n ? 100.0 * slack_success / n : kNaN; }
@@ -106,11 +107,11 @@ struct CalibrationRun {
     unsigned seed = 0;
     bool ok = false;
     std::string message;
-    Projector projector;            ///< estimated (the true one's resolution and FOV)
-    double axis_error_deg = kNaN;   ///< estimated vs true direction
-    double origin_error_m = kNaN;   ///< estimated vs true lens centre
-    double max_residual_m = kNaN;   ///< worst centroid distance to the fitted axis
-    double ms = 0.0;                ///< render + calibrate
+    Projector projector;           ///< estimated (the true one's resolution and FOV)
+    double axis_error_deg = kNaN;  ///< estimated vs true direction
+    double origin_error_m = kNaN;  ///< estimated vs true lens centre
+    double max_residual_m = kNaN;  ///< worst centroid distance to the fitted axis
+    double ms = 0.0;               ///< render + calibrate
 };
 CalibrationRun calibrateFromSimulation(const Projector &truth, const SensorModel &sensor, int captures, unsigned seed);
 
@@ -120,8 +121,8 @@ struct WallPicture {
     bool ok = false;
     std::string problem;
     Corners2 framebuffer_px{};
-    Corners3 corners{};     ///< on the scene, TL, TR, BR, BL
-    ShapeErrors errors;     ///< eq. 8
+    Corners3 corners{};         ///< on the scene, TL, TR, BR, BL
+    ShapeErrors errors;         ///< eq. 8
     double overshoot_px = 0.0;  ///< how far the picture's corners leave the framebuffer (it is cut there)
 };
 /// `tolerance_px`: how far the rectangle may leave the believed framebuffer (computeKeystone);
@@ -139,7 +140,7 @@ struct KeystoneTrial {
     int round = 0;
     std::string method;
     bool found = false;
-    bool shown = false;       ///< the picture could be put in the framebuffer and landed on the scene
+    bool shown = false;         ///< the picture could be put in the framebuffer and landed on the scene
     double overshoot_px = 0.0;  ///< the picture's corners beyond the framebuffer edge (cut), px
     std::string problem;
     ShapeErrors errors;
@@ -151,14 +152,14 @@ struct PoseJob {
     std::string scenario;
     double distance = 0.0, angle_deg = 0.0;
     std::vector<MethodVariant> variants;
-    bool keystone = false;    ///< Table 3: detect with the calibrated projector, measure eq. 8
+    bool keystone = false;  ///< Table 3: detect with the calibrated projector, measure eq. 8
 };
 
 struct EvalPlan {
-    int rounds = 10;               ///< noise seeds per pose (paper: 10 detection rounds)
+    int rounds = 10;  ///< noise seeds per pose (paper: 10 detection rounds)
     unsigned seed = 1;
-    int calibration_captures = 5;  ///< paper 3.1.1: 5 positions
-    double truth_cell = 0.01;      ///< m, ground-truth raster (area error < 0.01 m^2 at 3 m)
+    int calibration_captures = 5;         ///< paper 3.1.1: 5 positions
+    double truth_cell = 0.01;             ///< m, ground-truth raster (area error < 0.01 m^2 at 3 m)
     double keystone_tolerance_px = 40.0;  ///< Table 3: measure pictures cut at the edge by up to this
     std::vector<PoseJob> jobs;
 };

@@ -11,7 +11,8 @@ namespace {
 
 std::vector<cv::Point> toPoints(const std::vector<Eigen::Vector2d> &px) {
     std::vector<cv::Point> out;
-    for (const auto &p : px) out.emplace_back(static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y())));
+    for (const auto &p : px)
+        out.emplace_back(static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y())));
     return out;
 }
 
@@ -24,7 +25,8 @@ void segment3(cv::Mat &img, const CameraIntrinsics &cam, Eigen::Vector3d a, Eige
     if (b.z() < zmin) b = b + (zmin - b.z()) / (a.z() - b.z()) * (a - b);
     const Eigen::Vector2d pa = cam.project(a), pb = cam.project(b);
     const auto clampPx = [](double v) { return static_cast<int>(std::clamp(v, -1e5, 1e5)); };
-    cv::line(img, {clampPx(pa.x()), clampPx(pa.y())}, {clampPx(pb.x()), clampPx(pb.y())}, colour, thickness, cv::LINE_AA);
+    cv::line(img, {clampPx(pa.x()), clampPx(pa.y())}, {clampPx(pb.x()), clampPx(pb.y())}, colour, thickness,
+             cv::LINE_AA);
 }
 
 void quad3(cv::Mat &img, const CameraIntrinsics &cam, const std::array<Eigen::Vector3d, 4> &c, const cv::Scalar &colour,
@@ -35,7 +37,8 @@ void quad3(cv::Mat &img, const CameraIntrinsics &cam, const std::array<Eigen::Ve
 }  // namespace
 
 cv::Mat depthColour(const Cloud &cloud) {
-    cv::Mat grey(cloud.height, cloud.width, CV_8U, cv::Scalar(0)), valid(cloud.height, cloud.width, CV_8U, cv::Scalar(0));
+    cv::Mat grey(cloud.height, cloud.width, CV_8U, cv::Scalar(0)),
+        valid(cloud.height, cloud.width, CV_8U, cv::Scalar(0));
     for (int v = 0; v < cloud.height; ++v)
         for (int u = 0; u < cloud.width; ++u) {
             const Point &p = cloud.points[static_cast<std::size_t>(v) * cloud.width + u];
@@ -54,13 +57,15 @@ cv::Mat renderLabelOverlay(const cv::Mat &background, const RealLabel &label, co
     cv::Mat img = background.clone();
     cv::Mat tint = img.clone();
     for (const auto &s : label.surfaces)
-        for (const auto &r : s.regions) cv::fillPoly(tint, std::vector<std::vector<cv::Point>>{toPoints(r.pixels)}, {60, 200, 60});
+        for (const auto &r : s.regions)
+            cv::fillPoly(tint, std::vector<std::vector<cv::Point>>{toPoints(r.pixels)}, {60, 200, 60});
     for (const auto &o : label.obstacles)
         cv::fillPoly(tint, std::vector<std::vector<cv::Point>>{toPoints(o.pixels)}, {40, 40, 230});
     cv::addWeighted(img, 1.0 - tint_alpha, tint, tint_alpha, 0.0, img);
     for (const auto &s : label.surfaces)
         for (const auto &r : s.regions) {
-            cv::polylines(img, std::vector<std::vector<cv::Point>>{toPoints(r.pixels)}, true, {0, 230, 0}, 1, cv::LINE_AA);
+            cv::polylines(img, std::vector<std::vector<cv::Point>>{toPoints(r.pixels)}, true, {0, 230, 0}, 1,
+                          cv::LINE_AA);
             if (!r.pixels.empty())
                 cv::putText(img, s.name, toPoints({r.pixels[0]})[0] + cv::Point(3, 12), cv::FONT_HERSHEY_SIMPLEX, 0.4,
                             {0, 255, 0}, 1, cv::LINE_AA);
@@ -75,8 +80,10 @@ cv::Mat renderLabelOverlay(const cv::Mat &background, const RealLabel &label, co
         int k = 0;
         for (const auto &ray : label.projector.cornerRays()) {
             const auto hit = intersectRay(s.plane, label.projector.origin, ray);
-            if (!hit) ok = false;
-            else foot[k] = *hit;
+            if (!hit)
+                ok = false;
+            else
+                foot[k] = *hit;
             ++k;
         }
         if (ok) quad3(img, camera, foot, {0, 220, 255}, 1);

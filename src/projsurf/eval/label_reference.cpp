@@ -89,8 +89,8 @@ bool largestBlock(const cv::Mat &free, double aspect, const Eigen::Vector2d &pre
     cv::Mat sum(free.rows + 1, free.cols + 1, CV_32S, cv::Scalar(0));
     for (int r = 0; r < free.rows; ++r)
         for (int c = 0; c < free.cols; ++c)
-            sum.at<int>(r + 1, c + 1) = (free.at<uchar>(r, c) ? 1 : 0) + sum.at<int>(r, c + 1) + sum.at<int>(r + 1, c) -
-                                        sum.at<int>(r, c);
+            sum.at<int>(r + 1, c + 1) =
+                (free.at<uchar>(r, c) ? 1 : 0) + sum.at<int>(r, c + 1) + sum.at<int>(r + 1, c) - sum.at<int>(r, c);
     auto widthOf = [&](int k) { return static_cast<int>(std::ceil(aspect * k - 1e-9)); };
     auto fits = [&](int k, bool pick) {
         const int w = widthOf(k);
@@ -99,7 +99,8 @@ bool largestBlock(const cv::Mat &free, double aspect, const Eigen::Vector2d &pre
         double best = std::numeric_limits<double>::infinity();
         for (int r = 0; r + k <= free.rows; ++r)
             for (int c = 0; c + w <= free.cols; ++c) {
-                const int s = sum.at<int>(r + k, c + w) - sum.at<int>(r, c + w) - sum.at<int>(r + k, c) + sum.at<int>(r, c);
+                const int s =
+                    sum.at<int>(r + k, c + w) - sum.at<int>(r, c + w) - sum.at<int>(r + k, c) + sum.at<int>(r, c);
                 if (s != k * w) continue;
                 if (!pick) return true;
                 const double d = (Eigen::Vector2d(c + 0.5 * w, r + 0.5 * k) - prefer).squaredNorm();
@@ -115,8 +116,10 @@ bool largestBlock(const cv::Mat &free, double aspect, const Eigen::Vector2d &pre
     int lo = 0, hi = free.rows;  // lo fits (0 trivially), hi + 1 does not
     while (lo < hi) {
         const int mid = (lo + hi + 1) / 2;
-        if (fits(mid, false)) lo = mid;
-        else hi = mid - 1;
+        if (fits(mid, false))
+            lo = mid;
+        else
+            hi = mid - 1;
     }
     if (lo == 0) return false;
     rows = lo;
@@ -155,7 +158,8 @@ LabelBest bestRectangleOnSurface(const RealLabel &l, const CameraIntrinsics &cam
             if (labelledFree(l, cam, surface, frame.toCamera(uv))) free.at<uchar>(r, c) = 1;
         }
     const double aspect = proj.aspect();
-    const Eigen::Vector2d prefer((frame.toPlane(*centre).x() - lo.x()) / cell, (hi.y() - frame.toPlane(*centre).y()) / cell);
+    const Eigen::Vector2d prefer((frame.toPlane(*centre).x() - lo.x()) / cell,
+                                 (hi.y() - frame.toPlane(*centre).y()) / cell);
     int col = 0, row = 0, k = 0;
     if (!largestBlock(free, aspect, prefer, col, row, k)) return best;
     // The rectangle of exactly the aspect, centred in the block of cells it occupies.

@@ -9,11 +9,11 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "projsurf/eval/label_overlay.hpp"
+#include "projsurf/eval/plot.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
-#include "projsurf/eval/label_overlay.hpp"
-#include "projsurf/eval/plot.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace fs = std::filesystem;
@@ -71,7 +71,8 @@ LabelledFrame evaluateLabelledFrame(const std::string &label_path, const std::st
     for (unsigned seed : seeds) {
         DetectorConfig c = cfg;
         c.seed = seed;
-        const GalleryEntry g = seed == cfg.seed ? f.detection : detectRealFrame(dir, f.label.projector, c, f.label.gravity);
+        const GalleryEntry g =
+            seed == cfg.seed ? f.detection : detectRealFrame(dir, f.label.projector, c, f.label.gravity);
         SeedRun run;
         run.seed = seed;
         run.found = g.found;
@@ -79,7 +80,8 @@ LabelledFrame evaluateLabelledFrame(const std::string &label_path, const std::st
         run.valid = scoreRealRectangle(f.label, camera, g.found, g.rectangle).right;
         if (g.found) run.centre = g.rectangle.center();
         if (run.valid != f.score.right) f.seed_same_validity = false;
-        if (g.found && f.detection.found) f.seed_shift = std::max(f.seed_shift, (run.centre - f.detection.rectangle.center()).norm());
+        if (g.found && f.detection.found)
+            f.seed_shift = std::max(f.seed_shift, (run.centre - f.detection.rectangle.center()).norm());
         lo = std::min(lo, run.area);
         hi = std::max(hi, run.area);
         f.seeds.push_back(run);
@@ -88,8 +90,10 @@ LabelledFrame evaluateLabelledFrame(const std::string &label_path, const std::st
 
     cv::Mat img = renderLabelOverlay(background, f.label, camera, f.detection.found ? &f.detection.rectangle : nullptr);
     std::string caption = f.name + ": ";
-    if (!f.score.found) caption += "nothing found";
-    else caption += fmt("%.3f m^2", f.score.area) + (f.score.valid ? ", valid" : ", INVALID (" + f.score.why + ")");
+    if (!f.score.found)
+        caption += "nothing found";
+    else
+        caption += fmt("%.3f m^2", f.score.area) + (f.score.valid ? ", valid" : ", INVALID (" + f.score.why + ")");
     caption += f.label.best.found ? ", label best " + fmt("%.3f m^2", f.label.best.area()) : ", no usable surface";
     f.overlay = withCaption(img, caption, 0.45);
     return f;
@@ -135,11 +139,13 @@ std::string labelledReportMarkdown(const std::vector<LabelledFrame> &frames, con
           "the obstacles (red) and the reference's best rectangle (blue; the projector's footprint in yellow). "
           "The detector (default method, its rectangle in magenta) runs with the label's projector and gravity, "
           "as the command in each frame's picture link would. **Valid** = upright (sides within 2° of gravity), "
-          "within max(5 cm, 3 % of the range) of a labelled surface's plane and at least 95 % of its area free by the labels (so a valid answer may exceed the label's best by a few percent); a frame "
+          "within max(5 cm, 3 % of the range) of a labelled surface's plane and at least 95 % of its area free by the "
+          "labels (so a valid answer may exceed the label's best by a few percent); a frame "
           "whose label has no usable surface is right when nothing is found. *Ratio* = area / label best for a "
           "valid answer, 0 otherwise. Seeds 1-5 and 42: area spread (max − min) / max, and how far the "
           "rectangle's centre moves.\n\n";
-    md << "**" << labelledSummaryLine(s) << ".** Targets (issue 11): every answer right, ratio ≥ 0.90, seed spread "
+    md << "**" << labelledSummaryLine(s)
+       << ".** Targets (issue 11): every answer right, ratio ≥ 0.90, seed spread "
           "≤ 2 %.\n\n";
     md << "![labelled frames](" << pictures << "/contact_sheet.png)\n\n";
     md << "| Frame | label best (m²) | detector (m²) | ratio | right | free % | why not | seed areas (m²) | spread | "
@@ -148,11 +154,12 @@ std::string labelledReportMarkdown(const std::vector<LabelledFrame> &frames, con
         md << "| [" << f.name << "](" << pictures << "/" << f.name << ".png) | ";
         md << (f.label.best.found ? fmt("%.3f", f.label.best.area()) : "none") << " | "
            << (f.score.found ? fmt("%.3f", f.score.area) : "—") << " | "
-           << (f.score.has_best ? fmt("%.2f", f.score.ratio) : "") << " | " << (f.score.right ? "yes" : "**no**") << " | "
-           << (f.score.found ? fmt("%.0f", 100.0 * f.score.free_fraction) : "") << " | "
+           << (f.score.has_best ? fmt("%.2f", f.score.ratio) : "") << " | " << (f.score.right ? "yes" : "**no**")
+           << " | " << (f.score.found ? fmt("%.0f", 100.0 * f.score.free_fraction) : "") << " | "
            << (f.score.right ? "" : f.score.why) << " | ";
         for (std::size_t i = 0; i < f.seeds.size(); ++i)
-            md << (i ? " " : "") << (f.seeds[i].found ? fmt("%.3f", f.seeds[i].area) : "—") << (f.seeds[i].valid ? "" : "✗");
+            md << (i ? " " : "") << (f.seeds[i].found ? fmt("%.3f", f.seeds[i].area) : "—")
+               << (f.seeds[i].valid ? "" : "✗");
         md << " | " << fmt("%.1f %%", 100.0 * f.seed_spread) << (f.seed_same_validity ? "" : ", validity changes")
            << " | " << fmt("%.2f", f.seed_shift) << " |\n";
     }
@@ -168,7 +175,8 @@ std::string labelledCsv(const std::vector<LabelledFrame> &frames) {
     for (const auto &f : frames) {
         csv << f.name << "," << (f.label.best.found ? fmt("%.4f", f.label.best.area()) : "") << ","
             << (f.score.found ? fmt("%.4f", f.score.area) : "") << "," << fmt("%.4f", f.score.ratio) << ","
-            << (f.score.right ? "yes" : "no") << "," << fmt("%.3f", f.score.free_fraction) << ",\"" << f.score.why << "\",";
+            << (f.score.right ? "yes" : "no") << "," << fmt("%.3f", f.score.free_fraction) << ",\"" << f.score.why
+            << "\",";
         for (std::size_t i = 0; i < f.seeds.size(); ++i)
             csv << (i ? " " : "") << f.seeds[i].seed << ":" << fmt("%.4f", f.seeds[i].area);
         csv << "," << fmt("%.4f", f.seed_spread) << "\n";
@@ -190,8 +198,10 @@ void writeLabelledPictures(const std::string &dir, const std::vector<LabelledFra
         panels.push_back(thumb);
     }
     if (!panels.empty())
-        writeImageAtomic((fs::path(dir) / "contact_sheet.png").string(),
-                         tilePanels(panels, 3, "Labelled real frames: usable (green), obstacles (red), label best (blue), detector (magenta)"));
+        writeImageAtomic(
+            (fs::path(dir) / "contact_sheet.png").string(),
+            tilePanels(panels, 3,
+                       "Labelled real frames: usable (green), obstacles (red), label best (blue), detector (magenta)"));
 }
 
 }  // namespace projsurf

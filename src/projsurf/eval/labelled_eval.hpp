@@ -23,7 +23,7 @@ struct SeedRun {
 };
 
 struct LabelledFrame {
-    std::string name;        ///< frame folder name
+    std::string name;  ///< frame folder name
     std::string label_path;
     RealLabel label;
     GalleryEntry detection;  ///< at the configuration's seed
@@ -32,16 +32,16 @@ struct LabelledFrame {
     double seed_spread = 0.0;  ///< (max - min) / max of the area over the seeds (0 when none found)
     double seed_shift = 0.0;   ///< m, largest distance of a seed's rectangle centre from the main one
     bool seed_same_validity = true;
-    std::string command;     ///< the equivalent `projsurf detect` command line
-    cv::Mat overlay;         ///< BGR: label polygons, label best (blue), detector (magenta)
+    std::string command;  ///< the equivalent `projsurf detect` command line
+    cv::Mat overlay;      ///< BGR: label polygons, label best (blue), detector (magenta)
 };
 
 struct LabelledSummary {
     int frames = 0;
-    int right = 0;          ///< valid answers, or found: false where nothing is usable
-    int with_best = 0;      ///< frames whose label has a best rectangle
+    int right = 0;                                 ///< valid answers, or found: false where nothing is usable
+    int with_best = 0;                             ///< frames whose label has a best rectangle
     double median_ratio = 0.0, worst_ratio = 0.0;  ///< over frames with a best (invalid = 0)
-    int seed_stable = 0;    ///< spread <= 2 % and the same validity on every seed
+    int seed_stable = 0;                           ///< spread <= 2 % and the same validity on every seed
 };
 
 /// Seeds for the stability check: 1-5 and 42 (the default).

@@ -10,13 +10,13 @@ namespace projsurf::sim {
 
 /// One row of Tables 1 and 2: success rate (%) and mean area error (m^2) per distance.
 struct PaperSuccessRow {
-    std::string table;     ///< "1" or "2"
-    std::string variant;   ///< "concave", "convex" (Table 1); "uncluttered", "cluttered" (Table 2)
+    std::string table;    ///< "1" or "2"
+    std::string variant;  ///< "concave", "convex" (Table 1); "uncluttered", "cluttered" (Table 2)
     double angle_deg = 0.0;
-    std::vector<double> distances;       ///< m: 1, 1.5, 2, 2.5, 3
+    std::vector<double> distances;  ///< m: 1, 1.5, 2, 2.5, 3
     std::vector<double> success_pct;
     std::vector<double> area_error_m2;
-    double average_success_pct = 0.0;    ///< the table's "Average" column
+    double average_success_pct = 0.0;  ///< the table's "Average" column
     double average_area_error_m2 = 0.0;
 };
 const std::vector<PaperSuccessRow> &paperSuccessRows();
@@ -39,10 +39,10 @@ const PaperKeystoneCell *findPaperKeystone(double angle_deg, double distance);
 
 /// Figure 15 and section 4.3 (the figure's bars are not in the text; only these numbers are).
 struct PaperOutlierFacts {
-    double highest_median_no_obstacle = 4285;   ///< outliers, NO case
-    double smallest_median_obstacles = 7383;    ///< outliers, SO or BO case
-    int outlier_limit = 5000;                   ///< the paper's chosen limit
-    double threshold_m = 0.05;                  ///< |z - mean z| beyond this is an outlier
+    double highest_median_no_obstacle = 4285;  ///< outliers, NO case
+    double smallest_median_obstacles = 7383;   ///< outliers, SO or BO case
+    int outlier_limit = 5000;                  ///< the paper's chosen limit
+    double threshold_m = 0.05;                 ///< |z - mean z| beyond this is an outlier
 };
 PaperOutlierFacts paperOutlierFacts();
 

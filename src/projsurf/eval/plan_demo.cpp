@@ -5,8 +5,8 @@
 namespace projsurf::sim {
 
 PlanShot planShot(const Scenario &scenario, const Projector &real, const Projector &believed, const Cloud &cloud,
-                  const DetectorConfig &config, const cv::Mat &picture, const PinholeView &viewer, const Lighting &light,
-                  unsigned seed) {
+                  const DetectorConfig &config, const cv::Mat &picture, const PinholeView &viewer,
+                  const Lighting &light, unsigned seed) {
     PlanShot shot;
     shot.plan = planStand(cloud, believed, config, scenario.gravity);
     if (!shot.plan.found) return shot;

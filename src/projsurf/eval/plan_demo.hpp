@@ -10,16 +10,16 @@
 namespace projsurf::sim {
 
 struct PlanShot {
-    PlanResult plan;        ///< planned on the first frame, with the believed projector
-    Detection after;        ///< detected from the moved robot (moved camera frame)
-    cv::Mat view_after;     ///< the corrected picture from there, seen by the audience (BGR)
+    PlanResult plan;     ///< planned on the first frame, with the believed projector
+    Detection after;     ///< detected from the moved robot (moved camera frame)
+    cv::Mat view_after;  ///< the corrected picture from there, seen by the audience (BGR)
 };
 
 /// Plans on `cloud`, moves the robot (its camera and the true projector with it), renders and
 /// detects there, corrects `picture` and renders the audience's view from `viewer` (today's
 /// camera frame, as the demo's other views). `view_after` is empty when nothing was found.
 PlanShot planShot(const Scenario &scenario, const Projector &real, const Projector &believed, const Cloud &cloud,
-                  const DetectorConfig &config, const cv::Mat &picture, const PinholeView &viewer, const Lighting &light,
-                  unsigned seed);
+                  const DetectorConfig &config, const cv::Mat &picture, const PinholeView &viewer,
+                  const Lighting &light, unsigned seed);
 
 }  // namespace projsurf::sim

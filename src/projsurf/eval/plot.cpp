@@ -16,10 +16,14 @@ std::string fmt(double v) {
     if (std::abs(v) < 1e-12) v = 0.0;
     char buf[32];
     const double a = std::abs(v);
-    if (a >= 10000) std::snprintf(buf, sizeof buf, "%.0fk", v / 1000.0);
-    else if (a >= 100 || v == std::round(v)) std::snprintf(buf, sizeof buf, "%.0f", v);
-    else if (a >= 1) std::snprintf(buf, sizeof buf, "%.1f", v);
-    else std::snprintf(buf, sizeof buf, "%.2f", v);
+    if (a >= 10000)
+        std::snprintf(buf, sizeof buf, "%.0fk", v / 1000.0);
+    else if (a >= 100 || v == std::round(v))
+        std::snprintf(buf, sizeof buf, "%.0f", v);
+    else if (a >= 1)
+        std::snprintf(buf, sizeof buf, "%.1f", v);
+    else
+        std::snprintf(buf, sizeof buf, "%.2f", v);
     return buf;
 }
 
@@ -59,19 +63,28 @@ void drawMarker(cv::Mat &img, cv::Point2d p, int marker, const cv::Scalar &color
     const int r = 5, t = hollow ? 2 : cv::FILLED;
     switch (marker % 4) {
     case 0: cv::circle(img, p, r, color, t, cv::LINE_AA); break;
-    case 1: cv::rectangle(img, cv::Rect(cvRound(p.x) - r, cvRound(p.y) - r, 2 * r, 2 * r), color, t, cv::LINE_AA); break;
+    case 1:
+        cv::rectangle(img, cv::Rect(cvRound(p.x) - r, cvRound(p.y) - r, 2 * r, 2 * r), color, t, cv::LINE_AA);
+        break;
     case 2: {
-        std::vector<cv::Point> tri{{cvRound(p.x), cvRound(p.y) - r - 1}, {cvRound(p.x) - r, cvRound(p.y) + r},
+        std::vector<cv::Point> tri{{cvRound(p.x), cvRound(p.y) - r - 1},
+                                   {cvRound(p.x) - r, cvRound(p.y) + r},
                                    {cvRound(p.x) + r, cvRound(p.y) + r}};
-        if (hollow) cv::polylines(img, tri, true, color, 2, cv::LINE_AA);
-        else cv::fillConvexPoly(img, tri, color, cv::LINE_AA);
+        if (hollow)
+            cv::polylines(img, tri, true, color, 2, cv::LINE_AA);
+        else
+            cv::fillConvexPoly(img, tri, color, cv::LINE_AA);
         break;
     }
     default: {
-        std::vector<cv::Point> dia{{cvRound(p.x), cvRound(p.y) - r - 1}, {cvRound(p.x) + r + 1, cvRound(p.y)},
-                                   {cvRound(p.x), cvRound(p.y) + r + 1}, {cvRound(p.x) - r - 1, cvRound(p.y)}};
-        if (hollow) cv::polylines(img, dia, true, color, 2, cv::LINE_AA);
-        else cv::fillConvexPoly(img, dia, color, cv::LINE_AA);
+        std::vector<cv::Point> dia{{cvRound(p.x), cvRound(p.y) - r - 1},
+                                   {cvRound(p.x) + r + 1, cvRound(p.y)},
+                                   {cvRound(p.x), cvRound(p.y) + r + 1},
+                                   {cvRound(p.x) - r - 1, cvRound(p.y)}};
+        if (hollow)
+            cv::polylines(img, dia, true, color, 2, cv::LINE_AA);
+        else
+            cv::fillConvexPoly(img, dia, color, cv::LINE_AA);
     }
     }
 }
@@ -105,8 +118,10 @@ void drawLegend(cv::Mat &img, const std::vector<Series> &series, int left, int t
             cv::rectangle(img, cv::Rect(left + x + 8, y - 12, 20, 14), s.color, cv::FILLED);
             if (s.dashed) cv::rectangle(img, cv::Rect(left + x + 8, y - 12, 20, 14), kBlack, 1);
         } else {
-            if (s.dashed) dashedLine(img, a, b, s.color, 2);
-            else cv::line(img, a, b, s.color, 2, cv::LINE_AA);
+            if (s.dashed)
+                dashedLine(img, a, b, s.color, 2);
+            else
+                cv::line(img, a, b, s.color, 2, cv::LINE_AA);
             drawMarker(img, (a + b) * 0.5, s.marker, s.color, s.dashed);
         }
         text(img, s.label, {left + x + 40, y}, 0.45, kBlack);
@@ -224,8 +239,10 @@ cv::Mat drawLineChart(const LineChart &c) {
         const double y = Y(h.value);
         dashedLine(img, cv::Point2d(box.x, y), cv::Point2d(box.x + box.width, y), kGreyText, 1);
         const int ty = h.label_below ? cvRound(y) + 15 : cvRound(y) - 5;
-        if (h.label_left) text(img, h.label, {box.x + 6, ty}, 0.42, kGreyText, 0);
-        else text(img, h.label, {box.x + box.width - 6, ty}, 0.42, kGreyText, 2);
+        if (h.label_left)
+            text(img, h.label, {box.x + 6, ty}, 0.42, kGreyText, 0);
+        else
+            text(img, h.label, {box.x + box.width - 6, ty}, 0.42, kGreyText, 2);
     }
     // Series.
     for (const auto &s : c.series) {
@@ -238,8 +255,10 @@ cv::Mat drawLineChart(const LineChart &c) {
             }
             const cv::Point2d p(X(s.x[i]), Y(s.y[i]));
             if (have_prev) {
-                if (s.dashed) dashedLine(img, prev, p, s.color, 2);
-                else cv::line(img, prev, p, s.color, 2, cv::LINE_AA);
+                if (s.dashed)
+                    dashedLine(img, prev, p, s.color, 2);
+                else
+                    cv::line(img, prev, p, s.color, 2, cv::LINE_AA);
             }
             if (i < s.err.size() && !std::isnan(s.err[i]) && s.err[i] > 0) {
                 const double y0 = Y(s.y[i] - s.err[i]), y1 = Y(s.y[i] + s.err[i]);

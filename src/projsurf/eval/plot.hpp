@@ -22,16 +22,16 @@ struct Series {
 struct LineChart {
     std::string title, x_label, y_label;
     std::vector<Series> series;
-    double y_min = 0.0, y_max = 0.0;   ///< y_max <= y_min: from the data
-    bool log_y = false;                ///< log10 axis (values <= 0 are clamped to y_min)
-    std::vector<double> x_ticks;       ///< empty: the union of the series' x
+    double y_min = 0.0, y_max = 0.0;  ///< y_max <= y_min: from the data
+    bool log_y = false;               ///< log10 axis (values <= 0 are clamped to y_min)
+    std::vector<double> x_ticks;      ///< empty: the union of the series' x
     struct HLine {
         double value = 0.0;
         std::string label;
         bool label_left = false;   ///< label at the left end (else the right end)
         bool label_below = false;  ///< label under the line (else above)
     };
-    std::vector<HLine> h_lines;    ///< labelled horizontal reference lines (dashed grey)
+    std::vector<HLine> h_lines;  ///< labelled horizontal reference lines (dashed grey)
     cv::Size size{640, 440};
 };
 cv::Mat drawLineChart(const LineChart &chart);

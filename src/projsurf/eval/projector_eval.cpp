@@ -6,8 +6,8 @@
 #include <cstdio>
 
 #include "projsurf/core/keystone.hpp"
-#include "projsurf/pipeline/detector.hpp"
 #include "projsurf/eval/experiments.hpp"
+#include "projsurf/pipeline/detector.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
@@ -45,7 +45,8 @@ CalibrationScore scoreCalibration(const Projector &believed, const Projector &tr
         s.problem = "no surface found: " + det.reason;
         return s;
     }
-    const WallPicture w = pictureOnWall(believed, truth, sc.scene, det.rectangle, cv::Size(believed.width, believed.height));
+    const WallPicture w =
+        pictureOnWall(believed, truth, sc.scene, det.rectangle, cv::Size(believed.width, believed.height));
     if (!w.ok) {
         s.problem = w.problem;
         return s;
@@ -56,7 +57,8 @@ CalibrationScore scoreCalibration(const Projector &believed, const Projector &tr
     const Eigen::Vector3d n_wall = sc.wall.normal.normalized();
     Eigen::Vector3d up = -sc.gravity + sc.gravity.dot(n_wall) * n_wall;
     up.normalize();
-    for (const auto &edge : {Eigen::Vector3d(w.corners[0] - w.corners[3]), Eigen::Vector3d(w.corners[1] - w.corners[2])}) {
+    for (const auto &edge :
+         {Eigen::Vector3d(w.corners[0] - w.corners[3]), Eigen::Vector3d(w.corners[1] - w.corners[2])}) {
         const Eigen::Vector3d e = (edge - edge.dot(n_wall) * n_wall).normalized();
         s.upright_deg = std::max(s.upright_deg, std::acos(std::clamp(e.dot(up), -1.0, 1.0)) * 180 / kPi);
     }
@@ -85,11 +87,16 @@ std::vector<ProjectorEvalRow> runProjectorEval(unsigned seed, bool quick) {
         spec.fov_h = fov[0];
         spec.fov_v = fov[1];
         const CalibrationRun disc = calibrateFromSimulation(spec, sensor, 5, seed + 10 * k);
-        if (disc.ok) row.disc = scoreCalibration(disc.projector, truth, sensor, seed + 10 * k + 1);
-        else row.disc.problem = disc.message;
-        const ProjectorFit sl = structuredCalibration(truth, sensor, relief ? reliefPose() : flatWallPoses(), seed + 10 * k + 2);
-        if (sl.ok) row.structured = scoreCalibration(sl.projector, truth, sensor, seed + 10 * k + 1);
-        else row.structured.problem = sl.problem;
+        if (disc.ok)
+            row.disc = scoreCalibration(disc.projector, truth, sensor, seed + 10 * k + 1);
+        else
+            row.disc.problem = disc.message;
+        const ProjectorFit sl =
+            structuredCalibration(truth, sensor, relief ? reliefPose() : flatWallPoses(), seed + 10 * k + 2);
+        if (sl.ok)
+            row.structured = scoreCalibration(sl.projector, truth, sensor, seed + 10 * k + 1);
+        else
+            row.structured.problem = sl.problem;
         row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         rows.push_back(row);
         ++k;

@@ -18,9 +18,9 @@ struct CalibrationScore {
     std::string problem;
     double rms_px = 0, worst_px = 0;  ///< believed.toPixel vs the true pixel, points at 1-4 m
     double origin_mm = 0;
-    double eq8_pct = 0;               ///< worst of the eq. 8 errors of the landed picture
-    double corner_mm = 0;             ///< farthest landed corner from the detected rectangle's, wall at 2 m
-    double upright_deg = 0;           ///< landed left/right edges vs the wall's vertical, worst
+    double eq8_pct = 0;      ///< worst of the eq. 8 errors of the landed picture
+    double corner_mm = 0;    ///< farthest landed corner from the detected rectangle's, wall at 2 m
+    double upright_deg = 0;  ///< landed left/right edges vs the wall's vertical, worst
 };
 
 /// Scores `believed` against `truth` (end to end on the "wall" scenario at 2 m, 20 deg).

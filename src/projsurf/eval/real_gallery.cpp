@@ -8,11 +8,11 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "projsurf/eval/plot.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/overlay.hpp"
-#include "projsurf/eval/plot.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace fs = std::filesystem;
@@ -85,19 +85,24 @@ cv::Mat contactSheet(const std::vector<GalleryEntry> &entries, int columns, int 
         cv::Mat thumb;
         if (!g.overlay.empty()) {
             const double s = static_cast<double>(thumb_width) / g.overlay.cols;
-            cv::resize(g.overlay, thumb, cv::Size(thumb_width, static_cast<int>(g.overlay.rows * s)), 0, 0, cv::INTER_AREA);
+            cv::resize(g.overlay, thumb, cv::Size(thumb_width, static_cast<int>(g.overlay.rows * s)), 0, 0,
+                       cv::INTER_AREA);
         } else {
             thumb = cv::Mat(thumb_width * 3 / 4, thumb_width, CV_8UC3, cv::Scalar(60, 60, 60));
         }
         char line[160];
-        if (!g.read) std::snprintf(line, sizeof line, "%s: unreadable", g.name.c_str());
-        else if (g.found) std::snprintf(line, sizeof line, "%s: %.2f m^2, %.0f ms", g.name.c_str(), g.area, g.time_ms);
-        else std::snprintf(line, sizeof line, "%s: not found", g.name.c_str());
+        if (!g.read)
+            std::snprintf(line, sizeof line, "%s: unreadable", g.name.c_str());
+        else if (g.found)
+            std::snprintf(line, sizeof line, "%s: %.2f m^2, %.0f ms", g.name.c_str(), g.area, g.time_ms);
+        else
+            std::snprintf(line, sizeof line, "%s: not found", g.name.c_str());
         cv::Mat p = withCaption(thumb, line, 0.5);
         cv::copyMakeBorder(p, p, 4, 4, 4, 4, cv::BORDER_CONSTANT, cv::Scalar(255, 255, 255));
         panels.push_back(p);
     }
-    return tilePanels(panels, columns, "Detection on real RGB-D frames (default method, example calibration, gravity from the floor)");
+    return tilePanels(panels, columns,
+                      "Detection on real RGB-D frames (default method, example calibration, gravity from the floor)");
 }
 
 }  // namespace projsurf

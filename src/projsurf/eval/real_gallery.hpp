@@ -12,18 +12,18 @@
 namespace projsurf {
 
 struct GalleryEntry {
-    std::string name;        ///< the frame's folder name
-    bool read = false;       ///< the frame could be read
-    std::string problem;     ///< why not (when !read)
+    std::string name;     ///< the frame's folder name
+    bool read = false;    ///< the frame could be read
+    std::string problem;  ///< why not (when !read)
     bool found = false;
-    std::string reason;      ///< why nothing was found
+    std::string reason;                      ///< why nothing was found
     double width = 0, height = 0, area = 0;  ///< m, m, m^2
-    double distance = 0;     ///< m, plane's distance from the camera
+    double distance = 0;                     ///< m, plane's distance from the camera
     double orientation_deg = 0;
     int points = 0, outliers = 0;  ///< surface check
-    double time_ms = 0;      ///< detection, in-process
-    Rectangle rectangle;     ///< camera frame (when found)
-    cv::Mat overlay;         ///< BGR
+    double time_ms = 0;            ///< detection, in-process
+    Rectangle rectangle;           ///< camera frame (when found)
+    cv::Mat overlay;               ///< BGR
 };
 
 /// Sorted sub-folders of `dir` that hold depth.png and camera.yaml; empty when `dir` is not a

@@ -1,11 +1,11 @@
 #include "projsurf/eval/real_labels.hpp"
 #include "projsurf/io/yaml_numbers.hpp"
 
+#include <yaml-cpp/yaml.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <yaml-cpp/yaml.h>
 
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -48,7 +48,8 @@ struct Reader {
         LabelPolygon p;
         p.name = node["name"] ? text(node["name"], what + ".name") : "";
         const YAML::Node pts = need(node, "polygon", what + ".");
-        if (!pts.IsSequence() || pts.size() < 3) fail("'" + what + ".polygon' must be a list of at least 3 [x, y] pixels");
+        if (!pts.IsSequence() || pts.size() < 3)
+            fail("'" + what + ".polygon' must be a list of at least 3 [x, y] pixels");
         for (const auto &xy : pts) {
             if (!xy.IsSequence() || xy.size() != 2) fail("'" + what + ".polygon' must be a list of [x, y] pixels");
             p.pixels.emplace_back(number(xy[0], what + ".polygon"), number(xy[1], what + ".polygon"));
@@ -90,7 +91,8 @@ RealLabel readRealLabel(const std::string &path) {
 
     const YAML::Node g = r.need(root, "gravity", "");
     l.gravity_source = r.text(r.need(g, "source", "gravity."), "gravity.source");
-    if (l.gravity_source != "auto" && l.gravity_source != "stated") r.fail("'gravity.source' must be 'auto' or 'stated'");
+    if (l.gravity_source != "auto" && l.gravity_source != "stated")
+        r.fail("'gravity.source' must be 'auto' or 'stated'");
     l.gravity = r.vector3(r.need(g, "vector", "gravity."), "gravity.vector");
     if (l.gravity.norm() < 1e-6) r.fail("'gravity.vector' is the zero vector");
     l.gravity.normalize();
@@ -135,7 +137,8 @@ RealLabel readRealLabel(const std::string &path) {
         }
         if (l.best.found) {
             l.best.surface = r.text(r.need(b, "surface", "best."), "best.surface");
-            if (std::none_of(l.surfaces.begin(), l.surfaces.end(), [&](const LabelSurface &s) { return s.name == l.best.surface; }))
+            if (std::none_of(l.surfaces.begin(), l.surfaces.end(),
+                             [&](const LabelSurface &s) { return s.name == l.best.surface; }))
                 r.fail("'best.surface' names no surface: '" + l.best.surface + "'");
             l.best.width = r.number(r.need(b, "width", "best."), "best.width");
             l.best.height = r.number(r.need(b, "height", "best."), "best.height");

@@ -30,18 +30,18 @@ struct LabelSurface {
 /// The reference's best upright rectangle for the label's projector and gravity.
 struct LabelBest {
     bool found = false;
-    std::string surface;                   ///< name of the surface it lies on
-    double width = 0, height = 0;          ///< m
+    std::string surface;                       ///< name of the surface it lies on
+    double width = 0, height = 0;              ///< m
     std::array<Eigen::Vector3d, 4> corners{};  ///< camera frame, TL, TR, BR, BL facing the wall
     double area() const { return width * height; }
 };
 
 struct RealLabel {
-    std::string frame;           ///< folder name under the real-frame directory
-    std::string note;            ///< what was judged and why
-    std::string gravity_source;  ///< "auto" (the floor, as --gravity auto) or "stated"
-    Eigen::Vector3d gravity{0, 1, 0};  ///< unit, camera frame, down
-    Projector projector;         ///< `projector:` block in the calibration file's format
+    std::string frame;                    ///< folder name under the real-frame directory
+    std::string note;                     ///< what was judged and why
+    std::string gravity_source;           ///< "auto" (the floor, as --gravity auto) or "stated"
+    Eigen::Vector3d gravity{0, 1, 0};     ///< unit, camera frame, down
+    Projector projector;                  ///< `projector:` block in the calibration file's format
     std::vector<LabelSurface> surfaces;   ///< empty: no usable wall in this frame
     std::vector<LabelPolygon> obstacles;  ///< in front of / proud of the surfaces, or no reading
     LabelBest best;

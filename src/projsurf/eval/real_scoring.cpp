@@ -8,8 +8,8 @@
 
 namespace projsurf {
 
-RealScore scoreRealRectangle(const RealLabel &label, const CameraIntrinsics &camera, bool found,
-                             const Rectangle &r, const RealScoreRules &rules) {
+RealScore scoreRealRectangle(const RealLabel &label, const CameraIntrinsics &camera, bool found, const Rectangle &r,
+                             const RealScoreRules &rules) {
     RealScore s;
     s.has_best = label.best.found;
     s.best_area = label.best.found ? label.best.area() : 0.0;

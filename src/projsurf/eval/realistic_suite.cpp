@@ -6,21 +6,35 @@
 #include <sstream>
 
 #include "projsurf/eval/experiments.hpp"
+#include "projsurf/eval/scoring.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/scenarios_realistic.hpp"
-#include "projsurf/eval/scoring.hpp"
 
 namespace projsurf::sim {
 
 const std::vector<RealisticCase> &realisticSuiteCases() {
     static const std::vector<RealisticCase> cases{
-        {"plain_bowed", 1.0, 0.0},        {"plain_bowed", 2.0, 0.0},        {"plain_bowed", 3.0, 0.0},
-        {"plain_bowed", 4.0, 0.0},        {"plain_bowed", 2.0, 30.0},       {"plain_bowed", 2.5, -20.0},
-        {"plain_bowed", 3.0, 45.0},       {"skirting_switches", 1.5, 10.0}, {"frames", 2.0, 0.0},
-        {"frames", 3.0, -15.0},           {"tv", 2.5, 15.0},                {"whiteboard", 2.5, 0.0},
-        {"posters", 2.0, -10.0},          {"window_glass", 2.5, 10.0},      {"black_furniture", 2.5, 0.0},
-        {"clutter", 2.0, 0.0},            {"clutter", 3.0, 20.0},           {"corner_room", 2.0, 20.0},
-        {"corner_room", 3.0, -30.0},      {"office", 3.0, 0.0},             {"living_room", 3.0, 10.0},
+        {"plain_bowed", 1.0, 0.0},
+        {"plain_bowed", 2.0, 0.0},
+        {"plain_bowed", 3.0, 0.0},
+        {"plain_bowed", 4.0, 0.0},
+        {"plain_bowed", 2.0, 30.0},
+        {"plain_bowed", 2.5, -20.0},
+        {"plain_bowed", 3.0, 45.0},
+        {"skirting_switches", 1.5, 10.0},
+        {"frames", 2.0, 0.0},
+        {"frames", 3.0, -15.0},
+        {"tv", 2.5, 15.0},
+        {"whiteboard", 2.5, 0.0},
+        {"posters", 2.0, -10.0},
+        {"window_glass", 2.5, 10.0},
+        {"black_furniture", 2.5, 0.0},
+        {"clutter", 2.0, 0.0},
+        {"clutter", 3.0, 20.0},
+        {"corner_room", 2.0, 20.0},
+        {"corner_room", 3.0, -30.0},
+        {"office", 3.0, 0.0},
+        {"living_room", 3.0, 10.0},
         {"desk_clutter", 2.0, -15.0},
     };
     return cases;
@@ -63,7 +77,8 @@ RealisticSuiteResult runRealisticSuite(const RealisticSuiteOptions &o, const Det
             for (int r = 0; r < o.rounds; ++r) {
                 const int unit = o.first_unit + r;
                 auto it = units.find({static_cast<int>(kind), unit});
-                if (it == units.end()) it = units.emplace(std::make_pair(static_cast<int>(kind), unit), makeDepthSensor(kind, unit)).first;
+                if (it == units.end())
+                    it = units.emplace(std::make_pair(static_cast<int>(kind), unit), makeDepthSensor(kind, unit)).first;
                 const unsigned seed = o.seed + 1000u * static_cast<unsigned>(ci) + static_cast<unsigned>(r);
                 RgbdFrame frame;
                 fillFrameDepth(measureDepth(sc.scene, exact, it->second, seed, multipath), exact.camera, frame);
@@ -71,7 +86,8 @@ RealisticSuiteResult runRealisticSuite(const RealisticSuiteOptions &o, const Det
                 cfg.seed = seed;
                 const auto d0 = std::chrono::steady_clock::now();
                 const Detection det = detectSurface(frame.cloud, projector, cfg, sc.gravity);
-                times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - d0).count());
+                times.push_back(
+                    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - d0).count());
                 const Score s = scoreDetection(det, truth, projector, sc.gravity, projector.aspect());
                 ++row.rounds;
                 row.found += s.found;
@@ -134,7 +150,8 @@ std::string realisticSuiteMarkdown(const RealisticSuiteResult &result) {
     const auto kinds = kindsIn(result);
     md << "Scenes from `sim/scenarios_realistic.hpp` through the realistic sensor models "
           "(`sim/kinect1_model.hpp`, `sim/tof_model.hpp`, `sim/d435_model.hpp`); round r uses sensor unit r. "
-       << result.rounds << " rounds per scene and sensor, scored like Tables 1-2 (valid, >= 97 % truly free, area "
+       << result.rounds
+       << " rounds per scene and sensor, scored like Tables 1-2 (valid, >= 97 % truly free, area "
           "within 0.05 m² of the best). Target: >= 98 % in every scene.\n\n";
     md << "| sensor | rounds | success | scenes at >= 98 % |\n|---|---|---|---|\n";
     for (SensorKind k : kinds) {
@@ -162,7 +179,8 @@ std::string realisticSuiteMarkdown(const RealisticSuiteResult &result) {
             const RealisticRow &r = result.rows[j];
             md << " " << fmt("%.0f", r.successPct()) << " (" << r.found << "/" << r.valid << "/" << r.success << "), "
                << fmt("%.2f", r.mean_area) << " |";
-            if (!r.failure.empty()) failures += (failures.empty() ? "" : "; ") + sensorName(r.sensor) + ": " + r.failure;
+            if (!r.failure.empty())
+                failures += (failures.empty() ? "" : "; ") + sensorName(r.sensor) + ": " + r.failure;
         }
         md << " " << failures << " |\n";
         i = j;

@@ -14,18 +14,18 @@
 namespace projsurf::sim {
 
 struct RealisticCase {
-    std::string scenario;  ///< realisticScenarioNames()
-    double distance = 2.0; ///< m
+    std::string scenario;   ///< realisticScenarioNames()
+    double distance = 2.0;  ///< m
     double angle_deg = 0.0;
 };
 /// The suite's scenes (>= 20: plain walls at 1-4 m and angles, walls with things, clutter, corners).
 const std::vector<RealisticCase> &realisticSuiteCases();
 
 struct RealisticSuiteOptions {
-    int rounds = 10;          ///< per scene and sensor (issue 11: 10)
-    unsigned seed = 1;        ///< frame-noise and RANSAC seed base
+    int rounds = 10;    ///< per scene and sensor (issue 11: 10)
+    unsigned seed = 1;  ///< frame-noise and RANSAC seed base
     int first_unit = 0;
-    double truth_cell = 0.01; ///< m, as the eval (EvalPlan::truth_cell)
+    double truth_cell = 0.01;  ///< m, as the eval (EvalPlan::truth_cell)
     std::vector<SensorKind> sensors = sensorKinds();
     std::vector<RealisticCase> cases = realisticSuiteCases();
 };
@@ -36,9 +36,9 @@ struct RealisticRow {
     RealisticCase scene;
     SensorKind sensor = SensorKind::Kinect1;
     int rounds = 0, found = 0, valid = 0, success = 0;
-    double best_area = 0.0;   ///< m^2, ground truth
-    double mean_area = 0.0;   ///< m^2, over found rounds (0 when none)
-    std::string failure;      ///< the most frequent reason of failed rounds ("" when none)
+    double best_area = 0.0;  ///< m^2, ground truth
+    double mean_area = 0.0;  ///< m^2, over found rounds (0 when none)
+    std::string failure;     ///< the most frequent reason of failed rounds ("" when none)
     double time_median_ms = 0.0;
     double successPct() const { return rounds ? 100.0 * success / rounds : 0.0; }
 };

@@ -9,9 +9,9 @@
 #include <set>
 #include <sstream>
 
-#include "projsurf/io/files.hpp"
-#include "projsurf/eval/plot.hpp"
 #include "projsurf/eval/paper_results.hpp"
+#include "projsurf/eval/plot.hpp"
+#include "projsurf/io/files.hpp"
 
 namespace fs = std::filesystem;
 
@@ -64,7 +64,8 @@ std::vector<double> distancesOf(const std::vector<Trial> &trials, const std::str
 std::vector<double> anglesOf(const std::vector<Trial> &trials, const std::string &scenario) {
     std::vector<double> out;
     for (const auto &t : trials)
-        if (t.scenario == scenario && std::none_of(out.begin(), out.end(), [&](double a) { return same(a, t.angle_deg); }))
+        if (t.scenario == scenario &&
+            std::none_of(out.begin(), out.end(), [&](double a) { return same(a, t.angle_deg); }))
             out.push_back(t.angle_deg);
     return out;
 }
@@ -128,7 +129,8 @@ std::vector<Row> ourRows(const std::vector<Trial> &trials, const std::string &sc
     std::vector<Row> rows{
         {who + ", success, paper's criterion (%)", [S](double d) { return pct(S(d).paperRatePct()); }},
         {who + ", success, ground truth (%)", [S](double d) { return pct(S(d).truthRatePct()); }},
-        {who + ", success, ground truth, 40 px framebuffer slack (%)", [S](double d) { return pct(S(d).slackRatePct()); }},
+        {who + ", success, ground truth, 40 px framebuffer slack (%)",
+         [S](double d) { return pct(S(d).slackRatePct()); }},
         {who + ", area error vs best round (m²)", [S](double d) { return num(S(d).paper_area_error, 3); }},
         {who + ", area error vs ground truth (m²)", [S](double d) { return num(S(d).truth_area_error, 3); }},
         {who + ", found and accepted (%)", [S](double d) { return pct(S(d).foundPct()); }},
@@ -233,7 +235,13 @@ cv::Mat successPanel(const std::vector<Trial> &trials, const std::string &scenar
     c.size = cv::Size(620, 430);
     for (const auto &[name, label, color, marker] : methods)
         if (hasMethod(trials, scenario, name))
-            c.series.push_back({label, color, ds, successSeries(trials, scenario, name, angle, ds, paper_criterion), {}, false, marker});
+            c.series.push_back({label,
+                                color,
+                                ds,
+                                successSeries(trials, scenario, name, angle, ds, paper_criterion),
+                                {},
+                                false,
+                                marker});
     for (const auto &[label, row, color] : published) {
         std::vector<double> pd = row ? row->distances : ds;
         c.series.push_back({label, color, pd, publishedSeries(row, pd), {}, true, 0});
@@ -252,13 +260,12 @@ std::vector<std::pair<std::string, cv::Mat>> evalPlots(const sim::EvalResults &r
         std::vector<cv::Mat> panels;
         for (bool paper : {false, true})
             for (double a : anglesOf(T, "wall"))
-                panels.push_back(successPanel(
-                    T, "wall", a, paper,
-                    {{"paper-concave", "ours: paper method, concave", kConcave, 0},
-                     {"paper-convex", "ours: paper method, convex", kConvex, 1},
-                     {"default", "ours: default method", kDefault, 2}},
-                    {{"published: concave", sim::findPaperRow("1", "concave", a), kConcave},
-                     {"published: convex", sim::findPaperRow("1", "convex", a), kConvex}}));
+                panels.push_back(successPanel(T, "wall", a, paper,
+                                              {{"paper-concave", "ours: paper method, concave", kConcave, 0},
+                                               {"paper-convex", "ours: paper method, convex", kConvex, 1},
+                                               {"default", "ours: default method", kDefault, 2}},
+                                              {{"published: concave", sim::findPaperRow("1", "concave", a), kConcave},
+                                               {"published: convex", sim::findPaperRow("1", "convex", a), kConvex}}));
         out.emplace_back("success_uncluttered.png",
                          tilePanels(panels, 2, "Table 1: success rate on the plain wall (solid: ours, dashed: paper)"));
     }
@@ -326,14 +333,18 @@ std::vector<std::pair<std::string, cv::Mat>> evalPlots(const sim::EvalResults &r
             b.title = std::string(names[e]) + " error (eq. 8), mean and std";
             b.y_label = "error (%)";
             b.size = cv::Size(1100, 380);
-            Series pub{"published (paper)", kGrey, {}, {}, {}, true, 0}, ours_p{"ours: paper method", kConcave, {}, {}, {}},
+            Series pub{"published (paper)", kGrey, {}, {}, {}, true, 0},
+                ours_p{"ours: paper method", kConcave, {}, {}, {}},
                 ours_d{"ours: default method", kDefault, {}, {}, {}};
             for (const auto &[a, d] : poses) {
                 b.categories.push_back(distanceLabel(d) + " m|" + plotAngle(a));
                 const sim::PaperKeystoneCell *pc = sim::findPaperKeystone(a, d);
-                const KeyStats kp = keyStats(res.keystone, a, d, "paper-concave"), kd = keyStats(res.keystone, a, d, "default");
-                const double pm[] = {pc ? pc->horizontal_mean : kNaN, pc ? pc->vertical_mean : kNaN, pc ? pc->diagonal_mean : kNaN};
-                const double ps[] = {pc ? pc->horizontal_std : kNaN, pc ? pc->vertical_std : kNaN, pc ? pc->diagonal_std : kNaN};
+                const KeyStats kp = keyStats(res.keystone, a, d, "paper-concave"),
+                               kd = keyStats(res.keystone, a, d, "default");
+                const double pm[] = {pc ? pc->horizontal_mean : kNaN, pc ? pc->vertical_mean : kNaN,
+                                     pc ? pc->diagonal_mean : kNaN};
+                const double ps[] = {pc ? pc->horizontal_std : kNaN, pc ? pc->vertical_std : kNaN,
+                                     pc ? pc->diagonal_std : kNaN};
                 pub.y.push_back(pm[e]);
                 pub.err.push_back(ps[e]);
                 ours_p.y.push_back(e == 0 ? kp.h : e == 1 ? kp.v : kp.g);
@@ -344,7 +355,8 @@ std::vector<std::pair<std::string, cv::Mat>> evalPlots(const sim::EvalResults &r
             b.series = {pub, ours_p, ours_d};
             panels.push_back(drawBarChart(b));
         }
-        out.emplace_back("keystone.png", tilePanels(panels, 1, "Table 3: shape errors of the corrected picture on the wall"));
+        out.emplace_back("keystone.png",
+                         tilePanels(panels, 1, "Table 3: shape errors of the corrected picture on the wall"));
     }
     // Time per detection.
     if (!T.empty()) {
@@ -366,8 +378,13 @@ std::vector<std::pair<std::string, cv::Mat>> evalPlots(const sim::EvalResults &r
             c.series.push_back({label, color, ds, y, {}, false, marker});
         }
         const sim::PaperTiming pt = sim::paperTiming();
-        c.series.push_back({"published (Mbot CPU)", kGrey, {1.0, 3.0}, {1000 * pt.uncluttered_1m_s, 1000 * pt.uncluttered_3m_s},
-                            {}, true, 0});
+        c.series.push_back({"published (Mbot CPU)",
+                            kGrey,
+                            {1.0, 3.0},
+                            {1000 * pt.uncluttered_1m_s, 1000 * pt.uncluttered_3m_s},
+                            {},
+                            true,
+                            0});
         out.emplace_back("timing.png", drawLineChart(c));
     }
     return out;
@@ -423,7 +440,8 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
         // Fig 15: the surface check's decisions, judged by ground truth.
         int pn = 0, pc = 0, dn = 0, dc = 0;
         for (const auto &[scenario, tag] : kCheckScenarios) {
-            const Summary p = sumFor(T, scenario, "paper-concave", kNaN, kNaN), d = sumFor(T, scenario, "default", kNaN, kNaN);
+            const Summary p = sumFor(T, scenario, "paper-concave", kNaN, kNaN),
+                          d = sumFor(T, scenario, "default", kNaN, kNaN);
             pn += p.checked;
             pc += p.decisions_correct;
             dn += d.checked;
@@ -436,7 +454,8 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
     if (!res.keystone.empty()) {
         double worst_p = kNaN, worst_d = kNaN;
         for (const auto &[a, d] : keystonePoses(res.keystone)) {
-            const KeyStats kp = keyStats(res.keystone, a, d, "paper-concave"), kd = keyStats(res.keystone, a, d, "default");
+            const KeyStats kp = keyStats(res.keystone, a, d, "paper-concave"),
+                           kd = keyStats(res.keystone, a, d, "default");
             for (double v : {kp.h, kp.v, kp.g})
                 if (!std::isnan(v)) worst_p = std::isnan(worst_p) ? v : std::max(worst_p, v);
             for (double v : {kd.h, kd.v, kd.g})
@@ -449,8 +468,8 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
         const auto all = [&](const std::string &m) {
             return sim::summarize(sim::select(T, [&](const Trial &t) { return t.method == m; }));
         };
-        md << "| Time per detection, median (ms) | ~1500 | " << num(all("paper-concave").time_median_ms, 1)
-           << " | | | " << num(all("default").time_median_ms, 1) << " |\n\n";
+        md << "| Time per detection, median (ms) | ~1500 | " << num(all("paper-concave").time_median_ms, 1) << " | | | "
+           << num(all("default").time_median_ms, 1) << " |\n\n";
     }
     md << "Published timings are the paper's (its robot's CPU, PCL); ours are this machine, one core.\n\n";
     md << "![Table 1](success_uncluttered.png)\n\n";
@@ -505,19 +524,23 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
           "check is relative (reject above 3 % of the checked points).\n\n";
     md << "![Fig 15](outliers.png)\n\n";
     md << "| Case | Distance (m) | paper method: outliers, median [min–max] | accepted (%) | right decisions (%) | "
-          "default: outlier share, median (%) | accepted (%) | right decisions (%) |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+          "default: outlier share, median (%) | accepted (%) | right decisions (%) "
+          "|\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
     double our_no_max = kNaN, our_obst_min = kNaN;
     for (const auto &[scenario, tag] : kCheckScenarios)
         for (double d : distancesOf(T, scenario)) {
-            const Summary p = sumFor(T, scenario, "paper-concave", kNaN, d), q = sumFor(T, scenario, "default", kNaN, d);
-            md << "| " << tag << " (" << scenario << ") | " << distanceLabel(d) << " | " << num(p.outliers_median, 0) << " ["
-               << num(p.outliers_min, 0) << "–" << num(p.outliers_max, 0) << "] | " << pct(p.acceptedPct()) << " | "
-               << pct(p.checked ? 100.0 * p.decisions_correct / p.checked : kNaN) << " | "
+            const Summary p = sumFor(T, scenario, "paper-concave", kNaN, d),
+                          q = sumFor(T, scenario, "default", kNaN, d);
+            md << "| " << tag << " (" << scenario << ") | " << distanceLabel(d) << " | " << num(p.outliers_median, 0)
+               << " [" << num(p.outliers_min, 0) << "–" << num(p.outliers_max, 0) << "] | " << pct(p.acceptedPct())
+               << " | " << pct(p.checked ? 100.0 * p.decisions_correct / p.checked : kNaN) << " | "
                << num(100.0 * q.outlier_share_median, 2) << " | " << pct(q.acceptedPct()) << " | "
                << pct(q.checked ? 100.0 * q.decisions_correct / q.checked : kNaN) << " |\n";
             if (std::isnan(p.outliers_median)) continue;
-            if (tag == "NO") our_no_max = std::isnan(our_no_max) ? p.outliers_median : std::max(our_no_max, p.outliers_median);
-            else our_obst_min = std::isnan(our_obst_min) ? p.outliers_median : std::min(our_obst_min, p.outliers_median);
+            if (tag == "NO")
+                our_no_max = std::isnan(our_no_max) ? p.outliers_median : std::max(our_no_max, p.outliers_median);
+            else
+                our_obst_min = std::isnan(our_obst_min) ? p.outliers_median : std::min(our_obst_min, p.outliers_median);
         }
     md << "\nHighest median without obstacles: published " << f.highest_median_no_obstacle << ", ours (paper method) "
        << num(our_no_max, 0) << ". Smallest median with obstacles: published " << f.smallest_median_obstacles
@@ -551,16 +574,17 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
               "|---:|---:|---|---:|---:|---:|\n";
         for (const auto &[a, d] : keystonePoses(res.keystone)) {
             const sim::PaperKeystoneCell *pc = sim::findPaperKeystone(a, d);
-            const KeyStats kp = keyStats(res.keystone, a, d, "paper-concave"), kd = keyStats(res.keystone, a, d, "default");
+            const KeyStats kp = keyStats(res.keystone, a, d, "paper-concave"),
+                           kd = keyStats(res.keystone, a, d, "default");
             md << "| " << angleLabel(a) << " | " << distanceLabel(d) << " | horizontal | "
-               << (pc ? meanStd(pc->horizontal_mean, pc->horizontal_std) : "–") << " | " << meanStd(kp.h, kp.hs) << " | "
-               << meanStd(kd.h, kd.hs) << " |\n";
+               << (pc ? meanStd(pc->horizontal_mean, pc->horizontal_std) : "–") << " | " << meanStd(kp.h, kp.hs)
+               << " | " << meanStd(kd.h, kd.hs) << " |\n";
             md << "| | | vertical | " << (pc ? meanStd(pc->vertical_mean, pc->vertical_std) : "–") << " | "
                << meanStd(kp.v, kp.vs) << " | " << meanStd(kd.v, kd.vs) << " |\n";
             md << "| | | diagonals | " << (pc ? meanStd(pc->diagonal_mean, pc->diagonal_std) : "–") << " | "
                << meanStd(kp.g, kp.gs) << " | " << meanStd(kd.g, kd.gs) << " |\n";
-            md << "| | | shown (cut at the edge, max px) | | " << kp.shown << "/" << kp.n << " (" << num(kp.overshoot, 0)
-               << ") | " << kd.shown << "/" << kd.n << " (" << num(kd.overshoot, 0) << ") |\n";
+            md << "| | | shown (cut at the edge, max px) | | " << kp.shown << "/" << kp.n << " ("
+               << num(kp.overshoot, 0) << ") | " << kd.shown << "/" << kd.n << " (" << num(kd.overshoot, 0) << ") |\n";
         }
         md << "\n";
     }
@@ -624,11 +648,13 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
     } else {
         md << "Detection (default method) on every frame in `" << info.real_dir
            << "`, with the contract's example calibration (`sim::exampleProjector()`): these frames have no real "
-              "projector and no IMU, so gravity is taken from the floor (as `detect --gravity auto` does) and the rectangle "
+              "projector and no IMU, so gravity is taken from the floor (as `detect --gravity auto` does) and the "
+              "rectangle "
               "shows where that projector *would* project. No ground truth: look at the overlays. "
            << num(info.real_seconds, 1) << " s in all.\n\n";
         md << "![gallery](gallery/contact_sheet.png)\n\n";
-        md << "| Frame | found | size (m) | area (m²) | plane distance (m) | orientation (°) | check: outliers / points | "
+        md << "| Frame | found | size (m) | area (m²) | plane distance (m) | orientation (°) | check: outliers / "
+              "points | "
               "time (ms) | note |\n|---|---|---:|---:|---:|---:|---:|---:|---|\n";
         for (const auto &g : gallery) {
             md << "| [" << g.name << "](gallery/" << g.name << ".png) | ";
@@ -636,8 +662,8 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
                 md << "unreadable | | | | | | | " << g.problem << " |\n";
                 continue;
             }
-            md << (g.found ? "yes" : "no") << " | " << (g.found ? num(g.width, 2) + " × " + num(g.height, 2) : "") << " | "
-               << (g.found ? num(g.area, 2) : "") << " | " << (g.found ? num(g.distance, 2) : "") << " | "
+            md << (g.found ? "yes" : "no") << " | " << (g.found ? num(g.width, 2) + " × " + num(g.height, 2) : "")
+               << " | " << (g.found ? num(g.area, 2) : "") << " | " << (g.found ? num(g.distance, 2) : "") << " | "
                << (g.found ? num(g.orientation_deg, 1) : "") << " | " << g.outliers << " / " << g.points << " | "
                << num(g.time_ms, 1) << " | " << (g.found ? "" : g.reason) << " |\n";
         }
@@ -656,12 +682,15 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
           "found a rectangle within 0.05 m² of it; rounds that found nothing fail and have no area error "
           "(*area error vs best round* = mean of best − area over the rounds that found something). It cannot see "
           "a rectangle that is consistently wrong (e.g. always on the wrong surface).\n";
-    md << "- Ground truth: `sim::computeGroundTruth` (1 cm raster on every vertical surface: seen by the camera, lit by "
+    md << "- Ground truth: `sim::computeGroundTruth` (1 cm raster on every vertical surface: seen by the camera, lit "
+          "by "
           "the projector, not occluded) and `sim::scoreDetection`; *area error vs ground truth* = mean |best − area| "
           "over all rounds (a round that found nothing counts the whole best area).\n";
-    md << "- Table 3 uses the wall scenario at 1, 2, 3 m and 27.5°, 17.19°, −12.06° with a picture of the framebuffer's "
+    md << "- Table 3 uses the wall scenario at 1, 2, 3 m and 27.5°, 17.19°, −12.06° with a picture of the "
+          "framebuffer's "
           "aspect (letterbox = the whole rectangle).\n";
-    if (!info.realistic_markdown.empty()) md << "\n## Realistic simulated suite (issue 11)\n\n" << info.realistic_markdown;
+    if (!info.realistic_markdown.empty())
+        md << "\n## Realistic simulated suite (issue 11)\n\n" << info.realistic_markdown;
     return md.str();
 }
 

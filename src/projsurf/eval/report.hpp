@@ -8,21 +8,21 @@
 
 #include <opencv2/core.hpp>
 
+#include "projsurf/eval/experiments.hpp"
 #include "projsurf/eval/labelled_eval.hpp"
 #include "projsurf/eval/real_gallery.hpp"
-#include "projsurf/eval/experiments.hpp"
 
 namespace projsurf {
 
 struct ReportInfo {
-    std::string command;     ///< the command line that made the report
+    std::string command;  ///< the command line that made the report
     bool quick = false;
-    std::string real_dir;    ///< where the real frames came from ("" = none)
-    double real_seconds = 0; ///< time spent on the gallery
-    std::string load;        ///< machine load while it ran (e.g. "1-min load average 7.4 -> 6.5 on 2 cores")
+    std::string real_dir;            ///< where the real frames came from ("" = none)
+    double real_seconds = 0;         ///< time spent on the gallery
+    std::string load;                ///< machine load while it ran (e.g. "1-min load average 7.4 -> 6.5 on 2 cores")
     std::string realistic_markdown;  ///< the realistic suite's section body (sim::realisticSuiteMarkdown), "" = none
     const std::vector<LabelledFrame> *labelled = nullptr;  ///< labelled real-frame suite (nullptr = not run)
-    std::string labels_dir;  ///< where its label files came from
+    std::string labels_dir;                                ///< where its label files came from
 };
 
 /// The report's Markdown (links plots and gallery pictures by relative path).

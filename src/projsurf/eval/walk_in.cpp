@@ -51,7 +51,7 @@ BeamScore scoreBlanking(const Scene &scene, const Plane &wall, const Projector &
     e1.normalize();
     const Eigen::Vector3d e2 = n.cross(e1);
     const Eigen::Vector3d o = wall.project(projector.origin);
-    const int half_w = 600, half_h = 400;  // 12 x 8 m
+    const int half_w = 600, half_h = 400;                            // 12 x 8 m
     cv::Mat shadow(2 * half_h, 2 * half_w, CV_8U, cv::Scalar(255));  // 0 = shadow (distanceTransform's zeros)
     const auto cellOf = [&](const Eigen::Vector3d &p, int &cx, int &cy) {
         const Eigen::Vector3d r = p - o;

@@ -44,8 +44,8 @@ struct WalkInShot {
     cv::Mat view;            ///< BGR, the blanked picture projected
     cv::Mat view_unblanked;  ///< BGR, the same frame without blanking
     int blanked_pixels = 0;
-    double mask_ms = 0.0;    ///< time of the mask
-    BeamScore score;         ///< through the true projector
+    double mask_ms = 0.0;  ///< time of the mask
+    BeamScore score;       ///< through the true projector
 };
 
 /// A person walks in at depth `person_z` (m) in `frames` steps from x = -1.1 m to -0.25 m

@@ -42,8 +42,10 @@ Cloud depthImageToCloud(const std::string &what, const cv::Mat &depth, const Cam
         for (int u = 0; u < depth.cols; ++u) {
             const double z = row[u];
             Point &p = cloud.points[static_cast<std::size_t>(v) * depth.cols + u];
-            if (z > 0.0 && std::isfinite(z)) p = camera.backProject(u, v, z).cast<float>();
-            else p = Point(nan, nan, nan);
+            if (z > 0.0 && std::isfinite(z))
+                p = camera.backProject(u, v, z).cast<float>();
+            else
+                p = Point(nan, nan, nan);
         }
     }
     return cloud;

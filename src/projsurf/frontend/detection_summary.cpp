@@ -5,7 +5,8 @@
 namespace projsurf::frontend {
 
 std::string detectionSummary(const Detection &det) {
-    if (!det.found) return "not found: " + (det.reason.empty() ? std::string("no projection surface found") : det.reason);
+    if (!det.found)
+        return "not found: " + (det.reason.empty() ? std::string("no projection surface found") : det.reason);
     const auto total = det.timing_ms.find("total");
     char buf[256];
     std::snprintf(buf, sizeof buf, "found %.2f x %.2f m (%.2f m^2) on a plane %.2f m away at %.1f deg in %.1f ms",

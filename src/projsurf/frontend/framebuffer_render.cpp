@@ -19,7 +19,8 @@ FramebufferRender keystoneFor(const Projector &projector, const Rectangle &rect,
         return out;
     }
     out.keystone = std::move(k.keystone);
-    const double rect_area = rect.width * rect.height, shown_area = out.keystone->shown.width * out.keystone->shown.height;
+    const double rect_area = rect.width * rect.height,
+                 shown_area = out.keystone->shown.width * out.keystone->shown.height;
     out.letterboxed = rect_area > 0.0 && shown_area < rect_area * (1.0 - kLetterboxShare);
     return out;
 }

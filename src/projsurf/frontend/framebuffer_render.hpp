@@ -27,7 +27,6 @@ FramebufferRender renderFramebuffer(const Projector &projector, const Rectangle 
                                     double tolerance_px);
 
 /// The keystone only (for a stream of frames, warped by core/keystone_warper), same contract.
-FramebufferRender keystoneFor(const Projector &projector, const Rectangle &rect, cv::Size picture,
-                              double tolerance_px);
+FramebufferRender keystoneFor(const Projector &projector, const Rectangle &rect, cv::Size picture, double tolerance_px);
 
 }  // namespace projsurf::frontend

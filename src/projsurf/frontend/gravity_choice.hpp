@@ -11,8 +11,9 @@
 namespace projsurf::frontend {
 
 struct GravityChoice {
-    Eigen::Vector3d gravity = SurfaceDetector::levelGravity();  ///< camera frame, not necessarily unit; the fallback of `from_floor`
-    bool from_floor = false;                   ///< `auto`: estimated from the floor of each cloud
+    Eigen::Vector3d gravity =
+        SurfaceDetector::levelGravity();  ///< camera frame, not necessarily unit; the fallback of `from_floor`
+    bool from_floor = false;              ///< `auto`: estimated from the floor of each cloud
 };
 
 /// "" (a level camera), "auto", or three numbers "gx,gy,gz" (commas or spaces) -> the choice.

@@ -1,7 +1,7 @@
 #include "projsurf/frontend/progress.hpp"
 
-#include <algorithm>
 #include <unistd.h>
+#include <algorithm>
 
 namespace projsurf::frontend {
 

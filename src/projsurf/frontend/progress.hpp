@@ -11,7 +11,7 @@ namespace projsurf::frontend {
 /// finish(). Elsewhere (a log): a line "<label>: 40% (120/240 <unit>)" every 10% on `log`,
 /// and nothing on stderr. A total of 0 or less: the count only.
 class ProgressLine {
-  public:
+public:
     ProgressLine(std::string label, std::string unit, bool redraw, std::FILE *log = stdout);
     ~ProgressLine();
     ProgressLine(const ProgressLine &) = delete;
@@ -23,7 +23,7 @@ class ProgressLine {
     /// The drawn line ends as it is (a run in stages: the next stage starts a new line).
     void endLine();
 
-  private:
+private:
     std::string label_, unit_;
     bool redraw_;
     std::FILE *log_;

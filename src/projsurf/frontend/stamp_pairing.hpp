@@ -14,7 +14,7 @@ constexpr double kSameStampS = 1e-6;
 
 template <class T>
 class StampedBuffer {
-  public:
+public:
     /// Keeps the latest `capacity` values (30: one second of a 30 Hz camera).
     explicit StampedBuffer(std::size_t capacity = 30) : capacity_(capacity) {}
 
@@ -38,7 +38,7 @@ class StampedBuffer {
     }
     bool empty() const { return items_.empty(); }
 
-  private:
+private:
     std::size_t capacity_;
     std::deque<std::pair<double, T>> items_;
 };

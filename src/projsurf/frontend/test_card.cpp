@@ -17,8 +17,8 @@ cv::Mat testCard(cv::Size size) {
     const int len = size.height / 3;
     cv::arrowedLine(card, {c.x, c.y + len}, {c.x, c.y - len}, {0, 200, 255}, std::max(2, size.width / 60), cv::LINE_AA,
                     0, 0.25);
-    cv::putText(card, "projsurf", {border * 4, size.height - border * 4}, cv::FONT_HERSHEY_SIMPLEX,
-                size.height / 300.0, {255, 255, 255}, std::max(1, size.height / 200), cv::LINE_AA);
+    cv::putText(card, "projsurf", {border * 4, size.height - border * 4}, cv::FONT_HERSHEY_SIMPLEX, size.height / 300.0,
+                {255, 255, 255}, std::max(1, size.height / 200), cv::LINE_AA);
     return card;
 }
 

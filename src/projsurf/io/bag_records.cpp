@@ -42,7 +42,8 @@ std::map<std::string, std::string> parseFields(const std::string &path, const ch
         if (n - pos < 4) throw InputError(path, "corrupt ROS bag: " + where + " ends inside a field length");
         const std::uint32_t len = le32(p + pos);
         pos += 4;
-        if (len > n - pos) throw InputError(path, "corrupt ROS bag: a field of " + where + " is longer than the header");
+        if (len > n - pos)
+            throw InputError(path, "corrupt ROS bag: a field of " + where + " is longer than the header");
         const char *f = p + pos;
         const void *eq = std::memchr(f, '=', len);
         if (!eq) throw InputError(path, "corrupt ROS bag: a field of " + where + " has no '='");
@@ -70,13 +71,15 @@ std::uint32_t fieldU32(const std::string &path, const Record &r, const char *nam
 
 const std::string &fieldString(const std::string &path, const Record &r, const char *name) {
     const auto it = r.fields.find(name);
-    if (it == r.fields.end()) throw InputError(path, std::string("corrupt ROS bag: a record has no '") + name + "' field");
+    if (it == r.fields.end())
+        throw InputError(path, std::string("corrupt ROS bag: a record has no '") + name + "' field");
     return it->second;
 }
 
 std::uint8_t opOf(const std::string &path, const std::map<std::string, std::string> &fields) {
     const auto it = fields.find("op");
-    if (it == fields.end() || it->second.size() != 1) throw InputError(path, "corrupt ROS bag: a record has no 'op' field");
+    if (it == fields.end() || it->second.size() != 1)
+        throw InputError(path, "corrupt ROS bag: a record has no 'op' field");
     return static_cast<std::uint8_t>(it->second[0]);
 }
 
@@ -112,14 +115,15 @@ struct BagFile::Impl {
         r.fields = parseFields(path, header.data(), header.size(), "a record header");
         r.op = opOf(path, r.fields);
         const std::uint64_t after = pos + 4 + header_len;
-        if (size - after < 4) throw InputError(path, "corrupt ROS bag: truncated record at byte " + std::to_string(pos));
+        if (size - after < 4)
+            throw InputError(path, "corrupt ROS bag: truncated record at byte " + std::to_string(pos));
         readAt(after, len4, 4);
         r.data_len = le32(len4);
         r.data_pos = after + 4;
         if (r.data_len > size - r.data_pos)
             throw InputError(path, "corrupt ROS bag: record at byte " + std::to_string(pos) + " announces " +
-                                       std::to_string(r.data_len) + " data bytes, " + std::to_string(size - r.data_pos) +
-                                       " remain (truncated?)");
+                                       std::to_string(r.data_len) + " data bytes, " +
+                                       std::to_string(size - r.data_pos) + " remain (truncated?)");
         next = r.data_pos + r.data_len;
         return r;
     }
@@ -135,12 +139,14 @@ struct BagFile::Impl {
             throw InputError(path, "ROS bag chunk of " + std::to_string(raw) + " bytes exceeds the limit of " +
                                        std::to_string(limits::kMaxBagRecordBytes) + " bytes");
         if (r.data_len > limits::kMaxBagRecordBytes)
-            throw InputError(path, "ROS bag chunk of " + std::to_string(r.data_len) + " compressed bytes exceeds the limit");
+            throw InputError(path,
+                             "ROS bag chunk of " + std::to_string(r.data_len) + " compressed bytes exceeds the limit");
         std::string data(r.data_len, '\0');
         readAt(r.data_pos, data.data(), data.size());
         cached_chunk = 0;
         if (compression == "none") {
-            if (raw != data.size()) throw InputError(path, "corrupt ROS bag: an uncompressed chunk's size does not match its data");
+            if (raw != data.size())
+                throw InputError(path, "corrupt ROS bag: an uncompressed chunk's size does not match its data");
             cached.swap(data);
 #ifdef PROJSURF_HAVE_BZIP2
         } else if (compression == "bz2") {
@@ -148,18 +154,22 @@ struct BagFile::Impl {
             unsigned int out_len = raw;
             const int rc = BZ2_bzBuffToBuffDecompress(cached.data(), &out_len, data.data(),
                                                       static_cast<unsigned int>(data.size()), 0, 0);
-            if (rc != BZ_OK || out_len != raw) throw InputError(path, "corrupt ROS bag: a bz2 chunk does not decompress to its size");
+            if (rc != BZ_OK || out_len != raw)
+                throw InputError(path, "corrupt ROS bag: a bz2 chunk does not decompress to its size");
 #endif
 #ifdef PROJSURF_HAVE_ROSBAG
         } else if (compression == "lz4") {
             cached.assign(raw, '\0');
             unsigned int out_len = raw;
-            const int rc = roslz4_buffToBuffDecompress(data.data(), static_cast<unsigned int>(data.size()), cached.data(), &out_len);
-            if (rc != ROSLZ4_OK || out_len != raw) throw InputError(path, "corrupt ROS bag: an lz4 chunk does not decompress to its size");
+            const int rc = roslz4_buffToBuffDecompress(data.data(), static_cast<unsigned int>(data.size()),
+                                                       cached.data(), &out_len);
+            if (rc != ROSLZ4_OK || out_len != raw)
+                throw InputError(path, "corrupt ROS bag: an lz4 chunk does not decompress to its size");
 #endif
         } else {
             std::string shown;
-            for (char c : compression.substr(0, 20)) shown.push_back(std::isprint(static_cast<unsigned char>(c)) ? c : '?');
+            for (char c : compression.substr(0, 20))
+                shown.push_back(std::isprint(static_cast<unsigned char>(c)) ? c : '?');
             throw InputError(path, "ROS bag chunk compression '" + shown + "' is not supported by this build");
         }
         cached_chunk = pos;
@@ -221,8 +231,8 @@ BagFile::BagFile(const std::string &path, const std::string &want_topic) : impl_
                                            std::to_string(limits::kMaxBagRecordBytes) + " bytes");
             if (!wanted(m.connection)) return;
             if (messages_.size() >= limits::kMaxBagMessages)
-                throw InputError(path, "more than " + std::to_string(limits::kMaxBagMessages) + " messages on '" + want_topic +
-                                           "' (the limit of one run; split the bag)");
+                throw InputError(path, "more than " + std::to_string(limits::kMaxBagMessages) + " messages on '" +
+                                           want_topic + "' (the limit of one run; split the bag)");
             messages_.push_back(m);
         };
 
@@ -231,7 +241,8 @@ BagFile::BagFile(const std::string &path, const std::string &want_topic) : impl_
         while (pos < b.size) {
             std::uint64_t next = 0;
             const Record r = b.recordAt(pos, next);
-            if (!have_header && r.op != kOpBagHeader) throw InputError(path, "corrupt ROS bag: the first record is not the bag header");
+            if (!have_header && r.op != kOpBagHeader)
+                throw InputError(path, "corrupt ROS bag: the first record is not the bag header");
             switch (r.op) {
             case kOpBagHeader: {
                 if (have_header) throw InputError(path, "corrupt ROS bag: a second bag header");
@@ -240,19 +251,19 @@ BagFile::BagFile(const std::string &path, const std::string &want_topic) : impl_
                 if (ip.size() != 8) throw InputError(path, "corrupt ROS bag: index_pos is not 8 bytes");
                 const std::uint64_t index_pos = le32(ip.data()) | static_cast<std::uint64_t>(le32(ip.data() + 4)) << 32;
                 if (index_pos == 0) throw InputError(path, "ROS bag was not closed (no index; run `rosbag reindex`)");
-                if (index_pos >= b.size) throw InputError(path, "ROS bag is truncated (its index lies beyond the end of the file)");
+                if (index_pos >= b.size)
+                    throw InputError(path, "ROS bag is truncated (its index lies beyond the end of the file)");
                 break;
             }
             case kOpConnection: {
-                if (r.data_len > limits::kMaxBagHeaderBytes) throw InputError(path, "corrupt ROS bag: connection header too long");
+                if (r.data_len > limits::kMaxBagHeaderBytes)
+                    throw InputError(path, "corrupt ROS bag: connection header too long");
                 std::string data(r.data_len, '\0');
                 b.readAt(r.data_pos, data.data(), data.size());
                 addConnection(r, data.data(), data.size());
                 break;
             }
-            case kOpMessage:
-                addMessage(r, 0);
-                break;
+            case kOpMessage: addMessage(r, 0); break;
             case kOpChunk: {
                 const std::string &data = b.chunk(pos);
                 std::uint64_t cpos = 0;
@@ -260,7 +271,8 @@ BagFile::BagFile(const std::string &path, const std::string &want_topic) : impl_
                     // The records inside a chunk, checked like the file's.
                     if (data.size() - cpos < 4) throw InputError(path, "corrupt ROS bag: truncated record in a chunk");
                     const std::uint32_t hl = le32(data.data() + cpos);
-                    if (hl > data.size() - cpos - 4) throw InputError(path, "corrupt ROS bag: a record header in a chunk is longer than the chunk");
+                    if (hl > data.size() - cpos - 4)
+                        throw InputError(path, "corrupt ROS bag: a record header in a chunk is longer than the chunk");
                     Record cr;
                     cr.fields = parseFields(path, data.data() + cpos + 4, hl, "a record header");
                     cr.op = opOf(path, cr.fields);
@@ -270,18 +282,19 @@ BagFile::BagFile(const std::string &path, const std::string &want_topic) : impl_
                     cr.data_pos = after + 4;
                     if (cr.data_len > data.size() - cr.data_pos)
                         throw InputError(path, "corrupt ROS bag: a record in a chunk is longer than the chunk");
-                    if (cr.op == kOpConnection) addConnection(cr, data.data() + cr.data_pos, cr.data_len);
-                    else if (cr.op == kOpMessage) addMessage(cr, pos);
-                    else throw InputError(path, "corrupt ROS bag: unexpected record type inside a chunk");
+                    if (cr.op == kOpConnection)
+                        addConnection(cr, data.data() + cr.data_pos, cr.data_len);
+                    else if (cr.op == kOpMessage)
+                        addMessage(cr, pos);
+                    else
+                        throw InputError(path, "corrupt ROS bag: unexpected record type inside a chunk");
                     cpos = cr.data_pos + cr.data_len;
                 }
                 break;
             }
             case kOpIndex:
-            case kOpChunkInfo:
-                break;  // the index: not needed, the records were all read in order
-            default:
-                throw InputError(path, "corrupt ROS bag: unknown record type " + std::to_string(r.op));
+            case kOpChunkInfo: break;  // the index: not needed, the records were all read in order
+            default: throw InputError(path, "corrupt ROS bag: unknown record type " + std::to_string(r.op));
             }
             pos = next;
         }
@@ -304,7 +317,8 @@ std::string BagFile::read(const BagMessageRef &m) {
         return out;
     }
     const std::string &data = impl_->chunk(m.chunk_pos);
-    if (m.offset > data.size() || m.size > data.size() - m.offset) throw InputError(impl_->path, "corrupt ROS bag chunk");
+    if (m.offset > data.size() || m.size > data.size() - m.offset)
+        throw InputError(impl_->path, "corrupt ROS bag chunk");
     return data.substr(static_cast<std::size_t>(m.offset), m.size);
 }
 

@@ -29,7 +29,7 @@ struct BagMessageRef {
 
 /// The structure of a bag: checked once, read message by message afterwards.
 class BagFile {
-  public:
+public:
     /// Opens and checks the whole record structure; throws InputError(path, problem).
     /// `want_topic`: only messages of connections on this topic are indexed.
     BagFile(const std::string &path, const std::string &want_topic);
@@ -43,7 +43,7 @@ class BagFile {
     /// The serialized bytes of one message (decompressing its chunk when needed).
     std::string read(const BagMessageRef &m);
 
-  private:
+private:
     struct Impl;
     Impl *impl_;
     std::vector<BagConnection> connections_;
@@ -52,7 +52,7 @@ class BagFile {
 
 /// A view of serialized ROS 1 message bytes, read with every length checked.
 class RosReader {
-  public:
+public:
     RosReader(const std::string &bytes, const std::string &source) : bytes_(bytes), source_(source) {}
     std::uint8_t u8();
     std::uint32_t u32();
@@ -61,7 +61,7 @@ class RosReader {
     std::size_t bytes(std::size_t &length);
     std::size_t remaining() const { return bytes_.size() - pos_; }
 
-  private:
+private:
     void need(std::size_t n);
     const std::string &bytes_;
     const std::string &source_;

@@ -7,7 +7,7 @@ namespace projsurf {
 namespace {
 
 constexpr std::size_t kChunkBytes = std::size_t{4} << 20;  ///< a chunk is closed past this size (rosbag: 768 KiB)
-constexpr std::size_t kBagHeaderBytes = 4096;               ///< the bag header record is padded to this (as rosbag)
+constexpr std::size_t kBagHeaderBytes = 4096;              ///< the bag header record is padded to this (as rosbag)
 
 void putU32(std::string &s, std::uint32_t v) {
     for (int i = 0; i < 4; ++i) s.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
@@ -63,10 +63,8 @@ void BagWriter::addMessage(std::uint32_t conn, std::uint32_t sec, std::uint32_t 
 std::string BagWriter::bytes() const {
     auto connectionRecord = [&](std::uint32_t id) {
         const Connection &c = connections_[id];
-        const std::string header = fields({{"topic", c.topic},
-                                           {"type", c.type},
-                                           {"md5sum", c.md5sum},
-                                           {"message_definition", c.definition}});
+        const std::string header =
+            fields({{"topic", c.topic}, {"type", c.type}, {"md5sum", c.md5sum}, {"message_definition", c.definition}});
         return record({{"op", "\x07"}, {"conn", u32(id)}, {"topic", c.topic}}, header);
     };
     struct ChunkInfo {
@@ -98,8 +96,8 @@ std::string BagWriter::bytes() const {
             ++info.counts[m.conn];
             chunk += record({{"op", "\x02"}, {"conn", u32(m.conn)}, {"time", time(m.sec, m.nsec)}}, m.bytes);
         }
-        body += record({{"op", "\x05"}, {"compression", "none"}, {"size", u32(static_cast<std::uint32_t>(chunk.size()))}},
-                       chunk);
+        body += record(
+            {{"op", "\x05"}, {"compression", "none"}, {"size", u32(static_cast<std::uint32_t>(chunk.size()))}}, chunk);
         for (const auto &[conn, entries] : index)
             body += record({{"op", "\x04"}, {"ver", u32(1)}, {"conn", u32(conn)}, {"count", u32(info.counts[conn])}},
                            entries);

@@ -9,7 +9,7 @@
 namespace projsurf {
 
 class BagWriter {
-  public:
+public:
     /// A topic of `type` (e.g. "sensor_msgs/Image", with its md5sum and definition); its id.
     std::uint32_t addConnection(const std::string &topic, const std::string &type, const std::string &md5sum,
                                 const std::string &definition);
@@ -19,7 +19,7 @@ class BagWriter {
     /// The bag's bytes (chunks of about 4 MiB).
     std::string bytes() const;
 
-  private:
+private:
     struct Connection {
         std::string topic, type, md5sum, definition;
     };

@@ -1,8 +1,8 @@
 #include "projsurf/io/calibration_report.hpp"
 #include "projsurf/io/yaml_numbers.hpp"
 
-#include <cstdio>
 #include <yaml-cpp/yaml.h>
+#include <cstdio>
 
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/yaml_files.hpp"
@@ -33,7 +33,7 @@ std::string calibrationVerdict(const AxisFit &axis) {
 std::string calibrationReportYaml(const Calibration &cal, const CalibrationProvenance &prov) {
     YAML::Node root;
     YAML::Node p = calibrationNode(cal.projector);  // the contract's keys ...
-    const Projector &pr = cal.projector;             // ... with readable numbers
+    const Projector &pr = cal.projector;            // ... with readable numbers
     p["fov_deg"] = flow({pr.fov_h * 180.0 / 3.14159265358979323846, pr.fov_v * 180.0 / 3.14159265358979323846});
     p["axis"]["origin"] = flow(pr.origin);
     p["axis"]["direction"] = flow(pr.direction.normalized());

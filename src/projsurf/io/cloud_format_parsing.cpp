@@ -26,8 +26,7 @@ double decodeScalar(const unsigned char *p, Scalar t, bool big_endian) {
             std::memcpy(&d, &u, sizeof d);
             return d;
         }
-    case Kind::UInt:
-        return static_cast<double>(u);
+    case Kind::UInt: return static_cast<double>(u);
     case Kind::Int:
         if (t.size < 8 && (u >> (8 * t.size - 1)) & 1u) u |= ~std::uint64_t{0} << (8 * t.size);
         return static_cast<double>(static_cast<std::int64_t>(u));
@@ -52,7 +51,6 @@ std::uint32_t readU32LE(const unsigned char *p) {
     return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
            static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
 }
-
 
 bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f'; }
 

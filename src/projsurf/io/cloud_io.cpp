@@ -58,7 +58,8 @@ const char *depthName(int depth) {
 Cloud readCloud(const std::string &path) {
     const std::string ext = lowerExtension(path);
     if (ext != ".pcd" && ext != ".ply")
-        throw InputError(path, "unknown point-cloud file extension " + cloud_format::shown(ext) + " (expected .pcd or .ply)");
+        throw InputError(path,
+                         "unknown point-cloud file extension " + cloud_format::shown(ext) + " (expected .pcd or .ply)");
     const std::string bytes = readWholeFile(path);
     if (bytes.empty()) throw InputError(path, "empty file");
     Cloud cloud = ext == ".pcd" ? readPcd(path, bytes) : readPly(path, bytes);
@@ -72,8 +73,9 @@ Cloud readDepthCloud(const std::string &depth_png, const std::string &camera_yam
     const CameraIntrinsics camera = readCamera(camera_yaml);
     const cv::Mat depth = readImage(depth_png, cv::IMREAD_UNCHANGED, limits::kMaxDepthPixels);
     if (depth.type() != CV_16UC1)
-        throw InputError(depth_png, std::string("expected a 16-bit single-channel depth image, got ") + depthName(depth.depth()) +
-                                        " with " + std::to_string(depth.channels()) + " channel(s)");
+        throw InputError(depth_png, std::string("expected a 16-bit single-channel depth image, got ") +
+                                        depthName(depth.depth()) + " with " + std::to_string(depth.channels()) +
+                                        " channel(s)");
     if (depth.cols != camera.width || depth.rows != camera.height)
         throw InputError(depth_png, "depth image is " + std::to_string(depth.cols) + "x" + std::to_string(depth.rows) +
                                         " but " + camera_yaml + " says " + std::to_string(camera.width) + "x" +

@@ -16,7 +16,8 @@ cv::Mat depthImageFromBytes(const std::string &source, const std::string &encodi
     if (!mm && !metres) throw InputError(source, "encoding '" + encoding + "' (expected 16UC1 in mm or 32FC1 in m)");
     if (width == 0 || height == 0) throw InputError(source, "the depth image is empty");
     if (static_cast<std::uint64_t>(width) * height > limits::kMaxImagePixels)
-        throw InputError(source, "the depth image exceeds the limit of " + std::to_string(limits::kMaxImagePixels) + " pixels");
+        throw InputError(source,
+                         "the depth image exceeds the limit of " + std::to_string(limits::kMaxImagePixels) + " pixels");
     const std::size_t bpp = mm ? 2 : 4;
     if (step < static_cast<std::size_t>(width) * bpp || size < static_cast<std::size_t>(step) * height)
         throw InputError(source, "data is shorter than its size says");

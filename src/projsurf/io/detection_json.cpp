@@ -93,7 +93,8 @@ DetectionFile readDetectionJson(const std::string &path) {
             throw InputError(path, "'rectangle.corners' must hold 4 points");
         for (int i = 0; i < 4; ++i) {
             const auto &c = corners[i];
-            if (!c.is_array() || c.size() != 3) throw InputError(path, "'rectangle.corners' must hold [x, y, z] points");
+            if (!c.is_array() || c.size() != 3)
+                throw InputError(path, "'rectangle.corners' must hold [x, y, z] points");
             for (int k = 0; k < 3; ++k) {
                 if (!c[k].is_number()) throw InputError(path, "'rectangle.corners' holds a non-number");
                 out.rectangle.corners[i][k] = c[k].get<double>();

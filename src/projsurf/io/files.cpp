@@ -1,11 +1,11 @@
 #include "projsurf/io/files.hpp"
 
+#include <unistd.h>
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
-#include <unistd.h>
 
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/image_header.hpp"
@@ -79,7 +79,7 @@ std::string OutputGroup::reserve(const std::string &path) {
     std::error_code ec;
     if (fs::is_directory(p, ec)) throw InputError(path, "is a directory, expected a file name");
     const std::string tmp = (p.parent_path() / ("." + p.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                                                 std::to_string(files_.size()) + p.extension().string()))
+                                                std::to_string(files_.size()) + p.extension().string()))
                                 .string();
     files_.emplace_back(tmp, path);
     return tmp;
@@ -147,11 +147,14 @@ std::string readSmallTextFile(const std::string &path, std::uint64_t max_bytes, 
             continue;
         }
         const char c = text[i];
-        if (c == '[' || c == '{') max_depth = std::max(max_depth, ++depth);
-        else if ((c == ']' || c == '}') && depth > 0) --depth;
+        if (c == '[' || c == '{')
+            max_depth = std::max(max_depth, ++depth);
+        else if ((c == ']' || c == '}') && depth > 0)
+            --depth;
     }
     if (max_depth > limits::kMaxNesting)
-        throw InputError(path, std::string(kind) + " nested deeper than " + std::to_string(limits::kMaxNesting) + " levels");
+        throw InputError(path,
+                         std::string(kind) + " nested deeper than " + std::to_string(limits::kMaxNesting) + " levels");
     return text;
 }
 

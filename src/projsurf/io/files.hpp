@@ -24,7 +24,7 @@ cv::Mat readImage(const std::string &path, int flags, std::uint64_t max_pixels =
 /// temporary file beside its target (same folder, so the rename cannot cross file systems);
 /// commit() renames them all; whatever was not committed is removed by the destructor.
 class OutputGroup {
-  public:
+public:
     OutputGroup() = default;
     ~OutputGroup();
     OutputGroup(const OutputGroup &) = delete;
@@ -37,7 +37,7 @@ class OutputGroup {
     std::string reserve(const std::string &path);
     void commit();
 
-  private:
+private:
     std::vector<std::pair<std::string, std::string>> files_;  // temporary, final
 };
 /// The whole of a small text file (YAML, JSON): refused when larger than `max_bytes` or

@@ -75,7 +75,8 @@ ImageHeader pnm(const unsigned char *p, std::size_t n) {
         while (i < n && (std::isspace(p[i]) || p[i] == '#')) {
             if (p[i] == '#')
                 while (i < n && p[i] != '\n') ++i;
-            else ++i;
+            else
+                ++i;
         }
         if (i >= n || !std::isdigit(p[i])) return h;
         while (i < n && std::isdigit(p[i])) {

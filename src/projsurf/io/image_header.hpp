@@ -7,7 +7,7 @@
 namespace projsurf {
 
 struct ImageHeader {
-    std::string format;  ///< "PNG", "JPEG", "BMP", "PNM"; empty when not recognised
+    std::string format;                   ///< "PNG", "JPEG", "BMP", "PNM"; empty when not recognised
     std::uint64_t width = 0, height = 0;  ///< pixels, from the header
 };
 

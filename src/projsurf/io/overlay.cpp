@@ -1,13 +1,13 @@
 #include "projsurf/io/overlay.hpp"
 
 #include <Eigen/Dense>
-#include <cmath>
 #include <algorithm>
-#include <limits>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <tuple>
+#include <limits>
 #include <opencv2/imgproc.hpp>
+#include <tuple>
 #include "projsurf/core/observed_free_space.hpp"
 
 #include "projsurf/io/limits.hpp"
@@ -19,7 +19,6 @@ const cv::Scalar kInlier(80, 200, 80), kFree(0, 220, 255), kWorkspace(255, 160, 
     kOutlier(40, 40, 255), kText(255, 255, 255), kInFront(0, 130, 255), kSeenThrough(220, 80, 200),
     kNoReading(150, 150, 150), kGlare(255, 255, 160), kDark(90, 40, 20), kTextured(0, 60, 160), kSaturated(160, 0, 90);
 
-
 /// Where camera-frame points land in the picture.
 struct View {
     CameraIntrinsics cam;
@@ -29,7 +28,8 @@ struct View {
         // Far off the picture is as good as anywhere off it: kept where the drawing code's
         // int and fixed-point conversions are defined (NaN goes to the corner).
         auto fit = [](double v) { return static_cast<float>(v >= -1e5 ? std::min(v, 1e5) : -1e5); };
-        return {fit((cam.fx * p.x() / z + cam.cx + 0.5) * scale - 0.5), fit((cam.fy * p.y() / z + cam.cy + 0.5) * scale - 0.5)};
+        return {fit((cam.fx * p.x() / z + cam.cx + 0.5) * scale - 0.5),
+                fit((cam.fy * p.y() / z + cam.cy + 0.5) * scale - 0.5)};
     }
 };
 
@@ -68,7 +68,8 @@ cv::Mat withLegend(const cv::Mat &img, const std::vector<std::pair<cv::Scalar, s
     const double fs = std::max(0.45, img.cols / 1700.0);
     const int lh = static_cast<int>(std::round(26 * fs / 0.5));
     const int key_rows = static_cast<int>((items.size() + 1) / 2);
-    cv::Mat out(img.rows + lh * static_cast<int>(lines.size() + key_rows) + lh / 2, img.cols, CV_8UC3, cv::Scalar(32, 32, 32));
+    cv::Mat out(img.rows + lh * static_cast<int>(lines.size() + key_rows) + lh / 2, img.cols, CV_8UC3,
+                cv::Scalar(32, 32, 32));
     img.copyTo(out(cv::Rect(0, 0, img.cols, img.rows)));
     int y = img.rows + lh;
     for (const auto &l : lines) {
@@ -105,8 +106,10 @@ CameraIntrinsics estimateIntrinsics(const Cloud &cloud) {
 cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorConfig &config,
                       const CameraIntrinsics *camera, const cv::Mat &color) {
     View view;
-    if (camera) view.cam = *camera;
-    else view.cam = estimateIntrinsics(cloud);
+    if (camera)
+        view.cam = *camera;
+    else
+        view.cam = estimateIntrinsics(cloud);
     if (!(view.cam.fx > 0)) view.cam = CameraIntrinsics{};  // a virtual Kinect-like view
     if (static_cast<std::uint64_t>(view.cam.width) * view.cam.height > limits::kMaxImagePixels || view.cam.width < 1 ||
         view.cam.height < 1)
@@ -151,10 +154,11 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
             px = cv::Vec3b(40, 40, 255);
         } else if (det.inliers > 0) {
             const bool paper = config.method == Method::Paper;
-            const float band = paper ? static_cast<float>(config.paper.ransac_distance) : det.debug.tolerance.band(p.z());
-            const float bend = paper ? 0.0f
-                                     : static_cast<float>(det.debug.wall_shape.height(
-                                           det.debug.frame.toPlane(p.cast<double>())));
+            const float band =
+                paper ? static_cast<float>(config.paper.ransac_distance) : det.debug.tolerance.band(p.z());
+            const float bend =
+                paper ? 0.0f
+                      : static_cast<float>(det.debug.wall_shape.height(det.debug.frame.toPlane(p.cast<double>())));
             if (std::abs(n.dot(p) + d - bend) <= band)
                 px = cv::Vec3b(static_cast<uchar>(px[0] * 0.5 + 40), static_cast<uchar>(px[1] * 0.5 + 100),
                                static_cast<uchar>(px[2] * 0.5 + 40));
@@ -173,7 +177,8 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
         {CellState::Saturated, kSaturated, "not fit: too saturated a colour"}};
     for (const auto &[state, colour, text] : unfit) paintCells(img, view, det.debug, state, colour);
     for (const auto &outline : det.debug.hull) polyline(img, view, outline, outline.size() > 2, kFree, 2);
-    if (det.debug.has_workspace) polyline(img, view, {det.debug.workspace.begin(), det.debug.workspace.end()}, true, kWorkspace, 2);
+    if (det.debug.has_workspace)
+        polyline(img, view, {det.debug.workspace.begin(), det.debug.workspace.end()}, true, kWorkspace, 2);
     if (det.rectangle.area() > 0) {
         polyline(img, view, {det.rectangle.corners.begin(), det.rectangle.corners.end()}, true,
                  det.found ? kRect : cv::Scalar(128, 0, 128), 4);

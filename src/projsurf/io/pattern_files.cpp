@@ -1,8 +1,8 @@
 #include "projsurf/io/pattern_files.hpp"
 
+#include <yaml-cpp/yaml.h>
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
-#include <yaml-cpp/yaml.h>
 
 #include "projsurf/core/gray_code.hpp"
 #include "projsurf/io/errors.hpp"
@@ -51,7 +51,8 @@ PatternList readPatternList(const std::string &path) {
         const YAML::Node p = root["patterns"];
         if (!p || !p.IsMap()) throw InputError(path, "missing key 'patterns'");
         const YAML::Node res = p["resolution"];
-        if (!res || !res.IsSequence() || res.size() != 2) throw InputError(path, "'patterns.resolution' must be [W, H]");
+        if (!res || !res.IsSequence() || res.size() != 2)
+            throw InputError(path, "'patterns.resolution' must be [W, H]");
         list.width = res[0].as<int>();
         list.height = res[1].as<int>();
         if (list.width < 2 || list.height < 2 || list.width > limits::kMaxFramebufferSide ||
@@ -95,7 +96,8 @@ std::vector<PoseCaptures> readPoseCaptures(const std::string &dir, const Pattern
         for (const auto &name : list.names) {
             const std::string path = (pd / (name + ".png")).string();
             if (!fs::exists(path, ec))
-                throw InputError(path, "missing: capture one colour image per pattern of patterns.yaml, named as the pattern");
+                throw InputError(
+                    path, "missing: capture one colour image per pattern of patterns.yaml, named as the pattern");
             cv::Mat img = readImage(path, cv::IMREAD_GRAYSCALE, pixels);
             if (img.cols != width || img.rows != height)
                 throw InputError(path, "size differs from camera.yaml (" + size + ")");

@@ -10,9 +10,9 @@
 namespace projsurf {
 
 struct PatternList {
-    int width = 0, height = 0;        ///< framebuffer, px
-    std::string coding;               ///< "gray_code_inverse" (the only one so far)
-    std::vector<std::string> names;   ///< in the order to project
+    int width = 0, height = 0;       ///< framebuffer, px
+    std::string coding;              ///< "gray_code_inverse" (the only one so far)
+    std::vector<std::string> names;  ///< in the order to project
 };
 
 /// Writes DIR/patterns/<name>.png and DIR/patterns.yaml for a width x height framebuffer (all

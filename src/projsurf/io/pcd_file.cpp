@@ -19,10 +19,10 @@ namespace {
 
 using namespace cloud_format;
 
-/// LZF, the compression of PCD binary_compressed: decompresses a stream into exactly `out_len` bytes; false on any inconsistency.
-/// Stream: a control byte c. c < 32: a literal run of c + 1 bytes follows. Otherwise a
-/// back reference: length L = c >> 5 (L == 7: plus the next byte), offset high bits c & 31,
-/// then the offset's low byte; copy L + 2 bytes starting (offset + 1) bytes back.
+/// LZF, the compression of PCD binary_compressed: decompresses a stream into exactly `out_len` bytes; false on any
+/// inconsistency. Stream: a control byte c. c < 32: a literal run of c + 1 bytes follows. Otherwise a back reference:
+/// length L = c >> 5 (L == 7: plus the next byte), offset high bits c & 31, then the offset's low byte; copy L + 2
+/// bytes starting (offset + 1) bytes back.
 bool lzfDecompress(const unsigned char *in, std::size_t in_len, unsigned char *out, std::size_t out_len) {
     std::size_t ip = 0, op = 0;
     while (ip < in_len) {
@@ -51,7 +51,6 @@ bool lzfDecompress(const unsigned char *in, std::size_t in_len, unsigned char *o
 
 // A back reference is at most 3 bytes for 264 output bytes: no stream expands further.
 constexpr std::uint64_t kLzfMaxRatio = 89;
-
 
 enum class PcdData { Ascii, Binary, Compressed };
 
@@ -124,10 +123,14 @@ PcdHeader parsePcdHeader(const std::string &path, const std::string &bytes) {
                 if (!parseDouble(words[i], v) || !std::isfinite(v)) throw bad("VIEWPOINT value " + shown(words[i]));
         } else if (key == "DATA") {
             if (nargs != 1) throw bad("DATA needs one value, got " + shown(line));
-            if (words[1] == "ascii") h.data = PcdData::Ascii;
-            else if (words[1] == "binary") h.data = PcdData::Binary;
-            else if (words[1] == "binary_compressed") h.data = PcdData::Compressed;
-            else throw bad("unknown DATA type " + shown(words[1]) + " (expected ascii, binary or binary_compressed)");
+            if (words[1] == "ascii")
+                h.data = PcdData::Ascii;
+            else if (words[1] == "binary")
+                h.data = PcdData::Binary;
+            else if (words[1] == "binary_compressed")
+                h.data = PcdData::Compressed;
+            else
+                throw bad("unknown DATA type " + shown(words[1]) + " (expected ascii, binary or binary_compressed)");
             have_data = true;
         } else {
             throw bad("unexpected line " + shown(line));
@@ -138,9 +141,10 @@ PcdHeader parsePcdHeader(const std::string &path, const std::string &bytes) {
     if (names.empty()) throw bad("no FIELDS line");
     if (sizes.empty()) throw bad("no SIZE line");
     if (types.empty()) throw bad("no TYPE line");
-    if (sizes.size() != names.size() || types.size() != names.size() || (!counts.empty() && counts.size() != names.size()))
-        throw bad("FIELDS has " + std::to_string(names.size()) + " entries but SIZE has " + std::to_string(sizes.size()) +
-                  ", TYPE " + std::to_string(types.size()) +
+    if (sizes.size() != names.size() || types.size() != names.size() ||
+        (!counts.empty() && counts.size() != names.size()))
+        throw bad("FIELDS has " + std::to_string(names.size()) + " entries but SIZE has " +
+                  std::to_string(sizes.size()) + ", TYPE " + std::to_string(types.size()) +
                   (counts.empty() ? std::string() : ", COUNT " + std::to_string(counts.size())));
     for (std::size_t i = 0; i < names.size(); ++i) {
         PcdField f;
@@ -149,14 +153,20 @@ PcdHeader parsePcdHeader(const std::string &path, const std::string &bytes) {
         if (!parseU64(sizes[i], size) || (size != 1 && size != 2 && size != 4 && size != 8))
             throw bad("SIZE of field " + shown(names[i]) + " must be 1, 2, 4 or 8, got " + shown(sizes[i]));
         f.type.size = static_cast<int>(size);
-        if (types[i] == "F") f.type.kind = Kind::Float;
-        else if (types[i] == "I") f.type.kind = Kind::Int;
-        else if (types[i] == "U") f.type.kind = Kind::UInt;
-        else throw bad("TYPE of field " + shown(names[i]) + " must be F, I or U, got " + shown(types[i]));
+        if (types[i] == "F")
+            f.type.kind = Kind::Float;
+        else if (types[i] == "I")
+            f.type.kind = Kind::Int;
+        else if (types[i] == "U")
+            f.type.kind = Kind::UInt;
+        else
+            throw bad("TYPE of field " + shown(names[i]) + " must be F, I or U, got " + shown(types[i]));
         if (f.type.kind == Kind::Float && size != 4 && size != 8)
-            throw bad("field " + shown(names[i]) + " has TYPE F with SIZE " + std::to_string(size) + " (expected 4 or 8)");
+            throw bad("field " + shown(names[i]) + " has TYPE F with SIZE " + std::to_string(size) +
+                      " (expected 4 or 8)");
         if (!counts.empty() && (!parseU64(counts[i], f.count) || f.count < 1 || f.count > (1u << 20)))
-            throw bad("COUNT of field " + shown(names[i]) + " must be a whole number in 1..2^20, got " + shown(counts[i]));
+            throw bad("COUNT of field " + shown(names[i]) + " must be a whole number in 1..2^20, got " +
+                      shown(counts[i]));
         h.fields.push_back(f);
     }
     if (!have_width) throw bad("no WIDTH line");
@@ -165,8 +175,8 @@ PcdHeader parsePcdHeader(const std::string &path, const std::string &bytes) {
         throw bad("WIDTH " + std::to_string(h.width) + " x HEIGHT " + std::to_string(h.height) + " is too large");
     const std::uint64_t wh = h.width * h.height;  // both < 2^31: no overflow
     if (have_points && points != wh)
-        throw bad("POINTS " + std::to_string(points) + " does not match WIDTH x HEIGHT = " + std::to_string(h.width) + " x " +
-                  std::to_string(h.height));
+        throw bad("POINTS " + std::to_string(points) + " does not match WIDTH x HEIGHT = " + std::to_string(h.width) +
+                  " x " + std::to_string(h.height));
     h.points = wh;
     if (h.points > limits::kMaxCloudPoints)
         throw InputError(path, "cloud of " + std::to_string(h.points) + " points exceeds the limit of " +
@@ -190,11 +200,13 @@ Cloud readPcd(const std::string &path, const std::string &bytes) {
     int xyz[3];
     const char *axis_names[3] = {"x", "y", "z"};
     for (int a = 0; a < 3; ++a) {
-        const auto it = std::find_if(h.fields.begin(), h.fields.end(), [&](const PcdField &f) { return f.name == axis_names[a]; });
+        const auto it =
+            std::find_if(h.fields.begin(), h.fields.end(), [&](const PcdField &f) { return f.name == axis_names[a]; });
         if (it == h.fields.end()) {
             std::string list;
             for (const PcdField &f : h.fields) list += (list.empty() ? "" : " ") + f.name;
-            throw InputError(path, std::string("no ") + axis_names[a] + " field in the PCD (FIELDS: " + shown(list) + ")");
+            throw InputError(path,
+                             std::string("no ") + axis_names[a] + " field in the PCD (FIELDS: " + shown(list) + ")");
         }
         xyz[a] = static_cast<int>(it - h.fields.begin());
     }
@@ -204,12 +216,14 @@ Cloud readPcd(const std::string &path, const std::string &bytes) {
     const std::size_t remaining = bytes.size() - h.data_offset;
     const auto *data = reinterpret_cast<const unsigned char *>(bytes.data()) + h.data_offset;
     auto truncated = [&](const std::string &detail) {
-        return InputError(path, "truncated data: the header promises " + std::to_string(h.points) + " points; " + detail);
+        return InputError(path,
+                          "truncated data: the header promises " + std::to_string(h.points) + " points; " + detail);
     };
 
     if (h.data == PcdData::Ascii) {
         // Each point needs at least one character and one separator per value.
-        cloud.points.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(h.points, remaining / (2 * values_per_point) + 1)));
+        cloud.points.reserve(
+            static_cast<std::size_t>(std::min<std::uint64_t>(h.points, remaining / (2 * values_per_point) + 1)));
         std::vector<std::string_view> words;
         std::size_t pos = h.data_offset, line_no = 0;
         while (cloud.points.size() < h.points && pos < bytes.size()) {
@@ -219,7 +233,8 @@ Cloud readPcd(const std::string &path, const std::string &bytes) {
             if (words.empty()) continue;
             if (words.size() != values_per_point)
                 throw InputError(path, "ascii data line " + std::to_string(line_no) + ": expected " +
-                                           std::to_string(values_per_point) + " values, found " + std::to_string(words.size()));
+                                           std::to_string(values_per_point) + " values, found " +
+                                           std::to_string(words.size()));
             Point p;
             for (int a = 0; a < 3; ++a) {
                 double v;
@@ -246,8 +261,8 @@ Cloud readPcd(const std::string &path, const std::string &bytes) {
         if (remaining < 8) throw truncated("the binary_compressed size words are missing");
         const std::uint64_t compressed = readU32LE(data), raw = readU32LE(data + 4);
         if (compressed > remaining - 8)
-            throw truncated(std::to_string(compressed) + " compressed bytes announced, " + std::to_string(remaining - 8) +
-                            " present");
+            throw truncated(std::to_string(compressed) + " compressed bytes announced, " +
+                            std::to_string(remaining - 8) + " present");
         if (h.points > std::numeric_limits<std::uint32_t>::max() / point_size || raw != h.points * point_size)
             throw InputError(path, "corrupt binary_compressed data: uncompressed size " + std::to_string(raw) +
                                        " does not match " + std::to_string(h.points) + " points of " +
@@ -287,8 +302,9 @@ void writeCloudPcd(const std::string &path, const Cloud &cloud) {
     const bool organized = cloud.organized();
     const std::size_t width = organized ? static_cast<std::size_t>(cloud.width) : cloud.points.size();
     const std::size_t height = organized ? static_cast<std::size_t>(cloud.height) : 1;
-    std::string out = "# .PCD v0.7 - Point Cloud Data file format (written by projsurf)\n"
-                      "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n";
+    std::string out =
+        "# .PCD v0.7 - Point Cloud Data file format (written by projsurf)\n"
+        "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\n";
     out += "WIDTH " + std::to_string(width) + "\nHEIGHT " + std::to_string(height) + "\n";
     out += "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS " + std::to_string(cloud.points.size()) + "\nDATA binary\n";
     out.reserve(out.size() + 12 * cloud.points.size());

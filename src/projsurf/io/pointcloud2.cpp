@@ -53,7 +53,8 @@ Cloud cloudFromPointCloud2(const PointCloud2View &msg, const std::string &source
     if (msg.width == 0 || msg.height == 0) throw InputError(source, "PointCloud2 is empty");
     if (static_cast<std::uint64_t>(msg.width) * msg.height > limits::kMaxCloudPoints)
         throw InputError(source, "PointCloud2 of " + std::to_string(msg.width) + " x " + std::to_string(msg.height) +
-                                     " points exceeds the limit of " + std::to_string(limits::kMaxCloudPoints) + " points");
+                                     " points exceeds the limit of " + std::to_string(limits::kMaxCloudPoints) +
+                                     " points");
     const Accessor ax = findField(msg, "x", source);
     const Accessor ay = findField(msg, "y", source);
     const Accessor az = findField(msg, "z", source);

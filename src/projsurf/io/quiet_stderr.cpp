@@ -1,9 +1,9 @@
 #include "projsurf/io/quiet_stderr.hpp"
 
-#include <cstdio>
 #include <fcntl.h>
-#include <mutex>
 #include <unistd.h>
+#include <cstdio>
+#include <mutex>
 
 namespace projsurf {
 namespace {

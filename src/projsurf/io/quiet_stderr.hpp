@@ -6,13 +6,13 @@
 namespace projsurf {
 
 class QuietStderr {
-  public:
+public:
     QuietStderr();
     ~QuietStderr();
     QuietStderr(const QuietStderr &) = delete;
     QuietStderr &operator=(const QuietStderr &) = delete;
 
-  private:
+private:
     int saved_ = -1;
 };
 

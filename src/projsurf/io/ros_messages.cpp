@@ -25,8 +25,9 @@ const char *const kImageDefinition =
 const char *const kCameraInfoDefinition =
     "std_msgs/Header header\nuint32 height\nuint32 width\nstring distortion_model\nfloat64[] D\nfloat64[9] K\n"
     "float64[9] R\nfloat64[12] P\nuint32 binning_x\nuint32 binning_y\nsensor_msgs/RegionOfInterest roi\n" PROJSURF_RULE
-    PROJSURF_HEADER_MSG PROJSURF_RULE
-    "MSG: sensor_msgs/RegionOfInterest\nuint32 x_offset\nuint32 y_offset\nuint32 height\nuint32 width\nbool do_rectify\n";
+        PROJSURF_HEADER_MSG PROJSURF_RULE
+    "MSG: sensor_msgs/RegionOfInterest\nuint32 x_offset\nuint32 y_offset\nuint32 height\nuint32 width\nbool "
+    "do_rectify\n";
 #undef PROJSURF_RULE
 #undef PROJSURF_HEADER_MSG
 
@@ -98,14 +99,14 @@ std::string serializeCameraInfo(const RosHeader &h, const CameraIntrinsics &c) {
     putU32(m, static_cast<std::uint32_t>(c.width));
     putString(m, "plumb_bob");
     putU32(m, 5);
-    for (int i = 0; i < 5; ++i) putF64(m, 0.0);  // D: rectified, no distortion
-    for (double v : {c.fx, 0.0, c.cx, 0.0, c.fy, c.cy, 0.0, 0.0, 1.0}) putF64(m, v);                   // K
-    for (double v : {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0}) putF64(m, v);                       // R
-    for (double v : {c.fx, 0.0, c.cx, 0.0, 0.0, c.fy, c.cy, 0.0, 0.0, 0.0, 1.0, 0.0}) putF64(m, v);    // P
-    putU32(m, 0);  // binning_x
-    putU32(m, 0);  // binning_y
+    for (int i = 0; i < 5; ++i) putF64(m, 0.0);                                       // D: rectified, no distortion
+    for (double v : {c.fx, 0.0, c.cx, 0.0, c.fy, c.cy, 0.0, 0.0, 1.0}) putF64(m, v);  // K
+    for (double v : {1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0}) putF64(m, v);      // R
+    for (double v : {c.fx, 0.0, c.cx, 0.0, 0.0, c.fy, c.cy, 0.0, 0.0, 0.0, 1.0, 0.0}) putF64(m, v);  // P
+    putU32(m, 0);                                                                                    // binning_x
+    putU32(m, 0);                                                                                    // binning_y
     for (int i = 0; i < 4; ++i) putU32(m, 0);  // roi: the whole image
-    m.push_back(0);                             // roi.do_rectify
+    m.push_back(0);                            // roi.do_rectify
     return m;
 }
 

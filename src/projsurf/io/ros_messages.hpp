@@ -32,10 +32,10 @@ struct DepthImageMessage {
 };
 
 // Type names, md5sums and definitions, as a bag's connection header carries them.
-extern const char *const kImageType;          ///< "sensor_msgs/Image"
+extern const char *const kImageType;  ///< "sensor_msgs/Image"
 extern const char *const kImageMd5;
 extern const char *const kImageDefinition;
-extern const char *const kCameraInfoType;     ///< "sensor_msgs/CameraInfo"
+extern const char *const kCameraInfoType;  ///< "sensor_msgs/CameraInfo"
 extern const char *const kCameraInfoMd5;
 extern const char *const kCameraInfoDefinition;
 

@@ -27,7 +27,8 @@ PointCloud2View parsePointCloud2(const std::string &bytes, const std::string &so
     v.height = r.u32();
     v.width = r.u32();
     const std::uint32_t nfields = r.u32();
-    if (nfields > r.remaining() / 13) throw InputError(source, "PointCloud2 announces more fields than the message holds");
+    if (nfields > r.remaining() / 13)
+        throw InputError(source, "PointCloud2 announces more fields than the message holds");
     for (std::uint32_t i = 0; i < nfields; ++i) {
         PointField2 f;
         f.name = r.string();
@@ -66,8 +67,8 @@ std::size_t forEachBagCloud(const std::string &path, const std::string &topic,
     if (topic_type.empty()) {
         std::string have;
         for (const auto &t : cloud_topics) have += (have.empty() ? "" : ", ") + t;
-        throw InputError(path, "no topic '" + topic + "' in the bag (PointCloud2 topics: " +
-                                   (have.empty() ? "none" : have) + ")");
+        throw InputError(
+            path, "no topic '" + topic + "' in the bag (PointCloud2 topics: " + (have.empty() ? "none" : have) + ")");
     }
     if (topic_type != kCloudType)
         throw InputError(path, "topic '" + topic + "' holds " + topic_type + ", not " + kCloudType);

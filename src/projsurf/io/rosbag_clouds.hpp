@@ -14,9 +14,9 @@ bool haveRosbagSupport();
 
 /// What each message of the topic brings besides its points.
 struct BagCloudInfo {
-    double stamp = 0.0;      ///< header stamp, s (the bag's receive time when the header's is zero)
-    std::string frame_id;    ///< header frame_id
-    std::size_t index = 0;   ///< 0-based message number on the topic
+    double stamp = 0.0;     ///< header stamp, s (the bag's receive time when the header's is zero)
+    std::string frame_id;   ///< header frame_id
+    std::size_t index = 0;  ///< 0-based message number on the topic
 };
 
 /// Calls `visit` for every sensor_msgs/PointCloud2 on `topic` in `path`, in bag time order.

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <opencv2/core/utils/logger.hpp>
-#include <cstdio>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <regex>
@@ -75,8 +75,7 @@ cv::VideoWriter openVideoOutput(const std::string &path, const std::string &name
                                 cv::Size size) {
     quietVideoBackends();
     const int fourcc = videoFourcc(path);
-    if (fourcc == 0)
-        throw InputError(name_for_errors, "a video needs a .avi, .mkv, .mp4 or .mov name");
+    if (fourcc == 0) throw InputError(name_for_errors, "a video needs a .avi, .mkv, .mp4 or .mov name");
     cv::VideoWriter writer;
     try {
         QuietStderr quiet;
@@ -106,8 +105,10 @@ bool exists(const std::string &path) {
 }
 
 void toBgr8(cv::Mat &frame) {
-    if (frame.channels() == 1) cv::cvtColor(frame, frame, cv::COLOR_GRAY2BGR);
-    else if (frame.channels() == 4) cv::cvtColor(frame, frame, cv::COLOR_BGRA2BGR);
+    if (frame.channels() == 1)
+        cv::cvtColor(frame, frame, cv::COLOR_GRAY2BGR);
+    else if (frame.channels() == 4)
+        cv::cvtColor(frame, frame, cv::COLOR_BGRA2BGR);
     if (frame.depth() != CV_8U) frame.convertTo(frame, CV_8U, frame.depth() == CV_16U ? 1.0 / 257.0 : 1.0);
 }
 
@@ -123,8 +124,8 @@ FrameSource::FrameSource(const std::string &path) : path_(path), current_(path),
         long n = first_;
         while (exists(frameName(path, n))) {
             if (static_cast<std::uint64_t>(n - first_) >= limits::kMaxSequenceFrames)
-                throw InputError(path, "image sequence longer than the limit of " + std::to_string(limits::kMaxSequenceFrames) +
-                                           " frames");
+                throw InputError(path, "image sequence longer than the limit of " +
+                                           std::to_string(limits::kMaxSequenceFrames) + " frames");
             ++n;
         }
         count_ = n - first_;
@@ -136,11 +137,13 @@ FrameSource::FrameSource(const std::string &path) : path_(path), current_(path),
     if (!(w * h <= static_cast<double>(limits::kMaxImagePixels)))
         throw InputError(path, "video frames of " + std::to_string(static_cast<long long>(std::min(w, 1e15))) + " x " +
                                    std::to_string(static_cast<long long>(std::min(h, 1e15))) +
-                                   " pixels exceed the limit of " + std::to_string(limits::kMaxImagePixels) + " pixels");
+                                   " pixels exceed the limit of " + std::to_string(limits::kMaxImagePixels) +
+                                   " pixels");
     const double n = cap_.get(cv::CAP_PROP_FRAME_COUNT);
     if (n > static_cast<double>(limits::kMaxSequenceFrames))
         throw InputError(path, "video of " + std::to_string(static_cast<long long>(std::min(n, 1e15))) +
-                                   " frames exceeds the limit of " + std::to_string(limits::kMaxSequenceFrames) + " frames");
+                                   " frames exceeds the limit of " + std::to_string(limits::kMaxSequenceFrames) +
+                                   " frames");
     count_ = n > 0 ? static_cast<long>(n) : 0;
     const double f = cap_.get(cv::CAP_PROP_FPS);
     fps_ = f > 0 && f < 1000 ? f : 0.0;
@@ -156,7 +159,8 @@ bool FrameSource::read(cv::Mat &frame) {
         return true;
     }
     if (static_cast<std::uint64_t>(done_) >= limits::kMaxSequenceFrames)
-        throw InputError(path_, "video longer than the limit of " + std::to_string(limits::kMaxSequenceFrames) + " frames");
+        throw InputError(path_,
+                         "video longer than the limit of " + std::to_string(limits::kMaxSequenceFrames) + " frames");
     bool ok = false;
     try {
         QuietStderr quiet;
@@ -166,7 +170,8 @@ bool FrameSource::read(cv::Mat &frame) {
     }
     if (!ok) return false;
     if (frame.total() > limits::kMaxImagePixels)
-        throw InputError(path_, "video frame exceeds the limit of " + std::to_string(limits::kMaxImagePixels) + " pixels");
+        throw InputError(path_,
+                         "video frame exceeds the limit of " + std::to_string(limits::kMaxImagePixels) + " pixels");
     ++done_;
     toBgr8(frame);
     return true;

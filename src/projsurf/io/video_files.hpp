@@ -27,7 +27,7 @@ cv::VideoCapture openVideoInput(const std::string &path);
 /// exists but cannot be read is an error naming it (never a silently shorter video). Every
 /// frame is checked against limits::kMaxImagePixels, the count against kMaxSequenceFrames.
 class FrameSource {
-  public:
+public:
     explicit FrameSource(const std::string &path);
     /// The next frame (8-bit BGR); false after the last. Throws InputError.
     bool read(cv::Mat &frame);
@@ -40,7 +40,7 @@ class FrameSource {
     /// The number of a sequence's first frame (frames/0001.png... -> 1); 0 for a video.
     long firstNumber() const { return first_; }
 
-  private:
+private:
     std::string path_, current_;
     bool pattern_ = false;
     long next_ = 0, first_ = 0, count_ = 0, done_ = 0;
@@ -50,7 +50,6 @@ class FrameSource {
 
 /// Opens a writer (FFmpeg, else any backend) for `path` by its extension; throws InputError
 /// naming `name_for_errors` when it cannot.
-cv::VideoWriter openVideoOutput(const std::string &path, const std::string &name_for_errors, double fps,
-                                cv::Size size);
+cv::VideoWriter openVideoOutput(const std::string &path, const std::string &name_for_errors, double fps, cv::Size size);
 
 }  // namespace projsurf

@@ -1,9 +1,9 @@
 #include "projsurf/io/yaml_files.hpp"
 
+#include <yaml-cpp/yaml.h>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
-#include <Eigen/SVD>
-#include <yaml-cpp/yaml.h>
 
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -129,7 +129,8 @@ Projector readCalibration(const std::string &path) {
         throw InputError(path, "projector.fov_deg [" + std::to_string(fov[0]) + ", " + std::to_string(fov[1]) +
                                    "] looks like radians: give the field of view in degrees (a projector's is 15-120)");
     if (!(std::abs(o[0]) <= 3.0 && std::abs(o[1]) <= 3.0 && std::abs(o[2]) <= 3.0))
-        throw InputError(path, "projector.axis.origin is more than 3 m from the camera: give it in metres (millimetres?)");
+        throw InputError(path,
+                         "projector.axis.origin is more than 3 m from the camera: give it in metres (millimetres?)");
     proj.fov_h = fov[0] * kDeg;
     proj.fov_v = fov[1] * kDeg;
     proj.origin = Eigen::Vector3d(o[0], o[1], o[2]);
@@ -138,7 +139,8 @@ Projector readCalibration(const std::string &path) {
     proj.direction = dir.normalized();
     readFullModel(path, p, proj);
     if (!isValidProjector(proj))
-        throw InputError(path, "projector.axis.direction is (nearly) vertical: the projector's image axes are undefined");
+        throw InputError(path,
+                         "projector.axis.direction is (nearly) vertical: the projector's image axes are undefined");
     return proj;
 }
 
@@ -171,8 +173,9 @@ YAML::Node calibrationNode(const Projector &projector) {
         p["intrinsics"]["cy"] = projector.cy();
         const auto &k = projector.distortion;
         p["distortion"] = seq({k[0], k[1], k[2], k[3], k[4]});
-        const Eigen::Matrix3d R = projector.rotation ? *projector.rotation
-                                                     : (Eigen::Matrix3d() << projector.right(), projector.down(), a).finished();
+        const Eigen::Matrix3d R = projector.rotation
+                                      ? *projector.rotation
+                                      : (Eigen::Matrix3d() << projector.right(), projector.down(), a).finished();
         for (int i = 0; i < 3; ++i) p["rotation"].push_back(seq({R(i, 0), R(i, 1), R(i, 2)}));
     }
     return p;

@@ -4,9 +4,9 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "projsurf/core/outline_raster.hpp"
 #include "projsurf/core/plane_frame.hpp"
 #include "projsurf/core/projector_footprint.hpp"
-#include "projsurf/core/outline_raster.hpp"
 #include "projsurf/pipeline/detection.hpp"
 
 namespace projsurf {
@@ -16,11 +16,11 @@ struct Candidate {
     int inliers = 0;
     std::vector<int> inlier_indices;  ///< into the input cloud
     PlaneFrame frame;
-    Footprint footprint;              ///< the projector's picture on the plane
+    Footprint footprint;  ///< the projector's picture on the plane
     RasterFrame raster;
-    cv::Mat free;                     ///< CV_8U, 255 = free cells inside the footprint
-    cv::Mat surface;                  ///< CV_8U, 255 = free surface, the footprint not applied (default method)
-    cv::Mat cell_state;               ///< CV_8U CellState (default method)
+    cv::Mat free;        ///< CV_8U, 255 = free cells inside the footprint
+    cv::Mat surface;     ///< CV_8U, 255 = free surface, the footprint not applied (default method)
+    cv::Mat cell_state;  ///< CV_8U CellState (default method)
     Rectangle rectangle;
     std::vector<std::vector<Eigen::Vector3d>> outlines;
 };

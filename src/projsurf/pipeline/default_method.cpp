@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <opencv2/imgproc.hpp>
+#include <optional>
 #include <random>
 
 #include "projsurf/core/camera.hpp"
@@ -24,23 +24,23 @@ namespace {
 
 /// The points the planes are searched on.
 struct CloudSample {
-    std::vector<int> indices;              ///< into the cloud
-    std::vector<Point> points;             ///< cloud.points[indices]
-    std::vector<float> band;               ///< inlier band of each point, m
-    std::optional<CameraIntrinsics> camera;///< organized clouds are pinhole images: where a volume is seen
+    std::vector<int> indices;                ///< into the cloud
+    std::vector<Point> points;               ///< cloud.points[indices]
+    std::vector<float> band;                 ///< inlier band of each point, m
+    std::optional<CameraIntrinsics> camera;  ///< organized clouds are pinhole images: where a volume is seen
     float near = std::numeric_limits<float>::infinity();  ///< m, depth of the nearest point
 };
 
 /// A candidate with what the default method needs to search it.
 struct PlaneCandidate : Candidate {
-    cv::Rect image_box;                  ///< organized clouds: the pixels that matter to it (empty = all)
-    double bound = 0.0;                  ///< m^2, the largest rectangle its raster could hold
-    double spread_area = 0.0;            ///< m^2, the bounding box of its inliers on the plane
-    std::vector<char> other_surfaces;    ///< depth images: the planar regions on other planes than this one
-    PlaneObservation *observed = nullptr;///< what the camera saw of it, per raster cell
-    WallShape shape;                     ///< how the seen wall departs from the plane
-    DepthTolerance tolerance;            ///< the band about the shape (the noise measured on it)
-    CellSuitability *colour = nullptr;   ///< the cells' fitness by their colour (null without colour)
+    cv::Rect image_box;                    ///< organized clouds: the pixels that matter to it (empty = all)
+    double bound = 0.0;                    ///< m^2, the largest rectangle its raster could hold
+    double spread_area = 0.0;              ///< m^2, the bounding box of its inliers on the plane
+    std::vector<char> other_surfaces;      ///< depth images: the planar regions on other planes than this one
+    PlaneObservation *observed = nullptr;  ///< what the camera saw of it, per raster cell
+    WallShape shape;                       ///< how the seen wall departs from the plane
+    DepthTolerance tolerance;              ///< the band about the shape (the noise measured on it)
+    CellSuitability *colour = nullptr;     ///< the cells' fitness by their colour (null without colour)
 };
 
 CloudSample sampleCloud(const Cloud &cloud, const DetectorConfig &cfg) {
@@ -99,7 +99,8 @@ std::vector<PlaneCandidate> findRegionCandidates(const CloudSample &s, const Poi
 }
 
 /// 3.2.1: every vertical plane of the sample, with its frame (upright by gravity).
-std::vector<PlaneCandidate> findCandidates(const CloudSample &s, const DetectorConfig &cfg, const Eigen::Vector3d &gravity) {
+std::vector<PlaneCandidate> findCandidates(const CloudSample &s, const DetectorConfig &cfg,
+                                           const Eigen::Vector3d &gravity) {
     VerticalPlaneOptions opt;
     opt.ransac.max_tilt = cfg.max_tilt;
     opt.ransac.max_iterations = cfg.planes.ransac_iterations;
@@ -126,15 +127,18 @@ void shapeWall(const Cloud &cloud, const CloudSample &s, const DetectorConfig &c
     // The residual about the shape also counts what the shape cannot follow (a window recess, a
     // box): on depth images it may exceed the noise measured between nearby readings only by
     // what a smooth sensor error leaves (local_cap times).
-    const double local = localNoiseK(cloud, s.indices, s.band, c.plane, cfg.wall.shape.capture_bands, cfg.wall.noise_offset_px);
-    if (local > 0.0) c.shape.noise_k = std::min(c.shape.noise_k, cfg.wall.local_cap * std::max(local, cfg.tolerance.noise_k));
+    const double local =
+        localNoiseK(cloud, s.indices, s.band, c.plane, cfg.wall.shape.capture_bands, cfg.wall.noise_offset_px);
+    if (local > 0.0)
+        c.shape.noise_k = std::min(c.shape.noise_k, cfg.wall.local_cap * std::max(local, cfg.tolerance.noise_k));
     c.tolerance = toleranceFor(c.shape, cfg.tolerance, cfg.wall.noise_min, cfg.wall.noise_max);
     // The wall's points are those on its shape (the plane's band misses where the camera bends it).
     c.inlier_indices.clear();
     for (std::size_t i = 0; i < s.points.size(); ++i) {
         const Eigen::Vector3d p = s.points[i].cast<double>();
         const int k = s.indices[i];
-        if (std::abs(c.plane.signedDistance(p) - c.shape.height(c.frame.toPlane(p))) <= c.tolerance.band(s.points[i].z()))
+        if (std::abs(c.plane.signedDistance(p) - c.shape.height(c.frame.toPlane(p))) <=
+            c.tolerance.band(s.points[i].z()))
             c.inlier_indices.push_back(k);
     }
     c.inliers = static_cast<int>(c.inlier_indices.size());
@@ -169,31 +173,34 @@ bool frameCandidate(const Cloud &cloud, const CloudSample &s, const Projector &p
     // for points off the plane at grazing angles and mixed pixels at edges; without
     // intrinsics, around where the plane's points are.
     const int width = cloud.width;
-    c.image_box = s.camera ? beamImageBox(*s.camera, c.frame, c.raster, projector.origin, s.near,
-                                          static_cast<int>(width * cfg.free_space.image_margin) + cfg.free_space.stride)
-                           : indexImageBox(cloud, c.inlier_indices, static_cast<int>(width * cfg.free_space.inlier_box_margin));
+    c.image_box =
+        s.camera ? beamImageBox(*s.camera, c.frame, c.raster, projector.origin, s.near,
+                                static_cast<int>(width * cfg.free_space.image_margin) + cfg.free_space.stride)
+                 : indexImageBox(cloud, c.inlier_indices, static_cast<int>(width * cfg.free_space.inlier_box_margin));
     const double h = std::min(hi.y() - lo.y(), (hi.x() - lo.x()) / aspect);
     c.bound = aspect * h * h;
     return true;
 }
 
 /// 3.2.2: the free surface of the candidate from one pass over the points where it is seen.
-void observeFreeSpace(const Cloud &cloud, DefaultScratch &scratch, const Projector &projector, const DetectorConfig &cfg,
-                      PlaneCandidate &c) {
+void observeFreeSpace(const Cloud &cloud, DefaultScratch &scratch, const Projector &projector,
+                      const DetectorConfig &cfg, PlaneCandidate &c) {
     const PointGrid &grid = scratch.grid;
     // On depth images, points of another surface nearer its plane than this one's (where a wall
     // meets this one at a corner) are no support for it, even within its band.
-    const bool exclude = cfg.free_space.exclude_other_surfaces && !c.other_surfaces.empty() && !scratch.region_labels.empty();
+    const bool exclude =
+        cfg.free_space.exclude_other_surfaces && !c.other_surfaces.empty() && !scratch.region_labels.empty();
     if (exclude)
-        nearerOtherMask(grid, grid.gridBox(c.image_box), scratch.region_labels, scratch.regions, c.other_surfaces, c.plane,
-                        c.tolerance, scratch.exclude);
-    observePlane(grid, grid.gridBox(c.image_box), c.plane, c.frame, c.raster, projector.origin, c.tolerance, *c.observed,
-                 c.shape, exclude ? &scratch.exclude : nullptr);
+        nearerOtherMask(grid, grid.gridBox(c.image_box), scratch.region_labels, scratch.regions, c.other_surfaces,
+                        c.plane, c.tolerance, scratch.exclude);
+    observePlane(grid, grid.gridBox(c.image_box), c.plane, c.frame, c.raster, projector.origin, c.tolerance,
+                 *c.observed, c.shape, exclude ? &scratch.exclude : nullptr);
     // The gaps between neighbouring samples on the wall are closed, up to a limit.
     const double spacing = sampleSpacing(cloud, c.inlier_indices, c.plane, grid.step, c.tolerance, c.spread_area,
                                          c.observed->support_points);
     const double gap = std::ceil(spacing / c.raster.cell);
-    const int gap_cells = std::isfinite(gap) ? static_cast<int>(std::clamp(gap, 1.0, double(cfg.free_space.max_gap_cells))) : 1;
+    const int gap_cells =
+        std::isfinite(gap) ? static_cast<int>(std::clamp(gap, 1.0, double(cfg.free_space.max_gap_cells))) : 1;
     SurfaceCells cells = observedFreeSurface(*c.observed, gap_cells, cfg.free_space.min_blocked_neighbours);
     c.surface = cells.free;
     c.cell_state = cells.state;
@@ -211,10 +218,11 @@ bool placeRectangle(double aspect, PlaneCandidate &c) {
 }
 
 /// Issue 15: each free cell's fitness by the colour of the wall seen there, in its cell state.
-void judgeColour(const Cloud &cloud, DefaultScratch &scratch, const DetectorConfig &cfg, std::size_t k, PlaneCandidate &c) {
+void judgeColour(const Cloud &cloud, DefaultScratch &scratch, const DetectorConfig &cfg, std::size_t k,
+                 PlaneCandidate &c) {
     CellSuitability &s = scratch.colour.at(k);
-    cellSuitability(scratch.grid, scratch.grid.gridBox(c.image_box), cloud.colours, c.plane, c.frame, c.raster, c.tolerance,
-                    c.shape, cfg.suitability.cells, s);
+    cellSuitability(scratch.grid, scratch.grid.gridBox(c.image_box), cloud.colours, c.plane, c.frame, c.raster,
+                    c.tolerance, c.shape, cfg.suitability.cells, s);
     if (s.empty()) return;
     c.colour = &s;
     for (int r = 0; r < s.rows; ++r) {
@@ -234,7 +242,8 @@ void avoidUnfit(PlaneCandidate &c) {
 }
 
 double unfitShare(const PlaneCandidate &c) {
-    return regionSuitability(*c.colour, c.raster, c.frame.toPlane(c.rectangle.corners[3]), c.frame.toPlane(c.rectangle.corners[1]))
+    return regionSuitability(*c.colour, c.raster, c.frame.toPlane(c.rectangle.corners[3]),
+                             c.frame.toPlane(c.rectangle.corners[1]))
         .unfit_share;
 }
 
@@ -249,7 +258,8 @@ bool placeSuitableRectangle(const DetectorConfig &cfg, double aspect, PlaneCandi
     }
     const bool any = placeRectangle(aspect, c);
     const Rectangle plain = c.rectangle;
-    const double plain_score = any ? plain.area() * std::pow(1.0 - unfitShare(c), cfg.suitability.prefer_exponent) : 0.0;
+    const double plain_score =
+        any ? plain.area() * std::pow(1.0 - unfitShare(c), cfg.suitability.prefer_exponent) : 0.0;
     const cv::Mat surface = c.surface.clone(), free = c.free.clone();
     avoidUnfit(c);
     const bool clean = placeRectangle(aspect, c);
@@ -265,8 +275,8 @@ bool placeSuitableRectangle(const DetectorConfig &cfg, double aspect, PlaneCandi
 SuitabilityReport reportSuitability(const DetectorConfig &cfg, const PlaneCandidate &c) {
     SuitabilityReport r;
     if (!c.colour || cfg.suitability.mode == SuitabilityMode::Off) return r;
-    const RegionSuitability s =
-        regionSuitability(*c.colour, c.raster, c.frame.toPlane(c.rectangle.corners[3]), c.frame.toPlane(c.rectangle.corners[1]));
+    const RegionSuitability s = regionSuitability(*c.colour, c.raster, c.frame.toPlane(c.rectangle.corners[3]),
+                                                  c.frame.toPlane(c.rectangle.corners[1]));
     r.used = true;
     r.mode = cfg.suitability.mode == SuitabilityMode::Prefer ? "prefer" : "avoid";
     r.mean_albedo = s.mean_luminance;
@@ -280,16 +290,16 @@ SuitabilityReport reportSuitability(const DetectorConfig &cfg, const PlaneCandid
 /// the surface's fault: the check looks one raster cell inside the rectangle.
 SurfaceCheckResult checkRectangle(const DetectorConfig &cfg, const PlaneCandidate &c) {
     const Rectangle inner = shrinkRectangle(c.frame, c.rectangle, c.raster.cell);
-    return checkObservedSurface(*c.observed, c.raster, c.frame.toPlane(inner.corners[3]), c.frame.toPlane(inner.corners[1]),
-                                cfg.check.max_outlier_fraction);
+    return checkObservedSurface(*c.observed, c.raster, c.frame.toPlane(inner.corners[3]),
+                                c.frame.toPlane(inner.corners[1]), cfg.check.max_outlier_fraction);
 }
 
 /// Cloud indices of the points the check counted as off the wall (for overlays), looked for
 /// only where the camera sees the rectangle.
 std::vector<int> checkOutliers(const CloudSample &s, const PointGrid &grid, const PlaneCandidate &c) {
     const Rectangle inner = shrinkRectangle(c.frame, c.rectangle, c.raster.cell);
-    const cv::Rect box = s.camera ? pixelBox(*s.camera, {inner.corners.begin(), inner.corners.end()}, 2 + grid.step)
-                                  : c.image_box;
+    const cv::Rect box =
+        s.camera ? pixelBox(*s.camera, {inner.corners.begin(), inner.corners.end()}, 2 + grid.step) : c.image_box;
     return offPlanePoints(grid, grid.gridBox(box), c.plane, c.frame, c.raster, c.tolerance,
                           c.frame.toPlane(inner.corners[3]), c.frame.toPlane(inner.corners[1]), c.shape);
 }

@@ -8,8 +8,8 @@
 #include "projsurf/core/planar_regions.hpp"
 #include "projsurf/core/plane_observation.hpp"
 #include "projsurf/core/point_grid.hpp"
-#include "projsurf/core/surface_suitability.hpp"
 #include "projsurf/core/projector.hpp"
+#include "projsurf/core/surface_suitability.hpp"
 #include "projsurf/pipeline/detection.hpp"
 #include "projsurf/pipeline/detector_config.hpp"
 

@@ -15,8 +15,9 @@ double SurfaceDetector::aspect() const { return config_.aspect > 0.0 ? config_.a
 
 Detection SurfaceDetector::detect(const Cloud &cloud, const Eigen::Vector3d &gravity) {
     const Eigen::Vector3d down = gravity.normalized();
-    Detection det = config_.method == Method::Paper ? detectPaper(cloud, projector_, config_, down, aspect())
-                                                    : detectDefault(cloud, projector_, config_, down, aspect(), *scratch_);
+    Detection det = config_.method == Method::Paper
+                        ? detectPaper(cloud, projector_, config_, down, aspect())
+                        : detectDefault(cloud, projector_, config_, down, aspect(), *scratch_);
     det.gravity = down;
     return det;
 }

@@ -73,8 +73,9 @@ Detection detectPaper(const Cloud &cloud, const Projector &projector, const Dete
     time.lap("voxel_grid");
     if (voxels.size() < 3) return time.fail("no points to search (empty or all-NaN cloud)");
     if (static_cast<long long>(voxels.size()) > cfg.paper.max_voxels)
-        return time.fail("the cloud fills " + std::to_string(voxels.size()) + " voxels, more than the paper method searches (" +
-                         std::to_string(cfg.paper.max_voxels) + "): use the default method");
+        return time.fail("the cloud fills " + std::to_string(voxels.size()) +
+                         " voxels, more than the paper method searches (" + std::to_string(cfg.paper.max_voxels) +
+                         "): use the default method");
 
     const auto found = findPaperPlane(voxels, cfg, gravity);
     time.lap("plane");
@@ -111,13 +112,14 @@ Detection detectPaper(const Cloud &cloud, const Projector &projector, const Dete
     det.rectangle = c.rectangle;
 
     // 3.2.3: the surface checker on the original cloud.
-    det.surface_check = checkSurfaceAgainstMeanDepth(cloud, c.frame, c.rectangle, cfg.paper.outlier_distance, cfg.paper.max_outliers);
+    det.surface_check =
+        checkSurfaceAgainstMeanDepth(cloud, c.frame, c.rectangle, cfg.paper.outlier_distance, cfg.paper.max_outliers);
     time.lap("surface_check");
     det.debug.outliers = det.surface_check.outlier_indices;
     det.found = det.surface_check.accepted;
     if (!det.found)
-        det.reason = "surface check rejected the area: " + std::to_string(det.surface_check.outliers) +
-                     " outliers > " + std::to_string(cfg.paper.max_outliers);
+        det.reason = "surface check rejected the area: " + std::to_string(det.surface_check.outliers) + " outliers > " +
+                     std::to_string(cfg.paper.max_outliers);
     return time.finish();
 }
 

@@ -138,7 +138,8 @@ PlanResult planStand(const Cloud &cloud, const Projector &projector, const Detec
             // The robot must get there: its disc along the straight way, and at the end.
             bool blocked = false;
             const int samples = std::max(1, static_cast<int>(std::ceil(move / 0.05)));
-            for (int s = 1; s <= samples && !blocked; ++s) blocked = occupancy.occupied(t * (double(s) / samples), o.robot_radius);
+            for (int s = 1; s <= samples && !blocked; ++s)
+                blocked = occupancy.occupied(t * (double(s) / samples), o.robot_radius);
             if (blocked) {
                 ++out.poses_occupied;
                 continue;
@@ -158,8 +159,9 @@ PlanResult planStand(const Cloud &cloud, const Projector &projector, const Detec
                 } else {
                     // Larger by more than 1 %, or as large with a shorter move / smaller turn.
                     better = !best.any || area > 1.01 * best.area ||
-                             (area >= 0.99 * best.area && (move < best.move - 1e-9 ||
-                                                           (std::abs(move - best.move) <= 1e-9 && std::abs(yaw) < std::abs(best.yaw) - 1e-9)));
+                             (area >= 0.99 * best.area &&
+                              (move < best.move - 1e-9 ||
+                               (std::abs(move - best.move) <= 1e-9 && std::abs(yaw) < std::abs(best.yaw) - 1e-9)));
                 }
                 if (!better) continue;
                 best = {true, area, move, yaw};

@@ -20,13 +20,13 @@
 namespace projsurf {
 
 struct PlanOptions {
-    double max_move = 2.0;       ///< m, the translation's length at most (contract default)
-    double width = 0.0;          ///< m; > 0: the smallest move giving at least this width
-    double max_yaw_deg = 45.0;   ///< deg, turns tried either way (our choice)
-    double yaw_step_deg = 5.0;   ///< deg (our choice)
-    double step = 0.1;           ///< m, grid of translations tried (our choice; at least max_move / 20)
-    double robot_radius = 0.3;   ///< m, the robot's footprint on the floor (a small mobile base)
-    double cell = 0.02;          ///< m, free-surface raster of the plan (coarser than detection's 0.01: speed)
+    double max_move = 2.0;          ///< m, the translation's length at most (contract default)
+    double width = 0.0;             ///< m; > 0: the smallest move giving at least this width
+    double max_yaw_deg = 45.0;      ///< deg, turns tried either way (our choice)
+    double yaw_step_deg = 5.0;      ///< deg (our choice)
+    double step = 0.1;              ///< m, grid of translations tried (our choice; at least max_move / 20)
+    double robot_radius = 0.3;      ///< m, the robot's footprint on the floor (a small mobile base)
+    double cell = 0.02;             ///< m, free-surface raster of the plan (coarser than detection's 0.01: speed)
     double obstacle_height = 0.08;  ///< m above the floor: higher points occupy (floor noise and thresholds below)
     /// m, the picture's farthest corner from the moved camera at most: the depth camera must
     /// still see the wall to detect and track it (Kinect v1: 1.7 cm noise at 3.5 m, K&OE 2012).

@@ -21,8 +21,8 @@ std::vector<RgbdFrame> renderCalibrationCaptures(const Projector &projector, con
         Scenario wall = makeScenario("wall", d, angles[k % 5]);
         if (pitch_deg != 0.0) pitchCamera(wall, pitch_deg);
         if (roll_deg != 0.0) rollCamera(wall, roll_deg);
-        frames.push_back(renderFrame(wall.scene, sensor, seed + 1000u + static_cast<unsigned>(k),
-                                     Projection{projector, disc}));
+        frames.push_back(
+            renderFrame(wall.scene, sensor, seed + 1000u + static_cast<unsigned>(k), Projection{projector, disc}));
     }
     return frames;
 }
@@ -44,8 +44,9 @@ std::vector<PatternCapture> renderPatternCaptures(const Projector &projector, co
         for (std::size_t i = 0; i < patterns.size(); ++i) {
             cv::Mat fb;
             cv::cvtColor(grayPatternImage(patterns[i], projector.width, projector.height), fb, cv::COLOR_GRAY2BGR);
-            RgbdFrame f = renderFrame(sc.scene, sensor, seed + 100u * static_cast<unsigned>(k) + static_cast<unsigned>(i),
-                                      Projection{projector, fb}, light);
+            RgbdFrame f =
+                renderFrame(sc.scene, sensor, seed + 100u * static_cast<unsigned>(k) + static_cast<unsigned>(i),
+                            Projection{projector, fb}, light);
             if (i == 0) cap.depth = f.depth;
             cv::Mat img;
             f.rgb.convertTo(img, CV_32FC3);

@@ -26,9 +26,9 @@ struct PatternPose {
 };
 /// How the colour camera sees the patterns (on top of renderFrame's ambient light and albedo).
 struct PatternCameraModel {
-    double ambient = 0.25;      ///< room light, fraction of white
-    double noise_sigma = 2.0;   ///< colour noise, grey levels (8-bit)
-    double blur_sigma_px = 0.7; ///< optics + projector defocus, camera px
+    double ambient = 0.25;       ///< room light, fraction of white
+    double noise_sigma = 2.0;    ///< colour noise, grey levels (8-bit)
+    double blur_sigma_px = 0.7;  ///< optics + projector defocus, camera px
 };
 /// What the user captures at one position: depth (registered) and one colour image per
 /// pattern of grayPatterns(projector.width, projector.height), same order.

@@ -31,7 +31,8 @@ cv::Mat measureD435(const Scene &scene, const ExactDepth &e, const D435Model &m,
             int q;
             opaqueAt(e, u, v, zz, q);
             if (q < 0) continue;
-            if (scene.quads[e.quad.at<int>(v, u)].material == Material::Glass && uniform(rng) >= m.glass_through) continue;
+            if (scene.quads[e.quad.at<int>(v, u)].material == Material::Glass && uniform(rng) >= m.glass_through)
+                continue;
             z.at<double>(v, u) = zz;
             quad.at<int>(v, u) = q;
         }
@@ -78,8 +79,8 @@ cv::Mat measureD435(const Scene &scene, const ExactDepth &e, const D435Model &m,
                 if (speckle.at<float>(v, u) > t) continue;
             }
             const double sigma = m.rms_at_2m * (zz / 2.0) * (zz / 2.0);
-            const double err = sigma * (s_corr * corr.at<float>(v, u) + s_unit * unit.field.at<float>(v, u) +
-                                        s_iid * gauss.next());
+            const double err =
+                sigma * (s_corr * corr.at<float>(v, u) + s_unit * unit.field.at<float>(v, u) + s_iid * gauss.next());
             // Quantise the disparity of the erroneous depth.
             const double disparity = fb / (zz + err);
             const double dq = std::round(disparity / m.subpixel) * m.subpixel;

@@ -7,9 +7,9 @@ namespace projsurf::sim {
 
 std::string sensorName(SensorKind kind) {
     switch (kind) {
-        case SensorKind::Kinect1: return "kinect1";
-        case SensorKind::Tof: return "tof";
-        case SensorKind::D435: return "d435";
+    case SensorKind::Kinect1: return "kinect1";
+    case SensorKind::Tof: return "tof";
+    case SensorKind::D435: return "d435";
     }
     return "?";
 }
@@ -27,9 +27,9 @@ const std::vector<SensorKind> &sensorKinds() {
 
 const CameraIntrinsics &DepthSensor::camera() const {
     switch (kind) {
-        case SensorKind::Tof: return tof.camera;
-        case SensorKind::D435: return d435.camera;
-        default: return kinect1.base.camera;
+    case SensorKind::Tof: return tof.camera;
+    case SensorKind::D435: return d435.camera;
+    default: return kinect1.base.camera;
     }
 }
 
@@ -55,9 +55,9 @@ DepthSensor makeDepthSensor(SensorKind kind, int unit) {
     s.kind = kind;
     s.unit = unit;
     switch (kind) {
-        case SensorKind::Kinect1: s.kinect1_unit = std::make_shared<Kinect1Unit>(makeKinect1Unit(s.kinect1, unit)); break;
-        case SensorKind::Tof: s.tof_unit = std::make_shared<TofUnit>(makeTofUnit(s.tof, unit)); break;
-        case SensorKind::D435: s.d435_unit = std::make_shared<D435Unit>(makeD435Unit(s.d435, unit)); break;
+    case SensorKind::Kinect1: s.kinect1_unit = std::make_shared<Kinect1Unit>(makeKinect1Unit(s.kinect1, unit)); break;
+    case SensorKind::Tof: s.tof_unit = std::make_shared<TofUnit>(makeTofUnit(s.tof, unit)); break;
+    case SensorKind::D435: s.d435_unit = std::make_shared<D435Unit>(makeD435Unit(s.d435, unit)); break;
     }
     return s;
 }
@@ -65,9 +65,9 @@ DepthSensor makeDepthSensor(SensorKind kind, int unit) {
 cv::Mat measureDepth(const Scene &scene, const ExactDepth &exact, const DepthSensor &s, unsigned seed,
                      const cv::Mat &tof_multipath) {
     switch (s.kind) {
-        case SensorKind::Tof: return measureTof(scene, exact, s.tof, *s.tof_unit, seed, tof_multipath);
-        case SensorKind::D435: return measureD435(scene, exact, s.d435, *s.d435_unit, seed);
-        default: return measureKinect1(scene, exact, s.kinect1, *s.kinect1_unit, seed);
+    case SensorKind::Tof: return measureTof(scene, exact, s.tof, *s.tof_unit, seed, tof_multipath);
+    case SensorKind::D435: return measureD435(scene, exact, s.d435, *s.d435_unit, seed);
+    default: return measureKinect1(scene, exact, s.kinect1, *s.kinect1_unit, seed);
     }
 }
 

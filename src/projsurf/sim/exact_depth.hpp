@@ -11,11 +11,11 @@ namespace projsurf::sim {
 
 struct ExactDepth {
     CameraIntrinsics camera;
-    cv::Mat z;            ///< CV_64F, m along the optical axis of the first surface (glass included); 0 = nothing
-    cv::Mat quad;         ///< CV_32S, its quad index, -1 = nothing
-    cv::Mat on_glass;     ///< CV_8U, 1 where `quad` is glass (set when any_glass)
-    cv::Mat behind_z;     ///< CV_64F, where `quad` is glass: the first non-glass surface behind it (0 = nothing)
-    cv::Mat behind_quad;  ///< CV_32S, its quad, -1 = nothing (or not behind glass)
+    cv::Mat z;              ///< CV_64F, m along the optical axis of the first surface (glass included); 0 = nothing
+    cv::Mat quad;           ///< CV_32S, its quad index, -1 = nothing
+    cv::Mat on_glass;       ///< CV_8U, 1 where `quad` is glass (set when any_glass)
+    cv::Mat behind_z;       ///< CV_64F, where `quad` is glass: the first non-glass surface behind it (0 = nothing)
+    cv::Mat behind_quad;    ///< CV_32S, its quad, -1 = nothing (or not behind glass)
     cv::Mat cos_incidence;  ///< CV_32F, |cos| of the angle between the ray and the seen surface's normal
     bool any_glass = false;
 };

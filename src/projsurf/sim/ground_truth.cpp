@@ -110,7 +110,8 @@ SurfaceTruth surfaceTruth(const Scene &scene, const std::vector<int> &quads, con
         if (!cam.inside(cam.pixelOf(p))) return false;
         if (std::abs(st.plane.normal.dot(p)) < cos_grazing * p.norm()) return false;
         if (segmentBlocked(scene, Eigen::Vector3d::Zero(), p, opt.tolerance)) return false;
-        if (opt.require_depth && sensor.ir_shadow && segmentBlocked(scene, sensor.emitter, p, opt.tolerance)) return false;
+        if (opt.require_depth && sensor.ir_shadow && segmentBlocked(scene, sensor.emitter, p, opt.tolerance))
+            return false;
         return !segmentBlocked(scene, projector.origin, p, opt.tolerance);
     };
     cv::Mat corner_free(rows + 1, cols + 1, CV_8U);

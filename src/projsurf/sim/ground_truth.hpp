@@ -39,25 +39,25 @@ struct TruthOptions {
 
 /// The result on one projection surface.
 struct SurfaceTruth {
-    int surface = -1;                 ///< Quad::surface id
-    std::string label;                ///< label of its quads ("wall", "closet", ...)
-    Plane plane;                      ///< camera frame, normal towards the camera
-    PlaneFrame frame;                 ///< up = -gravity, origin where the projector axis meets it
-    std::array<Eigen::Vector3d, 4> footprint{};  ///< projector footprint TL, TR, BR, BL
-    bool has_footprint = false;       ///< false when a corner ray misses the plane
-    cv::Mat free_mask;                ///< CV_8U, 255 = free; row 0 is the top (largest up)
+    int surface = -1;                                       ///< Quad::surface id
+    std::string label;                                      ///< label of its quads ("wall", "closet", ...)
+    Plane plane;                                            ///< camera frame, normal towards the camera
+    PlaneFrame frame;                                       ///< up = -gravity, origin where the projector axis meets it
+    std::array<Eigen::Vector3d, 4> footprint{};             ///< projector footprint TL, TR, BR, BL
+    bool has_footprint = false;                             ///< false when a corner ray misses the plane
+    cv::Mat free_mask;                                      ///< CV_8U, 255 = free; row 0 is the top (largest up)
     Eigen::Vector2d grid_origin = Eigen::Vector2d::Zero();  ///< plane coords of the mask's top-left corner
-    double cell = 0.0;                ///< m
+    double cell = 0.0;                                      ///< m
     bool found = false;
-    Rectangle rectangle;              ///< exact aspect, inside free cells
-    double free_area = 0.0;           ///< m^2 of free cells
+    Rectangle rectangle;     ///< exact aspect, inside free cells
+    double free_area = 0.0;  ///< m^2 of free cells
 };
 
 struct GroundTruth {
     bool found = false;
     double aspect = 0.0;
-    SurfaceTruth best;                  ///< the surface with the largest rectangle
-    std::vector<SurfaceTruth> surfaces; ///< every vertical projection surface considered
+    SurfaceTruth best;                   ///< the surface with the largest rectangle
+    std::vector<SurfaceTruth> surfaces;  ///< every vertical projection surface considered
 };
 
 /// Ground truth for a scene seen by `sensor.camera` (its range and grazing limits) with

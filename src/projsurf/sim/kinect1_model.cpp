@@ -14,7 +14,8 @@ Kinect1Unit makeKinect1Unit(const Kinect1Model &m, int unit) {
     Kinect1Unit k;
     k.unit = unit;
     cv::Mat f = smoothField(c.width, c.height, m.distortion_cell_px, unitSeed("kinect1", unit, "distortion"));
-    const double r2_corner = std::pow(std::max(c.cx, c.width - 1 - c.cx), 2) + std::pow(std::max(c.cy, c.height - 1 - c.cy), 2);
+    const double r2_corner =
+        std::pow(std::max(c.cx, c.width - 1 - c.cx), 2) + std::pow(std::max(c.cy, c.height - 1 - c.cy), 2);
     for (int v = 0; v < c.height; ++v)
         for (int u = 0; u < c.width; ++u) {
             const double r2 = ((u - c.cx) * (u - c.cx) + (v - c.cy) * (v - c.cy)) / r2_corner;
@@ -39,7 +40,8 @@ cv::Mat measureKinect1(const Scene &scene, const ExactDepth &e, const Kinect1Mod
     const cv::Mat shadow = s.ir_shadow ? occlusionFrom(scene, e, s.emitter, c.width / 8) : cv::Mat();
     const cv::Mat edges = depthEdgeMask(e.z, s.edge_jump, 2);
     const cv::Mat fly_edges = depthEdgeMask(e.z, s.edge_jump, 0);
-    const double cos_start = std::cos(s.grazing_start_deg * M_PI / 180.0), cos_max = std::cos(s.grazing_max_deg * M_PI / 180.0);
+    const double cos_start = std::cos(s.grazing_start_deg * M_PI / 180.0),
+                 cos_max = std::cos(s.grazing_max_deg * M_PI / 180.0);
     cv::Mat out(c.height, c.width, CV_64F, cv::Scalar(0));
     for (int v = 0; v < c.height; ++v)
         for (int u = 0; u < c.width; ++u) {

@@ -31,18 +31,19 @@ struct Kinect1Model {
     /// radius) its 95th percentile is then about 2.5 cm at 2 m and 5.6 cm at 3 m (median of
     /// units 0-11): the upper end of the literature's +-1-2 cm / +-3-5 cm, a little above it.
     double distortion_k = 2.9e-3;
-    double distortion_cell_px = 110.0;  ///< px, feature size of the distortion (our choice: a few smooth features across the image)
+    double distortion_cell_px =
+        110.0;  ///< px, feature size of the distortion (our choice: a few smooth features across the image)
     /// The distortion's weight grows from the centre to the border as (1 - g) + g (r / r_corner)^2
     /// ("larger towards the image border", Smisek 2011).
     double distortion_border_growth = 0.6;
-    double scale_error_sigma = 3e-3;    ///< relative, sigma of the per-unit depth-scale error (a few tenths of a percent)
-    double banding_k = 5e-4;            ///< 1/m, RMS of the column bands in inverse depth: 2 mm at 2 m (Smisek 2011: a few mm)
-    double banding_period_px = 10.0;    ///< px, width of the bands (our choice)
+    double scale_error_sigma = 3e-3;  ///< relative, sigma of the per-unit depth-scale error (a few tenths of a percent)
+    double banding_k = 5e-4;  ///< 1/m, RMS of the column bands in inverse depth: 2 mm at 2 m (Smisek 2011: a few mm)
+    double banding_period_px = 10.0;  ///< px, width of the bands (our choice)
     // Our choices for the effects the field notes name without numbers:
-    double flying_probability = 0.25;   ///< share of depth-edge pixels (within 1 px) that read a mix of both sides
-    double glossy_dropout = 0.85;       ///< probability of no reading on a glossy surface
-    double glass_through = 0.6;         ///< probability that a pixel on glass reads what is behind (else nothing)
-    double black_dropout = 1.0;         ///< probability of no reading on a black surface
+    double flying_probability = 0.25;  ///< share of depth-edge pixels (within 1 px) that read a mix of both sides
+    double glossy_dropout = 0.85;      ///< probability of no reading on a glossy surface
+    double glass_through = 0.6;        ///< probability that a pixel on glass reads what is behind (else nothing)
+    double black_dropout = 1.0;        ///< probability of no reading on a black surface
 };
 
 /// The systematic errors of one unit.
@@ -55,7 +56,7 @@ struct Kinect1Unit {
 Kinect1Unit makeKinect1Unit(const Kinect1Model &model, int unit);
 
 /// Depth readings (CV_64F, m, 0 = none) of `exact` through this unit, per-frame noise from `seed`.
-cv::Mat measureKinect1(const Scene &scene, const ExactDepth &exact, const Kinect1Model &model,
-                       const Kinect1Unit &unit, unsigned seed);
+cv::Mat measureKinect1(const Scene &scene, const ExactDepth &exact, const Kinect1Model &model, const Kinect1Unit &unit,
+                       unsigned seed);
 
 }  // namespace projsurf::sim

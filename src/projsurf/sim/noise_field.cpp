@@ -22,7 +22,8 @@ cv::Mat smoothField(int width, int height, double cell_px, std::uint32_t seed) {
     std::mt19937 rng(seq);
     NormalSource gauss(rng);
     // Grid nodes cover the image with one spare node each side so the cubic has support.
-    const int gw = static_cast<int>(std::ceil(width / cell_px)) + 3, gh = static_cast<int>(std::ceil(height / cell_px)) + 3;
+    const int gw = static_cast<int>(std::ceil(width / cell_px)) + 3,
+              gh = static_cast<int>(std::ceil(height / cell_px)) + 3;
     cv::Mat grid(gh, gw, CV_32F);
     for (int r = 0; r < gh; ++r)
         for (int c = 0; c < gw; ++c) grid.at<float>(r, c) = gauss.next();

@@ -62,7 +62,8 @@ PinholeView projectorView(const Projector &p) {
                 hi_y = std::max(hi_y, ideal.y());
             }
         }
-        const int left = static_cast<int>(std::ceil(-0.5 - lo_x)) + 1, top = static_cast<int>(std::ceil(-0.5 - lo_y)) + 1;
+        const int left = static_cast<int>(std::ceil(-0.5 - lo_x)) + 1,
+                  top = static_cast<int>(std::ceil(-0.5 - lo_y)) + 1;
         v.cx += left;
         v.cy += top;
         v.width = static_cast<int>(std::ceil(hi_x + 0.5)) + left + 1;

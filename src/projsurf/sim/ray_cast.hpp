@@ -23,7 +23,9 @@ struct PinholeView {
     /// Point in the view's own frame (x right, y down, z forward).
     Eigen::Vector3d toView(const Eigen::Vector3d &p) const { return rotation * (p - origin); }
     /// Pixel of a view-frame point (z > 0).
-    Eigen::Vector2d pixelOf(const Eigen::Vector3d &v) const { return {fx * v.x() / v.z() + cx, fy * v.y() / v.z() + cy}; }
+    Eigen::Vector2d pixelOf(const Eigen::Vector3d &v) const {
+        return {fx * v.x() / v.z() + cx, fy * v.y() / v.z() + cy};
+    }
     /// Camera-frame direction through pixel (u, v), scaled so that its forward component is 1.
     Eigen::Vector3d rayDirection(double u, double v) const {
         return rotation.transpose() * Eigen::Vector3d((u - cx) / fx, (v - cy) / fy, 1.0);

@@ -7,8 +7,8 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/sim/ray_cast.hpp"
 #include "projsurf/sim/gaussian_table.hpp"
+#include "projsurf/sim/ray_cast.hpp"
 
 namespace projsurf::sim {
 namespace {
@@ -70,8 +70,8 @@ cv::Vec3f shade(const Quad &quad, const Eigen::Vector3d &p, int qi, const std::o
     if (light && light->map.reaches(p, qi)) {
         const bool lens = light->projector.distorted();
         const auto fb_px = lens ? light->projector.toPixel(p) : std::optional<Eigen::Vector2d>();
-        const Eigen::Vector2d px = lens ? (fb_px ? *fb_px : Eigen::Vector2d(-1e9, -1e9))
-                                        : light->view.pixelOf(light->view.toView(p));
+        const Eigen::Vector2d px =
+            lens ? (fb_px ? *fb_px : Eigen::Vector2d(-1e9, -1e9)) : light->view.pixelOf(light->view.toView(p));
         const bool inside = px.x() >= -0.5 && px.x() < light->framebuffer.cols - 0.5 && px.y() >= -0.5 &&
                             px.y() < light->framebuffer.rows - 0.5;
         if (lens ? inside : light->view.inside(px)) {
@@ -144,7 +144,8 @@ RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned se
         edges = cv::Mat::zeros(cam.height, cam.width, CV_8U);
         auto jump = [&](int u0, int v0, int u1, int v1) {
             const int a = buf.quad.at<int>(v0, u0), b = buf.quad.at<int>(v1, u1);
-            return a != b && (a < 0 || b < 0 || std::abs(buf.z.at<double>(v0, u0) - buf.z.at<double>(v1, u1)) > sensor.edge_jump);
+            return a != b &&
+                   (a < 0 || b < 0 || std::abs(buf.z.at<double>(v0, u0) - buf.z.at<double>(v1, u1)) > sensor.edge_jump);
         };
         for (int v = 0; v < cam.height; ++v)
             for (int u = 0; u < cam.width; ++u)

@@ -2,8 +2,8 @@
 // Renders what the RGB-D camera sees of a scene, optionally with a picture projected on it:
 // the depth image, the organized cloud and the colour image (with the projector's light and
 // its shadows). Deterministic for a given seed.
-#include <optional>
 #include <opencv2/core.hpp>
+#include <optional>
 
 #include "projsurf/core/cloud.hpp"
 #include "projsurf/core/projector.hpp"
@@ -22,8 +22,8 @@ struct Projection {
 /// Light on the scene, as fractions of full white (a dim room, so the projected picture and
 /// the calibration disc stand out, as in the paper's set-up, section 3.1.1).
 struct Lighting {
-    double ambient = 0.15;         ///< room light reaching every surface
-    double projector_gain = 1.0;   ///< a white framebuffer pixel adds this much light
+    double ambient = 0.15;        ///< room light reaching every surface
+    double projector_gain = 1.0;  ///< a white framebuffer pixel adds this much light
 };
 
 struct RgbdFrame {

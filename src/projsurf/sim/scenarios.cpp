@@ -54,8 +54,8 @@ void requireRoom(const std::string &name, const WallFrame &w, double needed_out)
 }  // namespace
 
 const std::vector<std::string> &scenarioNames() {
-    static const std::vector<std::string> names{"wall",   "small_obstacles", "big_obstacle", "closet", "door",
-                                                "window", "poster",          "person",       "rolled", "corner", "desk"};
+    static const std::vector<std::string> names{"wall",   "small_obstacles", "big_obstacle", "closet", "door", "window",
+                                                "poster", "person",          "rolled",       "corner", "desk"};
     return names;
 }
 

@@ -24,13 +24,13 @@ namespace projsurf::sim {
 struct Scenario {
     std::string name;
     std::string description;
-    double distance = 2.0;   ///< m, camera to the main wall along the optical axis
-    double angle_deg = 0.0;  ///< wall normal vs camera z, about the vertical
-    double roll_deg = 0.0;   ///< camera (and projector) roll about the optical axis
-    double pitch_deg = 0.0;  ///< camera (and projector) pitch, positive looking down
-    Scene scene;             ///< camera frame
+    double distance = 2.0;                   ///< m, camera to the main wall along the optical axis
+    double angle_deg = 0.0;                  ///< wall normal vs camera z, about the vertical
+    double roll_deg = 0.0;                   ///< camera (and projector) roll about the optical axis
+    double pitch_deg = 0.0;                  ///< camera (and projector) pitch, positive looking down
+    Scene scene;                             ///< camera frame
     Eigen::Vector3d gravity{0.0, 1.0, 0.0};  ///< camera frame, unit
-    Plane wall;              ///< the main wall, camera frame (normal towards the camera, d > 0)
+    Plane wall;                              ///< the main wall, camera frame (normal towards the camera, d > 0)
 };
 
 /// Names accepted by makeScenario, in a stable order.
@@ -71,9 +71,9 @@ Projector exampleProjector();
 /// One of the paper's experiments: a scenario over distances x angles.
 struct PaperExperiment {
     std::string scenario;
-    std::vector<double> distances;   ///< m
+    std::vector<double> distances;  ///< m
     std::vector<double> angles_deg;
-    std::string source;              ///< where in the paper
+    std::string source;  ///< where in the paper
 };
 /// Sections 4.1-4.4 (Tables 1-3, Figs 11, 12, 14, 15).
 std::vector<PaperExperiment> paperExperiments();

@@ -89,10 +89,9 @@ void addWallAndFloor(Scene &scene, const WallFrame &w, const std::vector<WallHol
 }  // namespace
 
 const std::vector<std::string> &realisticScenarioNames() {
-    static const std::vector<std::string> names{"plain_bowed", "skirting_switches", "frames",      "tv",
-                                                "whiteboard",  "posters",           "window_glass", "black_furniture",
-                                                "clutter",     "corner_room",       "office",      "living_room",
-                                                "desk_clutter"};
+    static const std::vector<std::string> names{
+        "plain_bowed",     "skirting_switches", "frames",      "tv",     "whiteboard",  "posters",     "window_glass",
+        "black_furniture", "clutter",           "corner_room", "office", "living_room", "desk_clutter"};
     return names;
 }
 
@@ -160,8 +159,8 @@ Scenario makeRealisticScenario(const std::string &name, double distance, double 
         skirting(scene, w);
         wallBox(scene, w, -0.9, -0.4, 0.0, 0.45, 0.3, 0.7, kCardboard, "box");
         wallBox(scene, w, 0.2, 0.8, 0.0, 0.35, 0.5, 0.9, kCardboard, "box");
-        wallBox(scene, w, -0.2, 0.2, 0.0, 0.45, 0.6, 1.0, kWood, "chair");        // seat
-        wallBox(scene, w, -0.2, 0.2, 0.45, 0.9, 0.6, 0.64, kWood, "chair");       // back
+        wallBox(scene, w, -0.2, 0.2, 0.0, 0.45, 0.6, 1.0, kWood, "chair");   // seat
+        wallBox(scene, w, -0.2, 0.2, 0.45, 0.9, 0.6, 0.64, kWood, "chair");  // back
     } else if (name == "corner_room") {
         sc.description = "a room corner: a side wall at right angles 1 m right of the axis, skirting";
         skirting(scene, w);

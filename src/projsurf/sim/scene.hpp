@@ -4,8 +4,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <array>
-#include <optional>
 #include <opencv2/core.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,7 +50,6 @@ struct Quad {
     /// light the surface gives off itself, as a fraction of white (a window pane, a screen).
     cv::Mat texture;
     float emission = 0.0f;
-
 
     Eigen::Vector3d normal() const { return edge_a.cross(edge_b).normalized(); }
     Eigen::Vector3d center() const { return corner + 0.5 * (edge_a + edge_b); }

@@ -22,23 +22,23 @@ namespace projsurf::sim {
 struct SensorModel {
     CameraIntrinsics camera;  ///< Kinect v1 VGA, depth registered to colour (core/camera.hpp defaults)
 
-    bool noise = true;                 ///< add axial depth noise (and colour noise)
-    double noise_k = 1.425e-3;         ///< 1/m: total sigma_z = k z^2 (K&OE 2012), quantisation included
-    bool quantize = true;              ///< quantise 1/z like the Kinect's 11-bit raw disparity
-    double disparity_step = 3.0711016e-3;   ///< 1/m per raw step (OpenKinect fit)
-    double disparity_offset = 3.3309495161; ///< 1/m, 1/z at raw = 0 (OpenKinect fit)
-    double min_depth = 0.5;            ///< m, nearer readings are missing (K&OE 2012: 0.5 m)
-    double max_depth = 4.5;            ///< m, farther readings are missing (our choice within 4-5 m)
-    double grazing_start_deg = 70.0;   ///< ray-normal angle where readings start to drop out
-    double grazing_max_deg = 80.0;     ///< beyond this angle no reading (hard cut when !noise)
-    bool ir_shadow = true;             ///< no reading where the IR emitter's pattern cannot reach
+    bool noise = true;                         ///< add axial depth noise (and colour noise)
+    double noise_k = 1.425e-3;                 ///< 1/m: total sigma_z = k z^2 (K&OE 2012), quantisation included
+    bool quantize = true;                      ///< quantise 1/z like the Kinect's 11-bit raw disparity
+    double disparity_step = 3.0711016e-3;      ///< 1/m per raw step (OpenKinect fit)
+    double disparity_offset = 3.3309495161;    ///< 1/m, 1/z at raw = 0 (OpenKinect fit)
+    double min_depth = 0.5;                    ///< m, nearer readings are missing (K&OE 2012: 0.5 m)
+    double max_depth = 4.5;                    ///< m, farther readings are missing (our choice within 4-5 m)
+    double grazing_start_deg = 70.0;           ///< ray-normal angle where readings start to drop out
+    double grazing_max_deg = 80.0;             ///< beyond this angle no reading (hard cut when !noise)
+    bool ir_shadow = true;                     ///< no reading where the IR emitter's pattern cannot reach
     Eigen::Vector3d emitter{0.075, 0.0, 0.0};  ///< m, IR emitter position (camera frame, K&OE baseline)
-    double rgb_noise = 2.0;            ///< grey levels, sigma of colour noise when `noise`
+    double rgb_noise = 2.0;                    ///< grey levels, sigma of colour noise when `noise`
     /// px, sigma of where a depth edge lands (Nguyen, Izadi & Lovell 2012: lateral noise
     /// 0.8 px at moderate angles); beside a depth jump a reading may come from the other
     /// side. Applied only when `noise`; 0 turns it off.
     double edge_jitter_px = 0.8;
-    double edge_jump = 0.03;           ///< m, depth difference that counts as a depth edge
+    double edge_jump = 0.03;  ///< m, depth difference that counts as a depth edge
 
     /// Noise-free, unquantised, no random or IR-shadow dropouts: exact geometry, for tests.
     /// Range limits and the hard grazing-angle cut stay.

@@ -102,7 +102,8 @@ cv::Mat measureTof(const Scene &scene, const ExactDepth &e, const TofModel &m, c
             int q;
             opaqueAt(e, u, v, z, q);
             if (q < 0) continue;
-            if (scene.quads[e.quad.at<int>(v, u)].material == Material::Glass && uniform(rng) >= m.glass_through) continue;
+            if (scene.quads[e.quad.at<int>(v, u)].material == Material::Glass && uniform(rng) >= m.glass_through)
+                continue;
             if (scene.quads[q].material == Material::Black && uniform(rng) < m.black_dropout) continue;
             if (scene.quads[q].material == Material::Glossy && uniform(rng) < m.glossy_dropout) continue;
             if (e.cos_incidence.at<float>(v, u) < cos_max) continue;
@@ -111,8 +112,10 @@ cv::Mat measureTof(const Scene &scene, const ExactDepth &e, const TofModel &m, c
             // Flying pixels: the pixel's light comes from both sides of the edge.
             if (edges.at<uchar>(v, u) && uniform(rng) < m.flying_probability) {
                 const int r = m.flying_radius_px + 1;
-                const int nu = std::clamp(u + static_cast<int>(std::lround((2.0 * uniform(rng) - 1.0) * r)), 0, c.width - 1);
-                const int nv = std::clamp(v + static_cast<int>(std::lround((2.0 * uniform(rng) - 1.0) * r)), 0, c.height - 1);
+                const int nu =
+                    std::clamp(u + static_cast<int>(std::lround((2.0 * uniform(rng) - 1.0) * r)), 0, c.width - 1);
+                const int nv =
+                    std::clamp(v + static_cast<int>(std::lround((2.0 * uniform(rng) - 1.0) * r)), 0, c.height - 1);
                 double zn;
                 int qn;
                 opaqueAt(e, nu, nv, zn, qn);

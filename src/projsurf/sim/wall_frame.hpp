@@ -18,7 +18,7 @@ constexpr double kScenarioWallHeight = 2.6;    ///< m
 struct WallFrame {
     Eigen::Vector3d origin, right, up, normal;
     WallFrame(double distance, double angle_deg) {
-        const double a = angle_deg * (3.14159265358979323846 / 180.0);  // as kDeg in scenarios.cpp
+        const double a = angle_deg * (3.14159265358979323846 / 180.0);   // as kDeg in scenarios.cpp
         origin = Eigen::Vector3d(0.0, kScenarioCameraHeight, distance);  // on the floor below the axis point
         right = Eigen::Vector3d(std::cos(a), 0.0, std::sin(a));
         up = Eigen::Vector3d(0.0, -1.0, 0.0);

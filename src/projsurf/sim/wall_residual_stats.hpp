@@ -32,12 +32,12 @@ struct WallStatsOptions {
 };
 
 struct WallResidualStats {
-    int points = 0;           ///< inliers used
-    Plane plane;              ///< camera frame
-    double distance = 0.0;    ///< m, perpendicular camera-wall distance
-    double angle_deg = 0.0;   ///< wall normal vs optical axis
-    double rms = 0.0;         ///< m, about the plane
-    double local_rms = 0.0;   ///< m, residual minus its smooth part
+    int points = 0;                      ///< inliers used
+    Plane plane;                         ///< camera frame
+    double distance = 0.0;               ///< m, perpendicular camera-wall distance
+    double angle_deg = 0.0;              ///< wall normal vs optical axis
+    double rms = 0.0;                    ///< m, about the plane
+    double local_rms = 0.0;              ///< m, residual minus its smooth part
     double low_p1 = 0.0, low_p99 = 0.0;  ///< m, percentiles of the smooth part
 };
 
