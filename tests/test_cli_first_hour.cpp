@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <random>
 
+#include "cli_fixtures.hpp"
 #include "cli_run.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/yaml_files.hpp"
@@ -21,6 +22,8 @@ using projsurf::test::cli;
 using projsurf::test::CliRun;
 using projsurf::test::freshDir;
 using projsurf::test::slurp;
+using projsurf::test::writeCaptures;
+using projsurf::test::writeDetection;
 
 namespace {
 
@@ -35,32 +38,6 @@ std::string wallPcd(const fs::path &dir) {
     const std::string path = (dir / "wall.pcd").string();
     writeCloudPcd(path, cloud);
     return path;
-}
-
-void writeCaptures(const fs::path &dir, const std::vector<CaptureImages> &caps) {
-    fs::create_directories(dir);
-    writeCamera((dir / "camera.yaml").string(), CameraIntrinsics{});
-    for (std::size_t k = 0; k < caps.size(); ++k) {
-        cv::imwrite((dir / ("capture_" + std::to_string(k) + "_rgb.png")).string(), caps[k].color);
-        cv::imwrite((dir / ("capture_" + std::to_string(k) + "_depth.png")).string(), caps[k].depth);
-    }
-}
-
-/// A detection JSON of the contract's shape for `rect`.
-void writeDetection(const fs::path &path, const Rectangle &rect, const Plane &plane) {
-    nlohmann::json j;
-    j["found"] = true;
-    j["reason"] = nullptr;
-    j["plane"]["coefficients"] = {plane.normal.x(), plane.normal.y(), plane.normal.z(), plane.d};
-    j["plane"]["orientation_deg"] = orientationDeg(plane);
-    j["plane"]["inliers"] = 1000;
-    for (const auto &c : rect.corners) j["rectangle"]["corners"].push_back({c.x(), c.y(), c.z()});
-    j["rectangle"]["width_m"] = rect.width;
-    j["rectangle"]["height_m"] = rect.height;
-    j["rectangle"]["area_m2"] = rect.area();
-    j["surface_check"] = {{"points", 1000}, {"outliers", 0}, {"accepted", true}};
-    j["timing_ms"]["total"] = 1.0;
-    std::ofstream(path) << j.dump(2);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "projsurf/core/euler_rodrigues.hpp"
+#include "projsurf/core/greyscale.hpp"
 
 namespace projsurf {
 namespace {
@@ -20,14 +21,7 @@ cv::Mat toGrey8(const cv::Mat &image) {
         img.convertTo(img, CV_8U, 1.0 / 257.0);
     else if (img.depth() != CV_8U)
         img.convertTo(img, CV_8U);
-    cv::Mat grey;
-    if (img.channels() == 3)
-        cv::cvtColor(img, grey, cv::COLOR_BGR2GRAY);
-    else if (img.channels() == 4)
-        cv::cvtColor(img, grey, cv::COLOR_BGRA2GRAY);
-    else
-        grey = img;
-    return grey;
+    return greyscale(img);
 }
 
 /// Least-squares plane through points (smallest eigenvector of the covariance).

@@ -6,6 +6,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "projsurf/core/greyscale.hpp"
+
 namespace projsurf {
 
 int grayBits(int n) {
@@ -51,15 +53,8 @@ cv::Mat grayPatternImage(const GrayPattern &p, int width, int height) {
 namespace {
 
 cv::Mat toGrey(const cv::Mat &m) {
-    cv::Mat g;
-    if (m.channels() == 3)
-        cv::cvtColor(m, g, cv::COLOR_BGR2GRAY);
-    else if (m.channels() == 4)
-        cv::cvtColor(m, g, cv::COLOR_BGRA2GRAY);
-    else
-        g = m;
     cv::Mat f;
-    g.convertTo(f, CV_32F);
+    greyscale(m).convertTo(f, CV_32F);
     return f;
 }
 

@@ -7,18 +7,14 @@
 #include <Eigen/Dense>
 #include <opencv2/imgproc.hpp>
 
+#include "projsurf/core/greyscale.hpp"
+
 namespace projsurf {
 
 namespace {
 
 cv::Mat grey8(const cv::Mat &m) {
-    cv::Mat g;
-    if (m.channels() == 3)
-        cv::cvtColor(m, g, cv::COLOR_BGR2GRAY);
-    else if (m.channels() == 4)
-        cv::cvtColor(m, g, cv::COLOR_BGRA2GRAY);
-    else
-        g = m;
+    cv::Mat g = greyscale(m);
     if (g.depth() != CV_8U) g.convertTo(g, CV_8U);
     return g;
 }
