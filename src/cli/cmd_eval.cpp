@@ -41,6 +41,7 @@ struct EvalOptions {
     bool labels_dir_given = false;
     bool no_progress = false;
     bool projector_only = false;  // only the projector table (issue 12)
+    bool colour_only = false;     // only the colour suite (issue 15)
 };
 
 /// The 1-minute load average (Linux), NaN when unknown.
@@ -80,6 +81,26 @@ void runProjectorTable(const EvalOptions &o) {
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), o.out.c_str());
 }
 
+/// The colour suite's options for these flags: 2 rounds with --quick, else --rounds.
+sim::ColourSuiteOptions colourSuiteOptions(const EvalOptions &o) {
+    sim::ColourSuiteOptions copt = o.quick ? sim::quickColourSuite() : sim::ColourSuiteOptions{};
+    if (!o.quick) copt.rounds = o.rounds;
+    copt.seed = o.seed;
+    return copt;
+}
+
+/// The colour suite alone (core/surface_suitability.hpp): DIR/colour.md and its summary line.
+void runColourTable(const EvalOptions &o) {
+    const sim::ColourSuiteResult colour = sim::runColourSuite(colourSuiteOptions(o), sim::defaultVariant().config);
+    std::error_code ec;
+    fs::create_directories(o.out, ec);
+    if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
+    const std::string md = sim::colourSuiteMarkdown(colour);
+    writeFileAtomic((fs::path(o.out) / "colour.md").string(), md);
+    std::printf("%s", md.c_str());
+    std::printf("%s; wrote %s/colour.md\n", sim::colourSuiteSummary(colour).c_str(), o.out.c_str());
+}
+
 void run(const EvalOptions &o, const std::string &command) {
     if (o.out.empty()) throw InputError("--out", "an output directory is required");
     if (o.rounds < 1 || o.rounds > 100) throw InputError("--rounds", "must be between 1 and 100");
@@ -98,6 +119,7 @@ void run(const EvalOptions &o, const std::string &command) {
     for (const std::string &l : labels) label_frames.push_back(readRealLabel(l).frame);
 
     if (o.projector_only) return runProjectorTable(o);
+    if (o.colour_only) return runColourTable(o);
     // The default real-frame folder is taken from the working directory, and said (before the
     // long simulation) when it is not there.
     if (!o.real_dir_given && !fs::is_directory(o.real_dir, ec))
@@ -121,10 +143,8 @@ void run(const EvalOptions &o, const std::string &command) {
     ropt.seed = o.seed;
     const sim::RealisticSuiteResult realistic = sim::runRealisticSuite(ropt, sim::defaultVariant().config, progress);
     // The colour suite (surface suitability, issue 15), the default method.
-    sim::ColourSuiteOptions copt = o.quick ? sim::quickColourSuite() : sim::ColourSuiteOptions{};
-    if (!o.quick) copt.rounds = rounds;
-    copt.seed = o.seed;
-    const sim::ColourSuiteResult colour = sim::runColourSuite(copt, sim::defaultVariant().config, progress);
+    const sim::ColourSuiteResult colour =
+        sim::runColourSuite(colourSuiteOptions(o), sim::defaultVariant().config, progress);
 
     // Real frames: default method, the contract's example calibration, the default gravity.
     std::vector<GalleryEntry> gallery;
@@ -207,6 +227,10 @@ void addEvalCommand(CLI::App &app) {
     sub->add_flag("--projector-only", o->projector_only,
                   "Only the real-projector table (disc vs structured-light calibration on simulated lens-offset "
                   "projectors): DIR/projector.md; with --quick, 3 rigs (the full eval adds it unless --quick)");
+    sub->add_flag("--colour-only", o->colour_only,
+                  "Only the colour suite (surface suitability on simulated walls with pictures, screens, windows, "
+                  "dark panels and plain paints): DIR/colour.md; --rounds per scene, 2 with --quick")
+        ->excludes("--projector-only");
     sub->callback([o, real, labels] {
         EvalOptions opts = *o;
         opts.real_dir_given = real->count() > 0;

@@ -1,5 +1,8 @@
 #include "projsurf/core/surface_suitability.hpp"
 
+#include "projsurf/core/raster_shape.hpp"
+#include "projsurf/core/target_clones.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -72,6 +75,35 @@ void windowSums(const std::vector<ColourSums> &in, int rows, int cols, int k, st
     }
 }
 
+/// The raster cell under each wall sample of one grid row (its foot on the plane, within the
+/// tolerance band of the wall's shape), or -1. Float scalars and selects only, so that the loop
+/// vectorises; NaN points fail every test.
+struct FootCells {
+    float rx, ry, rz, ux, uy, uz, nx, ny, nz, d, col0, row0, cols, rows, band_k, band_min, band_max;
+    std::int32_t ncols;
+    RasterShape shape;
+};
+
+PROJSURF_CLONES
+void footCells(const FootCells &f, const float *X, const float *Y, const float *Z, int n, std::int32_t *cell) {
+    for (int i = 0; i < n; ++i) {
+        const float px = X[i], py = Y[i], pz = Z[i];
+        const float pc = f.rx * px + f.ry * py + f.rz * pz, pw = f.ux * px + f.uy * py + f.uz * pz;
+        const float np = f.nx * px + f.ny * py + f.nz * pz;
+        const float h = np + f.d - f.shape.at(pc + f.col0, pw + f.row0);
+        // Where the camera ray meets the plane: a depth camera's bias moves a reading along its
+        // ray, so the colour belongs there (its normal foot is off by the bias x tan(ray angle)).
+        const float t = -f.d / np;
+        const float c = t * pc + f.col0, r = t * pw + f.row0;
+        const float band = std::min(std::max(f.band_k * pz * pz, f.band_min), f.band_max);
+        const std::int32_t in = (c >= 0.0f) & (r >= 0.0f) & (c < f.cols) & (r < f.rows) & (std::abs(h) <= band);
+        // Clamped first (NaN -> 0) so that the conversion is defined for the points discarded.
+        const float kc = std::min(f.cols - 1.0f, std::max(0.0f, c)), kr = std::min(f.rows - 1.0f, std::max(0.0f, r));
+        const std::int32_t index = static_cast<std::int32_t>(kr) * f.ncols + static_cast<std::int32_t>(kc);
+        cell[i] = in ? index : -1;
+    }
+}
+
 }  // namespace
 
 void cellSuitability(const PointGrid &grid, const cv::Rect &box,
@@ -86,38 +118,45 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
     // 1. Each wall sample's colour, summed in the cell under its foot. Float arithmetic, as in
     // observePlane: raster column q . R + col0, row q . U + row0.
     const Eigen::Vector3d R = frame.right / raster.cell, U = -frame.up / raster.cell;
-    const Eigen::Vector3f r3 = R.cast<float>(), u3 = U.cast<float>(), n3 = plane.normal.cast<float>();
-    const float col0 = static_cast<float>(-frame.origin.dot(R) - raster.top_left.x() / raster.cell);
-    const float row0 = static_cast<float>(-frame.origin.dot(U) + raster.top_left.y() / raster.cell);
-    const float d = static_cast<float>(plane.d);
-    const bool flat = shape.flat();
+    const FootCells f{static_cast<float>(R.x()),
+                      static_cast<float>(R.y()),
+                      static_cast<float>(R.z()),
+                      static_cast<float>(U.x()),
+                      static_cast<float>(U.y()),
+                      static_cast<float>(U.z()),
+                      static_cast<float>(plane.normal.x()),
+                      static_cast<float>(plane.normal.y()),
+                      static_cast<float>(plane.normal.z()),
+                      static_cast<float>(plane.d),
+                      static_cast<float>(-frame.origin.dot(R) - raster.top_left.x() / raster.cell),
+                      static_cast<float>(-frame.origin.dot(U) + raster.top_left.y() / raster.cell),
+                      static_cast<float>(cols),
+                      static_cast<float>(rows),
+                      static_cast<float>(tolerance.sigmas * tolerance.noise_k),
+                      static_cast<float>(tolerance.min_band),
+                      static_cast<float>(tolerance.max_band),
+                      cols,
+                      RasterShape(shape, raster)};
     const int glare = static_cast<int>(std::ceil(opt.glare_level * 255.0));
     std::vector<int> histogram(256, 0);
     const cv::Rect area = box & cv::Rect(0, 0, grid.cols, grid.rows);
+    std::vector<std::int32_t> cell(static_cast<std::size_t>(std::max(0, area.width)));
     for (int gr = area.y; gr < area.y + area.height; gr += std::max(1, opt.row_step)) {
-        const std::size_t first = static_cast<std::size_t>(gr) * grid.cols;
-        for (int gc = area.x; gc < area.x + area.width; ++gc) {
-            const std::size_t k = first + gc;
-            const float px = grid.x[k], py = grid.y[k], pz = grid.z[k];
-            const float c = r3.x() * px + r3.y() * py + r3.z() * pz + col0;
-            const float r = u3.x() * px + u3.y() * py + u3.z() * pz + row0;
-            if (!(c >= 0.0f && r >= 0.0f && c < cols && r < rows)) continue;  // NaN fails too
-            float h = n3.x() * px + n3.y() * py + n3.z() * pz + d;
-            if (!flat)  // the wall's shape at the foot: u = top_left.x + cell col, v = top_left.y - cell row
-                h -= static_cast<float>(
-                    shape.height({raster.top_left.x() + c * raster.cell, raster.top_left.y() - r * raster.cell}));
-            if (std::abs(h) > tolerance.band(pz)) continue;
-            const std::size_t index = static_cast<std::size_t>(grid.cloudIndex(gr, gc));
+        const std::size_t first = static_cast<std::size_t>(gr) * grid.cols + area.x;
+        footCells(f, grid.x.data() + first, grid.y.data() + first, grid.z.data() + first, area.width, cell.data());
+        for (int i = 0; i < area.width; ++i) {
+            if (cell[i] < 0) continue;
+            const std::size_t index = static_cast<std::size_t>(grid.cloudIndex(gr, area.x + i));
             if (index >= colours.size()) continue;
             const auto &bgr = colours[index];
             const int luma = (29 * bgr[0] + 150 * bgr[1] + 77 * bgr[2] + 128) >> 8;
             const int hi = std::max({bgr[0], bgr[1], bgr[2]}), lo = std::min({bgr[0], bgr[1], bgr[2]});
-            ColourSums &cell = sums[static_cast<std::size_t>(r) * cols + static_cast<std::size_t>(c)];
-            cell.samples += 1.0f;
-            cell.luminance += static_cast<float>(luma);
-            cell.luminance_sq += static_cast<float>(luma * luma);
-            cell.chroma += static_cast<float>(hi - lo);
-            cell.glare += hi >= glare ? 1.0f : 0.0f;
+            ColourSums &sum = sums[static_cast<std::size_t>(cell[i])];
+            sum.samples += 1.0f;
+            sum.luminance += static_cast<float>(luma);
+            sum.luminance_sq += static_cast<float>(luma * luma);
+            sum.chroma += static_cast<float>(hi - lo);
+            sum.glare += hi >= glare ? 1.0f : 0.0f;
             ++histogram[std::min(255, luma)];
         }
     }
@@ -130,10 +169,12 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
     out.rows = rows;
     out.cols = cols;
 
-    // 2. Window sums about each cell, and the verdicts.
-    const int k = std::max(1, static_cast<int>(std::lround(opt.window / raster.cell)) | 1);
-    windowSums(out.sums, rows, cols, k, out.window);
-    const std::vector<ColourSums> &win = out.window;
+    // 2. Window sums about each cell, and the verdicts: texture and glare over the window,
+    // tone (darkness, saturation) over the smaller tone window, so that a dark thing's edge
+    // is found to within a cell.
+    auto oddCells = [&](double metres) { return std::max(1, static_cast<int>(std::lround(metres / raster.cell)) | 1); };
+    windowSums(out.sums, rows, cols, oddCells(opt.window), out.window);
+    windowSums(out.sums, rows, cols, oddCells(opt.tone_window), out.tone);
     out.contrast.create(rows, cols, CV_32F);
     out.contrast.setTo(0);
     out.unfit.create(rows, cols, CV_8U);
@@ -144,9 +185,11 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
                                 : std::numeric_limits<float>::infinity();
     const float dark = static_cast<float>(std::max(opt.dark_min, opt.dark_relative * out.median_luminance) * 255.0);
     const float max_chroma = static_cast<float>(opt.max_chroma * 255.0),
-                max_contrast = static_cast<float>(opt.max_contrast), min_samples = static_cast<float>(opt.min_samples);
+                max_contrast = static_cast<float>(opt.max_contrast), min_samples = static_cast<float>(opt.min_samples),
+                min_tone = static_cast<float>(opt.min_tone_samples);
     for (int r = 0; r < rows; ++r) {
-        const ColourSums *w = win.data() + static_cast<std::size_t>(r) * cols;
+        const ColourSums *w = out.window.data() + static_cast<std::size_t>(r) * cols;
+        const ColourSums *t = out.tone.data() + static_cast<std::size_t>(r) * cols;
         float *contrast = out.contrast.ptr<float>(r);
         uchar *unfit = out.unfit.ptr<uchar>(r);
         for (int c = 0; c < cols; ++c) {
@@ -155,28 +198,64 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
             const float mean = s.luminance / s.samples;
             const float var = std::max(0.0f, s.luminance_sq / s.samples - mean * mean);
             contrast[c] = std::sqrt(var) / std::max(mean, 8.0f);  // Weber-like; near black: its floor
+            // Tone over the tone window when it has the samples, else over the window.
+            const ColourSums &tone = t[c].samples >= min_tone ? t[c] : s;
             Unfit why = Unfit::None;
             if (s.glare > max_glare * s.samples)
                 why = Unfit::Glare;
-            else if (mean < dark)
+            else if (tone.luminance < dark * tone.samples)
                 why = Unfit::Dark;
             else if (contrast[c] > max_contrast)
                 why = Unfit::Textured;
-            else if (s.chroma / s.samples > max_chroma)
+            else if (tone.chroma > max_chroma * tone.samples)
                 why = Unfit::Saturated;
             unfit[c] = static_cast<uchar>(why);
         }
     }
-    // A window reaches half its side beyond a thing's edge (its edge, its glare, part of its
-    // darkness): that margin is given back.
+    // The window reaches half its side beyond a thing's edge (its edge and its glare count
+    // there): that margin of texture and glare is given back.
+    const cv::Mat spread =
+        (out.unfit == static_cast<uchar>(Unfit::Textured)) | (out.unfit == static_cast<uchar>(Unfit::Glare));
     if (opt.trim_cells > 0) {
         cv::Mat keep;
         cv::erode(out.unfit != 0, keep,
                   cv::getStructuringElement(cv::MORPH_RECT, {2 * opt.trim_cells + 1, 2 * opt.trim_cells + 1}), {-1, -1},
                   1, cv::BORDER_REPLICATE);
-        out.unfit.setTo(0, keep == 0);
+        out.unfit.setTo(0, spread & (keep == 0));
     }
     fillEnclosed(out.unfit, opt.max_hole / (raster.cell * raster.cell));
+    // Unfit areas too small to matter (a light switch plate that the camera clips) are fit,
+    // and so is texture narrower than a picture could be everywhere (a door seam, a cable,
+    // where two paints meet): an area that an opening of that width removes whole is given
+    // back where it is textured. (A calendar's thin lines stay: they join its wider print.)
+    const int line = static_cast<int>(std::lround(opt.min_texture_width / raster.cell));
+    cv::Mat opened, labels;
+    if (line > 1)
+        cv::morphologyEx(out.unfit != 0, opened, cv::MORPH_OPEN,
+                         cv::getStructuringElement(cv::MORPH_RECT, {line, line}), {-1, -1}, 1, cv::BORDER_REPLICATE);
+    else
+        opened = out.unfit != 0;
+    const int n = cv::connectedComponents(out.unfit != 0, labels, 8, CV_32S);
+    std::vector<int> size(static_cast<std::size_t>(n), 0);
+    std::vector<uchar> wide(static_cast<std::size_t>(n), 0);
+    for (int r = 0; r < rows; ++r) {
+        const int *label = labels.ptr<int>(r);
+        const uchar *o = opened.ptr<uchar>(r);
+        for (int c = 0; c < cols; ++c) {
+            ++size[static_cast<std::size_t>(label[c])];
+            if (o[c]) wide[static_cast<std::size_t>(label[c])] = 1;
+        }
+    }
+    const double min_cells = opt.min_unfit_area / (raster.cell * raster.cell);
+    for (int r = 0; r < rows; ++r) {
+        const int *label = labels.ptr<int>(r);
+        uchar *unfit = out.unfit.ptr<uchar>(r);
+        for (int c = 0; c < cols; ++c) {
+            const std::size_t l = static_cast<std::size_t>(label[c]);
+            if (unfit[c] && (size[l] < min_cells || (unfit[c] == static_cast<uchar>(Unfit::Textured) && !wide[l])))
+                unfit[c] = 0;
+        }
+    }
 }
 
 RegionSuitability regionSuitability(const CellSuitability &s, const RasterFrame &raster, const Eigen::Vector2d &lo,

@@ -3,7 +3,8 @@
 // the wall points seen there (issue 15): too dark (low albedo: the picture is dim), too
 // saturated (its colours shift), textured (a framed picture, a calendar, a busy pattern: it is
 // unreadable), or blown out (specular or emissive: glass, a lamp, a screen). Statistics are
-// taken over a sliding window of `window` metres on the wall around each cell.
+// taken over sliding windows on the wall around each cell (texture and glare over `window`,
+// darkness and saturation over the smaller `tone_window`).
 // Luminance is the camera's 8-bit luma (0.114 B + 0.587 G + 0.299 R), as a share of 255: an
 // uncalibrated stand-in for albedo, hence judged relative to the wall's median.
 #include <array>
@@ -24,7 +25,9 @@ namespace projsurf {
 enum class Unfit : uchar { None = 0, Glare = 1, Dark = 2, Textured = 3, Saturated = 4 };
 
 struct SuitabilityOptions {
-    double window = 0.05;  ///< m, side of the square on the wall the statistics are taken over (5 cells at 1 cm)
+    double window = 0.05;  ///< m, side of the square on the wall texture and glare are judged over (5 cells at 1 cm)
+    double tone_window =
+        0.03;  ///< m, the square darkness and saturation are judged over (3 cells: a dark panel's edge to a cell)
     double dark_relative =
         0.45;  ///< darker than this share of the wall's median luminance: too dark (measured, docs/suitability.md)
     double dark_min = 0.06;  ///< luminance share below which a surface is too dark whatever the wall (near black)
@@ -39,11 +42,17 @@ struct SuitabilityOptions {
                                      ///< (the camera clipped the wall itself; real frame sun3d_nvblox_studyroom_000116)
     int row_step = 1;  ///< every this many rows of the point grid are sampled (2 halves the pass but lets a window pane
                        ///< reach 2.1 % of the rectangle; colour suite)
-    int min_samples = 3;  ///< fewer wall samples in the window: colour decides nothing there
+    int min_tone_samples = 8;  ///< fewer in the tone window: tone is judged over the window (a terracotta wall's
+                               ///< chroma, 0.37, crossed 0.40 on the noise of 3-7 samples; test_suitability)
+    int min_samples = 3;       ///< fewer wall samples in the window: colour decides nothing there
     int trim_cells =
         2;  ///< cells the unfit areas are eroded by (the window reaches 2 cells beyond a thing's edge; colour suite)
     double max_hole =
         0.25;  ///< m^2, fit areas enclosed by unfit cells up to this size are unfit too (a picture's plain mat)
+    double min_unfit_area = 0.01;     ///< m^2, smaller unfit areas are fit (a light switch plate, 8 x 8 cm, clipped
+                                      ///< to white: real frame bundlefusion_copyroom_000000)
+    double min_texture_width = 0.05;  ///< m, textured areas narrower than this are fit (a door seam, a cable; real
+                                      ///< frame nyu_o3d_basement_closet)
 };
 
 /// The colour sums of one cell's wall samples (Y and chroma in 8-bit levels).
@@ -57,6 +66,7 @@ struct CellSuitability {
     int rows = 0, cols = 0;
     std::vector<ColourSums> sums;    ///< row-major
     std::vector<ColourSums> window;  ///< working storage: the window sums
+    std::vector<ColourSums> tone;    ///< working storage: the tone window sums
     cv::Mat contrast;  ///< CV_32F, luminance std / mean over the window about each cell (0 without samples)
     cv::Mat unfit;     ///< CV_8U, Unfit per cell
     double median_luminance = 0.0;  ///< share of 255, of the wall samples seen
