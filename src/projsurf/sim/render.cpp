@@ -110,13 +110,8 @@ RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned se
     std::optional<ShadowMap> emitter;
     if (sensor.ir_shadow) {
         // The emitter's pattern covers a little more than the camera's view.
-        PinholeView e = view;
+        PinholeView e = view.padded(cam.width / 8);
         e.origin = sensor.emitter;
-        const int pad = cam.width / 8;
-        e.width += 2 * pad;
-        e.height += 2 * pad;
-        e.cx += pad;
-        e.cy += pad;
         emitter = makeShadowMap(scene, e);
     }
     // A projector shadow map as wide as the camera image is enough for the light's edges.
