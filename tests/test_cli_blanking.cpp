@@ -21,9 +21,7 @@
 
 namespace fs = std::filesystem;
 using namespace projsurf;
-using projsurf::test::cli;
-using projsurf::test::freshDir;
-using projsurf::test::slurp;
+using namespace projsurf::test;
 
 TEST(CliBlanking, CorrectBlanksThePersonInTheBeam) {
     const fs::path dir = freshDir("people_cli_blanking");
