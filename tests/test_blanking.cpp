@@ -8,11 +8,11 @@
 #include "projsurf/core/beam_blanking.hpp"
 #include "projsurf/core/keystone.hpp"
 #include "projsurf/eval/walk_in.hpp"
+#include "projsurf/frontend/test_card.hpp"
 #include "projsurf/pipeline/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
-#include "projsurf/sim/test_card.hpp"
 
 using namespace projsurf;
 
@@ -40,7 +40,7 @@ Placed placePicture(double distance, double angle, bool kinect1) {
     p.detection = detectSurface(frame.cloud, projector, DetectorConfig{}, p.scenario.gravity);
     if (!p.detection.found) return p;
     const KeystoneResult k = computeKeystone(projector, p.detection.rectangle, cv::Size(1280, 800));
-    if (k.keystone) p.framebuffer = warpToFramebuffer(sim::testCard(cv::Size(1280, 800)), *k.keystone);
+    if (k.keystone) p.framebuffer = warpToFramebuffer(frontend::testCard(cv::Size(1280, 800)), *k.keystone);
     return p;
 }
 

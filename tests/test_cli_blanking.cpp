@@ -10,6 +10,7 @@
 
 #include "cli_run.hpp"
 #include "projsurf/eval/walk_in.hpp"
+#include "projsurf/frontend/test_card.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/files.hpp"
@@ -17,13 +18,10 @@
 #include "projsurf/pipeline/detector.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
-#include "projsurf/sim/test_card.hpp"
 
 namespace fs = std::filesystem;
 using namespace projsurf;
-using projsurf::test::cli;
-using projsurf::test::freshDir;
-using projsurf::test::slurp;
+using namespace projsurf::test;
 
 TEST(CliBlanking, CorrectBlanksThePersonInTheBeam) {
     const fs::path dir = freshDir("people_cli_blanking");
@@ -35,7 +33,7 @@ TEST(CliBlanking, CorrectBlanksThePersonInTheBeam) {
     ASSERT_TRUE(det.found);
     writeCalibration((dir / "calib.yaml").string(), projector);
     writeFileAtomic((dir / "det.json").string(), detectionToJson(det, cfg, &projector).dump(2));
-    cv::imwrite((dir / "card.png").string(), sim::testCard(cv::Size(640, 400)));
+    cv::imwrite((dir / "card.png").string(), frontend::testCard(cv::Size(640, 400)));
     const sim::Scene with_person = sim::walkInScenes(sc.scene, -0.5, -0.5, 1, 1.4)[0];
     const sim::RgbdFrame now = sim::renderFrame(with_person, sim::SensorModel(), 2);
     writeCloudPcd((dir / "now.pcd").string(), now.cloud);
@@ -88,7 +86,7 @@ TEST(CliBlanking, BadArgumentsAreOneClearLine) {
     const Projector projector = sim::exampleProjector();
     writeFileAtomic((dir / "det.json").string(),
                     detectionToJson(detectSurface(f.cloud, projector, cfg, sc.gravity), cfg, &projector).dump());
-    cv::imwrite((dir / "card.png").string(), sim::testCard(cv::Size(64, 40)));
+    cv::imwrite((dir / "card.png").string(), frontend::testCard(cv::Size(64, 40)));
     const std::string base = "correct --calib " + (dir / "calib.yaml").string() + " --detection " +
                              (dir / "det.json").string() + " --image " + (dir / "card.png").string() + " --out " +
                              (dir / "fb.png").string();

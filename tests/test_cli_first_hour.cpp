@@ -18,12 +18,7 @@
 
 namespace fs = std::filesystem;
 using namespace projsurf;
-using projsurf::test::cli;
-using projsurf::test::CliRun;
-using projsurf::test::freshDir;
-using projsurf::test::slurp;
-using projsurf::test::writeCaptures;
-using projsurf::test::writeDetection;
+using namespace projsurf::test;
 
 namespace {
 

@@ -11,9 +11,7 @@
 #include "cli_run.hpp"
 
 namespace fs = std::filesystem;
-using projsurf::test::cli;
-using projsurf::test::freshDir;
-using projsurf::test::slurp;
+using namespace projsurf::test;
 
 namespace {
 

@@ -155,23 +155,30 @@ TEST(FrontendDepthImage, RefusesOtherTypesSizesAndCameras) {
               std::string::npos);
 }
 
-TEST(FrontendTestCard, ShowsWhichWayIsUp) {
+TEST(FrontendTestCard, ShowsWhichWayIsUpAndWhereItEnds) {
     const cv::Mat card = testCard({1280, 800});
     ASSERT_EQ(card.type(), CV_8UC3);
     ASSERT_EQ(card.size(), cv::Size(1280, 800));
-    // The arrow (orange) points up: its head, wide, is in the upper half, the shaft alone below.
-    auto orange = [&](int y) {
+    auto white_in_rows = [&](int y0, int y1) {
         int n = 0;
-        for (int x = 0; x < card.cols; ++x) {
-            const cv::Vec3b c = card.at<cv::Vec3b>(y, x);
-            n += c[2] > 200 && c[1] > 150 && c[0] < 60;
-        }
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < card.cols; ++x) {
+                const cv::Vec3b c = card.at<cv::Vec3b>(y, x);
+                n += c[0] > 200 && c[1] > 200 && c[2] > 200;
+            }
         return n;
     };
-    EXPECT_GT(orange(200), 3 * orange(500));
-    EXPECT_GT(orange(500), 0);
-    EXPECT_EQ(orange(740), 0);                                      // below the tail
-    EXPECT_EQ(card.at<cv::Vec3b>(0, 0), cv::Vec3b(255, 255, 255));  // the border
+    // The title (white) stands near the bottom; the mirrored band near the top has no white,
+    // so a picture upside down is obvious.
+    EXPECT_GT(white_in_rows(670, 740), 1000);
+    EXPECT_EQ(white_in_rows(40, 70), 0);
+    // The green border marks the card's outer pixels, so a cut-off edge is obvious.
+    EXPECT_EQ(card.at<cv::Vec3b>(0, 0), cv::Vec3b(0, 220, 0));  // the border
+    EXPECT_EQ(card.at<cv::Vec3b>(799, 1279), cv::Vec3b(0, 220, 0));
+    // Every size is the size asked for, down to a pixel.
+    for (const cv::Size size : {cv::Size(64, 40), cv::Size(3, 2), cv::Size(1, 1)})
+        EXPECT_EQ(testCard(size).size(), size);
+    EXPECT_TRUE(testCard({0, 0}).empty());
 }
 
 TEST(FrontendFramebuffer, WarpsThePictureIntoTheRectangleAndSaysWhenItLetterboxed) {

@@ -18,9 +18,7 @@
 
 namespace fs = std::filesystem;
 using namespace projsurf;
-using projsurf::test::cli;
-using projsurf::test::freshDir;
-using projsurf::test::slurp;
+using namespace projsurf::test;
 
 namespace {
 

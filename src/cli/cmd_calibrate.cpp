@@ -12,6 +12,7 @@
 
 #include "cli/commands.hpp"
 #include "projsurf/core/calibration.hpp"
+#include "projsurf/core/calibration_picture.hpp"
 #include "projsurf/core/decoded_points.hpp"
 #include "projsurf/core/gray_code.hpp"
 #include "projsurf/core/projector_fit.hpp"
@@ -23,7 +24,6 @@
 #include "projsurf/io/pattern_files.hpp"
 #include "projsurf/io/structured_report.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/sim/render.hpp"
 
 namespace fs = std::filesystem;
 
@@ -80,7 +80,7 @@ void writePicture(const CalibrateOptions &o) {
     if (!cv::haveImageWriter(o.write_picture))
         throw InputError(o.write_picture, "cannot write an image with this extension (use .png)");
     const double radius = h / 8.0;
-    writeImageAtomic(o.write_picture, sim::calibrationPicture(w, h, radius));
+    writeImageAtomic(o.write_picture, calibrationPicture(w, h, radius));
     std::cout << "projsurf calibrate: calibration picture " << w << "x" << h
               << fmt(", white disc of radius %.1f px at (%.1f, %.1f) -> ", radius, 0.5 * (w - 1), 0.5 * (h - 1))
               << o.write_picture << "\n"

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <opencv2/imgproc.hpp>
-#include <stdexcept>
 
 #include "projsurf/core/keystone_remap.hpp"
 #include "projsurf/core/keystone_warper.hpp"
@@ -138,14 +137,10 @@ cv::Mat warpToFramebuffer(const cv::Mat &picture, const Keystone &k) {
     if (!k.remap.empty()) return remapToFramebuffer(picture, k);
     if (picture.depth() == CV_8U) return KeystoneWarper::warpOnce(picture, k);
     // Other depths: OpenCV's warp after the same area-averaging prepass.
-    if (picture.size() != k.picture)
-        throw std::invalid_argument("keystone warp: the picture's size differs from the keystone's");
-    const WarpSource source = warpSourceFor(k, picture.size());
-    cv::Mat src = picture;
-    if (source.reduce) cv::resize(picture, src, source.size, 0, 0, cv::INTER_AREA);
+    const ReducedSource source = reducedSource(picture, k);
     cv::Mat fb(k.framebuffer, picture.type(), cv::Scalar::all(0));
-    cv::warpPerspective(src, fb, cv::Mat(source.homography), k.framebuffer, cv::INTER_LINEAR, cv::BORDER_CONSTANT,
-                        cv::Scalar::all(0));
+    cv::warpPerspective(source.image, fb, cv::Mat(source.homography), k.framebuffer, cv::INTER_LINEAR,
+                        cv::BORDER_CONSTANT, cv::Scalar::all(0));
     return fb;
 }
 

@@ -1,7 +1,5 @@
 #include "projsurf/core/keystone_remap.hpp"
 
-#include <stdexcept>
-
 #include <opencv2/imgproc.hpp>
 
 #include "projsurf/core/keystone_warper.hpp"
@@ -27,11 +25,7 @@ cv::Mat keystoneRemap(const Projector &projector, const Keystone &k) {
 }
 
 cv::Mat remapToFramebuffer(const cv::Mat &picture, const Keystone &k) {
-    if (picture.size() != k.picture)
-        throw std::invalid_argument("keystone warp: the picture's size differs from the keystone's");
-    const WarpSource source = warpSourceFor(k, picture.size());
-    cv::Mat src = picture;
-    if (source.reduce) cv::resize(picture, src, source.size, 0, 0, cv::INTER_AREA);
+    const cv::Mat src = reducedSource(picture, k).image;
     cv::Mat fb(k.framebuffer, picture.type(), cv::Scalar::all(0));
     cv::remap(src, fb, k.remap, cv::noArray(), cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar::all(0));
     return fb;

@@ -16,8 +16,8 @@ namespace projsurf {
 cv::Mat keystoneRemap(const Projector &projector, const Keystone &keystone);
 
 /// The framebuffer for `picture` (8-bit or not, of the keystone's picture size, else
-/// std::invalid_argument): the same area-averaging prepass as warpToFramebuffer, then a
-/// bilinear cv::remap through keystone.remap, black outside the picture.
+/// std::invalid_argument): the same area-averaging prepass as warpToFramebuffer (reducedSource),
+/// then a bilinear cv::remap through keystone.remap, black outside the picture.
 cv::Mat remapToFramebuffer(const cv::Mat &picture, const Keystone &keystone);
 
 }  // namespace projsurf

@@ -255,6 +255,15 @@ WarpSource warpSourceFor(const Keystone &k, cv::Size picture) {
     return s;
 }
 
+ReducedSource reducedSource(const cv::Mat &picture, const Keystone &k) {
+    if (picture.size() != k.picture)
+        throw std::invalid_argument("keystone warp: the picture's size differs from the keystone's");
+    const WarpSource source = warpSourceFor(k, picture.size());
+    ReducedSource r{picture, source.homography};
+    if (source.reduce) cv::resize(picture, r.image, source.size, 0, 0, cv::INTER_AREA);
+    return r;
+}
+
 KeystoneWarper::KeystoneWarper(const Keystone &keystone, bool plan_all) : keystone_(keystone) {
     const int W = keystone_.framebuffer.width, H = keystone_.framebuffer.height;
     if (W < 1 || H < 1 || keystone_.picture.width < 1 || keystone_.picture.height < 1)

@@ -22,6 +22,15 @@ struct WarpSource {
 };
 WarpSource warpSourceFor(const Keystone &keystone, cv::Size picture);
 
+/// What the one-off warps (warpToFramebuffer, remapToFramebuffer) sample: `picture` itself or
+/// its area-reduced copy (warpSourceFor), and the homography from that image into the
+/// framebuffer. A picture of another size than keystone.picture: std::invalid_argument.
+struct ReducedSource {
+    cv::Mat image;
+    cv::Matx33d homography;
+};
+ReducedSource reducedSource(const cv::Mat &picture, const Keystone &keystone);
+
 /// Warps pictures of `keystone.picture`'s size into its framebuffer; the result equals
 /// cv::warpPerspective(picture, keystone.homography, INTER_LINEAR, BORDER_CONSTANT 0) after the
 /// same area-averaging prepass as warpToFramebuffer (pictures shrunk below half size), up to

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "projsurf/frontend/test_card.hpp"
 #include "projsurf/sim/ray_cast.hpp"
-#include "projsurf/sim/test_card.hpp"
 
 namespace projsurf::sim {
 namespace {
@@ -39,7 +39,7 @@ DemoResult runDemo(const DemoOptions &o) {
     // 3. Detect with the calibrated projector, and score against ground truth.
     res.config = o.config;
     res.config.seed = o.seed;
-    res.picture = o.picture.empty() ? testCard(cv::Size(real.width, real.height)) : o.picture;
+    res.picture = o.picture.empty() ? frontend::testCard(cv::Size(real.width, real.height)) : o.picture;
     res.config.aspect = static_cast<double>(res.picture.cols) / res.picture.rows;
     res.detection = detectSurface(res.frame.cloud, believed, res.config, res.scenario.gravity);
     res.stage_ms.emplace_back("detect",

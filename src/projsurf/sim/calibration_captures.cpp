@@ -4,6 +4,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "projsurf/core/calibration_picture.hpp"
 #include "projsurf/core/gray_code.hpp"
 #include "projsurf/sim/scenarios.hpp"
 

@@ -87,12 +87,8 @@ cv::Mat depthEdgeMask(const cv::Mat &z, double jump, int radius) {
 }
 
 cv::Mat occlusionFrom(const Scene &scene, const ExactDepth &exact, const Eigen::Vector3d &origin, int pad_px) {
-    PinholeView e = cameraView(exact.camera);
+    PinholeView e = cameraView(exact.camera).padded(pad_px);
     e.origin = origin;
-    e.width += 2 * pad_px;
-    e.height += 2 * pad_px;
-    e.cx += pad_px;
-    e.cy += pad_px;
     // Glass lets the pattern through: cast without it.
     Scene opaque;
     std::vector<int> to_opaque(scene.quads.size(), -1);

@@ -20,29 +20,36 @@ PinholeView PinholeView::scaled(double s) const {
     return v;
 }
 
-PinholeView cameraView(const CameraIntrinsics &c) {
-    PinholeView v;
-    v.fx = c.fx;
-    v.fy = c.fy;
-    v.cx = c.cx;
-    v.cy = c.cy;
-    v.width = c.width;
-    v.height = c.height;
+PinholeView PinholeView::padded(int pad_px) const {
+    PinholeView v = *this;
+    v.width += 2 * pad_px;
+    v.height += 2 * pad_px;
+    v.cx += pad_px;
+    v.cy += pad_px;
     return v;
 }
 
+PinholeView PinholeView::fromIntrinsics(double fx, double fy, double cx, double cy, int width, int height) {
+    return PinholeView{Eigen::Vector3d::Zero(), Eigen::Matrix3d::Identity(), fx, fy, cx, cy, width, height};
+}
+
+PinholeView PinholeView::placed(const Eigen::Vector3d &at, const Eigen::Vector3d &right, const Eigen::Vector3d &down,
+                                const Eigen::Vector3d &forward) const {
+    PinholeView v = *this;
+    v.origin = at;
+    v.rotation.row(0) = right.transpose();
+    v.rotation.row(1) = down.transpose();
+    v.rotation.row(2) = forward.transpose();
+    return v;
+}
+
+PinholeView cameraView(const CameraIntrinsics &c) {
+    return PinholeView::fromIntrinsics(c.fx, c.fy, c.cx, c.cy, c.width, c.height);
+}
+
 PinholeView projectorView(const Projector &p) {
-    PinholeView v;
-    v.origin = p.origin;
-    v.rotation.row(0) = p.right().transpose();
-    v.rotation.row(1) = p.down().transpose();
-    v.rotation.row(2) = p.axis().transpose();
-    v.fx = p.fx();
-    v.fy = p.fy();
-    v.cx = p.cx();
-    v.cy = p.cy();
-    v.width = p.width;
-    v.height = p.height;
+    PinholeView v = PinholeView::fromIntrinsics(p.fx(), p.fy(), p.cx(), p.cy(), p.width, p.height)
+                        .placed(p.origin, p.right(), p.down(), p.axis());
     if (p.distorted()) {
         // The ideal (undistorted) pinhole view covering every lit direction: the bounding box
         // of the framebuffer's edges in ideal pixels. Framebuffer pixels: Projector::toPixel.
@@ -79,17 +86,9 @@ PinholeView facingView(const Plane &plane, const Eigen::Vector3d &target, double
     if (down.norm() < 1e-9) down = Eigen::Vector3d::UnitY() - forward.y() * forward;
     down.normalize();
     const Eigen::Vector3d right = down.cross(forward);
-    PinholeView v;
-    v.origin = plane.project(target) - distance * forward;
-    v.rotation.row(0) = right.transpose();
-    v.rotation.row(1) = down.transpose();
-    v.rotation.row(2) = forward.transpose();
-    v.width = width;
-    v.height = height;
-    v.fx = v.fy = 0.5 * width / std::tan(0.5 * fov_h_deg * 3.14159265358979323846 / 180.0);
-    v.cx = 0.5 * (width - 1);
-    v.cy = 0.5 * (height - 1);
-    return v;
+    const double f = 0.5 * width / std::tan(0.5 * fov_h_deg * 3.14159265358979323846 / 180.0);
+    return PinholeView::fromIntrinsics(f, f, 0.5 * (width - 1), 0.5 * (height - 1), width, height)
+        .placed(plane.project(target) - distance * forward, right, down, forward);
 }
 
 namespace {

@@ -36,6 +36,15 @@ struct PinholeView {
     }
     /// The same view with its image scaled by s (fewer pixels, same field of view).
     PinholeView scaled(double s) const;
+    /// The same view with `pad_px` more pixels on every side (wider field of view, same pixels).
+    PinholeView padded(int pad_px) const;
+
+    /// A view with these intrinsics (px) and image size, at the camera frame's origin and axes.
+    static PinholeView fromIntrinsics(double fx, double fy, double cx, double cy, int width, int height);
+    /// The same view looking from `at` (camera frame, m) with its image right, image down and
+    /// forward along these camera-frame unit vectors.
+    PinholeView placed(const Eigen::Vector3d &at, const Eigen::Vector3d &right, const Eigen::Vector3d &down,
+                       const Eigen::Vector3d &forward) const;
 };
 
 /// The RGB-D camera at the origin of its own frame.

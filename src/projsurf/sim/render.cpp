@@ -110,13 +110,8 @@ RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned se
     std::optional<ShadowMap> emitter;
     if (sensor.ir_shadow) {
         // The emitter's pattern covers a little more than the camera's view.
-        PinholeView e = view;
+        PinholeView e = view.padded(cam.width / 8);
         e.origin = sensor.emitter;
-        const int pad = cam.width / 8;
-        e.width += 2 * pad;
-        e.height += 2 * pad;
-        e.cx += pad;
-        e.cy += pad;
         emitter = makeShadowMap(scene, e);
     }
     // A projector shadow map as wide as the camera image is enough for the light's edges.
@@ -212,16 +207,6 @@ RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned se
         }
     }
     return f;
-}
-
-cv::Mat calibrationPicture(int width, int height, double radius_px) {
-    if (radius_px <= 0.0) radius_px = height / 8.0;
-    cv::Mat img(height, width, CV_8UC3, cv::Scalar(0, 0, 0));
-    const double cx = 0.5 * (width - 1), cy = 0.5 * (height - 1), r2 = radius_px * radius_px;
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
-            if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r2) img.at<cv::Vec3b>(y, x) = cv::Vec3b(255, 255, 255);
-    return img;
 }
 
 }  // namespace projsurf::sim

@@ -44,9 +44,4 @@ RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned se
 cv::Mat renderView(const Scene &scene, const PinholeView &viewer, const std::optional<Projection> &projection,
                    const Lighting &lighting = {});
 
-/// The calibration picture of paper section 3.1.1: black, one white disc of `radius_px`
-/// centred on the framebuffer centre ((W-1)/2, (H-1)/2, the principal point). A radius
-/// <= 0 means H / 8.
-cv::Mat calibrationPicture(int width, int height, double radius_px = 0.0);
-
 }  // namespace projsurf::sim
