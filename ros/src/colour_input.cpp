@@ -22,6 +22,12 @@ sensor_msgs::ImageConstPtr ColourInput::near(const ros::Time &stamp, double &off
     return found != nullptr && offset_s <= kColourMaxOffsetS ? *found : nullptr;
 }
 
+std::string ColourInput::registration() const {
+    if (!consulted_) return {};
+    if (!verdict_.checked) return "cannot tell";
+    return verdict_.registered ? "registered" : "not registered";
+}
+
 void ColourInput::warnOnce(const std::string &key, const std::string &text) {
     if (!warned_.insert(key).second) return;
     ROS_WARN("projsurf_node: %s", text.c_str());
@@ -30,6 +36,7 @@ void ColourInput::warnOnce(const std::string &key, const std::string &text) {
 std::string ColourInput::attach(Cloud &cloud, const sensor_msgs::Image &colour, const std::string &stream) {
     const std::string size = std::to_string(colour.width) + "x" + std::to_string(colour.height);
     const std::string key = stream + " | colour " + size + " " + colour.header.frame_id;
+    consulted_ = false;
     if (!cloud.organized()) {
         const std::string why = "the cloud is not organized (colour needs a depth image or an organized cloud)";
         warnOnce(key + " unorganized", "colour on " + topic_ + " not used: " + why);
@@ -62,6 +69,7 @@ std::string ColourInput::attach(Cloud &cloud, const sensor_msgs::Image &colour, 
         last_check_ = now;
         ROS_DEBUG("projsurf_node: colour registration check: %s (%.1f ms)", verdict_.summary().c_str(), check_ms_);
     }
+    consulted_ = true;
     if (verdict_.checked && !verdict_.registered) {
         const std::string why = "it is not registered to the depth (" + verdict_.summary() + ")";
         warnOnce(key + " unregistered", "colour on " + topic_ + " not used: " + why);

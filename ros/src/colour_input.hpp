@@ -43,6 +43,8 @@ public:
 
     /// The latest registration check (checked = false before any).
     const RegistrationResult &verdict() const { return verdict_; }
+    /// The latest check in words: "registered", "not registered", "cannot tell" ("" before any).
+    std::string registration() const;
     /// ms the latest registration check took.
     double lastCheckMs() const { return check_ms_; }
 
@@ -54,6 +56,7 @@ private:
     /// The latest few (a sixth of a second at 30 Hz: colour and depth of one instant arrive
     /// within a frame or two of each other; full-size images are large).
     frontend::StampedBuffer<sensor_msgs::ImageConstPtr> images_{5};
+    bool consulted_ = false;      ///< the latest attach() got as far as the registration
     std::string checked_stream_;  ///< the stream (depth geometry + colour size/frame) verdict_ is for
     RegistrationResult verdict_;
     ros::WallTime last_check_;

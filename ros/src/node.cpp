@@ -82,7 +82,7 @@ void ProjsurfNode::onImage(const sensor_msgs::ImageConstPtr &msg) {
 
 void ProjsurfNode::onColour(const sensor_msgs::ImageConstPtr &msg) {
     colour_->add(msg);
-    last_colour_ = ros::WallTime::now();
+    colourless_ = 0;
     // The latest cloud came first and waits for this one.
     if (colour_wait_ &&
         std::abs(msg->header.stamp.toSec() - cloud_header_.stamp.toSec()) <= frontend::kSameStampS) {
@@ -112,6 +112,7 @@ void ProjsurfNode::settleColourWait() {
     std::snprintf(text, sizeof text, "no colour image within %.3f s of the depth's stamp %.3f", kColourMaxOffsetS,
                   cloud_header_.stamp.toSec());
     colour_note_ = text;
+    ++colourless_;
     ROS_WARN_THROTTLE(5.0, "projsurf_node: %s on %s; detecting without colour", text, colour_sub_.getTopic().c_str());
 }
 
@@ -196,12 +197,13 @@ void ProjsurfNode::takeCloud(Cloud cloud, const std_msgs::Header &header) {
         colour_note_.clear();
         if (const sensor_msgs::ImageConstPtr colour = colour_->exact(header.stamp)) {
             useColour(*colour);
-        } else if (!last_colour_.isZero() && (ros::WallTime::now() - last_colour_).toSec() < 1.0) {
-            colour_wait_ = true;  // the colour stream is alive: its image of this stamp is on its way
+        } else if (colourless_ < kColourlessToStopWaiting) {
+            colour_wait_ = true;  // its colour image is on its way (until the next cloud or ~detect)
             return;
         } else {
-            colour_note_ = "no colour image received in the last second on " + colour_sub_.getTopic();
-            ROS_WARN_THROTTLE(5.0, "projsurf_node: %s; detecting without colour", colour_note_.c_str());
+            colour_note_ = "no colour on " + colour_sub_.getTopic() + " for the latest " +
+                           std::to_string(colourless_) + " clouds";
+            ROS_WARN_THROTTLE(5.0, "projsurf_node: %s; detecting without colour until some comes", colour_note_.c_str());
         }
     }
     if (continuous_) runContinuous();
@@ -400,7 +402,9 @@ void ProjsurfNode::runContinuous() {
                        {"stamp", header.stamp.toSec()},
                        {"frame_ms", std::round(frame_ms * 1000.0) / 1000.0}};
     if (colour_) {
-        j["continuous"]["colour"] = {{"used", colour_note_.empty()}, {"ms", std::round(colour_ms_ * 1000.0) / 1000.0}};
+        j["continuous"]["colour"] = {{"used", colour_note_.empty()},
+                                     {"ms", std::round(colour_ms_ * 1000.0) / 1000.0},
+                                     {"registration", colour_->registration()}};
         if (!colour_note_.empty()) j["continuous"]["colour"]["why_not"] = colour_note_;
     }
     if (blanking_->enabled())

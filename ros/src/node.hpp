@@ -26,6 +26,10 @@
 
 namespace projsurf::ros_node {
 
+/// Clouds in a row without their colour image after which a cloud no longer waits for it (the
+/// colour stream stopped): a waiting cloud is detected one cloud late in continuous mode.
+constexpr int kColourlessToStopWaiting = 3;
+
 class ProjsurfNode {
 public:
     /// `nh` resolves the input topics, `pnh` (private, "~") the outputs and the service.
@@ -94,7 +98,7 @@ private:
     std::string colour_note_;              ///< why the latest cloud has no colour ("" when it has)
     double colour_ms_ = 0.0;               ///< ms spent putting the colour into the latest cloud
     std::string depth_stream_;             ///< the depth stream's geometry (colour_input.hpp's `stream`)
-    ros::WallTime last_colour_;            ///< when the latest colour image arrived
+    int colourless_ = 0;                   ///< clouds in a row whose colour image never came
     SurfaceDetector detector_;                  ///< one for the stream: its buffers are reused frame to frame
     std::unique_ptr<ContinuousMode> continuous_;
     std::unique_ptr<NodeBlanking> blanking_;  ///< ~blanked, ~focus_distance
