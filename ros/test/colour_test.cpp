@@ -10,6 +10,7 @@
 #include <sensor_msgs/CameraInfo.h>
 #include <sensor_msgs/Image.h>
 #include <std_msgs/String.h>
+#include <std_srvs/Trigger.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <algorithm>
@@ -93,6 +94,7 @@ struct NodeIo {
         if (colour) rgb = nh.advertise<sensor_msgs::Image>(ns + "/rgb/image_rect_color", 10);
         result_sub = nh.subscribe<std_msgs::String>(ns + "/projsurf/result", 100, [this](const std_msgs::StringConstPtr &m) {
             auto j = nlohmann::json::parse(m->data);
+            if (!j.contains("continuous")) return;  // a ~detect answer
             std::lock_guard<std::mutex> lock(mutex);
             results[j.at("continuous").at("stamp").get<double>()] = j;
         });
@@ -214,6 +216,11 @@ TEST_F(ColourNodeTest, RegisteredColourKeepsThePictureOffAFramedPictureOnTheWall
         for (const auto &m : last_markers.markers) unfit_marker |= m.id == 5 && m.points.size() >= 20;
         EXPECT_TRUE(unfit_marker) << "no unfit-cell marker";
     }
+    // ~detect (on the latest frame) says what the rectangle lies on.
+    std_srvs::Trigger call;
+    ASSERT_TRUE(ros::service::call(colour_.ns + "/projsurf/detect", call));
+    EXPECT_TRUE(call.response.success) << call.response.message;
+    EXPECT_NE(call.response.message.find("colour (avoid): mean albedo"), std::string::npos) << call.response.message;
     std::printf("[ measured ] colour: rectangle on the picture %.1f %% (max) with colour, %.1f %% (min) without; "
                 "area %.3f vs %.3f m^2 (median)\n",
                 100.0 * *std::max_element(share_colour.begin(), share_colour.end()),
