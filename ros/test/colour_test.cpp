@@ -62,8 +62,8 @@ double shareOnPicture(const nlohmann::json &rect, const Eigen::Isometry3d &pose,
     double y0 = 1e9, y1 = -1e9, z0 = 1e9, z1 = -1e9;
     for (int i = 0; i < 4; ++i) {
         const auto &c = rect.at("corners").at(i);
-        const Eigen::Vector3d p = pose * Eigen::Vector3d(c.at(0).get<double>(), c.at(1).get<double>(),
-                                                         c.at(2).get<double>());
+        const Eigen::Vector3d p =
+            pose * Eigen::Vector3d(c.at(0).get<double>(), c.at(1).get<double>(), c.at(2).get<double>());
         y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y()), z0 = std::min(z0, p.z()), z1 = std::max(z1, p.z());
     }
     const double on = std::max(0.0, std::min(y1, s.picture_y1) - std::max(y0, s.picture_y0)) *
@@ -92,16 +92,17 @@ struct NodeIo {
         info = nh.advertise<sensor_msgs::CameraInfo>(ns + "/depth/camera_info", 10);
         depth = nh.advertise<sensor_msgs::Image>(ns + "/depth/image_rect", 10);
         if (colour) rgb = nh.advertise<sensor_msgs::Image>(ns + "/rgb/image_rect_color", 10);
-        result_sub = nh.subscribe<std_msgs::String>(ns + "/projsurf/result", 100, [this](const std_msgs::StringConstPtr &m) {
-            auto j = nlohmann::json::parse(m->data);
-            if (!j.contains("continuous")) return;  // a ~detect answer
-            std::lock_guard<std::mutex> lock(mutex);
-            results[j.at("continuous").at("stamp").get<double>()] = j;
-        });
+        result_sub =
+            nh.subscribe<std_msgs::String>(ns + "/projsurf/result", 100, [this](const std_msgs::StringConstPtr &m) {
+                auto j = nlohmann::json::parse(m->data);
+                if (!j.contains("continuous")) return;  // a ~detect answer
+                std::lock_guard<std::mutex> lock(mutex);
+                results[j.at("continuous").at("stamp").get<double>()] = j;
+            });
     }
     bool connected() const {
-        return info.getNumSubscribers() > 0 && depth.getNumSubscribers() > 0 && (!colour || rgb.getNumSubscribers() > 0) &&
-               result_sub.getNumPublishers() > 0;
+        return info.getNumSubscribers() > 0 && depth.getNumSubscribers() > 0 &&
+               (!colour || rgb.getNumSubscribers() > 0) && result_sub.getNumPublishers() > 0;
     }
     /// Publishes one frame (camera_info, colour when given, depth) and waits for its ~result.
     bool frame(const Cloud &cloud, const cv::Mat *bgr, const std::string &colour_frame, const ros::Time &stamp,
@@ -143,7 +144,8 @@ protected:
     int warnings(const std::vector<std::string> &words) {
         std::lock_guard<std::mutex> lock(log_mutex_);
         return static_cast<int>(std::count_if(warnings_.begin(), warnings_.end(), [&](const std::string &w) {
-            return std::all_of(words.begin(), words.end(), [&](const std::string &x) { return w.find(x) != std::string::npos; });
+            return std::all_of(words.begin(), words.end(),
+                               [&](const std::string &x) { return w.find(x) != std::string::npos; });
         }));
     }
     NodeIo colour_, plain_;
@@ -162,7 +164,8 @@ TEST_F(ColourNodeTest, RegisteredColourKeepsThePictureOffAFramedPictureOnTheWall
         });
     const Eigen::Isometry3d pose = cameraPose(0.0, 0.0, 0.0);
     const int frames = 12;
-    std::vector<double> ms_colour, ms_plain, det_colour, det_plain, attach_ms, share_colour, share_plain, area_colour, area_plain;
+    std::vector<double> ms_colour, ms_plain, det_colour, det_plain, attach_ms, share_colour, share_plain, area_colour,
+        area_plain;
     int missing = 0, with_suitability = 0;
     double worst_unfit = 0.0;
     for (int k = 0; k < frames; ++k) {
@@ -173,7 +176,8 @@ TEST_F(ColourNodeTest, RegisteredColourKeepsThePictureOffAFramedPictureOnTheWall
         const cv::Mat bgr = renderColour(pose, scene);
         const ros::Time stamp = ros::Time::now();
         nlohmann::json jc, jp;
-        if (!colour_.frame(cloud, &bgr, "camera_optical_colour", stamp, jc) || !plain_.frame(cloud, nullptr, "", stamp, jp)) {
+        if (!colour_.frame(cloud, &bgr, "camera_optical_colour", stamp, jc) ||
+            !plain_.frame(cloud, nullptr, "", stamp, jp)) {
             ++missing;
             continue;
         }
@@ -221,16 +225,17 @@ TEST_F(ColourNodeTest, RegisteredColourKeepsThePictureOffAFramedPictureOnTheWall
     ASSERT_TRUE(ros::service::call(colour_.ns + "/projsurf/detect", call));
     EXPECT_TRUE(call.response.success) << call.response.message;
     EXPECT_NE(call.response.message.find("colour (avoid): mean albedo"), std::string::npos) << call.response.message;
-    std::printf("[ measured ] colour: rectangle on the picture %.1f %% (max) with colour, %.1f %% (min) without; "
-                "area %.3f vs %.3f m^2 (median)\n",
-                100.0 * *std::max_element(share_colour.begin(), share_colour.end()),
-                100.0 * *std::min_element(share_plain.begin(), share_plain.end()), median(area_colour),
-                median(area_plain));
-    std::printf("[ measured ] continuous frame (320x240 depth, same frames): median %.1f ms with colour, %.1f ms "
-                "without (detection alone %.1f vs %.1f ms); colour into the cloud median %.2f ms, first frame (with "
-                "the registration check) %.2f ms; over %zu frames\n",
-                median(ms_colour), median(ms_plain), median(det_colour), median(det_plain), median(attach_ms),
-                attach_ms.empty() ? 0.0 : attach_ms.front(), ms_colour.size());
+    std::printf(
+        "[ measured ] colour: rectangle on the picture %.1f %% (max) with colour, %.1f %% (min) without; "
+        "area %.3f vs %.3f m^2 (median)\n",
+        100.0 * *std::max_element(share_colour.begin(), share_colour.end()),
+        100.0 * *std::min_element(share_plain.begin(), share_plain.end()), median(area_colour), median(area_plain));
+    std::printf(
+        "[ measured ] continuous frame (320x240 depth, same frames): median %.1f ms with colour, %.1f ms "
+        "without (detection alone %.1f vs %.1f ms); colour into the cloud median %.2f ms, first frame (with "
+        "the registration check) %.2f ms; over %zu frames\n",
+        median(ms_colour), median(ms_plain), median(det_colour), median(det_plain), median(attach_ms),
+        attach_ms.empty() ? 0.0 : attach_ms.front(), ms_colour.size());
 }
 
 TEST_F(ColourNodeTest, ColourOfAnotherSizeIsNotUsedWithOneWarning) {
