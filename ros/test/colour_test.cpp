@@ -18,11 +18,13 @@
 #include <cstdio>
 #include <cstring>
 #include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
 #include "conversions.hpp"
 #include "node_test_support.hpp"
+#include "projsurf/io/yaml_files.hpp"
 #include "sim_wall.hpp"
 
 using namespace projsurf;
@@ -290,6 +292,91 @@ TEST_F(ColourNodeTest, ColourNotRegisteredToTheDepthIsNotUsed) {
     ASSERT_TRUE(waitFor([&] { return warnings({"not registered", "not used"}) > 0; }, 10.0));
     ros::WallDuration(0.5).sleep();
     EXPECT_EQ(warnings({"not registered", "not used"}), 1);
+}
+
+// The node's latency on a real 640x480 frame (depth, its registered rgb.png, camera.yaml) when
+// PROJSURF_REAL_FRAME names its folder (the frames stay in shared/data/real/): the same frame
+// to /colour and /plain, again and again; prints the medians. Skipped without it.
+TEST_F(ColourNodeTest, RealFrameLatency) {
+    const std::string dir = env("PROJSURF_REAL_FRAME");
+    if (dir.empty()) GTEST_SKIP() << "set PROJSURF_REAL_FRAME to a frame folder of shared/data/real/";
+    const CameraIntrinsics cam = readCamera(dir + "/camera.yaml");
+    const cv::Mat raw = cv::imread(dir + "/depth.png", cv::IMREAD_UNCHANGED);
+    const cv::Mat bgr = cv::imread(dir + "/rgb.png", cv::IMREAD_COLOR);
+    ASSERT_EQ(raw.type(), CV_16UC1) << dir;
+    ASSERT_EQ(bgr.size(), raw.size()) << dir;
+    // 32FC1 metres: any depth_scale.
+    Cloud cloud;
+    cloud.width = raw.cols;
+    cloud.height = raw.rows;
+    cloud.points.resize(static_cast<std::size_t>(raw.total()));
+    for (int v = 0; v < raw.rows; ++v)
+        for (int u = 0; u < raw.cols; ++u) {
+            const std::uint16_t d = raw.at<std::uint16_t>(v, u);
+            const float z = d > 0 ? static_cast<float>(d / cam.depth_scale) : std::numeric_limits<float>::quiet_NaN();
+            cloud.points[static_cast<std::size_t>(v) * raw.cols + u] = Point(0.0f, 0.0f, z);
+        }
+    const int rounds = std::stoi(env("PROJSURF_REAL_ROUNDS", "20"));
+    std::vector<double> ms_colour, ms_plain, det_colour, det_plain, attach_ms;
+    std::string registration, why_not;
+    int found_colour = 0, found_plain = 0;
+    double area_colour = 0.0, area_plain = 0.0, unfit = -1.0;
+    for (int k = 0; k < rounds; ++k) {
+        const ros::Time stamp = ros::Time::now();
+        const std_msgs::Header h = header("camera_optical_real", stamp);
+        sensor_msgs::CameraInfo info;
+        info.header = h;
+        info.width = raw.cols;
+        info.height = raw.rows;
+        info.K = {cam.fx, 0.0, cam.cx, 0.0, cam.fy, cam.cy, 0.0, 0.0, 1.0};
+        sensor_msgs::Image depth;
+        depth.header = h;
+        depth.width = raw.cols;
+        depth.height = raw.rows;
+        depth.encoding = "32FC1";
+        depth.step = depth.width * 4;
+        depth.data.resize(depth.step * depth.height);
+        for (std::size_t i = 0; i < cloud.size(); ++i) std::memcpy(&depth.data[4 * i], &cloud.points[i].z(), 4);
+        nlohmann::json jc, jp;
+        for (NodeIo *io : {&colour_, &plain_}) {
+            io->info.publish(info);
+            if (io->colour) io->rgb.publish(ros_node::toImageMsg(bgr, header("camera_rgb_real", stamp)));
+            io->depth.publish(depth);
+        }
+        auto wait = [&](NodeIo &io, nlohmann::json &out) {
+            return waitFor(
+                [&] {
+                    std::lock_guard<std::mutex> lock(io.mutex);
+                    if (io.results.count(stamp.toSec()) == 0) return false;
+                    out = io.results.at(stamp.toSec());
+                    return true;
+                },
+                20.0);
+        };
+        ASSERT_TRUE(wait(colour_, jc) && wait(plain_, jp)) << "no ~result for round " << k;
+        ms_colour.push_back(jc.at("continuous").at("frame_ms").get<double>());
+        ms_plain.push_back(jp.at("continuous").at("frame_ms").get<double>());
+        det_colour.push_back(jc.at("timing_ms").value("total", 0.0));
+        det_plain.push_back(jp.at("timing_ms").value("total", 0.0));
+        attach_ms.push_back(jc.at("continuous").at("colour").at("ms").get<double>());
+        found_colour += jc.at("found").get<bool>();
+        found_plain += jp.at("found").get<bool>();
+        if (jc.at("found").get<bool>()) area_colour = jc.at("rectangle").at("area_m2").get<double>();
+        if (jp.at("found").get<bool>()) area_plain = jp.at("rectangle").at("area_m2").get<double>();
+        if (jc.contains("suitability")) unfit = jc["suitability"].at("unsuitable_share").get<double>();
+        registration = jc.at("continuous").at("colour").value("registration", "");
+        why_not = jc.at("continuous").at("colour").value("why_not", "");
+        ros::WallDuration(0.05).sleep();
+    }
+    std::printf("[ measured ] real frame %s (%dx%d), %d rounds: continuous frame median %.1f ms with colour, %.1f ms "
+                "without; detection alone %.1f vs %.1f ms; colour into the cloud median %.2f ms, first (with the "
+                "registration check) %.2f ms; registration '%s'%s%s\n",
+                dir.c_str(), raw.cols, raw.rows, rounds, median(ms_colour), median(ms_plain), median(det_colour),
+                median(det_plain), median(attach_ms), attach_ms.front(), registration.c_str(),
+                why_not.empty() ? "" : "; not used: ", why_not.c_str());
+    std::printf("[ measured ] real frame: found %d / %d with colour (%.3f m^2, unfit share %.3f), %d / %d without "
+                "(%.3f m^2)\n",
+                found_colour, rounds, area_colour, unfit, found_plain, rounds, area_plain);
 }
 
 }  // namespace
