@@ -22,6 +22,7 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "colour_input.hpp"
 #include "conversions.hpp"
 #include "node_test_support.hpp"
 #include "projsurf/io/yaml_files.hpp"
@@ -368,15 +369,84 @@ TEST_F(ColourNodeTest, RealFrameLatency) {
         why_not = jc.at("continuous").at("colour").value("why_not", "");
         ros::WallDuration(0.05).sleep();
     }
-    std::printf("[ measured ] real frame %s (%dx%d), %d rounds: continuous frame median %.1f ms with colour, %.1f ms "
-                "without; detection alone %.1f vs %.1f ms; colour into the cloud median %.2f ms, first (with the "
-                "registration check) %.2f ms; registration '%s'%s%s\n",
-                dir.c_str(), raw.cols, raw.rows, rounds, median(ms_colour), median(ms_plain), median(det_colour),
-                median(det_plain), median(attach_ms), attach_ms.front(), registration.c_str(),
-                why_not.empty() ? "" : "; not used: ", why_not.c_str());
-    std::printf("[ measured ] real frame: found %d / %d with colour (%.3f m^2, unfit share %.3f), %d / %d without "
-                "(%.3f m^2)\n",
-                found_colour, rounds, area_colour, unfit, found_plain, rounds, area_plain);
+    std::printf(
+        "[ measured ] real frame %s (%dx%d), %d rounds: continuous frame median %.1f ms with colour, %.1f ms "
+        "without; detection alone %.1f vs %.1f ms; colour into the cloud median %.2f ms, first (with the "
+        "registration check) %.2f ms; registration '%s'%s%s\n",
+        dir.c_str(), raw.cols, raw.rows, rounds, median(ms_colour), median(ms_plain), median(det_colour),
+        median(det_plain), median(attach_ms), attach_ms.front(), registration.c_str(),
+        why_not.empty() ? "" : "; not used: ", why_not.c_str());
+    std::printf(
+        "[ measured ] real frame: found %d / %d with colour (%.3f m^2, unfit share %.3f), %d / %d without "
+        "(%.3f m^2)\n",
+        found_colour, rounds, area_colour, unfit, found_plain, rounds, area_plain);
+}
+
+// ColourInput alone (no master): pairing by stamp, and the registration check once per stream.
+
+sensor_msgs::ImageConstPtr colourAt(const cv::Mat &bgr, double stamp, const std::string &frame = "rgb") {
+    return boost::make_shared<sensor_msgs::Image>(ros_node::toImageMsg(bgr, header(frame, ros::Time(stamp))));
+}
+
+TEST(ColourInput, PairsByStampWithinHalfAFrame) {
+    ros_node::ColourInput in("/rgb");
+    const cv::Mat bgr(240, 320, CV_8UC3, cv::Scalar::all(200));
+    in.add(colourAt(bgr, 10.0));
+    in.add(colourAt(bgr, 10.033));
+    EXPECT_NE(in.exact(ros::Time(10.0)), nullptr);
+    EXPECT_EQ(in.exact(ros::Time(10.01)), nullptr);
+    double offset = 0.0;
+    auto near = in.near(ros::Time(10.01), offset);
+    ASSERT_NE(near, nullptr);
+    EXPECT_NEAR(near->header.stamp.toSec(), 10.0, 1e-6);
+    EXPECT_NEAR(offset, 0.01, 1e-6);
+    near = in.near(ros::Time(10.02), offset);
+    ASSERT_NE(near, nullptr);
+    EXPECT_NEAR(near->header.stamp.toSec(), 10.033, 1e-6);
+    EXPECT_EQ(in.near(ros::Time(10.1), offset), nullptr) << "a frame and more away is another instant";
+    EXPECT_NEAR(offset, 0.067, 1e-6);
+}
+
+TEST(ColourInput, ChecksTheRegistrationOncePerStream) {
+    const Eigen::Isometry3d pose = cameraPose(0.0, 0.0, 0.0);
+    SceneOptions scene;
+    scene.picture = true;
+    scene.person = true;  // depth edges: the check can tell
+    scene.person_y = -0.5;
+    const Cloud cloud = renderScene(pose, scene);
+    const cv::Mat bgr = renderColour(pose, scene);
+    cv::Mat shifted(bgr.size(), bgr.type(), cv::Scalar::all(0));
+    bgr(cv::Rect(0, 0, bgr.cols - 12, bgr.rows)).copyTo(shifted(cv::Rect(12, 0, bgr.cols - 12, bgr.rows)));
+    ros_node::ColourInput in("/rgb");
+
+    Cloud c1 = cloud;
+    EXPECT_EQ(in.attach(c1, *colourAt(bgr, 1.0), "depth A"), "");
+    EXPECT_TRUE(c1.hasColour());
+    EXPECT_EQ(in.registration(), "registered");
+    EXPECT_GT(in.lastCheckMs(), 0.0);
+    // The same stream: not checked again (the shifted image passes on the first verdict).
+    Cloud c2 = cloud;
+    EXPECT_EQ(in.attach(c2, *colourAt(shifted, 1.033), "depth A"), "");
+    EXPECT_TRUE(c2.hasColour());
+    // Another stream (the depth's intrinsics changed): checked again, refused.
+    Cloud c3 = cloud;
+    const std::string why = in.attach(c3, *colourAt(shifted, 1.066), "depth B");
+    EXPECT_NE(why.find("not registered"), std::string::npos) << why;
+    EXPECT_FALSE(c3.hasColour());
+    EXPECT_EQ(in.registration(), "not registered");
+    // Another size or a grey image: not used, the cloud untouched.
+    Cloud c4 = cloud;
+    cv::Mat big;
+    cv::resize(bgr, big, cv::Size(640, 480));
+    EXPECT_NE(in.attach(c4, *colourAt(big, 1.1), "depth A").find("640x480"), std::string::npos);
+    EXPECT_FALSE(c4.hasColour());
+    EXPECT_EQ(in.registration(), "") << "no verdict for colour that never got to the check";
+    auto grey = boost::make_shared<sensor_msgs::Image>(*colourAt(bgr, 1.2));
+    grey->encoding = "mono8";
+    grey->step = grey->width;
+    grey->data.resize(grey->step * grey->height);
+    EXPECT_NE(in.attach(c4, *grey, "depth A").find("mono8"), std::string::npos);
+    EXPECT_FALSE(c4.hasColour());
 }
 
 }  // namespace
