@@ -152,25 +152,21 @@ void ProjsurfNode::onDepth(const sensor_msgs::ImageConstPtr &msg) {
 }
 
 void ProjsurfNode::takeDepth(const sensor_msgs::Image &depth, const sensor_msgs::CameraInfo &info) {
-    if (colour_) {  // the registration is checked again when this changes
-        char k[200];
-        std::snprintf(k, sizeof k, "depth %ux%u K %.2f %.2f %.2f %.2f", info.width, info.height, info.K[0], info.K[4],
-                      info.K[2], info.K[5]);
-        depth_stream_ = std::string(k) + " " + depth.header.frame_id;
-    }
+    // The stream's geometry: the colour's registration is checked again when it changes.
+    char stream[200];
+    std::snprintf(stream, sizeof stream, "depth %ux%u K %.2f %.2f %.2f %.2f %s", info.width, info.height, info.K[0],
+                  info.K[4], info.K[2], info.K[5], depth.header.frame_id.c_str());
     try {
-        takeCloud(toCloud(depth, info), depth.header);
+        takeCloud(toCloud(depth, info), depth.header, stream);
     } catch (const InputError &e) {
         rejectCloud("depth image", e.what(), depth.header);
     }
 }
 
 void ProjsurfNode::onCloud(const sensor_msgs::PointCloud2ConstPtr &msg) {
-    if (colour_)
-        depth_stream_ =
-            "cloud " + std::to_string(msg->width) + "x" + std::to_string(msg->height) + " " + msg->header.frame_id;
     try {
-        takeCloud(toCloud(*msg), msg->header);
+        takeCloud(toCloud(*msg), msg->header,
+                  "cloud " + std::to_string(msg->width) + "x" + std::to_string(msg->height) + " " + msg->header.frame_id);
     } catch (const InputError &e) {
         rejectCloud("cloud", e.what(), msg->header);
     }
@@ -183,11 +179,13 @@ void ProjsurfNode::rejectCloud(const std::string &what, const std::string &probl
     rejected_ = "the latest " + what + " (stamp " + stamp + ") was rejected: " + problem;
 }
 
-void ProjsurfNode::takeCloud(Cloud cloud, const std_msgs::Header &header) {
-    if (colour_wait_) {  // the previous cloud's colour never came: the nearest, or none
+void ProjsurfNode::takeCloud(Cloud cloud, const std_msgs::Header &header, const std::string &stream) {
+    if (colour_wait_ && continuous_) {  // the previous cloud's colour never came: the nearest, or none
         settleColourWait();
-        if (continuous_) runContinuous();
+        runContinuous();
     }
+    colour_wait_ = false;  // on demand, the previous cloud is simply replaced
+    depth_stream_ = stream;
     cloud_ = std::move(cloud);
     cloud_header_ = header;
     have_cloud_ = true;
@@ -201,8 +199,7 @@ void ProjsurfNode::takeCloud(Cloud cloud, const std_msgs::Header &header) {
             colour_wait_ = true;  // its colour image is on its way (until the next cloud or ~detect)
             return;
         } else {
-            colour_note_ = "no colour on " + colour_sub_.getTopic() + " for the latest " +
-                           std::to_string(colourless_) + " clouds";
+            colour_note_ = "no colour image has come on " + colour_sub_.getTopic() + " lately";
             ROS_WARN_THROTTLE(5.0, "projsurf_node: %s; detecting without colour until some comes", colour_note_.c_str());
         }
     }

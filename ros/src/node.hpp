@@ -49,7 +49,8 @@ private:
     bool onDetect(std_srvs::Trigger::Request &req, std_srvs::Trigger::Response &res);
     bool onPlan(std_srvs::Trigger::Request &req, std_srvs::Trigger::Response &res);  ///< ~plan (plan_service.hpp)
 
-    void takeCloud(Cloud cloud, const std_msgs::Header &header);
+    /// `stream`: the depth stream's geometry (colour_input.hpp's `stream`).
+    void takeCloud(Cloud cloud, const std_msgs::Header &header, const std::string &stream);
     /// The depth image with this camera_info as a cloud (or rejected).
     void takeDepth(const sensor_msgs::Image &depth, const sensor_msgs::CameraInfo &info);
     /// ~use_colour: the colour image of the latest cloud's stamp into cloud_ (when it fits);
