@@ -8,6 +8,7 @@
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
+#include "projsurf/core/observed_free_space.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/io/depth_image_bytes.hpp"
 #include "projsurf/io/errors.hpp"
@@ -144,6 +145,36 @@ visualization_msgs::Marker outline(const std_msgs::Header &header, const std::st
     return m;
 }
 
+/// Cells free by depth but unfit by their colour (surface suitability), one square point per
+/// cell, coloured by reason as in the CLI's overlay (io/overlay.cpp's legend, RGB here).
+visualization_msgs::Marker unfitCells(const DetectionDebug &g, const std_msgs::Header &header, const std::string &ns) {
+    auto m = marker(header, ns, 5, visualization_msgs::Marker::POINTS, 1.0f, 1.0f, 1.0f, 0.8f);
+    if (g.cell_state.empty() || g.grid_cell <= 0.0) return m;
+    m.scale.x = m.scale.y = g.grid_cell;  // point size, m
+    auto rgba = [](float r, float g, float b) {
+        std_msgs::ColorRGBA c;
+        c.r = r / 255.0f, c.g = g / 255.0f, c.b = b / 255.0f, c.a = 0.8f;
+        return c;
+    };
+    for (int r = 0; r < g.cell_state.rows; ++r)
+        for (int c = 0; c < g.cell_state.cols; ++c) {
+            const auto state = static_cast<CellState>(g.cell_state.at<uchar>(r, c));
+            std_msgs::ColorRGBA colour;
+            switch (state) {
+                case CellState::Glare: colour = rgba(160, 255, 255); break;    // pale cyan: glare
+                case CellState::Dark: colour = rgba(20, 40, 90); break;        // dark blue: too dark
+                case CellState::Textured: colour = rgba(160, 60, 0); break;    // brown: textured
+                case CellState::Saturated: colour = rgba(90, 0, 160); break;   // purple: saturated
+                default: continue;
+            }
+            const Eigen::Vector2d uv(g.grid_origin.x() + (c + 0.5) * g.grid_cell,
+                                     g.grid_origin.y() - (r + 0.5) * g.grid_cell);
+            m.points.push_back(point(g.frame.toCamera(uv)));
+            m.colors.push_back(colour);
+        }
+    return m;
+}
+
 }  // namespace
 
 visualization_msgs::MarkerArray toMarkers(const Detection &det, const Rectangle *shown, const std_msgs::Header &header,
@@ -176,6 +207,10 @@ visualization_msgs::MarkerArray toMarkers(const Detection &det, const Rectangle 
         if (f.right.norm() > 0.5) out.markers.push_back(plane);
         if (det.debug.has_workspace)
             out.markers.push_back(outline(header, ns, 2, det.debug.workspace, 0.1f, 0.9f, 0.1f));
+        if (det.suitability.used) {
+            auto unfit = unfitCells(det.debug, header, ns);
+            if (!unfit.points.empty()) out.markers.push_back(unfit);
+        }
     }
     const Rectangle *rect = shown != nullptr ? shown : (det.found ? &det.rectangle : nullptr);
     if (rect != nullptr) {

@@ -55,6 +55,17 @@ ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams p
     // camera_info is small and paired by stamp: a few are kept (frontend/stamp_pairing.hpp).
     info_sub_ = nh_.subscribe("depth/camera_info", 10, &ProjsurfNode::onCameraInfo, this);
     image_sub_ = nh_.subscribe("image", 1, &ProjsurfNode::onImage, this);
+    if (params_.use_colour && params_.detector.suitability.mode == SuitabilityMode::Off) {
+        ROS_WARN("projsurf_node: ~use_colour with ~suitability off: the colour is not used");
+    } else if (params_.use_colour) {
+        // A couple queued: the colour image of a depth image's stamp may come just after it.
+        colour_sub_ = nh_.subscribe("rgb/image_rect_color", 2, &ProjsurfNode::onColour, this);
+        colour_ = std::make_unique<ColourInput>(colour_sub_.getTopic());
+        ROS_INFO("projsurf_node: colour from %s (suitability %s)", colour_sub_.getTopic().c_str(),
+                 params_.detector.suitability.mode == SuitabilityMode::Prefer ? "prefer" : "avoid");
+    } else if (params_.suitability_given && params_.detector.suitability.mode != SuitabilityMode::Off) {
+        ROS_WARN("projsurf_node: ~suitability needs registered colour (~use_colour); the surface is judged by depth only");
+    }
     ROS_INFO("projsurf_node: projector %dx%d from %s; %s mode; listening on %s (or %s + %s)", params_.projector.width,
              params_.projector.height, params_.calib.c_str(), params_.continuous ? "continuous" : "on-demand (~detect)",
              cloud_sub_.getTopic().c_str(), depth_sub_.getTopic().c_str(), info_sub_.getTopic().c_str());
@@ -67,6 +78,42 @@ void ProjsurfNode::onImage(const sensor_msgs::ImageConstPtr &msg) {
     } catch (const InputError &e) {
         ROS_WARN_THROTTLE(5.0, "projsurf_node: ignoring picture on %s: %s", image_sub_.getTopic().c_str(), e.what());
     }
+}
+
+void ProjsurfNode::onColour(const sensor_msgs::ImageConstPtr &msg) {
+    colour_->add(msg);
+    colourless_ = 0;
+    // The latest cloud came first and waits for this one.
+    if (colour_wait_ &&
+        std::abs(msg->header.stamp.toSec() - cloud_header_.stamp.toSec()) <= frontend::kSameStampS) {
+        colour_wait_ = false;
+        useColour(*msg);
+        if (continuous_) runContinuous();
+    }
+}
+
+void ProjsurfNode::useColour(const sensor_msgs::Image &colour) {
+    const ros::WallTime start = ros::WallTime::now();
+    colour_note_ = colour_->attach(cloud_, colour, depth_stream_);
+    colour_ms_ = (ros::WallTime::now() - start).toSec() * 1e3;
+}
+
+void ProjsurfNode::settleColourWait() {
+    if (!colour_wait_) return;
+    colour_wait_ = false;
+    double offset = 0.0;
+    if (const sensor_msgs::ImageConstPtr near = colour_->near(cloud_header_.stamp, offset)) {
+        ROS_WARN_THROTTLE(5.0, "projsurf_node: no colour image with the depth's stamp %.3f on %s; using one %.3f s away",
+                          cloud_header_.stamp.toSec(), colour_sub_.getTopic().c_str(), offset);
+        useColour(*near);
+        return;
+    }
+    char text[160];
+    std::snprintf(text, sizeof text, "no colour image within %.3f s of the depth's stamp %.3f", kColourMaxOffsetS,
+                  cloud_header_.stamp.toSec());
+    colour_note_ = text;
+    ++colourless_;
+    ROS_WARN_THROTTLE(5.0, "projsurf_node: %s on %s; detecting without colour", text, colour_sub_.getTopic().c_str());
 }
 
 void ProjsurfNode::onCameraInfo(const sensor_msgs::CameraInfoConstPtr &msg) {
@@ -105,8 +152,12 @@ void ProjsurfNode::onDepth(const sensor_msgs::ImageConstPtr &msg) {
 }
 
 void ProjsurfNode::takeDepth(const sensor_msgs::Image &depth, const sensor_msgs::CameraInfo &info) {
+    // The stream's geometry: the colour's registration is checked again when it changes.
+    char stream[200];
+    std::snprintf(stream, sizeof stream, "depth %ux%u K %.2f %.2f %.2f %.2f %s", info.width, info.height, info.K[0],
+                  info.K[4], info.K[2], info.K[5], depth.header.frame_id.c_str());
     try {
-        takeCloud(toCloud(depth, info), depth.header);
+        takeCloud(toCloud(depth, info), depth.header, stream);
     } catch (const InputError &e) {
         rejectCloud("depth image", e.what(), depth.header);
     }
@@ -114,7 +165,8 @@ void ProjsurfNode::takeDepth(const sensor_msgs::Image &depth, const sensor_msgs:
 
 void ProjsurfNode::onCloud(const sensor_msgs::PointCloud2ConstPtr &msg) {
     try {
-        takeCloud(toCloud(*msg), msg->header);
+        takeCloud(toCloud(*msg), msg->header,
+                  "cloud " + std::to_string(msg->width) + "x" + std::to_string(msg->height) + " " + msg->header.frame_id);
     } catch (const InputError &e) {
         rejectCloud("cloud", e.what(), msg->header);
     }
@@ -127,11 +179,30 @@ void ProjsurfNode::rejectCloud(const std::string &what, const std::string &probl
     rejected_ = "the latest " + what + " (stamp " + stamp + ") was rejected: " + problem;
 }
 
-void ProjsurfNode::takeCloud(Cloud cloud, const std_msgs::Header &header) {
+void ProjsurfNode::takeCloud(Cloud cloud, const std_msgs::Header &header, const std::string &stream) {
+    if (colour_wait_ && continuous_) {  // the previous cloud's colour never came: the nearest, or none
+        settleColourWait();
+        runContinuous();
+    }
+    colour_wait_ = false;  // on demand, the previous cloud is simply replaced
+    depth_stream_ = stream;
     cloud_ = std::move(cloud);
     cloud_header_ = header;
     have_cloud_ = true;
     rejected_.clear();
+    colour_ms_ = 0.0;
+    if (colour_) {
+        colour_note_.clear();
+        if (const sensor_msgs::ImageConstPtr colour = colour_->exact(header.stamp)) {
+            useColour(*colour);
+        } else if (colourless_ < kColourlessToStopWaiting) {
+            colour_wait_ = true;  // its colour image is on its way (until the next cloud or ~detect)
+            return;
+        } else {
+            colour_note_ = "no colour image has come on " + colour_sub_.getTopic() + " lately";
+            ROS_WARN_THROTTLE(5.0, "projsurf_node: %s; detecting without colour until some comes", colour_note_.c_str());
+        }
+    }
     if (continuous_) runContinuous();
 }
 
@@ -196,6 +267,17 @@ std::string ProjsurfNode::publishFramebuffer(const Rectangle &rect, const std_ms
     return {};
 }
 
+std::string ProjsurfNode::colourSummary(const Detection &det) const {
+    if (!colour_) return {};
+    if (!colour_note_.empty()) return "; colour not used: " + colour_note_;
+    if (!det.suitability.used) return {};
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "; colour (%s): mean albedo %.2f, texture %.2f, %.0f %% of it unfit",
+                  det.suitability.mode.c_str(), det.suitability.mean_albedo, det.suitability.texture,
+                  100.0 * det.suitability.unsuitable_share);
+    return buf;
+}
+
 ProjsurfNode::Outcome ProjsurfNode::detectOnce() {
     Outcome out;
     if (!have_cloud_) {
@@ -203,6 +285,7 @@ ProjsurfNode::Outcome ProjsurfNode::detectOnce() {
         if (!rejected_.empty()) out.message = "no valid cloud received yet: " + rejected_;
         return out;
     }
+    settleColourWait();
     out = detectOnValidCloud();
     // Say so when this answer is not about the latest cloud.
     if (!rejected_.empty()) {
@@ -226,13 +309,13 @@ ProjsurfNode::Outcome ProjsurfNode::detectOnValidCloud() {
     markers_pub_.publish(toMarkers(det, nullptr, cloud_header_, params_.marker_ns));
     if (!det.found) {
         // The paper's robot shows an error message and moves on (section 5).
-        out.message = det.reason.empty() ? "no projection surface found" : det.reason;
+        out.message = (det.reason.empty() ? "no projection surface found" : det.reason) + colourSummary(det);
         publishBlack(cloud_header_);
         ROS_INFO("projsurf_node: no surface: %s", out.message.c_str());
         return out;
     }
     out.success = true;
-    out.message = frontend::detectionSummary(det);
+    out.message = frontend::detectionSummary(det) + colourSummary(det);
     rectangle_pub_.publish(toPolygon(det.rectangle, cloud_header_));
     blanking_->publishFocus(det.rectangle);
     const std::string problem = publishFramebuffer(det.rectangle, cloud_header_);
@@ -308,13 +391,19 @@ void ProjsurfNode::runContinuous() {
     if (fb.image.empty())
         fb.image = cv::Mat(params_.projector.height, params_.projector.width, CV_8UC3, cv::Scalar::all(0));
     blanking_->apply(fb.image, cloud_, o.has_target ? &o.shown : nullptr, header);
-    const double frame_ms = (ros::WallTime::now() - start).toSec() * 1e3;
+    const double frame_ms = (ros::WallTime::now() - start).toSec() * 1e3 + colour_ms_;
 
     nlohmann::json j = detectionToJson(det, detector_.config(), &params_.projector);
     j["continuous"] = {{"event", toString(o.event)},
                        {"showing", o.has_target && fb.problem.empty()},
                        {"stamp", header.stamp.toSec()},
                        {"frame_ms", std::round(frame_ms * 1000.0) / 1000.0}};
+    if (colour_) {
+        j["continuous"]["colour"] = {{"used", colour_note_.empty()},
+                                     {"ms", std::round(colour_ms_ * 1000.0) / 1000.0},
+                                     {"registration", colour_->registration()}};
+        if (!colour_note_.empty()) j["continuous"]["colour"]["why_not"] = colour_note_;
+    }
     if (blanking_->enabled())
         j["continuous"]["blanking"] = {{"blanked_pixels", blanking_->blankedPixels()},
                                        {"ms", std::round(blanking_->lastMs() * 1000.0) / 1000.0}};

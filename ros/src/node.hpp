@@ -17,6 +17,7 @@
 #include <string>
 
 #include "blanking.hpp"
+#include "colour_input.hpp"
 #include "continuous.hpp"
 #include "params.hpp"
 #include "plan_service.hpp"
@@ -24,6 +25,10 @@
 #include "projsurf/pipeline/detector.hpp"
 
 namespace projsurf::ros_node {
+
+/// Clouds in a row without their colour image after which a cloud no longer waits for it (the
+/// colour stream stopped): a waiting cloud is detected one cloud late in continuous mode.
+constexpr int kColourlessToStopWaiting = 3;
 
 class ProjsurfNode {
 public:
@@ -40,17 +45,27 @@ private:
     void onDepth(const sensor_msgs::ImageConstPtr &msg);
     void onCameraInfo(const sensor_msgs::CameraInfoConstPtr &msg);
     void onImage(const sensor_msgs::ImageConstPtr &msg);
+    void onColour(const sensor_msgs::ImageConstPtr &msg);  ///< ~use_colour: the registered colour
     bool onDetect(std_srvs::Trigger::Request &req, std_srvs::Trigger::Response &res);
     bool onPlan(std_srvs::Trigger::Request &req, std_srvs::Trigger::Response &res);  ///< ~plan (plan_service.hpp)
 
-    void takeCloud(Cloud cloud, const std_msgs::Header &header);
+    /// `stream`: the depth stream's geometry (colour_input.hpp's `stream`).
+    void takeCloud(Cloud cloud, const std_msgs::Header &header, const std::string &stream);
     /// The depth image with this camera_info as a cloud (or rejected).
     void takeDepth(const sensor_msgs::Image &depth, const sensor_msgs::CameraInfo &info);
+    /// ~use_colour: the colour image of the latest cloud's stamp into cloud_ (when it fits);
+    /// colour_note_ says why not.
+    void useColour(const sensor_msgs::Image &colour);
+    /// The latest cloud waits for its colour image: it takes the nearest one within
+    /// kColourMaxOffsetS, or goes without colour (a warning says so).
+    void settleColourWait();
     /// A cloud (or depth image) that cannot be used: kept out, and remembered for ~detect.
     void rejectCloud(const std::string &what, const std::string &problem, const std_msgs::Header &header);
     /// ~detect's answer; it says when the latest cloud was rejected (and answers from the last valid one).
     Outcome detectOnce();
     Outcome detectOnValidCloud();
+    /// ~detect's words on the colour: the chosen rectangle's suitability, or why colour was not used.
+    std::string colourSummary(const Detection &det) const;
     void runContinuous();
     /// Gravity for this cloud (camera frame): from tf2 when ~gravity_frame is set, from the
     /// floor with ~gravity auto, else ~gravity.
@@ -64,7 +79,7 @@ private:
 
     NodeParams params_;
     ros::NodeHandle nh_, pnh_;
-    ros::Subscriber cloud_sub_, depth_sub_, info_sub_, image_sub_;
+    ros::Subscriber cloud_sub_, depth_sub_, info_sub_, image_sub_, colour_sub_;
     ros::Publisher result_pub_, rectangle_pub_, framebuffer_pub_, markers_pub_;
     ros::ServiceServer detect_srv_, plan_srv_;
     std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
@@ -79,6 +94,12 @@ private:
     /// camera_info by stamp: each depth image is paired with the one of its own stamp.
     frontend::StampedBuffer<sensor_msgs::CameraInfoConstPtr> camera_infos_;
     sensor_msgs::ImageConstPtr pending_depth_;  ///< a depth image whose camera_info has not come yet
+    std::unique_ptr<ColourInput> colour_;  ///< ~use_colour (null without)
+    bool colour_wait_ = false;             ///< the latest cloud waits for the colour image of its stamp
+    std::string colour_note_;              ///< why the latest cloud has no colour ("" when it has)
+    double colour_ms_ = 0.0;               ///< ms spent putting the colour into the latest cloud
+    std::string depth_stream_;             ///< the depth stream's geometry (colour_input.hpp's `stream`)
+    int colourless_ = 0;                   ///< clouds in a row whose colour image never came
     SurfaceDetector detector_;                  ///< one for the stream: its buffers are reused frame to frame
     std::unique_ptr<ContinuousMode> continuous_;
     std::unique_ptr<NodeBlanking> blanking_;  ///< ~blanked, ~focus_distance

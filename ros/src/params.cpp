@@ -98,6 +98,20 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
         c.paper.hull = HullKind::Convex;
     else
         throw InputError(name(pnh, "hull"), "expected 'concave' or 'convex', got '" + hull + "'");
+    get(pnh, "use_colour", p.use_colour);
+    if (pnh.hasParam("suitability")) {
+        std::string mode;
+        get(pnh, "suitability", mode);
+        p.suitability_given = !mode.empty();  // "" (the launch file's default): avoid
+        if (mode.empty() || mode == "avoid")
+            c.suitability.mode = SuitabilityMode::Avoid;
+        else if (mode == "off")
+            c.suitability.mode = SuitabilityMode::Off;
+        else if (mode == "prefer")
+            c.suitability.mode = SuitabilityMode::Prefer;
+        else
+            throw InputError(name(pnh, "suitability"), "expected 'off', 'avoid' or 'prefer', got '" + mode + "'");
+    }
     getPositive(pnh, "max_tilt", c.max_tilt);
     int seed = static_cast<int>(c.seed);
     getCount(pnh, "seed", seed, 0);

@@ -19,6 +19,12 @@ struct NodeParams {
     std::string calib;        ///< ~calib: projector calibration YAML (required)
     std::string image;        ///< ~image: picture to show (optional; the `image` topic overrides it)
     bool continuous = false;  ///< ~continuous: detect on every cloud and keep the picture steady
+    /// ~use_colour: pair each cloud with the registered colour image of its stamp (topic
+    /// `rgb/image_rect_color`) for the surface suitability (issue 15); false = depth only.
+    bool use_colour = false;
+    /// ~suitability was given (off | avoid | prefer, the CLI's --suitability; stored in
+    /// detector.suitability.mode, default avoid).
+    bool suitability_given = false;
     bool blank = true;        ///< ~blank: continuous mode blacks out what stands in the beam (contract "Blanking")
     PlanOptions plan;         ///< ~plan_width, ~plan_max_move: the ~plan service (contract "Where to stand")
     Projector projector;      ///< read from ~calib

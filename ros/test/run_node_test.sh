@@ -85,5 +85,15 @@ pids+=($!)
     >"$tmp/still_node.log" 2>&1 &
 pids+=($!)
 
+# Registered colour (issue 15), continuous so that ~result has each frame's frame_ms; and the
+# same node without colour (today's behaviour) on the same frames.
+"$build/projsurf_node" __ns:=/colour __name:=projsurf _calib:="$tmp/calib.yaml" _continuous:=true \
+    _use_colour:=true >"$tmp/colour_node.log" 2>&1 &
+pids+=($!)
+"$build/projsurf_node" __ns:=/plain __name:=projsurf _calib:="$tmp/calib.yaml" _continuous:=true \
+    >"$tmp/plain_node.log" 2>&1 &
+pids+=($!)
+
 export PROJSURF_ONESHOT_NS=/oneshot PROJSURF_MOVING_NS=/moving PROJSURF_STILL_NS=/still
-timeout --signal=INT --kill-after=10 200 "$client" --gtest_filter='NodeTest.*'
+export PROJSURF_COLOUR_NS=/colour PROJSURF_PLAIN_NS=/plain
+timeout --signal=INT --kill-after=10 240 "$client" --gtest_filter='NodeTest.*:ColourNodeTest.*'

@@ -1,0 +1,67 @@
+#pragma once
+// The node's registered colour (issue 15): colour images kept by stamp, so that each cloud
+// (depth image) gets the colour image of its own stamp (frontend/stamp_pairing.hpp, as depth
+// gets its camera_info), and the check that the colour is registered to the depth
+// (core/colour_registration.hpp), run once per stream, not per frame. Colour that does not fit
+// (another size or encoding, not registered) is not used, with one warning per stream.
+#include <ros/time.h>
+#include <sensor_msgs/Image.h>
+
+#include <set>
+#include <string>
+
+#include "projsurf/core/cloud.hpp"
+#include "projsurf/core/colour_registration.hpp"
+#include "projsurf/frontend/stamp_pairing.hpp"
+
+namespace projsurf::ros_node {
+
+/// s: a colour image this near a depth image's stamp is taken for it when none has the same
+/// stamp (half a frame period of a 30 Hz camera: nearer than any other frame).
+constexpr double kColourMaxOffsetS = 0.5 / 30.0;
+/// s: while the check cannot tell (too few depth edges in view), it is tried again this often.
+constexpr double kRecheckPeriodS = 2.0;
+
+class ColourInput {
+public:
+    /// `topic`: the colour topic's resolved name, for messages.
+    explicit ColourInput(std::string topic) : topic_(std::move(topic)) {}
+
+    void add(const sensor_msgs::ImageConstPtr &msg) { images_.add(msg->header.stamp.toSec(), msg); }
+    /// The colour image of this stamp, else nullptr.
+    sensor_msgs::ImageConstPtr exact(const ros::Time &stamp) const;
+    /// The colour image nearest `stamp` when within kColourMaxOffsetS, else nullptr; `offset_s`
+    /// is set to the nearest one's distance (infinity when there is none).
+    sensor_msgs::ImageConstPtr near(const ros::Time &stamp, double &offset_s) const;
+
+    /// Puts `colour` into `cloud` (organized, camera frame) when it may be used: the same size
+    /// as the cloud, a colour encoding, and registered. `stream` names the depth stream's
+    /// geometry (size, intrinsics, frame): the registration is checked again when it or the
+    /// colour's size or frame changes. Returns "" when attached, else why not; each reason is
+    /// warned once per stream (ROS_WARN).
+    std::string attach(Cloud &cloud, const sensor_msgs::Image &colour, const std::string &stream);
+
+    /// The latest registration check (checked = false before any).
+    const RegistrationResult &verdict() const { return verdict_; }
+    /// The latest check in words: "registered", "not registered", "cannot tell" ("" before any).
+    std::string registration() const;
+    /// ms the latest registration check took.
+    double lastCheckMs() const { return check_ms_; }
+
+private:
+    /// Warns `text` unless it was warned for this stream already.
+    void warnOnce(const std::string &key, const std::string &text);
+
+    std::string topic_;
+    /// The latest few (a sixth of a second at 30 Hz: colour and depth of one instant arrive
+    /// within a frame or two of each other; full-size images are large).
+    frontend::StampedBuffer<sensor_msgs::ImageConstPtr> images_{5};
+    bool consulted_ = false;      ///< the latest attach() got as far as the registration
+    std::string checked_stream_;  ///< the stream (depth geometry + colour size/frame) verdict_ is for
+    RegistrationResult verdict_;
+    ros::WallTime last_check_;
+    double check_ms_ = 0.0;
+    std::set<std::string> warned_;  ///< stream + reason of every warning given (one each)
+};
+
+}  // namespace projsurf::ros_node
