@@ -88,13 +88,12 @@ ColourRun runWithColour(const LabelledFrame &f, const std::string &dir, const Ca
     cv::Mat img = renderColourLabelOverlay(background, f.label, camera,
                                            c.detection.found ? &c.detection.rectangle : nullptr,
                                            f.detection.found ? &f.detection.rectangle : nullptr);
-    std::string caption = f.name + " (colour): ";
+    std::string caption = f.name + ": ";
     if (!c.colour_used) caption += "colour not used, ";
-    caption += c.detection.found ? fmt("%.3f m^2", c.detection.area) + ", " + pct(c.with_colour.unsuitable_share) +
-                                       " % unsuitable (depth only " + pct(c.depth_only.unsuitable_share) + " %)"
+    caption += c.detection.found ? fmt("%.3f m^2", c.detection.area) + fmt(", %.0f %% unsuitable", 100.0 * c.with_colour.unsuitable_share) +
+                                       fmt(" (depth only %.0f %%)", 100.0 * c.depth_only.unsuitable_share)
                                  : std::string("nothing found");
-    caption += f.label.colour.best.found ? ", colour best " + fmt("%.3f m^2", f.label.colour.best.area())
-                                         : ", no usable surface";
+    caption += f.label.colour.best.found ? ", best " + fmt("%.3f", f.label.colour.best.area()) : ", no usable surface";
     c.overlay = withCaption(img, caption, 0.45);
     return c;
 }
@@ -201,9 +200,14 @@ ColourSummary summariseColour(const std::vector<LabelledFrame> &frames) {
             worst = std::max(worst, a.unsuitable_share);
             if (a.score.has_best) ratios.push_back(a.score.ratio);
         };
+        if (!f.label.colour.best.found) {  // no usable surface: right or not, and no wall to be clean
+            s.right_depth += c.depth_only.score.right;
+            s.right_colour += c.with_colour.score.right;
+            continue;
+        }
+        ++s.with_best;
         count(c.depth_only, s.right_depth, s.found_depth, s.clean_depth, s.worst_share_depth, ratio_depth);
         count(c.with_colour, s.right_colour, s.found_colour, s.clean_colour, s.worst_share_colour, ratio_colour);
-        if (f.label.colour.best.found) ++s.with_best;
     }
     s.median_ratio_depth = median(ratio_depth);
     s.median_ratio_colour = median(ratio_colour);
@@ -214,11 +218,11 @@ std::string colourSummaryLine(const ColourSummary &s) {
     char buf[400];
     std::snprintf(buf, sizeof buf,
                   "labelled real frames with colour: %d judged (%d with registered colour); right %d with colour, %d "
-                  "depth only; on clean wall (<= 2 %% over unsuitable) %d of %d found with colour, %d of %d depth "
-                  "only; area / colour best median %.2f with colour, %.2f depth only (%d with a best, invalid = 0); "
+                  "depth only; of the %d with a usable surface, on clean wall (found, <= 2 %% over unsuitable) %d with "
+                  "colour, %d depth only; area / colour best median %.2f with colour, %.2f depth only (invalid = 0); "
                   "worst share over unsuitable %.1f %% with colour, %.1f %% depth only",
-                  s.judged, s.colour_used, s.right_colour, s.right_depth, s.clean_colour, s.found_colour,
-                  s.clean_depth, s.found_depth, s.median_ratio_colour, s.median_ratio_depth, s.with_best,
+                  s.judged, s.colour_used, s.right_colour, s.right_depth, s.with_best, s.clean_colour, s.clean_depth,
+                  s.median_ratio_colour, s.median_ratio_depth,
                   100.0 * s.worst_share_colour, 100.0 * s.worst_share_depth);
     return buf;
 }

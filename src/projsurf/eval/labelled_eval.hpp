@@ -66,11 +66,11 @@ struct ColourSummary {
     int judged = 0;       ///< frames whose label has a colour section
     int colour_used = 0;  ///< of them, with registered colour
     int right_depth = 0, right_colour = 0;
+    int with_best = 0;  ///< judged frames with a colour best (a usable surface); the rest count below only:
     int found_depth = 0, found_colour = 0;
     int clean_depth = 0, clean_colour = 0;  ///< found and <= 2 % over unsuitable polygons
     double median_ratio_depth = 0.0, median_ratio_colour = 0.0;  ///< area / colour best (invalid = 0)
     double worst_share_depth = 0.0, worst_share_colour = 0.0;    ///< largest share over unsuitable polygons
-    int with_best = 0;                                           ///< frames with a colour best
 };
 
 /// Seeds for the stability check: 1-5 and 42 (the default).
@@ -87,8 +87,8 @@ LabelledSummary summariseLabelled(const std::vector<LabelledFrame> &frames);
 std::string labelledSummaryLine(const LabelledSummary &summary);
 
 ColourSummary summariseColour(const std::vector<LabelledFrame> &frames);
-/// "labelled real frames with colour: 15 judged (15 with registered colour); right 9 with colour,
-/// 8 depth only; on clean wall (<= 2 %) ...".
+/// "labelled real frames with colour: 15 judged (14 with registered colour); right 9 with colour,
+/// 9 depth only; of the 11 with a usable surface, on clean wall ... 11 with colour, 11 depth only; ...".
 std::string colourSummaryLine(const ColourSummary &summary);
 /// The colour table (Markdown; part of labelledReportMarkdown when any frame is judged).
 std::string colourReportMarkdown(const std::vector<LabelledFrame> &frames, const std::string &pictures);
