@@ -89,10 +89,13 @@ ColourRun runWithColour(const LabelledFrame &f, const std::string &dir, const Ca
                                            c.detection.found ? &c.detection.rectangle : nullptr,
                                            f.detection.found ? &f.detection.rectangle : nullptr);
     std::string caption = f.name + ": ";
-    if (!c.colour_used) caption += "colour not used, ";
-    caption += c.detection.found ? fmt("%.3f m^2", c.detection.area) + fmt(", %.0f %% unsuitable", 100.0 * c.with_colour.unsuitable_share) +
-                                       fmt(" (depth only %.0f %%)", 100.0 * c.depth_only.unsuitable_share)
-                                 : std::string("nothing found");
+    if (!c.detection.found)
+        caption += "nothing found";
+    else
+        caption += fmt("%.3f m^2", c.detection.area) +
+                   fmt(", %.0f %% unsuitable", 100.0 * c.with_colour.unsuitable_share) +
+                   (c.colour_used ? fmt(" (depth only %.0f %%)", 100.0 * c.depth_only.unsuitable_share)
+                                  : std::string(" (colour not used)"));
     caption += f.label.colour.best.found ? ", best " + fmt("%.3f", f.label.colour.best.area()) : ", no usable surface";
     c.overlay = withCaption(img, caption, 0.45);
     return c;
