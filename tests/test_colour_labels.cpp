@@ -5,8 +5,10 @@
 
 #include <unistd.h>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "projsurf/eval/label_reference.hpp"
@@ -244,4 +246,46 @@ TEST(ColourLabelSuite, StoredColourBestIsTheReference) {
         EXPECT_LE(unsuitableShare(label, camera, asRectangle(stored)), 0.02);
     }
     EXPECT_GT(judged, 0);
+}
+
+// The eval's colour run is what `projsurf detect --rgb --suitability avoid` gives with the
+// label's projector and gravity (the command it reports, run, gives the same rectangle), and both
+// answers are scored against the colour-aware label.
+TEST(ColourLabelSuite, EvalDetectsWithColourAsTheCliDoes) {
+    const std::string real = std::string(PROJSURF_SHARED_DIR) + "/data/real";
+    if (!fs::is_directory(real)) GTEST_SKIP() << real << " is not here (the real frames stay in ../shared)";
+    const fs::path dir = freshDir("cli_same");
+    const std::string frame = "nyu_rgbdtut_cafe_counter";
+    const std::string label = std::string(PROJSURF_SOURCE_DIR) + "/labels/real/" + frame + ".yaml";
+    const LabelledFrame f = evaluateLabelledFrame(label, real, DetectorConfig{}, {});
+    const ColourRun &c = f.colour;
+    ASSERT_TRUE(c.judged);
+    ASSERT_TRUE(c.colour_used) << c.colour_note;
+    ASSERT_TRUE(c.detection.found);
+    EXPECT_FALSE(c.overlay.empty());
+    const CameraIntrinsics camera = readCamera(real + "/" + frame + "/camera.yaml");
+    const ColourScore again = scoreColourRectangle(f.label, camera, true, c.detection.rectangle);
+    EXPECT_EQ(again.score.right, c.with_colour.score.right);
+    EXPECT_EQ(again.unsuitable_share, c.with_colour.unsuitable_share);
+    EXPECT_EQ(scoreColourRectangle(f.label, camera, true, f.detection.rectangle).unsuitable_share,
+              c.depth_only.unsuitable_share);
+    ASSERT_NE(c.command.find(" --rgb "), std::string::npos) << c.command;
+    const fs::path json = dir / "colour.json";
+    const std::string cmd = std::string(PROJSURF_CLI) + c.command.substr(std::string("projsurf").size()) + " --json " +
+                            json.string() + " >/dev/null 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    std::ifstream in(json);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    ASSERT_TRUE(j["found"].get<bool>());
+    EXPECT_EQ(j["suitability"]["mode"].get<std::string>(), "avoid");
+    for (int k = 0; k < 4; ++k)
+        for (int a = 0; a < 3; ++a)
+            EXPECT_NEAR(j["rectangle"]["corners"][k][a].get<double>(), c.detection.rectangle.corners[k][a], 1e-4)
+                << "corner " << k;
+    // The report has the colour table and its summary line.
+    const std::string md = labelledReportMarkdown({f}, "labels/real", "labels");
+    EXPECT_NE(md.find("### With colour (issue 15)"), std::string::npos);
+    EXPECT_NE(md.find(colourSummaryLine(summariseColour({f}))), std::string::npos);
+    EXPECT_NE(md.find("](labels/" + frame + "_colour.png)"), std::string::npos);
+    fs::remove_all(dir);
 }
