@@ -7,6 +7,9 @@ Drawing lines:  N <note>
                 G gx,gy,gz                       (gravity stated by hand)
                 S <surface>/<region>|x,y x,y ...  (a region of a usable surface, depth pixels)
                 O <obstacle>|x,y x,y ...          (an obstacle, as drawn)
+                C <colour note>                   (judged on the registered rgb.png: writes a colour section)
+                U <name>|<why>|x,y x,y ...        (unsuitable by its colour although depth calls it free;
+                                                   why: textured, dark, saturated or glare)
 usage: apply_drawn.py <drawn.txt> <label.yaml>
 """
 import re
@@ -21,6 +24,7 @@ def main(drawn, label):
     text = open(label).read()
     frame = re.search(r'^frame: (.*)$', text, re.M).group(1)
     surfaces, order, obstacles, note, gravity = {}, [], [], None, None
+    colour_note, unsuitable = None, []
     for line in open(drawn):
         line = line.rstrip('\n')
         if not line.strip():
@@ -30,6 +34,11 @@ def main(drawn, label):
             note = rest
         elif kind == 'G':
             gravity = rest
+        elif kind == 'C':
+            colour_note = rest
+        elif kind == 'U':
+            name, why, points = rest.split('|')
+            unsuitable.append((name, why, polygon(points)))
         else:
             name, points = rest.split('|')
             if kind == 'S':
@@ -50,8 +59,18 @@ def main(drawn, label):
     out += 'obstacles:\n' + ('' if obstacles else '  []\n')
     for name, poly in obstacles:
         out += '  - name: %s\n    polygon: %s\n' % (name, poly)
-    text = re.sub(r'surfaces:\n.*', out + 'best:\n  found: false\n', text, flags=re.S)
-    text = re.sub(r'note: .*\n', '', text)
+    if unsuitable and colour_note is None:
+        sys.exit('%s: U lines need a C line (the colour judgement)' % drawn)
+    if colour_note is not None:
+        out_colour = 'colour:\n  note: "%s"\n  unsuitable:%s\n' % (colour_note.replace('"', "'"),
+                                                                    '' if unsuitable else ' []')
+        for name, why, poly in unsuitable:
+            out_colour += '    - name: %s\n      why: %s\n      polygon: %s\n' % (name, why, poly)
+        out_colour += '  best:\n    found: false\n'
+    else:
+        out_colour = ''
+    text = re.sub(r'surfaces:\n.*', out + 'best:\n  found: false\n' + out_colour, text, flags=re.S)
+    text = re.sub(r'^note: .*\n', '', text, flags=re.M)
     if note:
         text = text.replace('frame: %s\n' % frame, 'frame: %s\nnote: "%s"\n' % (frame, note.replace('"', "'")), 1)
     if gravity:

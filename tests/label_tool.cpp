@@ -8,7 +8,9 @@
 //                   depth shows inside it: readings more than 2.5 cm in front of the plane of the
 //                   surface whose regions hold the pixel (else the nearest plane), or no reading (closed 5x5, grown by
 //                   3 px within the box, pieces of >= 20 px)
-//          then fits the surfaces, recomputes the reference best rectangle and writes the label.
+//          then fits the surfaces, recomputes the reference best rectangle (and, when the label has a
+//          colour section, the colour-aware best: the unsuitable polygons as further obstacles) and
+//          writes the label.
 //   baseline <real_dir> <labels_dir> [margin]  prints the regression baseline (labels/baseline.yaml):
 //          today's detector per frame, right or not, and its area ratio minus `margin` (default 0.05),
 //          at most 0.90 (the target)
@@ -254,6 +256,7 @@ int main(int argc, char **argv) {
             refineObstacles(l, cloud, refine);
             l.best = referenceBest(cloud, cam, l);
         }
+        if (l.colour.judged) l.colour.best = colourReferenceBest(cam, l);
         for (const auto &s : l.surfaces) {
             if (!s.has_plane) {
                 std::printf("surface %s: no plane\n", s.name.c_str());
@@ -270,6 +273,12 @@ int main(int argc, char **argv) {
                         l.best.area());
         else
             std::printf("best: none\n");
+        if (l.colour.judged && l.colour.best.found)
+            std::printf("colour best on %s: %.3f x %.3f m = %.4f m^2 (%zu unsuitable polygons)\n",
+                        l.colour.best.surface.c_str(), l.colour.best.width, l.colour.best.height,
+                        l.colour.best.area(), l.colour.unsuitable.size());
+        else if (l.colour.judged)
+            std::printf("colour best: none\n");
         writeRealLabel(file, l);
         if (!residual.empty()) {
             // Distance of every reading to the planes of the surfaces (nearest): grey within

@@ -204,6 +204,7 @@ void run(const EvalOptions &o, const std::string &command) {
     std::printf("%s\n", sim::realisticSuiteSummary(realistic).c_str());
     std::printf("%s\n", sim::colourSuiteSummary(colour).c_str());
     if (!labelled.empty()) std::printf("%s\n", labelledSummaryLine(summariseLabelled(labelled)).c_str());
+    if (summariseColour(labelled).judged > 0) std::printf("%s\n", colourSummaryLine(summariseColour(labelled)).c_str());
     if (!o.quick) runProjectorTable(o);
 }
 

@@ -9,6 +9,8 @@
 namespace projsurf {
 namespace {
 
+const cv::Scalar kUnsuitable{0, 150, 255};  ///< BGR orange: unsuitable by its colour
+
 std::vector<cv::Point> toPoints(const std::vector<Eigen::Vector2d> &px) {
     std::vector<cv::Point> out;
     for (const auto &p : px)
@@ -61,6 +63,8 @@ cv::Mat renderLabelOverlay(const cv::Mat &background, const RealLabel &label, co
             cv::fillPoly(tint, std::vector<std::vector<cv::Point>>{toPoints(r.pixels)}, {60, 200, 60});
     for (const auto &o : label.obstacles)
         cv::fillPoly(tint, std::vector<std::vector<cv::Point>>{toPoints(o.pixels)}, {40, 40, 230});
+    for (const auto &u : label.colour.unsuitable)
+        cv::fillPoly(tint, std::vector<std::vector<cv::Point>>{toPoints(u.polygon.pixels)}, kUnsuitable);
     cv::addWeighted(img, 1.0 - tint_alpha, tint, tint_alpha, 0.0, img);
     for (const auto &s : label.surfaces)
         for (const auto &r : s.regions) {
@@ -72,6 +76,13 @@ cv::Mat renderLabelOverlay(const cv::Mat &background, const RealLabel &label, co
         }
     for (const auto &o : label.obstacles)
         cv::polylines(img, std::vector<std::vector<cv::Point>>{toPoints(o.pixels)}, true, {0, 0, 255}, 1, cv::LINE_AA);
+    for (const auto &u : label.colour.unsuitable) {
+        cv::polylines(img, std::vector<std::vector<cv::Point>>{toPoints(u.polygon.pixels)}, true, kUnsuitable, 1,
+                      cv::LINE_AA);
+        if (!u.polygon.pixels.empty())
+            cv::putText(img, u.why, toPoints({u.polygon.pixels[0]})[0] + cv::Point(3, 12), cv::FONT_HERSHEY_SIMPLEX,
+                        0.4, kUnsuitable, 1, cv::LINE_AA);
+    }
     // Projector footprint on the surface of the best rectangle.
     for (const auto &s : label.surfaces) {
         if (!s.has_plane || (label.best.found && s.name != label.best.surface)) continue;
@@ -91,6 +102,29 @@ cv::Mat renderLabelOverlay(const cv::Mat &background, const RealLabel &label, co
     }
     if (label.best.found) quad3(img, camera, label.best.corners, {255, 120, 0}, 2);
     if (detected) quad3(img, camera, detected->corners, {255, 0, 255}, 2);
+    return img;
+}
+
+cv::Mat renderColourLabelOverlay(const cv::Mat &background, const RealLabel &label, const CameraIntrinsics &camera,
+                                 const Rectangle *with_colour, const Rectangle *depth_only, double tint) {
+    RealLabel l = label;
+    l.best = label.colour.best;
+    cv::Mat img = renderLabelOverlay(background, l, camera, nullptr, tint);
+    if (depth_only) quad3(img, camera, depth_only->corners, {255, 255, 255}, 1);
+    if (with_colour) quad3(img, camera, with_colour->corners, {255, 0, 255}, 2);
+    const std::vector<std::pair<std::string, cv::Scalar>> legend{{"usable", {0, 230, 0}},
+                                                                 {"obstacle", {0, 0, 255}},
+                                                                 {"unsuitable (colour)", kUnsuitable},
+                                                                 {"colour best", {255, 120, 0}},
+                                                                 {"detector, colour", {255, 0, 255}},
+                                                                 {"detector, depth only", {255, 255, 255}}};
+    int y = img.rows - 8 - 14 * static_cast<int>(legend.size() - 1);
+    for (const auto &[text, colour] : legend) {
+        cv::rectangle(img, {6, y - 9}, {16, y + 1}, colour, cv::FILLED);
+        cv::putText(img, text, {21, y}, cv::FONT_HERSHEY_SIMPLEX, 0.38, {0, 0, 0}, 3, cv::LINE_AA);
+        cv::putText(img, text, {21, y}, cv::FONT_HERSHEY_SIMPLEX, 0.38, colour, 1, cv::LINE_AA);
+        y += 14;
+    }
     return img;
 }
 

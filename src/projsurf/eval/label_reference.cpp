@@ -188,4 +188,22 @@ LabelBest referenceBest(const Cloud &cloud, const CameraIntrinsics &cam, RealLab
     return best;
 }
 
+RealLabel colourAwareLabel(const RealLabel &label) {
+    RealLabel l = label;
+    for (const auto &u : label.colour.unsuitable) l.obstacles.push_back(u.polygon);
+    l.best = label.colour.best;
+    return l;
+}
+
+LabelBest colourReferenceBest(const CameraIntrinsics &cam, const RealLabel &label, double cell) {
+    const RealLabel l = colourAwareLabel(label);
+    LabelBest best;
+    for (int s = 0; s < static_cast<int>(l.surfaces.size()); ++s) {
+        if (!l.surfaces[s].has_plane) continue;
+        const LabelBest b = bestRectangleOnSurface(l, cam, s, l.surfaces[s].plane, cell);
+        if (b.found && b.area() > best.area()) best = b;
+    }
+    return best;
+}
+
 }  // namespace projsurf

@@ -42,4 +42,12 @@ LabelBest bestRectangleOnSurface(const RealLabel &label, const CameraIntrinsics 
 /// Fits every surface (stores the planes in `label`) and returns the best rectangle over all.
 LabelBest referenceBest(const Cloud &cloud, const CameraIntrinsics &camera, RealLabel &label, double cell = 0.0025);
 
+/// The label with its colour-unsuitable polygons added to the obstacles (colour.best as its
+/// best): what a colour-aware answer is scored against.
+RealLabel colourAwareLabel(const RealLabel &label);
+
+/// The colour-aware best (issue 15): the same search as referenceBest, on the surfaces' planes
+/// as fitted by it (call referenceBest first), with the unsuitable polygons as further obstacles.
+LabelBest colourReferenceBest(const CameraIntrinsics &camera, const RealLabel &label, double cell = 0.0025);
+
 }  // namespace projsurf

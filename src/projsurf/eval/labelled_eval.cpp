@@ -9,6 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "projsurf/core/colour_registration.hpp"
 #include "projsurf/eval/label_overlay.hpp"
 #include "projsurf/eval/plot.hpp"
 #include "projsurf/io/cloud_io.hpp"
@@ -38,6 +39,66 @@ double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     const std::size_t n = v.size();
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::string pct(double share) { return fmt("%.1f", 100.0 * share); }
+
+/// The detector with the frame's registered colour (as `detect --rgb --suitability avoid`: the
+/// colour is used only when checkColourRegistration does not reject it), scored with the
+/// depth-only answer against the colour-aware label.
+ColourRun runWithColour(const LabelledFrame &f, const std::string &dir, const CameraIntrinsics &camera,
+                        const Cloud &depth_cloud, const DetectorConfig &config, const cv::Mat &background) {
+    ColourRun c;
+    c.judged = true;
+    c.depth_only = scoreColourRectangle(f.label, camera, f.detection.found, f.detection.rectangle);
+    const std::string rgb = dir + "/rgb.png";
+    Cloud cloud = depth_cloud;
+    std::error_code ec;
+    if (!fs::exists(rgb, ec)) {
+        c.colour_note = "no registered rgb.png";
+    } else {
+        const cv::Mat colour = readImage(rgb, cv::IMREAD_COLOR);
+        const RegistrationResult r = checkColourRegistration(cloud, colour);
+        if (r.checked && !r.registered)
+            c.colour_note = "not registered to the depth (" + r.summary() + ")";
+        else if (!attachColour(cloud, colour))
+            c.colour_note = "not the depth image's size";
+        else
+            c.colour_used = true;
+    }
+    c.command = f.command + " --rgb " + rgb + " --suitability avoid";
+    if (c.colour_used) {
+        DetectorConfig cfg = config;
+        cfg.suitability.mode = SuitabilityMode::Avoid;
+        const Detection det = detectSurface(cloud, f.label.projector, cfg, f.label.gravity);
+        c.detection.name = f.name;
+        c.detection.read = true;
+        c.detection.found = det.found;
+        c.detection.reason = det.reason;
+        if (det.found) {
+            c.detection.rectangle = det.rectangle;
+            c.detection.width = det.rectangle.width;
+            c.detection.height = det.rectangle.height;
+            c.detection.area = det.rectangle.area();
+        }
+    } else {
+        c.detection = f.detection;
+    }
+    c.with_colour = scoreColourRectangle(f.label, camera, c.detection.found, c.detection.rectangle);
+    cv::Mat img = renderColourLabelOverlay(background, f.label, camera,
+                                           c.detection.found ? &c.detection.rectangle : nullptr,
+                                           f.detection.found ? &f.detection.rectangle : nullptr);
+    std::string caption = f.name + ": ";
+    if (!c.detection.found)
+        caption += "nothing found";
+    else
+        caption += fmt("%.3f m^2", c.detection.area) +
+                   fmt(", %.0f %% unsuitable", 100.0 * c.with_colour.unsuitable_share) +
+                   (c.colour_used ? fmt(" (depth only %.0f %%)", 100.0 * c.depth_only.unsuitable_share)
+                                  : std::string(" (colour not used)"));
+    caption += f.label.colour.best.found ? ", best " + fmt("%.3f", f.label.colour.best.area()) : ", no usable surface";
+    c.overlay = withCaption(img, caption, 0.45);
+    return c;
 }
 
 }  // namespace
@@ -96,6 +157,7 @@ LabelledFrame evaluateLabelledFrame(const std::string &label_path, const std::st
         caption += fmt("%.3f m^2", f.score.area) + (f.score.valid ? ", valid" : ", INVALID (" + f.score.why + ")");
     caption += f.label.best.found ? ", label best " + fmt("%.3f m^2", f.label.best.area()) : ", no usable surface";
     f.overlay = withCaption(img, caption, 0.45);
+    if (f.label.colour.judged) f.colour = runWithColour(f, dir, camera, cloud, cfg, background);
     return f;
 }
 
@@ -123,6 +185,103 @@ std::string labelledSummaryLine(const LabelledSummary &s) {
                   "rectangle, invalid = 0); seed-stable %d of %d",
                   s.right, s.frames, s.median_ratio, s.worst_ratio, s.with_best, s.seed_stable, s.frames);
     return buf;
+}
+
+ColourSummary summariseColour(const std::vector<LabelledFrame> &frames) {
+    ColourSummary s;
+    std::vector<double> ratio_depth, ratio_colour;
+    for (const auto &f : frames) {
+        const ColourRun &c = f.colour;
+        if (!c.judged) continue;
+        ++s.judged;
+        if (c.colour_used) ++s.colour_used;
+        const auto count = [](const ColourScore &a, int &right, int &found, int &clean, double &worst,
+                              std::vector<double> &ratios) {
+            right += a.score.right;
+            found += a.score.found;
+            clean += a.clean();
+            worst = std::max(worst, a.unsuitable_share);
+            if (a.score.has_best) ratios.push_back(a.score.ratio);
+        };
+        if (!f.label.colour.best.found) {  // no usable surface: right or not, and no wall to be clean
+            s.right_depth += c.depth_only.score.right;
+            s.right_colour += c.with_colour.score.right;
+            continue;
+        }
+        ++s.with_best;
+        count(c.depth_only, s.right_depth, s.found_depth, s.clean_depth, s.worst_share_depth, ratio_depth);
+        count(c.with_colour, s.right_colour, s.found_colour, s.clean_colour, s.worst_share_colour, ratio_colour);
+    }
+    s.median_ratio_depth = median(ratio_depth);
+    s.median_ratio_colour = median(ratio_colour);
+    return s;
+}
+
+std::string colourSummaryLine(const ColourSummary &s) {
+    char buf[400];
+    std::snprintf(buf, sizeof buf,
+                  "labelled real frames with colour: %d judged (%d with registered colour); right %d with colour, %d "
+                  "depth only; of the %d with a usable surface, on clean wall (found, <= 2 %% over unsuitable) %d with "
+                  "colour, %d depth only; area / colour best median %.2f with colour, %.2f depth only (invalid = 0); "
+                  "worst share over unsuitable %.1f %% with colour, %.1f %% depth only",
+                  s.judged, s.colour_used, s.right_colour, s.right_depth, s.with_best, s.clean_colour, s.clean_depth,
+                  s.median_ratio_colour, s.median_ratio_depth,
+                  100.0 * s.worst_share_colour, 100.0 * s.worst_share_depth);
+    return buf;
+}
+
+std::string colourReportMarkdown(const std::vector<LabelledFrame> &frames, const std::string &pictures) {
+    const ColourSummary s = summariseColour(frames);
+    std::ostringstream md;
+    if (s.judged == 0) return md.str();
+    md << "### With colour (issue 15)\n\n"
+          "The labels of the frames with a registered `rgb.png` also name what the picture should not be shown on "
+          "although depth calls it free (orange; `labels/README.md`, section *Colour*); the colour-aware best (blue) "
+          "is the reference's search with those polygons as further obstacles. The detector runs once more with "
+          "the frame's colour (as `detect --rgb <frame>/rgb.png --suitability avoid`; the colour is used only when "
+          "the registration check passes), its rectangle in magenta, the depth-only answer above in white. Both "
+          "are scored against the colour-aware label: *right* and *ratio* (area / colour best) as above, and the "
+          "share of the rectangle's area over unsuitable polygons (issue 15's target: ≤ 2 %).\n\n";
+    md << "**" << colourSummaryLine(s) << ".**\n\n";
+    md << "| Frame | colour | colour best (m²) | unsuitable polygons | depth only: m² | ratio | right | % unsuitable | "
+          "with colour: m² | ratio | right | % unsuitable | why not (with colour) |\n"
+          "|---|---|---:|---:|---:|---:|---|---:|---:|---:|---|---:|---|\n";
+    for (const auto &f : frames) {
+        const ColourRun &c = f.colour;
+        if (!c.judged) continue;
+        md << "| [" << f.name << "](" << pictures << "/" << f.name << "_colour.png) | "
+           << (c.colour_used ? "used" : "not used: " + c.colour_note) << " | "
+           << (f.label.colour.best.found ? fmt("%.3f", f.label.colour.best.area()) : "none") << " | "
+           << f.label.colour.unsuitable.size() << " | ";
+        for (const ColourScore *a : {&c.depth_only, &c.with_colour})
+            md << (a->score.found ? fmt("%.3f", a->score.area) : "—") << " | "
+               << (a->score.has_best ? fmt("%.2f", a->score.ratio) : "") << " | "
+               << (a->score.right ? "yes" : "**no**") << " | "
+               << (a->score.found ? pct(a->unsuitable_share) + (a->clean() ? "" : " ✗") : "") << " | ";
+        md << (c.with_colour.score.right ? "" : c.with_colour.score.why) << " |\n";
+    }
+    md << "\n✗ = more than 2 % of the rectangle over unsuitable polygons. Command with colour: `projsurf detect "
+          "--depth <frame>/depth.png --camera <frame>/camera.yaml --calib <label file> --gravity <label gravity> "
+          "--rgb <frame>/rgb.png --suitability avoid`.\n\n";
+    return md.str();
+}
+
+std::string colourCsv(const std::vector<LabelledFrame> &frames) {
+    std::ostringstream csv;
+    csv << "frame,colour_used,colour_best_m2,unsuitable_polygons,depth_area_m2,depth_ratio,depth_right,depth_unsuitable,"
+           "colour_area_m2,colour_ratio,colour_right,colour_unsuitable,why\n";
+    for (const auto &f : frames) {
+        const ColourRun &c = f.colour;
+        if (!c.judged) continue;
+        csv << f.name << "," << (c.colour_used ? "yes" : "no") << ","
+            << (f.label.colour.best.found ? fmt("%.4f", f.label.colour.best.area()) : "") << ","
+            << f.label.colour.unsuitable.size();
+        for (const ColourScore *a : {&c.depth_only, &c.with_colour})
+            csv << "," << (a->score.found ? fmt("%.4f", a->score.area) : "") << "," << fmt("%.4f", a->score.ratio)
+                << "," << (a->score.right ? "yes" : "no") << "," << fmt("%.4f", a->unsuitable_share);
+        csv << ",\"" << c.with_colour.score.why << "\"\n";
+    }
+    return csv.str();
 }
 
 std::string labelledReportMarkdown(const std::vector<LabelledFrame> &frames, const std::string &labels_dir,
@@ -166,6 +325,7 @@ std::string labelledReportMarkdown(const std::vector<LabelledFrame> &frames, con
     md << "\n✗ = not right on that seed. Commands: `projsurf detect --depth <frame>/depth.png --camera "
           "<frame>/camera.yaml --calib <label file> --gravity <label gravity> --seed <s>` (the label file holds the "
           "projector block of a calibration file).\n\n";
+    md << colourReportMarkdown(frames, pictures);
     return md.str();
 }
 
@@ -188,8 +348,12 @@ void writeLabelledPictures(const std::string &dir, const std::vector<LabelledFra
     std::error_code ec;
     fs::create_directories(dir, ec);
     writeFileAtomic((fs::path(dir) / "results.csv").string(), labelledCsv(frames));
+    if (summariseColour(frames).judged > 0)
+        writeFileAtomic((fs::path(dir) / "colour_results.csv").string(), colourCsv(frames));
     std::vector<cv::Mat> panels;
     for (const auto &f : frames) {
+        if (!f.colour.overlay.empty())
+            writeImageAtomic((fs::path(dir) / (f.name + "_colour.png")).string(), f.colour.overlay);
         if (f.overlay.empty()) continue;
         writeImageAtomic((fs::path(dir) / (f.name + ".png")).string(), f.overlay);
         cv::Mat thumb;

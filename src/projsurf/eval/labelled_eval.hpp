@@ -2,7 +2,10 @@
 // The labelled real-frame suite: the detector run on every labelled frame with the label's
 // projector and gravity (as `projsurf detect --depth <frame>/depth.png --camera
 // <frame>/camera.yaml --calib <label> --gravity gx,gy,gz` would), scored against the label,
-// once per seed for stability, with a picture of label and answer per frame.
+// once per seed for stability, with a picture of label and answer per frame. For the labels
+// judged on colour (issue 15), the detector also runs with the frame's registered colour
+// (as `detect --rgb <frame>/rgb.png --suitability avoid`), and both answers are scored against
+// the colour-aware label.
 #include <string>
 #include <vector>
 
@@ -22,6 +25,18 @@ struct SeedRun {
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
 };
 
+/// The colour part of a frame whose label has a `colour:` section.
+struct ColourRun {
+    bool judged = false;       ///< the label has a colour section (nothing else is set otherwise)
+    bool colour_used = false;  ///< rgb.png read and registered to the depth (checkColourRegistration)
+    std::string colour_note;   ///< why the colour was not used ("" when it was)
+    GalleryEntry detection;    ///< with colour, suitability avoid (the depth-only one when not used)
+    ColourScore depth_only;    ///< LabelledFrame::detection against the colour-aware label
+    ColourScore with_colour;   ///< `detection` against it
+    std::string command;       ///< the equivalent `projsurf detect` command line
+    cv::Mat overlay;           ///< BGR: renderColourLabelOverlay
+};
+
 struct LabelledFrame {
     std::string name;  ///< frame folder name
     std::string label_path;
@@ -34,6 +49,7 @@ struct LabelledFrame {
     bool seed_same_validity = true;
     std::string command;  ///< the equivalent `projsurf detect` command line
     cv::Mat overlay;      ///< BGR: label polygons, label best (blue), detector (magenta)
+    ColourRun colour;
 };
 
 struct LabelledSummary {
@@ -42,6 +58,19 @@ struct LabelledSummary {
     int with_best = 0;                             ///< frames whose label has a best rectangle
     double median_ratio = 0.0, worst_ratio = 0.0;  ///< over frames with a best (invalid = 0)
     int seed_stable = 0;                           ///< spread <= 2 % and the same validity on every seed
+};
+
+/// Over the frames judged on colour: how often each answer is right against the colour-aware
+/// label and lands on clean wall (<= 2 % over unsuitable polygons).
+struct ColourSummary {
+    int judged = 0;       ///< frames whose label has a colour section
+    int colour_used = 0;  ///< of them, with registered colour
+    int right_depth = 0, right_colour = 0;
+    int with_best = 0;  ///< judged frames with a colour best (a usable surface); the rest count below only:
+    int found_depth = 0, found_colour = 0;
+    int clean_depth = 0, clean_colour = 0;  ///< found and <= 2 % over unsuitable polygons
+    double median_ratio_depth = 0.0, median_ratio_colour = 0.0;  ///< area / colour best (invalid = 0)
+    double worst_share_depth = 0.0, worst_share_colour = 0.0;    ///< largest share over unsuitable polygons
 };
 
 /// Seeds for the stability check: 1-5 and 42 (the default).
@@ -57,13 +86,24 @@ LabelledSummary summariseLabelled(const std::vector<LabelledFrame> &frames);
 /// rectangle); seed-stable 19 of 23".
 std::string labelledSummaryLine(const LabelledSummary &summary);
 
+ColourSummary summariseColour(const std::vector<LabelledFrame> &frames);
+/// "labelled real frames with colour: 15 judged (14 with registered colour); right 9 with colour,
+/// 9 depth only; of the 11 with a usable surface, on clean wall ... 11 with colour, 11 depth only; ...".
+std::string colourSummaryLine(const ColourSummary &summary);
+/// The colour table (Markdown; part of labelledReportMarkdown when any frame is judged).
+std::string colourReportMarkdown(const std::vector<LabelledFrame> &frames, const std::string &pictures);
+
 /// The report section (Markdown); pictures are linked as `<pictures>/<frame>.png`.
 std::string labelledReportMarkdown(const std::vector<LabelledFrame> &frames, const std::string &labels_dir,
                                    const std::string &pictures);
 /// One line per frame: frame, label best, detector area, ratio, right, free share, seed areas,
 /// spread (CSV with a header line).
 std::string labelledCsv(const std::vector<LabelledFrame> &frames);
-/// Writes dir/<frame>.png per frame, dir/contact_sheet.png and dir/results.csv; `dir` is created.
+/// The frames judged on colour: frame, colour used, colour best, per answer (depth only, with
+/// colour): area, ratio, right, share over unsuitable polygons (CSV with a header line).
+std::string colourCsv(const std::vector<LabelledFrame> &frames);
+/// Writes dir/<frame>.png per frame, dir/contact_sheet.png and dir/results.csv, and for the
+/// frames judged on colour dir/<frame>_colour.png and dir/colour_results.csv; `dir` is created.
 void writeLabelledPictures(const std::string &dir, const std::vector<LabelledFrame> &frames);
 
 }  // namespace projsurf

@@ -72,7 +72,44 @@ YAML::Node polygonNode(const LabelPolygon &p) {
     return n;
 }
 
+LabelBest readBest(const Reader &r, const YAML::Node &b, const std::string &key, const RealLabel &l) {
+    LabelBest best;
+    try {
+        best.found = r.need(b, "found", key + ".").as<bool>();
+    } catch (const YAML::Exception &) {
+        r.fail("'" + key + ".found' must be true or false");
+    }
+    if (!best.found) return best;
+    best.surface = r.text(r.need(b, "surface", key + "."), key + ".surface");
+    if (std::none_of(l.surfaces.begin(), l.surfaces.end(),
+                     [&](const LabelSurface &s) { return s.name == best.surface; }))
+        r.fail("'" + key + ".surface' names no surface: '" + best.surface + "'");
+    best.width = r.number(r.need(b, "width", key + "."), key + ".width");
+    best.height = r.number(r.need(b, "height", key + "."), key + ".height");
+    if (!(best.width > 0 && best.height > 0))
+        r.fail("'" + key + ".width' and '" + key + ".height' must be positive");
+    const YAML::Node c = r.need(b, "corners", key + ".");
+    if (!c.IsSequence() || c.size() != 4) r.fail("'" + key + ".corners' must be a list of 4 [x, y, z] points");
+    for (int k = 0; k < 4; ++k) best.corners[k] = r.vector3(c[k], key + ".corners");
+    return best;
+}
+
+void writeBest(YAML::Node node, const LabelBest &b) {
+    node["found"] = b.found;
+    if (!b.found) return;
+    node["surface"] = b.surface;
+    node["width"] = num(b.width);
+    node["height"] = num(b.height);
+    node["area"] = num(b.area());  // for the reader's eye; not read back
+    for (const auto &c : b.corners) node["corners"].push_back(flow({c.x(), c.y(), c.z()}));
+}
+
 }  // namespace
+
+const std::vector<std::string> &unsuitableReasons() {
+    static const std::vector<std::string> reasons{"textured", "dark", "saturated", "glare"};
+    return reasons;
+}
 
 RealLabel readRealLabel(const std::string &path) {
     requireReadable(path);
@@ -128,25 +165,25 @@ RealLabel readRealLabel(const std::string &path) {
         for (std::size_t i = 0; i < obstacles.size(); ++i)
             l.obstacles.push_back(r.polygon(obstacles[i], "obstacles[" + std::to_string(i) + "]"));
     }
-    if (root["best"]) {
-        const YAML::Node b = root["best"];
-        try {
-            l.best.found = r.need(b, "found", "best.").as<bool>();
-        } catch (const YAML::Exception &) {
-            r.fail("'best.found' must be true or false");
+    if (root["best"]) l.best = readBest(r, root["best"], "best", l);
+    if (root["colour"]) {
+        const YAML::Node c = root["colour"];
+        if (!c.IsMap()) r.fail("'colour' must be a mapping with 'unsuitable' (a list, empty when nothing is)");
+        l.colour.judged = true;
+        if (c["note"]) l.colour.note = r.text(c["note"], "colour.note");
+        const YAML::Node u = r.need(c, "unsuitable", "colour.");
+        if (!u.IsSequence()) r.fail("'colour.unsuitable' must be a list (empty when nothing is unsuitable)");
+        for (std::size_t i = 0; i < u.size(); ++i) {
+            const std::string where = "colour.unsuitable[" + std::to_string(i) + "]";
+            LabelUnsuitable item;
+            item.polygon = r.polygon(u[i], where);
+            item.why = r.text(r.need(u[i], "why", where + "."), where + ".why");
+            const auto &ok = unsuitableReasons();
+            if (std::find(ok.begin(), ok.end(), item.why) == ok.end())
+                r.fail("'" + where + ".why' must be one of textured, dark, saturated, glare (got '" + item.why + "')");
+            l.colour.unsuitable.push_back(std::move(item));
         }
-        if (l.best.found) {
-            l.best.surface = r.text(r.need(b, "surface", "best."), "best.surface");
-            if (std::none_of(l.surfaces.begin(), l.surfaces.end(),
-                             [&](const LabelSurface &s) { return s.name == l.best.surface; }))
-                r.fail("'best.surface' names no surface: '" + l.best.surface + "'");
-            l.best.width = r.number(r.need(b, "width", "best."), "best.width");
-            l.best.height = r.number(r.need(b, "height", "best."), "best.height");
-            if (!(l.best.width > 0 && l.best.height > 0)) r.fail("'best.width' and 'best.height' must be positive");
-            const YAML::Node c = r.need(b, "corners", "best.");
-            if (!c.IsSequence() || c.size() != 4) r.fail("'best.corners' must be a list of 4 [x, y, z] points");
-            for (int k = 0; k < 4; ++k) l.best.corners[k] = r.vector3(c[k], "best.corners");
-        }
+        if (c["best"]) l.colour.best = readBest(r, c["best"], "colour.best", l);
     }
     return l;
 }
@@ -175,13 +212,20 @@ void writeRealLabel(const std::string &path, const RealLabel &l) {
     YAML::Node obstacles(YAML::NodeType::Sequence);
     for (const auto &p : l.obstacles) obstacles.push_back(polygonNode(p));
     root["obstacles"] = obstacles;
-    root["best"]["found"] = l.best.found;
-    if (l.best.found) {
-        root["best"]["surface"] = l.best.surface;
-        root["best"]["width"] = num(l.best.width);
-        root["best"]["height"] = num(l.best.height);
-        root["best"]["area"] = num(l.best.area());  // for the reader's eye; not read back
-        for (const auto &c : l.best.corners) root["best"]["corners"].push_back(flow({c.x(), c.y(), c.z()}));
+    writeBest(root["best"], l.best);
+    if (l.colour.judged) {
+        if (!l.colour.note.empty()) root["colour"]["note"] = l.colour.note;
+        YAML::Node unsuitable(YAML::NodeType::Sequence);
+        for (const auto &u : l.colour.unsuitable) {
+            YAML::Node n = polygonNode(u.polygon);
+            YAML::Node item;
+            item["name"] = u.polygon.name;
+            item["why"] = u.why;
+            item["polygon"] = n["polygon"];
+            unsuitable.push_back(item);
+        }
+        root["colour"]["unsuitable"] = unsuitable;
+        writeBest(root["colour"]["best"], l.colour.best);
     }
     YAML::Emitter out;
     out.SetDoublePrecision(6);

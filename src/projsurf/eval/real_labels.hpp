@@ -36,6 +36,22 @@ struct LabelBest {
     double area() const { return width * height; }
 };
 
+/// Something depth calls free that the picture should not be shown on, judged on the registered
+/// colour (issue 15): a framed print, a poster, a screen, a window, a dark panel, a glare spot.
+struct LabelUnsuitable {
+    LabelPolygon polygon;  ///< depth-image pixels, as the obstacles
+    std::string why;       ///< "textured", "dark", "saturated" or "glare" (core/surface_suitability's Unfit)
+};
+
+/// The optional `colour:` section (frames with a registered rgb.png): judged = the section is
+/// there (an empty list then means "looked at, nothing unsuitable").
+struct LabelColour {
+    bool judged = false;
+    std::string note;  ///< what was judged on the colour image, and why
+    std::vector<LabelUnsuitable> unsuitable;
+    LabelBest best;  ///< the reference with the unsuitable polygons as further obstacles
+};
+
 struct RealLabel {
     std::string frame;                    ///< folder name under the real-frame directory
     std::string note;                     ///< what was judged and why
@@ -45,7 +61,11 @@ struct RealLabel {
     std::vector<LabelSurface> surfaces;   ///< empty: no usable wall in this frame
     std::vector<LabelPolygon> obstacles;  ///< in front of / proud of the surfaces, or no reading
     LabelBest best;
+    LabelColour colour;                   ///< not judged when the file has no `colour:` section
 };
+
+/// The reasons a `colour.unsuitable[].why` may give.
+const std::vector<std::string> &unsuitableReasons();
 
 /// Reads a label file; throws InputError naming the file and the key on any problem.
 RealLabel readRealLabel(const std::string &path);

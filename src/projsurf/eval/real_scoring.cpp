@@ -70,4 +70,32 @@ RealScore scoreRealRectangle(const RealLabel &label, const CameraIntrinsics &cam
     return s;
 }
 
+double unsuitableShare(const RealLabel &label, const CameraIntrinsics &camera, const Rectangle &r,
+                       const RealScoreRules &rules) {
+    if (label.colour.unsuitable.empty()) return 0.0;
+    const Eigen::Vector3d across = r.corners[1] - r.corners[0], down = r.corners[3] - r.corners[0];
+    int over = 0;
+    for (int j = 0; j < rules.samples_v; ++j)
+        for (int i = 0; i < rules.samples_u; ++i) {
+            const Eigen::Vector3d p =
+                r.corners[0] + (i + 0.5) / rules.samples_u * across + (j + 0.5) / rules.samples_v * down;
+            if (!(p.z() > 1e-3)) continue;
+            const Eigen::Vector2d px = camera.project(p);
+            for (const auto &u : label.colour.unsuitable)
+                if (insidePolygon(u.polygon.pixels, px)) {
+                    ++over;
+                    break;
+                }
+        }
+    return over / static_cast<double>(rules.samples_u * rules.samples_v);
+}
+
+ColourScore scoreColourRectangle(const RealLabel &label, const CameraIntrinsics &camera, bool found,
+                                 const Rectangle &rectangle, const RealScoreRules &rules) {
+    ColourScore c;
+    c.score = scoreRealRectangle(colourAwareLabel(label), camera, found, rectangle, rules);
+    if (found) c.unsuitable_share = unsuitableShare(label, camera, rectangle, rules);
+    return c;
+}
+
 }  // namespace projsurf

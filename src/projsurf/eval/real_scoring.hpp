@@ -1,7 +1,8 @@
 #pragma once
 // Scoring a detector's rectangle against a real frame's label: is it valid (on a labelled
 // usable surface, upright, at least 95 % of its area free by the labels) and how big is it
-// against the label's best rectangle.
+// against the label's best rectangle; and, for the labels judged on colour, how much of it lies
+// over what the colour makes unsuitable.
 #include <Eigen/Core>
 #include <string>
 
@@ -38,5 +39,21 @@ struct RealScore {
 /// Scores `rectangle` (camera frame; ignored when !found) against the label.
 RealScore scoreRealRectangle(const RealLabel &label, const CameraIntrinsics &camera, bool found,
                              const Rectangle &rectangle, const RealScoreRules &rules = {});
+
+/// Share of `rectangle`'s area (the same sample grid) that the camera sees inside one of the
+/// label's colour-unsuitable polygons (issue 15's target: <= 2 %). 0 without any.
+double unsuitableShare(const RealLabel &label, const CameraIntrinsics &camera, const Rectangle &rectangle,
+                       const RealScoreRules &rules = {});
+
+/// A rectangle against the colour-aware label (colourAwareLabel: the unsuitable polygons are
+/// obstacles, colour.best is the best): right / ratio as scoreRealRectangle, and its share
+/// over the unsuitable polygons.
+struct ColourScore {
+    RealScore score;
+    double unsuitable_share = 0.0;  ///< 0 when nothing was found
+    bool clean() const { return score.found && unsuitable_share <= 0.02; }
+};
+ColourScore scoreColourRectangle(const RealLabel &label, const CameraIntrinsics &camera, bool found,
+                                 const Rectangle &rectangle, const RealScoreRules &rules = {});
 
 }  // namespace projsurf
