@@ -28,11 +28,12 @@ export UBSAN_OPTIONS="log_path=$reports/ubsan:print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp:print_suppressions=0"
 rc=0
 # The end-to-end simulations (the demo, the evaluation, structured-light calibration from
-# rendered captures, the realistic suite, the walk-in and the planned move) run in the Release suite only: under ASan each takes
+# rendered captures, the realistic suite, the walk-in, the planned move) and the recomputation of
+# every colour label's reference run in the Release suite only: under ASan each takes
 # minutes, and the code they run is covered here by the focused tests of each stage.
 slow='Demo|QuickEvalWritesTheReport|EvalSaysWhenTheDefaultRealFramesAreMissing|CalibratesAnOffsetProjectorFromThreeFlatPoses'
 slow+='|SimulatedCapturesCalibrateAnOffsetProjector|RealisticSuite.QuickVariantCoversEveryScene|PersonWalkingIntoTheBeam'
-slow+='|LargestPictureAfterTheMoveIsRealised'
+slow+='|LargestPictureAfterTheMoveIsRealised|StoredColourBestIsTheReference'
 (cd "$tree" && ctest --output-on-failure -j"$(nproc)" --timeout 900 -E "$slow") || rc=$?
 end=$(date +%s)
 if compgen -G "$reports/*" >/dev/null; then

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "label_fixtures.hpp"
 #include "projsurf/eval/label_reference.hpp"
 #include "projsurf/eval/labelled_eval.hpp"
 #include "projsurf/eval/real_labels.hpp"
@@ -21,6 +22,7 @@
 
 using namespace projsurf;
 namespace fs = std::filesystem;
+using namespace projsurf::test;
 
 namespace {
 
@@ -56,39 +58,6 @@ colour:
     found: false
 )";
 
-std::string write(const fs::path &dir, const std::string &name, const std::string &text) {
-    const fs::path p = dir / name;
-    std::ofstream(p) << text;
-    return p.string();
-}
-
-std::string readError(const fs::path &dir, const std::string &text) {
-    try {
-        readRealLabel(write(dir, "bad.yaml", text));
-    } catch (const InputError &e) {
-        return e.what();
-    }
-    return "";
-}
-
-std::string replaced(std::string s, const std::string &from, const std::string &to) {
-    const auto at = s.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) s.replace(at, from.size(), to);
-    return s;
-}
-
-struct SyntheticWall {
-    CameraIntrinsics camera;
-    Cloud cloud;
-    explicit SyntheticWall(double z) {
-        cloud.width = camera.width;
-        cloud.height = camera.height;
-        for (int v = 0; v < camera.height; ++v)
-            for (int u = 0; u < camera.width; ++u) cloud.points.push_back(camera.backProject(u, v, z).cast<float>());
-    }
-};
-
 Rectangle asRectangle(const LabelBest &b) {
     Rectangle r;
     r.corners = b.corners;
@@ -101,7 +70,7 @@ Rectangle asRectangle(const LabelBest &b) {
 
 TEST(ColourLabels, ReadsWritesAndKeepsOldFilesValid) {
     const fs::path dir = freshDir("read");
-    RealLabel l = readRealLabel(write(dir, "good.yaml", kLabel));
+    RealLabel l = readRealLabel(writeLabel(dir, "good.yaml", kLabel));
     ASSERT_TRUE(l.colour.judged);
     EXPECT_EQ(l.colour.note, "a test");
     ASSERT_EQ(l.colour.unsuitable.size(), 1u);
@@ -127,13 +96,14 @@ TEST(ColourLabels, ReadsWritesAndKeepsOldFilesValid) {
     const std::string empty =
         replaced(replaced(kLabel, "    - name: poster on the left half\n      why: textured\n", ""),
                  "      polygon: [[-1, -1], [319.5, -1], [319.5, 481], [-1, 481]]\n", "");
-    const RealLabel e = readRealLabel(write(dir, "empty.yaml", replaced(empty, "  unsuitable:\n", "  unsuitable: []\n")));
+    const RealLabel e =
+        readRealLabel(writeLabel(dir, "empty.yaml", replaced(empty, "  unsuitable:\n", "  unsuitable: []\n")));
     EXPECT_TRUE(e.colour.judged);
     EXPECT_TRUE(e.colour.unsuitable.empty());
     writeRealLabel((dir / "empty_again.yaml").string(), e);
     EXPECT_TRUE(readRealLabel((dir / "empty_again.yaml").string()).colour.judged);
     const std::string old = std::string(kLabel).substr(0, std::string(kLabel).find("colour:"));
-    const RealLabel o = readRealLabel(write(dir, "old.yaml", old));
+    const RealLabel o = readRealLabel(writeLabel(dir, "old.yaml", old));
     EXPECT_FALSE(o.colour.judged);
     writeRealLabel((dir / "old_again.yaml").string(), o);
     std::ifstream in(dir / "old_again.yaml");
@@ -155,7 +125,8 @@ TEST(ColourLabels, MalformedSectionsGiveAClearError) {
          "'colour.unsuitable[0].polygon' must be a list of at least 3"},
         {replaced(good, "  best:\n    found: false", "  best:\n    found: true\n    surface: floor"),
          "'colour.best.surface' names no surface: 'floor'"},
-        {replaced(good, "  best:\n    found: false", "  best:\n    found: maybe"), "'colour.best.found' must be true or false"},
+        {replaced(good, "  best:\n    found: false", "  best:\n    found: maybe"),
+         "'colour.best.found' must be true or false"},
     };
     for (const auto &[text, expected] : cases) {
         const std::string message = readError(dir, text);
@@ -168,7 +139,7 @@ TEST(ColourLabels, MalformedSectionsGiveAClearError) {
 TEST(ColourLabels, ColourBestAvoidsTheUnsuitablePolygons) {
     const fs::path dir = freshDir("reference");
     const SyntheticWall wall(2.0);
-    RealLabel l = readRealLabel(write(dir, "good.yaml", kLabel));
+    RealLabel l = readRealLabel(writeLabel(dir, "good.yaml", kLabel));
     l.best = referenceBest(wall.cloud, wall.camera, l);
     l.colour.best = colourReferenceBest(wall.camera, l);
     ASSERT_TRUE(l.best.found);
@@ -239,7 +210,8 @@ TEST(ColourLabelSuite, StoredColourBestIsTheReference) {
         if (!stored.found) continue;
         EXPECT_EQ(now.surface, stored.surface);
         EXPECT_NEAR(now.area(), stored.area(), 1e-3 * stored.area())
-            << label.frame << ": stored colour best " << stored.area() << " m^2, the reference now gives " << now.area();
+            << label.frame << ": stored colour best " << stored.area() << " m^2, the reference now gives "
+            << now.area();
         for (int k = 0; k < 4; ++k) EXPECT_LT((now.corners[k] - stored.corners[k]).norm(), 0.005) << "corner " << k;
         // The colour best is no larger than the depth best, and lies on no unsuitable polygon.
         EXPECT_LE(stored.area(), label.best.area() * (1 + 1e-6));

@@ -190,7 +190,7 @@ TEST_F(Hostile, FarAndNonFinitePointsAreAFrameNotACrash) {
         const CliRun r = cli(detectArgs(at("far.pcd")) + " --method " + method, dir_);
         EXPECT_EQ(r.status, 0) << method << ": " << r.err;
         EXPECT_EQ(r.err, "") << method;
-        EXPECT_NO_THROW((void)nlohmann::json::parse(r.out)) << r.out;
+        EXPECT_TRUE(nlohmann::json::accept(r.out)) << r.out;
     }
     // A depth_scale that turns every reading into kilometres and beyond.
     writeBytes(at("camera.yaml"),

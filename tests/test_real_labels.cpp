@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 
+#include "label_fixtures.hpp"
 #include "projsurf/eval/label_reference.hpp"
 #include "projsurf/eval/labelled_eval.hpp"
 #include "projsurf/eval/real_labels.hpp"
@@ -24,6 +25,7 @@
 
 using namespace projsurf;
 namespace fs = std::filesystem;
+using namespace projsurf::test;
 
 namespace {
 
@@ -55,42 +57,6 @@ obstacles:
 best:
   found: false
 )";
-
-std::string writeLabel(const fs::path &dir, const std::string &name, const std::string &text) {
-    const fs::path p = dir / name;
-    std::ofstream(p) << text;
-    return p.string();
-}
-
-/// The message readRealLabel throws for `text`, or "" when it reads.
-std::string readError(const fs::path &dir, const std::string &text) {
-    const std::string path = writeLabel(dir, "bad.yaml", text);
-    try {
-        readRealLabel(path);
-    } catch (const InputError &e) {
-        return e.what();
-    }
-    return "";
-}
-
-std::string replaced(std::string s, const std::string &from, const std::string &to) {
-    const auto at = s.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at != std::string::npos) s.replace(at, from.size(), to);
-    return s;
-}
-
-/// A frontal wall at `z` metres filling a 640x480 pinhole image (525 px focal length).
-struct SyntheticWall {
-    CameraIntrinsics camera;
-    Cloud cloud;
-    explicit SyntheticWall(double z) {
-        cloud.width = camera.width;
-        cloud.height = camera.height;
-        for (int v = 0; v < camera.height; ++v)
-            for (int u = 0; u < camera.width; ++u) cloud.points.push_back(camera.backProject(u, v, z).cast<float>());
-    }
-};
 
 RealLabel syntheticLabel(const fs::path &dir) { return readRealLabel(writeLabel(dir, "good.yaml", kGoodLabel)); }
 

@@ -322,3 +322,18 @@ TEST(SuitabilityCli, UnregisteredColourIsCaughtByTheCheckNotTheName) {
     }
     fs::remove_all(dir);
 }
+
+TEST(SuitabilityCli, EvalColourOnlyWritesTheColourTable) {
+    const fs::path dir = fs::temp_directory_path() / "projsurf_eval_colour_only";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const auto r = test::cli("eval --colour-only --quick --out " + (dir / "out").string(), dir, 300);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("colour suite: "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("scenes meet the targets (2 rounds each"), std::string::npos) << r.out;
+    ASSERT_TRUE(fs::exists(dir / "out" / "colour.md"));
+    EXPECT_FALSE(fs::exists(dir / "out" / "report.md"));  // the suite alone
+    const auto both = test::cli("eval --colour-only --projector-only --out " + (dir / "b").string(), dir);
+    EXPECT_NE(both.status, 0);
+    fs::remove_all(dir);
+}
