@@ -18,6 +18,7 @@
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/progress.hpp"
 #include "projsurf/frontend/stamp_pairing.hpp"
+#include "projsurf/frontend/suitability_mode.hpp"
 #include "projsurf/frontend/test_card.hpp"
 #include "projsurf/io/errors.hpp"
 #include "synthetic_rig.hpp"
@@ -76,6 +77,14 @@ TEST(FrontendAspect, RefusesWithOneLineThatSaysHowToWriteIt) {
         EXPECT_NE(messageOf([&] { parseAspect("--aspect", bad); }).find("expected a positive aspect ratio W:H"),
                   std::string::npos)
             << bad;
+}
+
+TEST(FrontendSuitabilityMode, ReadsTheThreeWordsAndRefusesOthers) {
+    for (const SuitabilityMode m : {SuitabilityMode::Off, SuitabilityMode::Avoid, SuitabilityMode::Prefer})
+        EXPECT_EQ(parseSuitabilityMode("--suitability", suitabilityModeName(m)), m);
+    EXPECT_EQ(parseSuitabilityMode("--suitability", ""), SuitabilityMode::Avoid);  // the default with colour
+    EXPECT_EQ(messageOf([] { parseSuitabilityMode("~suitability", "Avoid"); }),
+              "~suitability: expected 'off', 'avoid' or 'prefer', got 'Avoid'");
 }
 
 TEST(FrontendGravity, ParsesLevelAutoAndVectors) {

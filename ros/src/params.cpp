@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "projsurf/frontend/aspect.hpp"
+#include "projsurf/frontend/suitability_mode.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
@@ -103,14 +104,7 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
         std::string mode;
         get(pnh, "suitability", mode);
         p.suitability_given = !mode.empty();  // "" (the launch file's default): avoid
-        if (mode.empty() || mode == "avoid")
-            c.suitability.mode = SuitabilityMode::Avoid;
-        else if (mode == "off")
-            c.suitability.mode = SuitabilityMode::Off;
-        else if (mode == "prefer")
-            c.suitability.mode = SuitabilityMode::Prefer;
-        else
-            throw InputError(name(pnh, "suitability"), "expected 'off', 'avoid' or 'prefer', got '" + mode + "'");
+        c.suitability.mode = frontend::parseSuitabilityMode(name(pnh, "suitability"), mode);
     }
     getPositive(pnh, "max_tilt", c.max_tilt);
     int seed = static_cast<int>(c.seed);

@@ -16,6 +16,7 @@
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
 #include "projsurf/frontend/stamp_pairing.hpp"
+#include "projsurf/frontend/suitability_mode.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
@@ -233,14 +234,7 @@ void run(const DetectOptions &o, const CLI::App &sub) {
         cfg.paper.hull = HullKind::Convex;
     else
         throw InputError("--hull", "expected 'concave' or 'convex', got '" + o.hull + "'");
-    if (o.suitability == "off")
-        cfg.suitability.mode = SuitabilityMode::Off;
-    else if (o.suitability == "avoid" || o.suitability.empty())
-        cfg.suitability.mode = SuitabilityMode::Avoid;
-    else if (o.suitability == "prefer")
-        cfg.suitability.mode = SuitabilityMode::Prefer;
-    else
-        throw InputError("--suitability", "expected 'off', 'avoid' or 'prefer', got '" + o.suitability + "'");
+    cfg.suitability.mode = frontend::parseSuitabilityMode("--suitability", o.suitability);
     warnIfIgnored(sub, cfg.method);
     const frontend::GravityChoice gravity_choice = frontend::parseGravityChoice("--gravity", o.gravity);
     if (!o.aspect.empty()) cfg.aspect = frontend::parseAspect("--aspect", o.aspect);

@@ -1,0 +1,23 @@
+#include "projsurf/frontend/suitability_mode.hpp"
+
+#include "projsurf/io/errors.hpp"
+
+namespace projsurf::frontend {
+
+SuitabilityMode parseSuitabilityMode(const std::string &what, const std::string &word) {
+    if (word == "off") return SuitabilityMode::Off;
+    if (word == "avoid" || word.empty()) return SuitabilityMode::Avoid;
+    if (word == "prefer") return SuitabilityMode::Prefer;
+    throw InputError(what, "expected 'off', 'avoid' or 'prefer', got '" + word + "'");
+}
+
+const char *suitabilityModeName(SuitabilityMode mode) {
+    switch (mode) {
+    case SuitabilityMode::Off: return "off";
+    case SuitabilityMode::Prefer: return "prefer";
+    case SuitabilityMode::Avoid: break;
+    }
+    return "avoid";
+}
+
+}  // namespace projsurf::frontend

@@ -1,0 +1,17 @@
+#pragma once
+// The colour suitability mode as a user writes it (`detect --suitability`, the node's
+// ~suitability): "off", "avoid" or "prefer" (docs/suitability.md).
+#include <string>
+
+#include "projsurf/pipeline/detector_config.hpp"
+
+namespace projsurf::frontend {
+
+/// "off" | "avoid" | "prefer"; "" is avoid (the default when registered colour is given).
+/// Throws InputError(what, problem) for any other word.
+SuitabilityMode parseSuitabilityMode(const std::string &what, const std::string &word);
+
+/// The mode's word.
+const char *suitabilityModeName(SuitabilityMode mode);
+
+}  // namespace projsurf::frontend
