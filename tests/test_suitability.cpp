@@ -337,3 +337,27 @@ TEST(SuitabilityCli, EvalColourOnlyWritesTheColourTable) {
     EXPECT_NE(both.status, 0);
     fs::remove_all(dir);
 }
+
+TEST(Suitability, ColourSitsWhereTheCameraRayMeetsTheWall) {
+    // Every reading 3 % too far along its ray (a depth camera's scale bias): the wall's plane
+    // is the true one, so a reading's normal foot would sit 3 % of its offset from the image
+    // centre too far out (3.4 cm at the dark patch's edge), its ray's meeting with the plane
+    // where the colour really is.
+    const double z = 2.5;
+    cv::Mat depth(kCam.height, kCam.width, CV_16U, cv::Scalar(z * 1.03 * 1000.0));
+    Cloud cloud = depthToCloud(depth, kCam);
+    const cv::Rect dark(560, 0, 80, 480);  // the right eighth, edge 1.14 m right of the axis
+    ASSERT_TRUE(attachColour(cloud, wallColour(dark, cv::Rect())));
+    const WallRaster w = frontalRaster(z);
+    PointGrid grid;
+    fillPointGrid(cloud, 2, grid);
+    DepthTolerance wide;  // the bias (7.5 cm) inside the band
+    wide.min_band = wide.max_band = 0.1;
+    CellSuitability s;
+    cellSuitability(grid, grid.gridBox(cv::Rect()), cloud.colours, w.plane, w.frame, w.raster, wide, WallShape{},
+                    SuitabilityOptions{}, s);
+    ASSERT_FALSE(s.empty());
+    // 2 cm each side of the patch's edge on the wall (4 px at 2.5 m).
+    EXPECT_EQ(unfitAt(s, w, z, 565, 240), Unfit::Dark);
+    EXPECT_EQ(unfitAt(s, w, z, 555, 240), Unfit::None);
+}

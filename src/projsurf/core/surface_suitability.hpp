@@ -46,7 +46,7 @@ struct SuitabilityOptions {
                                ///< chroma, 0.37, crossed 0.40 on the noise of 3-7 samples; test_suitability)
     int min_samples = 3;       ///< fewer wall samples in the window: colour decides nothing there
     int trim_cells =
-        2;  ///< cells the unfit areas are eroded by (the window reaches 2 cells beyond a thing's edge; colour suite)
+        2;  ///< textured and glare cells given back on an unfit area's rim (the window reaches 2 cells beyond an edge)
     double max_hole =
         0.25;  ///< m^2, fit areas enclosed by unfit cells up to this size are unfit too (a picture's plain mat)
     double min_unfit_area = 0.01;     ///< m^2, smaller unfit areas are fit (a light switch plate, 8 x 8 cm, clipped
