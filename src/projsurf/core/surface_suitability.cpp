@@ -34,45 +34,56 @@ void fillEnclosed(cv::Mat &unfit, double max_cells) {
     }
 }
 
-/// Sums over the k x k window about each cell (zero outside the raster) into `out`: a running
-/// sum down the columns into `out`, then along each row in place.
-void windowSums(const std::vector<ColourSums> &in, int rows, int cols, int k, std::vector<ColourSums> &out) {
-    const int half = k / 2;
-    auto add = [](ColourSums &a, const ColourSums &b) {
-        a.samples += b.samples, a.luminance += b.luminance, a.luminance_sq += b.luminance_sq, a.chroma += b.chroma,
-            a.glare += b.glare;
-    };
-    auto sub = [](ColourSums &a, const ColourSums &b) {
-        a.samples -= b.samples, a.luminance -= b.luminance, a.luminance_sq -= b.luminance_sq, a.chroma -= b.chroma,
-            a.glare -= b.glare;
-    };
-    const std::size_t n = static_cast<std::size_t>(rows) * cols;
-    out.assign(n, ColourSums{});
-    auto at = [cols](int r) { return static_cast<std::size_t>(r) * cols; };
-    // Down: out row r = sum of in rows r - half .. r + half.
-    for (int r = 0; r < std::min(half, rows); ++r)
-        for (int c = 0; c < cols; ++c) add(out[c], in[at(r) + c]);
-    for (int r = 0; r < rows; ++r) {
-        ColourSums *dst = out.data() + at(r);
-        if (r > 0) std::copy(dst - cols, dst, dst);
-        if (r + half < rows)
-            for (int c = 0; c < cols; ++c) add(dst[c], in[at(r + half) + c]);
-        if (r - half - 1 >= 0)
-            for (int c = 0; c < cols; ++c) sub(dst[c], in[at(r - half - 1) + c]);
+/// The floats of a row of ColourSums, read as one array (the struct is five floats, no padding).
+constexpr int kChannels = 5;
+static_assert(sizeof(ColourSums) == kChannels * sizeof(float), "ColourSums is read as plain floats");
+
+/// The k x k window sums about the cells of one raster row at a time (zero outside the
+/// raster), kept in `store`: the sums down each column over the k rows about the row (with
+/// k / 2 empty cells either side), then the row's window sums. Flat float arrays, the five
+/// sums of a cell side by side, so that every pass vectorises; nothing raster-sized is written.
+struct RunningWindow {
+    const float *in = nullptr;  ///< the cell sums, row-major
+    int rows = 0, k = 1;
+    std::ptrdiff_t width = 0;                  ///< floats in a raster row
+    float *column = nullptr, *sums = nullptr;  ///< column sums (padded), the row's window sums
+};
+
+RunningWindow startWindow(const std::vector<ColourSums> &in, int rows, int cols, int k, std::vector<float> &store) {
+    RunningWindow w;
+    w.in = reinterpret_cast<const float *>(in.data());
+    w.rows = rows;
+    w.k = k;
+    w.width = static_cast<std::ptrdiff_t>(cols) * kChannels;
+    const std::ptrdiff_t pad = (k / 2) * kChannels;
+    store.assign(static_cast<std::size_t>(2 * w.width + 2 * pad), 0.0f);
+    w.column = store.data();
+    w.sums = store.data() + w.width + 2 * pad;
+    float *sum = w.column + pad;
+    for (int r = 0; r < std::min(k / 2, rows); ++r)
+        for (std::ptrdiff_t i = 0; i < w.width; ++i) sum[i] += w.in[r * w.width + i];
+    return w;
+}
+
+/// Moves the window to row r (rows are taken in order 0, 1, ...) and returns its sums there.
+PROJSURF_CLONES
+const ColourSums *windowRow(RunningWindow &w, int r) {
+    const int half = w.k / 2;
+    float *sum = w.column + half * kChannels;
+    if (r + half < w.rows) {
+        const float *add = w.in + (r + half) * w.width;
+        for (std::ptrdiff_t i = 0; i < w.width; ++i) sum[i] += add[i];
     }
-    // Across, in place (a window of the column sums kept aside).
-    std::vector<ColourSums> line(static_cast<std::size_t>(cols));
-    for (int r = 0; r < rows; ++r) {
-        ColourSums *row = out.data() + at(r);
-        std::copy(row, row + cols, line.begin());
-        ColourSums run;
-        for (int c = 0; c < std::min(half, cols); ++c) add(run, line[c]);
-        for (int c = 0; c < cols; ++c) {
-            if (c + half < cols) add(run, line[c + half]);
-            if (c - half - 1 >= 0) sub(run, line[c - half - 1]);
-            row[c] = run;
-        }
+    if (r - half - 1 >= 0) {
+        const float *sub = w.in + (r - half - 1) * w.width;
+        for (std::ptrdiff_t i = 0; i < w.width; ++i) sum[i] -= sub[i];
     }
+    for (std::ptrdiff_t i = 0; i < w.width; ++i) w.sums[i] = w.column[i];
+    for (int j = 1; j < w.k; ++j) {
+        const float *shifted = w.column + j * kChannels;
+        for (std::ptrdiff_t i = 0; i < w.width; ++i) w.sums[i] += shifted[i];
+    }
+    return reinterpret_cast<const ColourSums *>(w.sums);
 }
 
 /// The raster cell under each wall sample of one grid row (its foot on the plane, within the
@@ -173,8 +184,8 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
     // tone (darkness, saturation) over the smaller tone window, so that a dark thing's edge
     // is found to within a cell.
     auto oddCells = [&](double metres) { return std::max(1, static_cast<int>(std::lround(metres / raster.cell)) | 1); };
-    windowSums(out.sums, rows, cols, oddCells(opt.window), out.window);
-    windowSums(out.sums, rows, cols, oddCells(opt.tone_window), out.tone);
+    RunningWindow window = startWindow(out.sums, rows, cols, oddCells(opt.window), out.window_rows);
+    RunningWindow tone_window = startWindow(out.sums, rows, cols, oddCells(opt.tone_window), out.tone_rows);
     out.contrast.create(rows, cols, CV_32F);
     out.contrast.setTo(0);
     out.unfit.create(rows, cols, CV_8U);
@@ -187,9 +198,9 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
     const float max_chroma = static_cast<float>(opt.max_chroma * 255.0),
                 max_contrast = static_cast<float>(opt.max_contrast), min_samples = static_cast<float>(opt.min_samples),
                 min_tone = static_cast<float>(opt.min_tone_samples);
+    int r0 = rows, r1 = -1, c0 = cols, c1 = -1;  // the unfit cells' box
     for (int r = 0; r < rows; ++r) {
-        const ColourSums *w = out.window.data() + static_cast<std::size_t>(r) * cols;
-        const ColourSums *t = out.tone.data() + static_cast<std::size_t>(r) * cols;
+        const ColourSums *w = windowRow(window, r), *t = windowRow(tone_window, r);
         float *contrast = out.contrast.ptr<float>(r);
         uchar *unfit = out.unfit.ptr<uchar>(r);
         for (int c = 0; c < cols; ++c) {
@@ -210,20 +221,26 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
             else if (tone.chroma > max_chroma * tone.samples)
                 why = Unfit::Saturated;
             unfit[c] = static_cast<uchar>(why);
+            if (why != Unfit::None)
+                r0 = std::min(r0, r), r1 = std::max(r1, r), c0 = std::min(c0, c), c1 = std::max(c1, c);
         }
     }
+    // The rest looks at the unfit cells only: their box with a ring of fit cells about it
+    // (that ring stands for the raster beyond it in each filter below).
+    if (r1 < 0) return;
+    cv::Mat unfit = out.unfit(cv::Rect(c0 - 1, r0 - 1, c1 - c0 + 3, r1 - r0 + 3) & cv::Rect(0, 0, cols, rows));
     // The window reaches half its side beyond a thing's edge (its edge and its glare count
     // there): that margin of texture and glare is given back.
     const cv::Mat spread =
-        (out.unfit == static_cast<uchar>(Unfit::Textured)) | (out.unfit == static_cast<uchar>(Unfit::Glare));
+        (unfit == static_cast<uchar>(Unfit::Textured)) | (unfit == static_cast<uchar>(Unfit::Glare));
     if (opt.trim_cells > 0) {
         cv::Mat keep;
-        cv::erode(out.unfit != 0, keep,
+        cv::erode(unfit != 0, keep,
                   cv::getStructuringElement(cv::MORPH_RECT, {2 * opt.trim_cells + 1, 2 * opt.trim_cells + 1}), {-1, -1},
                   1, cv::BORDER_REPLICATE);
-        out.unfit.setTo(0, spread & (keep == 0));
+        unfit.setTo(0, spread & (keep == 0));
     }
-    fillEnclosed(out.unfit, opt.max_hole / (raster.cell * raster.cell));
+    fillEnclosed(unfit, opt.max_hole / (raster.cell * raster.cell));
     // Unfit areas too small to matter (a light switch plate that the camera clips) are fit,
     // and so is texture narrower than a picture could be everywhere (a door seam, a cable,
     // where two paints meet): an area that an opening of that width removes whole is given
@@ -231,29 +248,32 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
     const int line = static_cast<int>(std::lround(opt.min_texture_width / raster.cell));
     cv::Mat opened, labels;
     if (line > 1)
-        cv::morphologyEx(out.unfit != 0, opened, cv::MORPH_OPEN,
+        cv::morphologyEx(unfit != 0, opened, cv::MORPH_OPEN,
                          cv::getStructuringElement(cv::MORPH_RECT, {line, line}), {-1, -1}, 1, cv::BORDER_REPLICATE);
     else
-        opened = out.unfit != 0;
-    const int n = cv::connectedComponents(out.unfit != 0, labels, 8, CV_32S);
+        opened = unfit != 0;
+    const int n = cv::connectedComponents(unfit != 0, labels, 8, CV_32S);
     std::vector<int> size(static_cast<std::size_t>(n), 0);
     std::vector<uchar> wide(static_cast<std::size_t>(n), 0);
-    for (int r = 0; r < rows; ++r) {
+    for (int r = 0; r < unfit.rows; ++r) {
         const int *label = labels.ptr<int>(r);
         const uchar *o = opened.ptr<uchar>(r);
-        for (int c = 0; c < cols; ++c) {
+        for (int c = 0; c < unfit.cols; ++c) {
+            if (!label[c]) continue;
             ++size[static_cast<std::size_t>(label[c])];
             if (o[c]) wide[static_cast<std::size_t>(label[c])] = 1;
         }
     }
     const double min_cells = opt.min_unfit_area / (raster.cell * raster.cell);
-    for (int r = 0; r < rows; ++r) {
+    std::vector<uchar> small(static_cast<std::size_t>(n));
+    for (std::size_t l = 0; l < small.size(); ++l) small[l] = size[l] < min_cells;
+    for (int r = 0; r < unfit.rows; ++r) {
         const int *label = labels.ptr<int>(r);
-        uchar *unfit = out.unfit.ptr<uchar>(r);
-        for (int c = 0; c < cols; ++c) {
+        uchar *why = unfit.ptr<uchar>(r);
+        for (int c = 0; c < unfit.cols; ++c) {
+            if (!why[c]) continue;
             const std::size_t l = static_cast<std::size_t>(label[c]);
-            if (unfit[c] && (size[l] < min_cells || (unfit[c] == static_cast<uchar>(Unfit::Textured) && !wide[l])))
-                unfit[c] = 0;
+            if (small[l] || (why[c] == static_cast<uchar>(Unfit::Textured) && !wide[l])) why[c] = 0;
         }
     }
 }

@@ -65,8 +65,7 @@ struct ColourSums {
 struct CellSuitability {
     int rows = 0, cols = 0;
     std::vector<ColourSums> sums;    ///< row-major
-    std::vector<ColourSums> window;  ///< working storage: the window sums
-    std::vector<ColourSums> tone;    ///< working storage: the tone window sums
+    std::vector<float> window_rows, tone_rows;  ///< working storage: running sums of each window
     cv::Mat contrast;  ///< CV_32F, luminance std / mean over the window about each cell (0 without samples)
     cv::Mat unfit;     ///< CV_8U, Unfit per cell
     double median_luminance = 0.0;  ///< share of 255, of the wall samples seen

@@ -359,6 +359,12 @@ Choice chooseCandidate(const Cloud &cloud, const CloudSample &s, const Projector
         observeFreeSpace(cloud, scratch, projector, cfg, c);
         time.lap("free_space");
         if (cloud.hasColour() && cfg.suitability.mode != SuitabilityMode::Off) {
+            // Colour only takes cells away: a wall whose rectangle without it is no bigger than
+            // the one accepted is not judged.
+            if (r.chosen && !(placeRectangle(aspect, c) && c.rectangle.area() > r.chosen->rectangle.area())) {
+                time.lap("rectangle");
+                continue;
+            }
             judgeColour(cloud, scratch, cfg, static_cast<std::size_t>(k), c);
             time.lap("suitability");
         }
