@@ -71,13 +71,22 @@ Unfit unfitAt(const CellSuitability &s, const WallRaster &w, double z, int u, in
     return static_cast<Unfit>(s.unfit.at<uchar>(static_cast<int>(cell.y()), static_cast<int>(cell.x())));
 }
 
-CellSuitability judge(const Cloud &cloud, const WallRaster &w) {
+CellSuitability judge(const Cloud &cloud, const WallRaster &w, const SuitabilityOptions &options = {}) {
     PointGrid grid;
     fillPointGrid(cloud, 2, grid);
     CellSuitability s;
     cellSuitability(grid, grid.gridBox(cv::Rect()), cloud.colours, w.plane, w.frame, w.raster, DepthTolerance{},
-                    WallShape{}, SuitabilityOptions{}, s);
+                    WallShape{}, options, s);
     return s;
+}
+
+/// Paints 8 px squares (chequer) or 8 px columns (stripes) of greys a and b over `r`.
+void paintPattern(cv::Mat &img, const cv::Rect &r, int a, int b, bool chequer) {
+    for (int v = r.y; v < r.y + r.height; ++v)
+        for (int u = r.x; u < r.x + r.width; ++u) {
+            const bool odd = ((u / 8) + (chequer ? v / 8 : 0)) % 2;
+            img.at<cv::Vec3b>(v, u) = cv::Vec3b::all(static_cast<uchar>(odd ? b : a));
+        }
 }
 
 }  // namespace
@@ -98,6 +107,71 @@ TEST(Suitability, DarkAndEdgyCellsAreFlaggedPlainOnesNot) {
     const double share = static_cast<double>(cv::countNonZero(s.unfit)) / s.unfit.total();
     const double truth = (dark.area() + chequer.area()) / (640.0 * 480.0);
     EXPECT_NEAR(share, truth, 0.03);
+}
+
+TEST(Suitability, WeakTextureNearWideTextureIsTexturedAloneFit) {
+    // Stripes of 200 and 140 grey (window contrast 0.13-0.18: below the texture level, above
+    // the weak one) beside a chequer of 200 and 110 (0.29) are part of it, as far as the
+    // growth reaches; the same stripes on their own are fit.
+    const double z = 2.5;
+    Cloud cloud = wallCloud(z);
+    cv::Mat img = wallColour({}, {});
+    paintPattern(img, cv::Rect(60, 60, 120, 140), 200, 110, true);
+    paintPattern(img, cv::Rect(180, 60, 120, 140), 200, 140, false);  // beside the chequer
+    paintPattern(img, cv::Rect(400, 300, 160, 140), 200, 140, false);  // alone
+    ASSERT_TRUE(attachColour(cloud, img));
+    const WallRaster w = frontalRaster(z);
+    SuitabilityOptions far;
+    far.texture_growth = 0.15;
+    const CellSuitability s = judge(cloud, w, far);
+    EXPECT_EQ(unfitAt(s, w, z, 120, 130), Unfit::Textured);  // the chequer
+    EXPECT_EQ(unfitAt(s, w, z, 200, 130), Unfit::Textured);  // stripes 9 cm from it
+    EXPECT_EQ(unfitAt(s, w, z, 480, 370), Unfit::None);      // stripes alone
+    SuitabilityOptions strict = far;
+    strict.weak_contrast = strict.max_contrast;  // no hysteresis: the stripes beside it are fit too
+    EXPECT_EQ(unfitAt(judge(cloud, w, strict), w, z, 200, 130), Unfit::None);
+    SuitabilityOptions near = far;
+    near.texture_growth = 0.03;  // the growth stops short of them
+    EXPECT_EQ(unfitAt(judge(cloud, w, near), w, z, 200, 130), Unfit::None);
+    // On a wall with texture of its own (grain of 6 levels: median window contrast about
+    // 0.03), weak is judged against it (8 x 0.03 is above the stripes): they stay fit.
+    cv::Mat grain(img.size(), CV_16SC3), grainy;
+    cv::RNG rng(7);
+    rng.fill(grain, cv::RNG::NORMAL, 0.0, 6.0);
+    img.convertTo(grainy, CV_16SC3);
+    grainy += grain;
+    grainy.convertTo(grainy, CV_8UC3);
+    Cloud grainy_cloud = wallCloud(z);
+    ASSERT_TRUE(attachColour(grainy_cloud, grainy));
+    const CellSuitability g = judge(grainy_cloud, w, far);
+    EXPECT_EQ(unfitAt(g, w, z, 120, 130), Unfit::Textured);
+    EXPECT_EQ(unfitAt(g, w, z, 200, 130), Unfit::None);
+}
+
+TEST(Suitability, AThingTheRasterCutsIsJudgedWithTheRestOfIt) {
+    // Weak stripes inside the raster (the projector's reach), the chequer they belong to just
+    // outside it: judged with the wall about the raster, the stripes join the chequer.
+    const double z = 2.5;
+    Cloud cloud = wallCloud(z);
+    cv::Mat img = wallColour({}, {});
+    paintPattern(img, cv::Rect(400, 140, 140, 200), 200, 110, true);
+    paintPattern(img, cv::Rect(540, 140, 40, 200), 200, 140, false);
+    ASSERT_TRUE(attachColour(cloud, img));
+    WallRaster w = frontalRaster(z);
+    const double edge = (540 - kCam.cx) * z / kCam.fx;  // where the chequer ends, m
+    w.raster = makeRasterFrame({edge, -0.9}, {edge + 0.4, 0.9}, 0.01);
+    const int u = 556, v = 240;  // in the stripes, 8 cm inside the raster
+    SuitabilityOptions seen;
+    seen.context = 0.1;
+    seen.texture_growth = 0.15;
+    const CellSuitability s = judge(cloud, w, seen);
+    ASSERT_EQ(s.rows, w.raster.rows);
+    ASSERT_EQ(s.cols, w.raster.cols);
+    EXPECT_EQ(unfitAt(s, w, z, u, v), Unfit::Textured);
+    EXPECT_EQ(unfitAt(s, w, z, 620, v), Unfit::None);  // the plain wall beyond
+    SuitabilityOptions alone = seen;
+    alone.context = 0.0;
+    EXPECT_EQ(unfitAt(judge(cloud, w, alone), w, z, u, v), Unfit::None);
 }
 
 TEST(Suitability, PlainWallOfAnyRoomPaintIsFit) {

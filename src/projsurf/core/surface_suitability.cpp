@@ -115,6 +115,81 @@ void footCells(const FootCells &f, const float *X, const float *Y, const float *
     }
 }
 
+/// Hysteresis on texture: the weakly textured cells (window contrast above `weak`, fit so
+/// far) within `reach` of a textured area at least a picture's narrowest wide (`core`: what
+/// an opening keeps) are textured too. A calendar's grid of thin lines holds the texture level
+/// only in patches; a seam or a cable (narrow) grows nothing, and nothing grows far.
+void growTexture(cv::Mat unfit, const cv::Mat &contrast, const cv::Mat &core, const cv::Mat &reach, double weak) {
+    const uchar textured = static_cast<uchar>(Unfit::Textured);
+    const cv::Mat faint = (contrast > weak) & (unfit == 0);
+    if (cv::countNonZero(faint) == 0) return;
+    cv::Mat cores;
+    cv::morphologyEx(unfit == textured, cores, cv::MORPH_OPEN, core, {-1, -1}, 1, cv::BORDER_REPLICATE);
+    if (cv::countNonZero(cores) == 0) return;
+    cv::dilate(cores, cores, reach, {-1, -1}, 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+    unfit.setTo(textured, faint & cores);
+}
+
+/// The verdicts refined on `unfit` (a box of them with a ring of fit cells about it, which
+/// stands for the raster beyond): the rims of texture and glare given back, enclosed fit areas
+/// filled, small areas and narrow texture given back; first, texture grown into the weakly
+/// textured cells near it (`contrast`: the box's window contrast; weak is judged against the
+/// wall's own median contrast `wall_texture`, so that a fabric or wood surface does not grow
+/// texture everywhere). `cell` in m.
+void refineUnfit(cv::Mat unfit, const cv::Mat &contrast, double cell, const SuitabilityOptions &opt,
+                 double wall_texture) {
+    const cv::Mat trim_kernel =
+        cv::getStructuringElement(cv::MORPH_RECT, {2 * opt.trim_cells + 1, 2 * opt.trim_cells + 1});
+    const int line = static_cast<int>(std::lround(opt.min_texture_width / cell));
+    const cv::Mat line_kernel = cv::getStructuringElement(cv::MORPH_RECT, {std::max(1, line), std::max(1, line)});
+    const int grow = static_cast<int>(std::lround(opt.texture_growth / cell));
+    growTexture(unfit, contrast, line_kernel, cv::getStructuringElement(cv::MORPH_RECT, {2 * grow + 1, 2 * grow + 1}),
+                std::max(opt.weak_contrast, opt.weak_over_wall * wall_texture));
+    // The window reaches half its side beyond a thing's edge (its edge and its glare count
+    // there): that margin of texture and glare is given back.
+    const cv::Mat spread =
+        (unfit == static_cast<uchar>(Unfit::Textured)) | (unfit == static_cast<uchar>(Unfit::Glare));
+    if (opt.trim_cells > 0) {
+        cv::Mat keep;
+        cv::erode(unfit != 0, keep, trim_kernel, {-1, -1}, 1, cv::BORDER_REPLICATE);
+        unfit.setTo(0, spread & (keep == 0));
+    }
+    fillEnclosed(unfit, opt.max_hole / (cell * cell));
+    // Unfit areas too small to matter (a light switch plate that the camera clips) are fit,
+    // and so is texture narrower than a picture could be everywhere (a door seam, a cable,
+    // where two paints meet): an area that an opening of that width removes whole is given
+    // back where it is textured. (A calendar's thin lines stay: they join its wider print.)
+    cv::Mat opened, labels;
+    if (line > 1)
+        cv::morphologyEx(unfit != 0, opened, cv::MORPH_OPEN, line_kernel, {-1, -1}, 1, cv::BORDER_REPLICATE);
+    else
+        opened = unfit != 0;
+    const int n = cv::connectedComponents(unfit != 0, labels, 8, CV_32S);
+    std::vector<int> size(static_cast<std::size_t>(n), 0);
+    std::vector<uchar> wide(static_cast<std::size_t>(n), 0);
+    for (int r = 0; r < unfit.rows; ++r) {
+        const int *label = labels.ptr<int>(r);
+        const uchar *o = opened.ptr<uchar>(r);
+        for (int c = 0; c < unfit.cols; ++c) {
+            if (!label[c]) continue;
+            ++size[static_cast<std::size_t>(label[c])];
+            if (o[c]) wide[static_cast<std::size_t>(label[c])] = 1;
+        }
+    }
+    const double min_cells = opt.min_unfit_area / (cell * cell);
+    std::vector<uchar> small(static_cast<std::size_t>(n));
+    for (std::size_t l = 0; l < small.size(); ++l) small[l] = size[l] < min_cells;
+    for (int r = 0; r < unfit.rows; ++r) {
+        const int *label = labels.ptr<int>(r);
+        uchar *why = unfit.ptr<uchar>(r);
+        for (int c = 0; c < unfit.cols; ++c) {
+            if (!why[c]) continue;
+            const std::size_t l = static_cast<std::size_t>(label[c]);
+            if (small[l] || (why[c] == static_cast<uchar>(Unfit::Textured) && !wide[l])) why[c] = 0;
+        }
+    }
+}
+
 }  // namespace
 
 void cellSuitability(const PointGrid &grid, const cv::Rect &box,
@@ -122,8 +197,15 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
                      const PlaneFrame &frame, const RasterFrame &raster, const DepthTolerance &tolerance,
                      const WallShape &shape, const SuitabilityOptions &opt, CellSuitability &out) {
     out.rows = out.cols = 0;
-    const int rows = raster.rows, cols = raster.cols;
-    if (rows <= 0 || cols <= 0 || colours.empty()) return;
+    if (raster.rows <= 0 || raster.cols <= 0 || colours.empty()) return;
+    // The wall is judged `context` beyond the raster on every side, so that a thing reaching
+    // into the raster is judged with the rest of it; out holds views of the raster's part.
+    const int margin = std::max(0, static_cast<int>(std::lround(opt.context / raster.cell)));
+    RasterFrame judged = raster;
+    judged.top_left += Eigen::Vector2d(-margin * raster.cell, margin * raster.cell);
+    judged.cols += 2 * margin;
+    judged.rows += 2 * margin;
+    const int rows = judged.rows, cols = judged.cols;
     std::vector<ColourSums> &sums = out.sums;
     sums.assign(static_cast<std::size_t>(rows) * cols, ColourSums{});
     // 1. Each wall sample's colour, summed in the cell under its foot. Float arithmetic, as in
@@ -139,15 +221,15 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
                       static_cast<float>(plane.normal.y()),
                       static_cast<float>(plane.normal.z()),
                       static_cast<float>(plane.d),
-                      static_cast<float>(-frame.origin.dot(R) - raster.top_left.x() / raster.cell),
-                      static_cast<float>(-frame.origin.dot(U) + raster.top_left.y() / raster.cell),
+                      static_cast<float>(-frame.origin.dot(R) - judged.top_left.x() / raster.cell),
+                      static_cast<float>(-frame.origin.dot(U) + judged.top_left.y() / raster.cell),
                       static_cast<float>(cols),
                       static_cast<float>(rows),
                       static_cast<float>(tolerance.sigmas * tolerance.noise_k),
                       static_cast<float>(tolerance.min_band),
                       static_cast<float>(tolerance.max_band),
                       cols,
-                      RasterShape(shape, raster)};
+                      RasterShape(shape, judged)};
     const int glare = static_cast<int>(std::ceil(opt.glare_level * 255.0));
     std::vector<int> histogram(256, 0);
     const cv::Rect area = box & cv::Rect(0, 0, grid.cols, grid.rows);
@@ -177,8 +259,6 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
     int below = 0, median = 0;
     while (median < 255 && (below += histogram[median]) * 2 < total) ++median;
     out.median_luminance = median / 255.0;
-    out.rows = rows;
-    out.cols = cols;
 
     // 2. Window sums about each cell, and the verdicts: texture and glare over the window,
     // tone (darkness, saturation) over the smaller tone window, so that a dark thing's edge
@@ -186,10 +266,11 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
     auto oddCells = [&](double metres) { return std::max(1, static_cast<int>(std::lround(metres / raster.cell)) | 1); };
     RunningWindow window = startWindow(out.sums, rows, cols, oddCells(opt.window), out.window_rows);
     RunningWindow tone_window = startWindow(out.sums, rows, cols, oddCells(opt.tone_window), out.tone_rows);
-    out.contrast.create(rows, cols, CV_32F);
-    out.contrast.setTo(0);
-    out.unfit.create(rows, cols, CV_8U);
-    out.unfit.setTo(0);
+    cv::Mat &contrast_all = out.judged_contrast, &unfit_all = out.judged_unfit;
+    contrast_all.create(rows, cols, CV_32F);
+    contrast_all.setTo(0);
+    unfit_all.create(rows, cols, CV_8U);
+    unfit_all.setTo(0);
     // A wall that is itself at the glare level is the camera's exposure clipping it, not glare.
     const float max_glare = out.median_luminance < opt.glare_level * opt.glare_wall_share
                                 ? static_cast<float>(opt.max_glare_share)
@@ -198,17 +279,20 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
     const float max_chroma = static_cast<float>(opt.max_chroma * 255.0),
                 max_contrast = static_cast<float>(opt.max_contrast), min_samples = static_cast<float>(opt.min_samples),
                 min_tone = static_cast<float>(opt.min_tone_samples);
+    constexpr int kTextureBins = 200;  // of window contrast, 0 ... 1
+    std::array<int, kTextureBins> texture_histogram{};
     int r0 = rows, r1 = -1, c0 = cols, c1 = -1;  // the unfit cells' box
     for (int r = 0; r < rows; ++r) {
         const ColourSums *w = windowRow(window, r), *t = windowRow(tone_window, r);
-        float *contrast = out.contrast.ptr<float>(r);
-        uchar *unfit = out.unfit.ptr<uchar>(r);
+        float *contrast = contrast_all.ptr<float>(r);
+        uchar *unfit = unfit_all.ptr<uchar>(r);
         for (int c = 0; c < cols; ++c) {
             const ColourSums &s = w[c];
             if (s.samples < min_samples) continue;
             const float mean = s.luminance / s.samples;
             const float var = std::max(0.0f, s.luminance_sq / s.samples - mean * mean);
             contrast[c] = std::sqrt(var) / std::max(mean, 8.0f);  // Weber-like; near black: its floor
+            ++texture_histogram[std::min(kTextureBins - 1, static_cast<int>(contrast[c] * kTextureBins))];
             // Tone over the tone window when it has the samples, else over the window.
             const ColourSums &tone = t[c].samples >= min_tone ? t[c] : s;
             Unfit why = Unfit::None;
@@ -225,57 +309,25 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
                 r0 = std::min(r0, r), r1 = std::max(r1, r), c0 = std::min(c0, c), c1 = std::max(c1, c);
         }
     }
-    // The rest looks at the unfit cells only: their box with a ring of fit cells about it
-    // (that ring stands for the raster beyond it in each filter below).
-    if (r1 < 0) return;
-    cv::Mat unfit = out.unfit(cv::Rect(c0 - 1, r0 - 1, c1 - c0 + 3, r1 - r0 + 3) & cv::Rect(0, 0, cols, rows));
-    // The window reaches half its side beyond a thing's edge (its edge and its glare count
-    // there): that margin of texture and glare is given back.
-    const cv::Mat spread =
-        (unfit == static_cast<uchar>(Unfit::Textured)) | (unfit == static_cast<uchar>(Unfit::Glare));
-    if (opt.trim_cells > 0) {
-        cv::Mat keep;
-        cv::erode(unfit != 0, keep,
-                  cv::getStructuringElement(cv::MORPH_RECT, {2 * opt.trim_cells + 1, 2 * opt.trim_cells + 1}), {-1, -1},
-                  1, cv::BORDER_REPLICATE);
-        unfit.setTo(0, spread & (keep == 0));
+    // The rest looks at the unfit cells only: their box, with room for texture to grow.
+    if (r1 >= 0) {
+        const int ring = 1 + std::max(0, static_cast<int>(std::lround(opt.texture_growth / raster.cell)));
+        const cv::Rect box = cv::Rect(c0 - ring, r0 - ring, c1 - c0 + 1 + 2 * ring, r1 - r0 + 1 + 2 * ring) &
+                             cv::Rect(0, 0, cols, rows);
+        // The wall's own texture: its median window contrast.
+        int seen = 0, below = 0, bin = 0;
+        for (int h : texture_histogram) seen += h;
+        while (bin < kTextureBins - 1 && (below += texture_histogram[bin]) * 2 < seen) ++bin;
+        const double wall_texture = (bin + 0.5) / kTextureBins;
+        refineUnfit(unfit_all(box), contrast_all(box), raster.cell, opt, wall_texture);
     }
-    fillEnclosed(unfit, opt.max_hole / (raster.cell * raster.cell));
-    // Unfit areas too small to matter (a light switch plate that the camera clips) are fit,
-    // and so is texture narrower than a picture could be everywhere (a door seam, a cable,
-    // where two paints meet): an area that an opening of that width removes whole is given
-    // back where it is textured. (A calendar's thin lines stay: they join its wider print.)
-    const int line = static_cast<int>(std::lround(opt.min_texture_width / raster.cell));
-    cv::Mat opened, labels;
-    if (line > 1)
-        cv::morphologyEx(unfit != 0, opened, cv::MORPH_OPEN,
-                         cv::getStructuringElement(cv::MORPH_RECT, {line, line}), {-1, -1}, 1, cv::BORDER_REPLICATE);
-    else
-        opened = unfit != 0;
-    const int n = cv::connectedComponents(unfit != 0, labels, 8, CV_32S);
-    std::vector<int> size(static_cast<std::size_t>(n), 0);
-    std::vector<uchar> wide(static_cast<std::size_t>(n), 0);
-    for (int r = 0; r < unfit.rows; ++r) {
-        const int *label = labels.ptr<int>(r);
-        const uchar *o = opened.ptr<uchar>(r);
-        for (int c = 0; c < unfit.cols; ++c) {
-            if (!label[c]) continue;
-            ++size[static_cast<std::size_t>(label[c])];
-            if (o[c]) wide[static_cast<std::size_t>(label[c])] = 1;
-        }
-    }
-    const double min_cells = opt.min_unfit_area / (raster.cell * raster.cell);
-    std::vector<uchar> small(static_cast<std::size_t>(n));
-    for (std::size_t l = 0; l < small.size(); ++l) small[l] = size[l] < min_cells;
-    for (int r = 0; r < unfit.rows; ++r) {
-        const int *label = labels.ptr<int>(r);
-        uchar *why = unfit.ptr<uchar>(r);
-        for (int c = 0; c < unfit.cols; ++c) {
-            if (!why[c]) continue;
-            const std::size_t l = static_cast<std::size_t>(label[c]);
-            if (small[l] || (why[c] == static_cast<uchar>(Unfit::Textured) && !wide[l])) why[c] = 0;
-        }
-    }
+    const cv::Rect inner(margin, margin, raster.cols, raster.rows);
+    out.rows = raster.rows;
+    out.cols = raster.cols;
+    out.margin = margin;
+    out.stride = cols;
+    out.contrast = contrast_all(inner);
+    out.unfit = unfit_all(inner);
 }
 
 RegionSuitability regionSuitability(const CellSuitability &s, const RasterFrame &raster, const Eigen::Vector2d &lo,
@@ -292,7 +344,7 @@ RegionSuitability regionSuitability(const CellSuitability &s, const RasterFrame 
     for (int r = r0; r <= r1; ++r)
         for (int c = c0; c <= c1; ++c) {
             ++out.cells;
-            const ColourSums &sum = s.sums[static_cast<std::size_t>(r) * s.cols + c];
+            const ColourSums &sum = s.sumsAt(r, c);
             unfit += s.unfit.at<uchar>(r, c) != 0;
             samples += sum.samples;
             luminance += sum.luminance;
