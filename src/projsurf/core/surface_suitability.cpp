@@ -115,6 +115,17 @@ void footCells(const FootCells &f, const float *X, const float *Y, const float *
     }
 }
 
+/// The bin holding the median of a histogram of n bins, or -1 when it is empty.
+int medianBin(const int *histogram, int n) {
+    long total = 0;
+    for (int i = 0; i < n; ++i) total += histogram[i];
+    if (total == 0) return -1;
+    long below = 0;
+    int bin = 0;
+    while (bin < n - 1 && (below += histogram[bin]) * 2 < total) ++bin;
+    return bin;
+}
+
 /// Hysteresis on texture: the weakly textured cells (window contrast above `weak`, fit so
 /// far) within `reach` of a textured area at least a picture's narrowest wide (`core`: what
 /// an opening keeps) are textured too. A calendar's grid of thin lines holds the texture level
@@ -253,11 +264,8 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
             ++histogram[std::min(255, luma)];
         }
     }
-    int total = 0;
-    for (int h : histogram) total += h;
-    if (total == 0) return;
-    int below = 0, median = 0;
-    while (median < 255 && (below += histogram[median]) * 2 < total) ++median;
+    const int median = medianBin(histogram.data(), static_cast<int>(histogram.size()));
+    if (median < 0) return;
     out.median_luminance = median / 255.0;
 
     // 2. Window sums about each cell, and the verdicts: texture and glare over the window,
@@ -315,10 +323,7 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
         const cv::Rect box = cv::Rect(c0 - ring, r0 - ring, c1 - c0 + 1 + 2 * ring, r1 - r0 + 1 + 2 * ring) &
                              cv::Rect(0, 0, cols, rows);
         // The wall's own texture: its median window contrast.
-        int seen = 0, below = 0, bin = 0;
-        for (int h : texture_histogram) seen += h;
-        while (bin < kTextureBins - 1 && (below += texture_histogram[bin]) * 2 < seen) ++bin;
-        const double wall_texture = (bin + 0.5) / kTextureBins;
+        const double wall_texture = (medianBin(texture_histogram.data(), kTextureBins) + 0.5) / kTextureBins;
         refineUnfit(unfit_all(box), contrast_all(box), raster.cell, opt, wall_texture);
     }
     const cv::Rect inner(margin, margin, raster.cols, raster.rows);
