@@ -117,7 +117,7 @@ TEST(Suitability, WeakTextureNearWideTextureIsTexturedAloneFit) {
     Cloud cloud = wallCloud(z);
     cv::Mat img = wallColour({}, {});
     paintPattern(img, cv::Rect(60, 60, 120, 140), 200, 110, true);
-    paintPattern(img, cv::Rect(180, 60, 120, 140), 200, 140, false);  // beside the chequer
+    paintPattern(img, cv::Rect(180, 60, 120, 140), 200, 140, false);   // beside the chequer
     paintPattern(img, cv::Rect(400, 300, 160, 140), 200, 140, false);  // alone
     ASSERT_TRUE(attachColour(cloud, img));
     const WallRaster w = frontalRaster(z);

@@ -158,8 +158,7 @@ void refineUnfit(cv::Mat unfit, const cv::Mat &contrast, double cell, const Suit
                 std::max(opt.weak_contrast, opt.weak_over_wall * wall_texture));
     // The window reaches half its side beyond a thing's edge (its edge and its glare count
     // there): that margin of texture and glare is given back.
-    const cv::Mat spread =
-        (unfit == static_cast<uchar>(Unfit::Textured)) | (unfit == static_cast<uchar>(Unfit::Glare));
+    const cv::Mat spread = (unfit == static_cast<uchar>(Unfit::Textured)) | (unfit == static_cast<uchar>(Unfit::Glare));
     if (opt.trim_cells > 0) {
         cv::Mat keep;
         cv::erode(unfit != 0, keep, trim_kernel, {-1, -1}, 1, cv::BORDER_REPLICATE);
@@ -320,8 +319,8 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
     // The rest looks at the unfit cells only: their box, with room for texture to grow.
     if (r1 >= 0) {
         const int ring = 1 + std::max(0, static_cast<int>(std::lround(opt.texture_growth / raster.cell)));
-        const cv::Rect box = cv::Rect(c0 - ring, r0 - ring, c1 - c0 + 1 + 2 * ring, r1 - r0 + 1 + 2 * ring) &
-                             cv::Rect(0, 0, cols, rows);
+        const cv::Rect box =
+            cv::Rect(c0 - ring, r0 - ring, c1 - c0 + 1 + 2 * ring, r1 - r0 + 1 + 2 * ring) & cv::Rect(0, 0, cols, rows);
         // The wall's own texture: its median window contrast.
         const double wall_texture = (medianBin(texture_histogram.data(), kTextureBins) + 0.5) / kTextureBins;
         refineUnfit(unfit_all(box), contrast_all(box), raster.cell, opt, wall_texture);

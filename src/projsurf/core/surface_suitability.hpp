@@ -29,10 +29,11 @@ struct SuitabilityOptions {
                             ///< judged with the rest of it (a calendar the projector's reach cuts 7 cm into)
     double weak_contrast = 0.12;  ///< window contrast above which cells near wide texture are textured too (hysteresis;
                                   ///< a calendar's grid of thin lines holds 0.12-0.2; colour suite) ...
-    double weak_over_wall = 8.0;  ///< ... and above this many times the wall's median contrast (5 shrank the fabric
-                                  ///< wardrobe of real frame nyu_o3d_basement_closet, 8 leaves every labelled frame as it was)
-    double texture_growth = 0.05;  ///< m, how far from wide texture the weak cells may join it (0.03 leaves the calendar
-                                   ///< 2.2 % on the rectangle; colour suite)
+    double weak_over_wall =
+        8.0;  ///< ... and above this many times the wall's median contrast (5 shrank the fabric
+              ///< wardrobe of real frame nyu_o3d_basement_closet, 8 leaves every labelled frame as it was)
+    double texture_growth = 0.05;  ///< m, how far from wide texture the weak cells may join it (0.03 leaves the
+                                   ///< calendar 2.2 % on the rectangle; colour suite)
     double window = 0.05;  ///< m, side of the square on the wall texture and glare are judged over (5 cells at 1 cm)
     double tone_window =
         0.03;  ///< m, the square darkness and saturation are judged over (3 cells: a dark panel's edge to a cell)
@@ -72,13 +73,13 @@ struct ColourSums {
 /// Per-cell colour sums over the wall samples and the verdicts (raster rows x cols).
 struct CellSuitability {
     int rows = 0, cols = 0;
-    int margin = 0, stride = 0;     ///< cells judged beyond the raster on each side; cells in a row of `sums`
-    std::vector<ColourSums> sums;   ///< row-major over the wall judged (the raster and its margin)
+    int margin = 0, stride = 0;    ///< cells judged beyond the raster on each side; cells in a row of `sums`
+    std::vector<ColourSums> sums;  ///< row-major over the wall judged (the raster and its margin)
     std::vector<float> window_rows, tone_rows;  ///< working storage: running sums of each window
     cv::Mat contrast;  ///< CV_32F, luminance std / mean over the window about each cell (0 without samples)
     cv::Mat unfit;     ///< CV_8U, Unfit per cell
     cv::Mat judged_contrast, judged_unfit;  ///< the same over the wall judged (contrast and unfit are views of them)
-    double median_luminance = 0.0;  ///< share of 255, of the wall samples seen
+    double median_luminance = 0.0;          ///< share of 255, of the wall samples seen
     bool empty() const { return rows == 0; }
     /// The sums of raster cell (row r, column c).
     const ColourSums &sumsAt(int r, int c) const {
