@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "fresh_dir.hpp"
 #include "label_fixtures.hpp"
 #include "projsurf/eval/label_reference.hpp"
 #include "projsurf/eval/labelled_eval.hpp"
@@ -25,14 +26,6 @@ namespace fs = std::filesystem;
 using namespace projsurf::test;
 
 namespace {
-
-fs::path freshDir(const std::string &name) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("projsurf_test_colour_labels_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
 
 // The whole image is one frontal wall; the colour makes its left half unsuitable.
 const char *kLabel = R"(frame: synthetic
@@ -69,7 +62,7 @@ Rectangle asRectangle(const LabelBest &b) {
 }  // namespace
 
 TEST(ColourLabels, ReadsWritesAndKeepsOldFilesValid) {
-    const fs::path dir = freshDir("read");
+    const fs::path dir = test::freshDir("colour_labels", "read");
     RealLabel l = readRealLabel(writeLabel(dir, "good.yaml", kLabel));
     ASSERT_TRUE(l.colour.judged);
     EXPECT_EQ(l.colour.note, "a test");
@@ -113,7 +106,7 @@ TEST(ColourLabels, ReadsWritesAndKeepsOldFilesValid) {
 }
 
 TEST(ColourLabels, MalformedSectionsGiveAClearError) {
-    const fs::path dir = freshDir("malformed");
+    const fs::path dir = test::freshDir("colour_labels", "malformed");
     const std::string good = kLabel, path = (dir / "bad.yaml").string();
     ASSERT_EQ(readError(dir, good), "");
     const std::vector<std::pair<std::string, std::string>> cases = {
@@ -137,7 +130,7 @@ TEST(ColourLabels, MalformedSectionsGiveAClearError) {
 }
 
 TEST(ColourLabels, ColourBestAvoidsTheUnsuitablePolygons) {
-    const fs::path dir = freshDir("reference");
+    const fs::path dir = test::freshDir("colour_labels", "reference");
     const SyntheticWall wall(2.0);
     RealLabel l = readRealLabel(writeLabel(dir, "good.yaml", kLabel));
     l.best = referenceBest(wall.cloud, wall.camera, l);
@@ -226,7 +219,7 @@ TEST(ColourLabelSuite, StoredColourBestIsTheReference) {
 TEST(ColourLabelSuite, EvalDetectsWithColourAsTheCliDoes) {
     const std::string real = std::string(PROJSURF_SHARED_DIR) + "/data/real";
     if (!fs::is_directory(real)) GTEST_SKIP() << real << " is not here (the real frames stay in ../shared)";
-    const fs::path dir = freshDir("cli_same");
+    const fs::path dir = test::freshDir("colour_labels", "cli_same");
     const std::string frame = "nyu_rgbdtut_cafe_counter";
     const std::string label = std::string(PROJSURF_SOURCE_DIR) + "/labels/real/" + frame + ".yaml";
     const LabelledFrame f = evaluateLabelledFrame(label, real, DetectorConfig{}, {});

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "fresh_dir.hpp"
 #include "projsurf/eval/experiments.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/scenarios.hpp"
@@ -20,13 +21,6 @@ using namespace projsurf;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path freshDir(const std::string &name) {
-    const fs::path dir = fs::temp_directory_path() / ("projsurf_test_eval_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
 
 std::string readText(const fs::path &path) {
     std::ifstream in(path);
@@ -206,7 +200,7 @@ TEST(EvalPlan, QuickPlanCoversEveryExperimentAtTwoMetres) {
 }
 
 TEST(EvalCli, DemoWritesItsPictures) {
-    const fs::path dir = freshDir("demo");
+    const fs::path dir = test::freshDir("eval", "demo");
     const fs::path out = dir / "demo";
     ASSERT_EQ(runCli("demo --out " + out.string() + " --seed 3", dir / "log.txt"), 0) << readText(dir / "log.txt");
     for (const char *f : {"overlay.png", "framebuffer.png", "audience.png", "calib.yaml", "detection.json"})
@@ -219,14 +213,14 @@ TEST(EvalCli, DemoWritesItsPictures) {
 }
 
 TEST(EvalCli, DemoRefusesABadScenario) {
-    const fs::path dir = freshDir("demo_bad");
+    const fs::path dir = test::freshDir("eval", "demo_bad");
     EXPECT_EQ(runCli("demo --out " + (dir / "x").string() + " --scenario nowhere", dir / "log.txt"), 2);
     EXPECT_FALSE(fs::exists(dir / "x"));
     fs::remove_all(dir);
 }
 
 TEST(EvalCli, QuickEvalWritesTheReport) {
-    const fs::path dir = freshDir("eval");
+    const fs::path dir = test::freshDir("eval", "eval");
     const fs::path out = dir / "eval";
     const std::string real = std::string(PROJSURF_SHARED_DIR) + "/data/real";
     ASSERT_EQ(runCli("eval --quick --no-progress --out " + out.string() + " --real-dir " + real, dir / "log.txt"), 0)

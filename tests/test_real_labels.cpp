@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 
+#include "fresh_dir.hpp"
 #include "label_fixtures.hpp"
 #include "projsurf/eval/label_reference.hpp"
 #include "projsurf/eval/labelled_eval.hpp"
@@ -30,14 +31,6 @@ using namespace projsurf::test;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-fs::path freshDir(const std::string &name) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("projsurf_test_labels_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
 
 const char *kGoodLabel = R"(frame: synthetic
 note: a test label
@@ -63,7 +56,7 @@ RealLabel syntheticLabel(const fs::path &dir) { return readRealLabel(writeLabel(
 }  // namespace
 
 TEST(RealLabels, ReadsAndWritesBackUnchanged) {
-    const fs::path dir = freshDir("roundtrip");
+    const fs::path dir = test::freshDir("labels", "roundtrip");
     RealLabel l = syntheticLabel(dir);
     EXPECT_EQ(l.frame, "synthetic");
     EXPECT_EQ(l.gravity_source, "stated");
@@ -100,7 +93,7 @@ TEST(RealLabels, ReadsAndWritesBackUnchanged) {
 }
 
 TEST(RealLabels, MalformedFilesGiveAClearError) {
-    const fs::path dir = freshDir("malformed");
+    const fs::path dir = test::freshDir("labels", "malformed");
     const std::string good = kGoodLabel;
     ASSERT_EQ(readError(dir, good), "");
     const std::string path = (dir / "bad.yaml").string();
@@ -133,7 +126,7 @@ TEST(RealLabels, MalformedFilesGiveAClearError) {
 }
 
 TEST(RealLabels, ReferenceFindsTheKnownBestRectangle) {
-    const fs::path dir = freshDir("reference");
+    const fs::path dir = test::freshDir("labels", "reference");
     SyntheticWall wall(2.0);
     // Readings 30 cm in front of the wall on a patch of the free half: the robust fit ignores them.
     for (int v = 300; v < 340; ++v)
@@ -174,7 +167,7 @@ TEST(RealLabels, ReferenceFindsTheKnownBestRectangle) {
 }
 
 TEST(RealLabels, ScoringRules) {
-    const fs::path dir = freshDir("scoring");
+    const fs::path dir = test::freshDir("labels", "scoring");
     const SyntheticWall wall(2.0);
     RealLabel l = syntheticLabel(dir);
     l.best = referenceBest(wall.cloud, wall.camera, l);
@@ -315,7 +308,7 @@ TEST(RealLabelSuite, LabelsAndDetectorHoldTheBaseline) {
 TEST(RealLabelSuite, EvalDetectsAsTheCliDoes) {
     const std::string real = std::string(PROJSURF_SHARED_DIR) + "/data/real";
     if (!fs::is_directory(real)) GTEST_SKIP() << real << " is not here (the real frames stay in ../shared)";
-    const fs::path dir = freshDir("cli_same");
+    const fs::path dir = test::freshDir("labels", "cli_same");
     for (const char *frame : {"chimso_classroom_whiteboard", "tum_o3d_fr3_office_partition"}) {
         const std::string label = std::string(PROJSURF_SOURCE_DIR) + "/labels/real/" + frame + ".yaml";
         const LabelledFrame f = evaluateLabelledFrame(label, real, DetectorConfig{}, {});
@@ -337,7 +330,7 @@ TEST(RealLabelSuite, EvalDetectsAsTheCliDoes) {
 }
 
 TEST(RealLabelSuite, EvalRefusesAMissingLabelsFolder) {
-    const fs::path dir = freshDir("cli");
+    const fs::path dir = test::freshDir("labels", "cli");
     const std::string cmd = std::string(PROJSURF_CLI) + " eval --quick --no-progress --out " + (dir / "out").string() +
                             " --labels " + (dir / "nowhere").string() + " >" + (dir / "log.txt").string() + " 2>&1";
     const int status = std::system(cmd.c_str());
