@@ -81,7 +81,7 @@ TEST(FrontendAspect, RefusesWithOneLineThatSaysHowToWriteIt) {
 
 TEST(FrontendSuitabilityMode, ReadsTheThreeWordsAndRefusesOthers) {
     for (const SuitabilityMode m : {SuitabilityMode::Off, SuitabilityMode::Avoid, SuitabilityMode::Prefer})
-        EXPECT_EQ(parseSuitabilityMode("--suitability", suitabilityModeName(m)), m);
+        EXPECT_EQ(parseSuitabilityMode("--suitability", projsurf::suitabilityModeName(m)), m);
     EXPECT_EQ(parseSuitabilityMode("--suitability", ""), SuitabilityMode::Avoid);  // the default with colour
     EXPECT_EQ(messageOf([] { parseSuitabilityMode("~suitability", "Avoid"); }),
               "~suitability: expected 'off', 'avoid' or 'prefer', got 'Avoid'");

@@ -11,7 +11,6 @@
 #include "conversions.hpp"
 #include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
-#include "projsurf/frontend/suitability_mode.hpp"
 #include "projsurf/frontend/test_card.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
@@ -63,7 +62,7 @@ ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams p
         colour_sub_ = nh_.subscribe("rgb/image_rect_color", 2, &ProjsurfNode::onColour, this);
         colour_ = std::make_unique<ColourInput>(colour_sub_.getTopic());
         ROS_INFO("projsurf_node: colour from %s (suitability %s)", colour_sub_.getTopic().c_str(),
-                 frontend::suitabilityModeName(params_.detector.suitability.mode));
+                 suitabilityModeName(params_.detector.suitability.mode));
     } else if (params_.suitability_given && params_.detector.suitability.mode != SuitabilityMode::Off) {
         ROS_WARN("projsurf_node: ~suitability needs registered colour (~use_colour); the surface is judged by depth only");
     }

@@ -70,7 +70,8 @@ struct ColourSums {
           glare = 0;  ///< count, sum Y, sum Y^2, sum chroma, blown-out count
 };
 
-/// Per-cell colour sums over the wall samples and the verdicts (raster rows x cols).
+/// Per-cell colour sums over the wall samples (over the wall judged: the raster and its
+/// margin) and the verdicts of the raster's cells (rows x cols).
 struct CellSuitability {
     int rows = 0, cols = 0;
     int margin = 0, stride = 0;    ///< cells judged beyond the raster on each side; cells in a row of `sums`

@@ -11,13 +11,4 @@ SuitabilityMode parseSuitabilityMode(const std::string &what, const std::string 
     throw InputError(what, "expected 'off', 'avoid' or 'prefer', got '" + word + "'");
 }
 
-const char *suitabilityModeName(SuitabilityMode mode) {
-    switch (mode) {
-    case SuitabilityMode::Off: return "off";
-    case SuitabilityMode::Prefer: return "prefer";
-    case SuitabilityMode::Avoid: break;
-    }
-    return "avoid";
-}
-
 }  // namespace projsurf::frontend

@@ -1,6 +1,7 @@
 #pragma once
 // The colour suitability mode as a user writes it (`detect --suitability`, the node's
-// ~suitability): "off", "avoid" or "prefer" (docs/suitability.md).
+// ~suitability): "off", "avoid" or "prefer" (docs/suitability.md); its word back is
+// suitabilityModeName (pipeline/detector_config.hpp).
 #include <string>
 
 #include "projsurf/pipeline/detector_config.hpp"
@@ -10,8 +11,5 @@ namespace projsurf::frontend {
 /// "off" | "avoid" | "prefer"; "" is avoid (the default when registered colour is given).
 /// Throws InputError(what, problem) for any other word.
 SuitabilityMode parseSuitabilityMode(const std::string &what, const std::string &word);
-
-/// The mode's word.
-const char *suitabilityModeName(SuitabilityMode mode);
 
 }  // namespace projsurf::frontend

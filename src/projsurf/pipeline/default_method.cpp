@@ -278,7 +278,7 @@ SuitabilityReport reportSuitability(const DetectorConfig &cfg, const PlaneCandid
     const RegionSuitability s = regionSuitability(*c.colour, c.raster, c.frame.toPlane(c.rectangle.corners[3]),
                                                   c.frame.toPlane(c.rectangle.corners[1]));
     r.used = true;
-    r.mode = cfg.suitability.mode == SuitabilityMode::Prefer ? "prefer" : "avoid";
+    r.mode = suitabilityModeName(cfg.suitability.mode);
     r.mean_albedo = s.mean_luminance;
     r.texture = s.contrast;
     r.unsuitable_share = s.unfit_share;

@@ -79,6 +79,16 @@ enum class SuitabilityMode {
     Prefer,  ///< of the rectangle that avoids them and the one that does not, the larger area x (1 - unfit share)^k
 };
 
+/// The mode's word, as the JSON's suitability.mode, `detect --suitability` and ~suitability write it.
+inline const char *suitabilityModeName(SuitabilityMode mode) {
+    switch (mode) {
+    case SuitabilityMode::Off: return "off";
+    case SuitabilityMode::Prefer: return "prefer";
+    case SuitabilityMode::Avoid: break;
+    }
+    return "avoid";
+}
+
 /// Default method, stage 4b: the surface's suitability from its colour (issue 15), only when
 /// the cloud carries colour (without colour it is off whatever the mode).
 struct SuitabilityConfig {
