@@ -1,7 +1,7 @@
 #include "bench_blanking.hpp"
 
 #include "projsurf/eval/walk_in.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/scenarios.hpp"
 

@@ -1,12 +1,12 @@
 #pragma once
-// The blanking workload (core/beam_blanking): VGA clouds with the plane the picture was placed
+// The blanking workload (people/beam_blanking): VGA clouds with the plane the picture was placed
 // on. Simulated: an empty wall through a Kinect v1 unit, and a person (arm out) walking into
 // the beam; real: the real frames with the plane the detector finds on each.
 #include <string>
 #include <vector>
 
 #include "bench_common.hpp"
-#include "projsurf/core/beam_blanking.hpp"
+#include "projsurf/people/beam_blanking.hpp"
 
 namespace projsurf::bench {
 

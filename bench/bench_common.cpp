@@ -1,6 +1,6 @@
 #include "bench_common.hpp"
 
-#include "projsurf/core/gravity.hpp"
+#include "projsurf/detection/gravity.hpp"
 
 #include <sched.h>
 #include <sys/resource.h>

@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "projsurf/core/camera.hpp"
-#include "projsurf/core/cloud.hpp"
-#include "projsurf/core/keystone.hpp"
-#include "projsurf/core/keystone_warper.hpp"
-#include "projsurf/core/projector.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/types/cloud.hpp"
+#include "projsurf/keystone/keystone.hpp"
+#include "projsurf/keystone/keystone_warper.hpp"
+#include "projsurf/types/projector.hpp"
 
 namespace projsurf::bench {
 

@@ -23,11 +23,11 @@
 #include "bench_blanking.hpp"
 #include "bench_common.hpp"
 #include "pcl_reference.hpp"
-#include "projsurf/core/camera.hpp"
-#include "projsurf/core/colour_registration.hpp"
-#include "projsurf/core/rectangle_search.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/detection/colour/colour_registration.hpp"
+#include "projsurf/detection/rectangle_search.hpp"
 #include "projsurf/io/errors.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
 namespace {

@@ -20,7 +20,7 @@
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/core/rectangle_search.hpp"
+#include "projsurf/detection/rectangle_search.hpp"
 
 namespace projsurf::bench {
 namespace {

@@ -21,10 +21,10 @@
 #include <utility>
 #include <vector>
 
-#include "projsurf/core/cloud.hpp"
-#include "projsurf/core/plane.hpp"
-#include "projsurf/core/plane_frame.hpp"
-#include "projsurf/core/projector.hpp"
+#include "projsurf/types/cloud.hpp"
+#include "projsurf/types/plane.hpp"
+#include "projsurf/types/plane_frame.hpp"
+#include "projsurf/types/projector.hpp"
 
 namespace projsurf::bench {
 

@@ -25,9 +25,9 @@
 #include "bench_blanking.hpp"
 #include "bench_common.hpp"
 #include "pcl_reference.hpp"
-#include "projsurf/core/projector.hpp"
+#include "projsurf/types/projector.hpp"
 #include "projsurf/io/errors.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
 namespace {
@@ -416,7 +416,7 @@ void reportKeystone(const Options &o, const Projector &projector) {
 
 void reportBlanking(const Options &o, const std::vector<BenchFrame> &real, const Projector &projector) {
     std::cout << "## Blanking what stands in the beam\n\n";
-    std::cout << "core/beam_blanking: the framebuffer mask (1280x800) of what stands between the lens and the "
+    std::cout << "people/beam_blanking: the framebuffer mask (1280x800) of what stands between the lens and the "
                  "detected plane, from one VGA cloud (one BeamBlanker reused, as the node does); wall-clock and "
                  "thread CPU time per cloud.\n\n";
     std::cout << "| cloud | blanked px | median ms | p10–p90 ms | max ms | CPU median ms | target |\n"

@@ -1,5 +1,5 @@
 # Install rules and the exported package: `cmake --install build --prefix P` gives
-#   P/include/projsurf/{core,pipeline,sim,io,eval}/*.hpp
+#   P/include/projsurf/{types,calibration,detection,keystone,people,planning,tracking,sim,io,eval}/*.hpp
 #   P/lib/libprojsurf_{core,sim,io,eval}.so*     P/bin/projsurf
 #   P/lib/cmake/projsurf/  find_package(projsurf [COMPONENTS core sim io eval]) -> projsurf::<component>
 #   P/lib/pkgconfig/       projsurf-core.pc (the core), projsurf.pc (all of them)

@@ -4,7 +4,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "fuzz_common.hpp"
-#include "projsurf/core/calibration.hpp"
+#include "projsurf/calibration/calibration.hpp"
 #include "projsurf/io/files.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {

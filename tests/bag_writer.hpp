@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "projsurf/core/cloud.hpp"
+#include "projsurf/types/cloud.hpp"
 
 namespace projsurf::bagtest {
 

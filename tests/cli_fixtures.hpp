@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "projsurf/core/calibration.hpp"
-#include "projsurf/core/plane.hpp"
-#include "projsurf/core/plane_frame.hpp"
+#include "projsurf/calibration/calibration.hpp"
+#include "projsurf/types/plane.hpp"
+#include "projsurf/types/plane_frame.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace projsurf::test {

@@ -8,8 +8,8 @@
 #include <fstream>
 #include <string>
 
-#include "projsurf/core/camera.hpp"
-#include "projsurf/core/cloud.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/types/cloud.hpp"
 #include "projsurf/eval/real_labels.hpp"
 #include "projsurf/io/errors.hpp"
 

@@ -24,7 +24,7 @@
 #include <sstream>
 #include <string>
 
-#include "projsurf/core/gravity.hpp"
+#include "projsurf/detection/gravity.hpp"
 #include "projsurf/eval/label_overlay.hpp"
 #include "projsurf/eval/label_reference.hpp"
 #include "projsurf/eval/labelled_eval.hpp"

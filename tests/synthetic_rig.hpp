@@ -10,12 +10,12 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/core/calibration.hpp"
-#include "projsurf/core/camera.hpp"
-#include "projsurf/core/keystone.hpp"
-#include "projsurf/core/plane.hpp"
-#include "projsurf/core/plane_frame.hpp"
-#include "projsurf/core/projector.hpp"
+#include "projsurf/calibration/calibration.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/keystone/keystone.hpp"
+#include "projsurf/types/plane.hpp"
+#include "projsurf/types/plane_frame.hpp"
+#include "projsurf/types/projector.hpp"
 
 namespace rig {
 

@@ -5,11 +5,11 @@
 
 #include <cstdio>
 
-#include "projsurf/core/beam_blanking.hpp"
-#include "projsurf/core/keystone.hpp"
+#include "projsurf/people/beam_blanking.hpp"
+#include "projsurf/keystone/keystone.hpp"
 #include "projsurf/eval/walk_in.hpp"
 #include "projsurf/frontend/test_card.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"

@@ -6,8 +6,8 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
-#include "projsurf/core/calibration.hpp"
-#include "projsurf/core/keystone.hpp"
+#include "projsurf/calibration/calibration.hpp"
+#include "projsurf/keystone/keystone.hpp"
 #include "projsurf/sim/calibration_captures.hpp"
 #include "synthetic_rig.hpp"
 

@@ -7,7 +7,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli_run.hpp"
-#include "projsurf/core/gray_code.hpp"
+#include "projsurf/calibration/gray_code.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 

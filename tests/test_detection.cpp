@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <random>
 
-#include "projsurf/core/gravity.hpp"
+#include "projsurf/detection/gravity.hpp"
 #include "projsurf/eval/scoring.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"

@@ -6,14 +6,14 @@
 #include <limits>
 #include <random>
 
-#include "projsurf/core/image_boxes.hpp"
-#include "projsurf/core/observed_free_space.hpp"
-#include "projsurf/core/planar_regions.hpp"
-#include "projsurf/core/point_sampling.hpp"
-#include "projsurf/core/projector_footprint.hpp"
-#include "projsurf/core/rectangle_growth.hpp"
-#include "projsurf/core/vertical_planes.hpp"
-#include "projsurf/core/wall_shape.hpp"
+#include "projsurf/detection/image_boxes.hpp"
+#include "projsurf/detection/default/observed_free_space.hpp"
+#include "projsurf/detection/default/planar_regions.hpp"
+#include "projsurf/detection/point_sampling.hpp"
+#include "projsurf/detection/projector_footprint.hpp"
+#include "projsurf/detection/rectangle_growth.hpp"
+#include "projsurf/detection/vertical_planes.hpp"
+#include "projsurf/detection/default/wall_shape.hpp"
 
 using namespace projsurf;
 

@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "projsurf/core/focus.hpp"
+#include "projsurf/people/focus.hpp"
 #include "projsurf/io/detection_json.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 

@@ -10,7 +10,7 @@
 
 #include <Eigen/Geometry>
 
-#include "projsurf/core/camera.hpp"
+#include "projsurf/types/camera.hpp"
 #include "projsurf/frontend/aspect.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/detection_summary.hpp"

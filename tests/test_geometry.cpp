@@ -2,10 +2,10 @@
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
 
-#include "projsurf/core/euler_rodrigues.hpp"
-#include "projsurf/core/plane.hpp"
-#include "projsurf/core/plane_frame.hpp"
-#include "projsurf/core/projector.hpp"
+#include "projsurf/calibration/euler_rodrigues.hpp"
+#include "projsurf/types/plane.hpp"
+#include "projsurf/types/plane_frame.hpp"
+#include "projsurf/types/projector.hpp"
 
 using namespace projsurf;
 

@@ -1,13 +1,13 @@
 // Continuous mode's geometry in the core: planes and rectangles carried between frames
-// (core/rigid_transform.hpp), and whether the held rectangle can still be shown
-// (core/held_rectangle.hpp).
+// (types/rigid_transform.hpp), and whether the held rectangle can still be shown
+// (tracking/held_rectangle.hpp).
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 
-#include "projsurf/core/camera.hpp"
-#include "projsurf/core/held_rectangle.hpp"
-#include "projsurf/core/rigid_transform.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/tracking/held_rectangle.hpp"
+#include "projsurf/types/rigid_transform.hpp"
 #include "synthetic_rig.hpp"
 
 using namespace projsurf;

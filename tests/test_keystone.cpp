@@ -6,8 +6,8 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
-#include "projsurf/core/euler_rodrigues.hpp"
-#include "projsurf/core/keystone.hpp"
+#include "projsurf/calibration/euler_rodrigues.hpp"
+#include "projsurf/keystone/keystone.hpp"
 #include "synthetic_rig.hpp"
 
 using namespace projsurf;

@@ -6,8 +6,8 @@
 #include <opencv2/imgproc.hpp>
 #include <stdexcept>
 
-#include "projsurf/core/keystone.hpp"
-#include "projsurf/core/keystone_warper.hpp"
+#include "projsurf/keystone/keystone.hpp"
+#include "projsurf/keystone/keystone_warper.hpp"
 #include "synthetic_rig.hpp"
 
 using namespace projsurf;

@@ -11,8 +11,8 @@
 #include "cli_run.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/pipeline/detector.hpp"
-#include "projsurf/pipeline/stand_planner.hpp"
+#include "projsurf/detection/detector.hpp"
+#include "projsurf/planning/stand_planner.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 

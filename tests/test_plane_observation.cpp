@@ -8,10 +8,10 @@
 #include <limits>
 #include <random>
 
-#include "projsurf/core/camera.hpp"
-#include "projsurf/core/plane_observation.hpp"
-#include "projsurf/core/point_grid.hpp"
-#include "projsurf/core/surface_check.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/detection/default/plane_observation.hpp"
+#include "projsurf/types/point_grid.hpp"
+#include "projsurf/detection/surface_check.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 

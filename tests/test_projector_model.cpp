@@ -8,10 +8,10 @@
 #include <fstream>
 #include <random>
 
-#include "projsurf/core/keystone.hpp"
-#include "projsurf/core/keystone_remap.hpp"
-#include "projsurf/core/keystone_warper.hpp"
-#include "projsurf/core/plane_frame.hpp"
+#include "projsurf/keystone/keystone.hpp"
+#include "projsurf/keystone/keystone_remap.hpp"
+#include "projsurf/keystone/keystone_warper.hpp"
+#include "projsurf/types/plane_frame.hpp"
 #include "projsurf/eval/experiments.hpp"
 #include "projsurf/eval/projector_eval.hpp"
 #include "projsurf/io/errors.hpp"

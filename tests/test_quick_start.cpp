@@ -14,7 +14,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli_run.hpp"
-#include "projsurf/core/calibration.hpp"
+#include "projsurf/calibration/calibration.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/scenarios.hpp"
 

@@ -5,7 +5,7 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
-#include "projsurf/core/rectangle_search.hpp"
+#include "projsurf/detection/rectangle_search.hpp"
 
 using namespace projsurf;
 

@@ -18,8 +18,8 @@
 #include <string>
 
 #include "cli_run.hpp"
-#include "projsurf/core/calibration_picture.hpp"
-#include "projsurf/core/plane.hpp"
+#include "projsurf/calibration/calibration_picture.hpp"
+#include "projsurf/types/plane.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/ray_cast.hpp"
 #include "projsurf/sim/render.hpp"

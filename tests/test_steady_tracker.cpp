@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "projsurf/core/steady_tracker.hpp"
+#include "projsurf/tracking/steady_tracker.hpp"
 
 using namespace projsurf;
 

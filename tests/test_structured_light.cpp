@@ -3,9 +3,9 @@
 
 #include <cmath>
 
-#include "projsurf/core/decoded_points.hpp"
-#include "projsurf/core/gray_code.hpp"
-#include "projsurf/core/projector_fit.hpp"
+#include "projsurf/calibration/decoded_points.hpp"
+#include "projsurf/calibration/gray_code.hpp"
+#include "projsurf/calibration/projector_fit.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 
 using namespace projsurf;

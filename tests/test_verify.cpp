@@ -7,11 +7,11 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli_run.hpp"
-#include "projsurf/core/projected_picture.hpp"
+#include "projsurf/calibration/projected_picture.hpp"
 #include "projsurf/eval/experiments.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"

@@ -4,13 +4,13 @@
 #include <exception>
 #include <iostream>
 
-#include "projsurf/core/gravity.hpp"
-#include "projsurf/core/keystone.hpp"
+#include "projsurf/detection/gravity.hpp"
+#include "projsurf/keystone/keystone.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/detection/detector.hpp"
 #include "synthetic_input.hpp"  // makeWallAndFloor(), makePicture(): when no file is given
 
 int main(int argc, char **argv) {

@@ -7,10 +7,10 @@
 
 #include <pybind11/pybind11.h>
 
-#include "projsurf/core/cloud.hpp"
+#include "projsurf/types/cloud.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/detection/detector.hpp"
 
 namespace projsurf::python {
 

@@ -14,16 +14,16 @@
 #include "detector_options.hpp"
 #include "image_array.hpp"
 #include "points_array.hpp"
-#include "projsurf/core/camera.hpp"
-#include "projsurf/core/colour_registration.hpp"
-#include "projsurf/core/keystone.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/detection/colour/colour_registration.hpp"
+#include "projsurf/keystone/keystone.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/detection/detector.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;

@@ -4,7 +4,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
-#include "projsurf/core/cloud.hpp"
+#include "projsurf/types/cloud.hpp"
 
 namespace projsurf::python {
 

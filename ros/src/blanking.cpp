@@ -5,7 +5,7 @@
 
 #include <cstring>
 
-#include "projsurf/core/focus.hpp"
+#include "projsurf/people/focus.hpp"
 
 namespace projsurf::ros_node {
 namespace {

@@ -8,8 +8,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "projsurf/core/beam_blanking.hpp"
-#include "projsurf/core/plane_frame.hpp"
+#include "projsurf/people/beam_blanking.hpp"
+#include "projsurf/types/plane_frame.hpp"
 
 namespace projsurf::ros_node {
 

@@ -2,7 +2,7 @@
 // The node's registered colour (issue 15): colour images kept by stamp, so that each cloud
 // (depth image) gets the colour image of its own stamp (frontend/stamp_pairing.hpp, as depth
 // gets its camera_info), and the check that the colour is registered to the depth
-// (core/colour_registration.hpp), run once per stream, not per frame. Colour that does not fit
+// (detection/colour/colour_registration.hpp), run once per stream, not per frame. Colour that does not fit
 // (another size or encoding, not registered) is not used, with one warning per stream.
 #include <ros/time.h>
 #include <sensor_msgs/Image.h>
@@ -10,8 +10,8 @@
 #include <set>
 #include <string>
 
-#include "projsurf/core/cloud.hpp"
-#include "projsurf/core/colour_registration.hpp"
+#include "projsurf/types/cloud.hpp"
+#include "projsurf/detection/colour/colour_registration.hpp"
 #include "projsurf/frontend/stamp_pairing.hpp"
 
 namespace projsurf::ros_node {

@@ -1,7 +1,7 @@
 #include "continuous.hpp"
 
-#include "projsurf/core/held_rectangle.hpp"
-#include "projsurf/core/rigid_transform.hpp"
+#include "projsurf/tracking/held_rectangle.hpp"
+#include "projsurf/types/rigid_transform.hpp"
 
 namespace projsurf::ros_node {
 

@@ -1,14 +1,14 @@
 #pragma once
 // Continuous mode's ROS side: carries the steady tracker's rectangle between the camera frame
-// of each cloud and the fixed frame (odom/map, from tf2; core/rigid_transform.hpp), and tells
+// of each cloud and the fixed frame (odom/map, from tf2; types/rigid_transform.hpp), and tells
 // the tracker whether the held rectangle can still be shown from where the robot is now
-// (core/held_rectangle.hpp).
+// (tracking/held_rectangle.hpp).
 #include <Eigen/Geometry>
 
 #include "params.hpp"
-#include "projsurf/core/cloud.hpp"
-#include "projsurf/core/steady_tracker.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/types/cloud.hpp"
+#include "projsurf/tracking/steady_tracker.hpp"
+#include "projsurf/detection/detector.hpp"
 
 namespace projsurf::ros_node {
 

@@ -8,7 +8,7 @@
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/core/observed_free_space.hpp"
+#include "projsurf/detection/default/observed_free_space.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/io/depth_image_bytes.hpp"
 #include "projsurf/io/errors.hpp"

@@ -9,8 +9,8 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "projsurf/core/cloud.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/types/cloud.hpp"
+#include "projsurf/detection/detector.hpp"
 
 namespace projsurf::ros_node {
 

@@ -6,12 +6,12 @@
 
 #include <string>
 
-#include "projsurf/core/projector.hpp"
-#include "projsurf/core/steady_tracker.hpp"
+#include "projsurf/types/projector.hpp"
+#include "projsurf/tracking/steady_tracker.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
-#include "projsurf/pipeline/detector.hpp"
-#include "projsurf/pipeline/stand_planner.hpp"
+#include "projsurf/detection/detector.hpp"
+#include "projsurf/planning/stand_planner.hpp"
 
 namespace projsurf::ros_node {
 

@@ -9,7 +9,7 @@
 #include <Eigen/Geometry>
 #include <string>
 
-#include "projsurf/pipeline/stand_planner.hpp"
+#include "projsurf/planning/stand_planner.hpp"
 
 namespace projsurf::ros_node {
 

@@ -6,8 +6,8 @@
 #include <Eigen/Geometry>
 #include <opencv2/core.hpp>
 
-#include "projsurf/core/cloud.hpp"
-#include "projsurf/core/projector.hpp"
+#include "projsurf/types/cloud.hpp"
+#include "projsurf/types/projector.hpp"
 
 namespace projsurf::sim_test {
 

@@ -11,11 +11,11 @@
 #include <sstream>
 
 #include "cli/commands.hpp"
-#include "projsurf/core/calibration.hpp"
-#include "projsurf/core/calibration_picture.hpp"
-#include "projsurf/core/decoded_points.hpp"
-#include "projsurf/core/gray_code.hpp"
-#include "projsurf/core/projector_fit.hpp"
+#include "projsurf/calibration/calibration.hpp"
+#include "projsurf/calibration/calibration_picture.hpp"
+#include "projsurf/calibration/decoded_points.hpp"
+#include "projsurf/calibration/gray_code.hpp"
+#include "projsurf/calibration/projector_fit.hpp"
 #include "projsurf/frontend/resolution.hpp"
 #include "projsurf/io/calibration_report.hpp"
 #include "projsurf/io/errors.hpp"

@@ -10,9 +10,9 @@
 #include <opencv2/videoio.hpp>
 
 #include "cli/commands.hpp"
-#include "projsurf/core/beam_blanking.hpp"
-#include "projsurf/core/keystone.hpp"
-#include "projsurf/core/keystone_warper.hpp"
+#include "projsurf/people/beam_blanking.hpp"
+#include "projsurf/keystone/keystone.hpp"
+#include "projsurf/keystone/keystone_warper.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/frontend/progress.hpp"
 #include "projsurf/io/cloud_io.hpp"

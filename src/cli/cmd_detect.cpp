@@ -8,8 +8,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli/commands.hpp"
-#include "projsurf/core/colour_registration.hpp"
-#include "projsurf/core/gravity.hpp"
+#include "projsurf/detection/colour/colour_registration.hpp"
+#include "projsurf/detection/gravity.hpp"
 #include "projsurf/frontend/aspect.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/detection_summary.hpp"

@@ -89,7 +89,7 @@ sim::ColourSuiteOptions colourSuiteOptions(const EvalOptions &o) {
     return copt;
 }
 
-/// The colour suite alone (core/surface_suitability.hpp): DIR/colour.md and its summary line.
+/// The colour suite alone (detection/colour/surface_suitability.hpp): DIR/colour.md and its summary line.
 void runColourTable(const EvalOptions &o) {
     const sim::ColourSuiteResult colour = sim::runColourSuite(colourSuiteOptions(o), sim::defaultVariant().config);
     std::error_code ec;

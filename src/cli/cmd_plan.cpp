@@ -13,8 +13,8 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/pipeline/detector.hpp"
-#include "projsurf/pipeline/stand_planner.hpp"
+#include "projsurf/detection/detector.hpp"
+#include "projsurf/planning/stand_planner.hpp"
 
 namespace projsurf::cli {
 namespace {

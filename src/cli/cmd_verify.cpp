@@ -8,8 +8,8 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli/commands.hpp"
-#include "projsurf/core/keystone.hpp"
-#include "projsurf/core/projected_picture.hpp"
+#include "projsurf/keystone/keystone.hpp"
+#include "projsurf/calibration/projected_picture.hpp"
 #include "projsurf/frontend/resolution.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"

@@ -2,8 +2,8 @@
 // the contract's example projector. Exits 0 when a rectangle is found and can be shown.
 #include <iostream>
 
-#include "projsurf/core/keystone.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/keystone/keystone.hpp"
+#include "projsurf/detection/detector.hpp"
 
 int main() {
     projsurf::Cloud cloud;

@@ -8,8 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "projsurf/core/colour_registration.hpp"
-#include "projsurf/core/rectangle_search.hpp"
+#include "projsurf/detection/colour/colour_registration.hpp"
+#include "projsurf/detection/rectangle_search.hpp"
 #include "projsurf/eval/experiments.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/exact_depth.hpp"

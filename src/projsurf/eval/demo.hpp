@@ -10,9 +10,9 @@
 
 #include <opencv2/core.hpp>
 
-#include "projsurf/core/keystone.hpp"
+#include "projsurf/keystone/keystone.hpp"
 #include "projsurf/eval/experiments.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"

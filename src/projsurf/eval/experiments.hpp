@@ -11,10 +11,10 @@
 
 #include <opencv2/core.hpp>
 
-#include "projsurf/core/calibration.hpp"
-#include "projsurf/core/keystone.hpp"
+#include "projsurf/calibration/calibration.hpp"
+#include "projsurf/keystone/keystone.hpp"
 #include "projsurf/eval/scoring.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/scene.hpp"
 #include "projsurf/sim/sensor_model.hpp"
 

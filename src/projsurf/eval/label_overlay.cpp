@@ -4,7 +4,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/core/plane.hpp"
+#include "projsurf/types/plane.hpp"
 
 namespace projsurf {
 namespace {

@@ -6,9 +6,9 @@
 // unsuitable (the label's colour section, issue 15) is orange.
 #include <opencv2/core.hpp>
 
-#include "projsurf/core/camera.hpp"
-#include "projsurf/core/cloud.hpp"
-#include "projsurf/core/plane_frame.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/types/cloud.hpp"
+#include "projsurf/types/plane_frame.hpp"
 #include "projsurf/eval/real_labels.hpp"
 
 namespace projsurf {

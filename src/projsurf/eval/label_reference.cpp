@@ -5,7 +5,7 @@
 #include <limits>
 #include <opencv2/core.hpp>
 
-#include "projsurf/core/plane.hpp"
+#include "projsurf/types/plane.hpp"
 
 namespace projsurf {
 

@@ -7,9 +7,9 @@
 #include <optional>
 #include <vector>
 
-#include "projsurf/core/camera.hpp"
-#include "projsurf/core/cloud.hpp"
-#include "projsurf/core/plane_frame.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/types/cloud.hpp"
+#include "projsurf/types/plane_frame.hpp"
 #include "projsurf/eval/real_labels.hpp"
 
 namespace projsurf {

@@ -9,7 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/core/colour_registration.hpp"
+#include "projsurf/detection/colour/colour_registration.hpp"
 #include "projsurf/eval/label_overlay.hpp"
 #include "projsurf/eval/plot.hpp"
 #include "projsurf/io/cloud_io.hpp"

@@ -1,6 +1,6 @@
 #include "projsurf/eval/lens_offset_demo.hpp"
 
-#include "projsurf/core/keystone.hpp"
+#include "projsurf/keystone/keystone.hpp"
 #include "projsurf/sim/sensor_model.hpp"
 
 namespace projsurf::sim {

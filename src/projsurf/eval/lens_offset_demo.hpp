@@ -6,9 +6,9 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "projsurf/core/projector.hpp"
+#include "projsurf/types/projector.hpp"
 #include "projsurf/eval/experiments.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"

@@ -1,6 +1,6 @@
 #include "projsurf/eval/plan_demo.hpp"
 
-#include "projsurf/core/keystone.hpp"
+#include "projsurf/keystone/keystone.hpp"
 
 namespace projsurf::sim {
 

@@ -3,7 +3,7 @@
 // scene seen again from there, detected and corrected, and what an audience then sees.
 #include <opencv2/core.hpp>
 
-#include "projsurf/pipeline/stand_planner.hpp"
+#include "projsurf/planning/stand_planner.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 

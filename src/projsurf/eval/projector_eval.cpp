@@ -5,9 +5,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "projsurf/core/keystone.hpp"
+#include "projsurf/keystone/keystone.hpp"
 #include "projsurf/eval/experiments.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "projsurf/core/projector.hpp"
+#include "projsurf/types/projector.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/sensor_model.hpp"
 

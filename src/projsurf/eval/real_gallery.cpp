@@ -1,6 +1,6 @@
 #include "projsurf/eval/real_gallery.hpp"
 
-#include "projsurf/core/gravity.hpp"
+#include "projsurf/detection/gravity.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -7,7 +7,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/detection/detector.hpp"
 
 namespace projsurf {
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "projsurf/core/plane.hpp"
-#include "projsurf/core/projector.hpp"
+#include "projsurf/types/plane.hpp"
+#include "projsurf/types/projector.hpp"
 
 namespace projsurf {
 
@@ -40,7 +40,7 @@ struct LabelBest {
 /// colour (issue 15): a framed print, a poster, a screen, a window, a dark panel, a glare spot.
 struct LabelUnsuitable {
     LabelPolygon polygon;  ///< depth-image pixels, as the obstacles
-    std::string why;       ///< "textured", "dark", "saturated" or "glare" (core/surface_suitability's Unfit)
+    std::string why;       ///< "textured", "dark", "saturated" or "glare" (detection/colour/surface_suitability's Unfit)
 };
 
 /// The optional `colour:` section (frames with a registered rgb.png): judged = the section is

@@ -6,8 +6,8 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "projsurf/core/camera.hpp"
-#include "projsurf/core/plane_frame.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/types/plane_frame.hpp"
 #include "projsurf/eval/real_labels.hpp"
 
 namespace projsurf {

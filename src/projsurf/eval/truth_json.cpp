@@ -1,6 +1,6 @@
 #include "projsurf/eval/truth_json.hpp"
 
-#include "projsurf/core/plane.hpp"
+#include "projsurf/types/plane.hpp"
 #include "projsurf/io/files.hpp"
 
 namespace projsurf {

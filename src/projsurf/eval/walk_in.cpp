@@ -3,7 +3,7 @@
 #include <chrono>
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/core/beam_blanking.hpp"
+#include "projsurf/people/beam_blanking.hpp"
 
 namespace projsurf::sim {
 namespace {

@@ -4,8 +4,8 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
-#include "projsurf/core/plane.hpp"
-#include "projsurf/core/projector.hpp"
+#include "projsurf/types/plane.hpp"
+#include "projsurf/types/projector.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scene.hpp"
 

@@ -4,8 +4,8 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "projsurf/core/camera.hpp"
-#include "projsurf/core/cloud.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/types/cloud.hpp"
 
 namespace projsurf::frontend {
 

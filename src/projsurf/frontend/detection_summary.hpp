@@ -2,7 +2,7 @@
 // A detection in one line for a person: what `detect --json` prints and the node's ~detect answers.
 #include <string>
 
-#include "projsurf/pipeline/detection.hpp"
+#include "projsurf/detection/detection.hpp"
 
 namespace projsurf::frontend {
 

@@ -1,13 +1,13 @@
 #pragma once
-// The framebuffer a projector shows: a picture keystone-corrected (core/keystone) into a
+// The framebuffer a projector shows: a picture keystone-corrected (keystone/keystone) into a
 // detected rectangle, letterboxed. What `projsurf correct`, the node and Python's correct() do.
 #include <opencv2/core.hpp>
 #include <optional>
 #include <string>
 
-#include "projsurf/core/keystone.hpp"
-#include "projsurf/core/plane_frame.hpp"
-#include "projsurf/core/projector.hpp"
+#include "projsurf/keystone/keystone.hpp"
+#include "projsurf/types/plane_frame.hpp"
+#include "projsurf/types/projector.hpp"
 
 namespace projsurf::frontend {
 
@@ -26,7 +26,7 @@ struct FramebufferRender {
 FramebufferRender renderFramebuffer(const Projector &projector, const Rectangle &rect, const cv::Mat &picture,
                                     double tolerance_px);
 
-/// The keystone only (for a stream of frames, warped by core/keystone_warper), same contract.
+/// The keystone only (for a stream of frames, warped by keystone/keystone_warper), same contract.
 FramebufferRender keystoneFor(const Projector &projector, const Rectangle &rect, cv::Size picture, double tolerance_px);
 
 }  // namespace projsurf::frontend

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <vector>
 
-#include "projsurf/core/gravity.hpp"
+#include "projsurf/detection/gravity.hpp"
 #include "projsurf/io/errors.hpp"
 
 namespace projsurf::frontend {

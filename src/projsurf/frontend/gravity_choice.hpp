@@ -5,8 +5,8 @@
 #include <optional>
 #include <string>
 
-#include "projsurf/core/cloud.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/types/cloud.hpp"
+#include "projsurf/detection/detector.hpp"
 
 namespace projsurf::frontend {
 
@@ -28,7 +28,7 @@ struct ResolvedGravity {
 };
 
 /// The gravity for one cloud: with `from_floor`, the floor's down when a floor is in view
-/// (core/gravity.hpp, searched near choice.gravity), else choice.gravity.
+/// (detection/gravity.hpp, searched near choice.gravity), else choice.gravity.
 ResolvedGravity resolveGravity(const GravityChoice &choice, const Cloud &cloud);
 
 /// Degrees between a level camera's down and the floor's, when a floor is in view: a level

@@ -5,8 +5,8 @@
 // the detector returns; the evaluation scores the detector itself.
 #include <string>
 
-#include "projsurf/pipeline/detection.hpp"
-#include "projsurf/pipeline/detector_config.hpp"
+#include "projsurf/detection/detection.hpp"
+#include "projsurf/detection/detector_config.hpp"
 
 namespace projsurf::frontend {
 

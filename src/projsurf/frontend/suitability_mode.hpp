@@ -1,10 +1,10 @@
 #pragma once
 // The colour suitability mode as a user writes it (`detect --suitability`, the node's
 // ~suitability): "off", "avoid" or "prefer" (docs/suitability.md); its word back is
-// suitabilityModeName (pipeline/detector_config.hpp).
+// suitabilityModeName (detection/detector_config.hpp).
 #include <string>
 
-#include "projsurf/pipeline/detector_config.hpp"
+#include "projsurf/detection/detector_config.hpp"
 
 namespace projsurf::frontend {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "projsurf/core/calibration.hpp"
+#include "projsurf/calibration/calibration.hpp"
 
 namespace projsurf {
 

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
 
-#include "projsurf/core/camera.hpp"
+#include "projsurf/types/camera.hpp"
 #include "projsurf/io/cloud_format_parsing.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"

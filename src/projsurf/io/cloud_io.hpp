@@ -4,7 +4,7 @@
 // malformed headers and silently drops x/y/z stored as doubles.
 #include <string>
 
-#include "projsurf/core/cloud.hpp"
+#include "projsurf/types/cloud.hpp"
 
 namespace projsurf {
 

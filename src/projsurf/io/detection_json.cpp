@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "projsurf/core/focus.hpp"
+#include "projsurf/people/focus.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"

@@ -3,13 +3,13 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/detection/detector.hpp"
 
 namespace projsurf {
 
 /// The contract's keys (found, reason, plane, rectangle, surface_check, timing_ms) plus
 /// extensions (method, gravity, plane.yaw). With the projector, also the contract's `focus`
-/// (core/focus.hpp; null when there is no rectangle).
+/// (people/focus.hpp; null when there is no rectangle).
 nlohmann::json detectionToJson(const Detection &detection, const DetectorConfig &config,
                                const Projector *projector = nullptr);
 

@@ -8,7 +8,7 @@
 #include <limits>
 #include <opencv2/imgproc.hpp>
 #include <tuple>
-#include "projsurf/core/observed_free_space.hpp"
+#include "projsurf/detection/default/observed_free_space.hpp"
 
 #include "projsurf/io/limits.hpp"
 

@@ -4,8 +4,8 @@
 // legend.
 #include <opencv2/core.hpp>
 
-#include "projsurf/core/camera.hpp"
-#include "projsurf/pipeline/detector.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/detection/detector.hpp"
 
 namespace projsurf {
 

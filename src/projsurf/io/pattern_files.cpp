@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
-#include "projsurf/core/gray_code.hpp"
+#include "projsurf/calibration/gray_code.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"

@@ -3,7 +3,7 @@
 // (see cloud_io.hpp). readCloud() chooses this reader by extension.
 #include <string>
 
-#include "projsurf/core/cloud.hpp"
+#include "projsurf/types/cloud.hpp"
 
 namespace projsurf {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "projsurf/core/cloud.hpp"
+#include "projsurf/types/cloud.hpp"
 
 namespace projsurf {
 

@@ -6,7 +6,7 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "projsurf/core/camera.hpp"
+#include "projsurf/types/camera.hpp"
 
 namespace projsurf {
 

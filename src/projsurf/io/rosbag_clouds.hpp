@@ -5,7 +5,7 @@
 #include <functional>
 #include <string>
 
-#include "projsurf/core/cloud.hpp"
+#include "projsurf/types/cloud.hpp"
 
 namespace projsurf {
 

@@ -3,7 +3,7 @@
 // full-model keys (io/yaml_files.cpp), plus the fit's residuals and where the captures were.
 #include <string>
 
-#include "projsurf/core/projector_fit.hpp"
+#include "projsurf/calibration/projector_fit.hpp"
 
 namespace projsurf {
 

@@ -2,8 +2,8 @@
 // The contract's YAML files: projector calibration and camera intrinsics.
 #include <string>
 
-#include "projsurf/core/camera.hpp"
-#include "projsurf/core/projector.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/types/projector.hpp"
 
 namespace YAML {
 class Node;

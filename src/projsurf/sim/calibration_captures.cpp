@@ -4,8 +4,8 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/core/calibration_picture.hpp"
-#include "projsurf/core/gray_code.hpp"
+#include "projsurf/calibration/calibration_picture.hpp"
+#include "projsurf/calibration/gray_code.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
 namespace projsurf::sim {

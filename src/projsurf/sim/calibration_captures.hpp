@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "projsurf/core/calibration.hpp"
-#include "projsurf/core/projector.hpp"
+#include "projsurf/calibration/calibration.hpp"
+#include "projsurf/types/projector.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/sensor_model.hpp"
 

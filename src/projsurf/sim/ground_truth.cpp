@@ -5,7 +5,7 @@
 #include <limits>
 #include <map>
 
-#include "projsurf/core/rectangle_search.hpp"
+#include "projsurf/detection/rectangle_search.hpp"
 #include "projsurf/sim/ray_cast.hpp"
 
 namespace projsurf::sim {

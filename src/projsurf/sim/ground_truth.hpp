@@ -3,7 +3,7 @@
 // (default 5 mm) that are on the surface, seen by the camera (in the image, in range, not
 // at a grazing angle, not hidden) and lit by the projector (in its frustum, not in an
 // obstacle's shadow); then the largest free upright rectangle of the wanted aspect ratio
-// (core/rectangle_search.hpp). The best surface's rectangle is the ground truth.
+// (detection/rectangle_search.hpp). The best surface's rectangle is the ground truth.
 //
 // What is free (TruthOptions::tolerance, 1 cm): a thing standing at most 1 cm proud of the
 // surface does not hide it, anything farther out does. So flush things (posters, whiteboards,
@@ -18,9 +18,9 @@
 #include <string>
 #include <vector>
 
-#include "projsurf/core/plane.hpp"
-#include "projsurf/core/plane_frame.hpp"
-#include "projsurf/core/projector.hpp"
+#include "projsurf/types/plane.hpp"
+#include "projsurf/types/plane_frame.hpp"
+#include "projsurf/types/projector.hpp"
 #include "projsurf/sim/scene.hpp"
 #include "projsurf/sim/sensor_model.hpp"
 

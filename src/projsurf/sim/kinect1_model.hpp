@@ -21,7 +21,7 @@
 namespace projsurf::sim {
 
 struct Kinect1Model {
-    /// Camera (640x480, core/camera.hpp defaults), K&OE noise, quantisation, range, grazing
+    /// Camera (640x480, types/camera.hpp defaults), K&OE noise, quantisation, range, grazing
     /// dropouts, IR emitter shadow and ragged edges, as in the independent-noise model.
     SensorModel base;
     /// 1/m, RMS over the image of the low-frequency inverse-depth distortion: depth RMS =

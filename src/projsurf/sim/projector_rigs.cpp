@@ -5,8 +5,8 @@
 
 #include <Eigen/Geometry>
 
-#include "projsurf/core/decoded_points.hpp"
-#include "projsurf/core/gray_code.hpp"
+#include "projsurf/calibration/decoded_points.hpp"
+#include "projsurf/calibration/gray_code.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
 namespace projsurf::sim {

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "projsurf/core/projector.hpp"
-#include "projsurf/core/projector_fit.hpp"
+#include "projsurf/types/projector.hpp"
+#include "projsurf/calibration/projector_fit.hpp"
 #include "projsurf/sim/calibration_captures.hpp"
 #include "projsurf/sim/sensor_model.hpp"
 

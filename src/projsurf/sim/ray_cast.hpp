@@ -5,9 +5,9 @@
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
-#include "projsurf/core/camera.hpp"
-#include "projsurf/core/plane.hpp"
-#include "projsurf/core/projector.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/types/plane.hpp"
+#include "projsurf/types/projector.hpp"
 #include "projsurf/sim/scene.hpp"
 
 namespace projsurf::sim {

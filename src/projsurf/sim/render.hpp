@@ -5,8 +5,8 @@
 #include <opencv2/core.hpp>
 #include <optional>
 
-#include "projsurf/core/cloud.hpp"
-#include "projsurf/core/projector.hpp"
+#include "projsurf/types/cloud.hpp"
+#include "projsurf/types/projector.hpp"
 #include "projsurf/sim/ray_cast.hpp"
 #include "projsurf/sim/scene.hpp"
 #include "projsurf/sim/sensor_model.hpp"

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "projsurf/core/plane.hpp"
-#include "projsurf/core/projector.hpp"
+#include "projsurf/types/plane.hpp"
+#include "projsurf/types/projector.hpp"
 #include "projsurf/sim/scene.hpp"
 
 namespace projsurf::sim {

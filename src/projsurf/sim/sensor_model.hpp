@@ -15,12 +15,12 @@
 //    3D Reconstruction and Tracking", 3DIMPVT 2012 (lateral sigma ~0.8 px).
 #include <Eigen/Core>
 
-#include "projsurf/core/camera.hpp"
+#include "projsurf/types/camera.hpp"
 
 namespace projsurf::sim {
 
 struct SensorModel {
-    CameraIntrinsics camera;  ///< Kinect v1 VGA, depth registered to colour (core/camera.hpp defaults)
+    CameraIntrinsics camera;  ///< Kinect v1 VGA, depth registered to colour (types/camera.hpp defaults)
 
     bool noise = true;                         ///< add axial depth noise (and colour noise)
     double noise_k = 1.425e-3;                 ///< 1/m: total sigma_z = k z^2 (K&OE 2012), quantisation included

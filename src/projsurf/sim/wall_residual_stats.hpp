@@ -16,8 +16,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "projsurf/core/cloud.hpp"
-#include "projsurf/core/plane.hpp"
+#include "projsurf/types/cloud.hpp"
+#include "projsurf/types/plane.hpp"
 
 namespace projsurf::sim {
 

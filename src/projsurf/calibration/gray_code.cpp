@@ -1,0 +1,139 @@
+#include "projsurf/calibration/gray_code.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <opencv2/imgproc.hpp>
+
+#include "projsurf/calibration/greyscale.hpp"
+
+namespace projsurf {
+
+int grayBits(int n) {
+    int b = 1;
+    while ((1 << b) < n) ++b;
+    return b;
+}
+
+std::vector<GrayPattern> grayPatterns(int width, int height) {
+    std::vector<GrayPattern> out;
+    out.push_back({"white", GrayPattern::Kind::White, 0, false});
+    out.push_back({"black", GrayPattern::Kind::Black, 0, false});
+    for (int axis = 0; axis < 2; ++axis) {
+        const int bits = grayBits(axis == 0 ? width : height);
+        const char *prefix = axis == 0 ? "col_" : "row_";
+        const auto kind = axis == 0 ? GrayPattern::Kind::Column : GrayPattern::Kind::Row;
+        for (int b = bits - 1; b >= 0; --b) {
+            out.push_back({prefix + std::to_string(b), kind, b, false});
+            out.push_back({prefix + std::to_string(b) + "_inv", kind, b, true});
+        }
+    }
+    return out;
+}
+
+cv::Mat grayPatternImage(const GrayPattern &p, int width, int height) {
+    cv::Mat img(height, width, CV_8UC1, cv::Scalar(p.kind == GrayPattern::Kind::Black ? 0 : 255));
+    if (p.kind == GrayPattern::Kind::White || p.kind == GrayPattern::Kind::Black) return img;
+    const bool columns = p.kind == GrayPattern::Kind::Column;
+    const int n = columns ? width : height;
+    std::vector<uchar> line(n);
+    for (int i = 0; i < n; ++i) {
+        const int gray = i ^ (i >> 1);
+        const bool on = ((gray >> p.bit) & 1) != p.inverse;
+        line[i] = on ? 255 : 0;
+    }
+    for (int y = 0; y < height; ++y) {
+        uchar *r = img.ptr<uchar>(y);
+        for (int x = 0; x < width; ++x) r[x] = columns ? line[x] : line[y];
+    }
+    return img;
+}
+
+namespace {
+
+cv::Mat toGrey(const cv::Mat &m) {
+    cv::Mat f;
+    greyscale(m).convertTo(f, CV_32F);
+    return f;
+}
+
+}  // namespace
+
+GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, int width, int height, const GrayDecodeConfig &cfg) {
+    const auto patterns = grayPatterns(width, height);
+    if (captures.size() != patterns.size())
+        throw std::invalid_argument("gray decode: " + std::to_string(captures.size()) + " captures for " +
+                                    std::to_string(patterns.size()) + " patterns");
+    const cv::Size size = captures[0].size();
+    std::vector<cv::Mat> grey;
+    for (const auto &c : captures) {
+        if (c.size() != size || c.empty()) throw std::invalid_argument("gray decode: captures of different sizes");
+        grey.push_back(toGrey(c));
+    }
+    GrayDecoding d;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    d.column = cv::Mat(size, CV_64F, cv::Scalar(nan));
+    d.row = cv::Mat(size, CV_64F, cv::Scalar(nan));
+    d.confidence = cv::Mat(size, CV_8U, cv::Scalar(0));
+    const int col_bits = grayBits(width), row_bits = grayBits(height);
+    for (int y = 0; y < size.height; ++y)
+        for (int x = 0; x < size.width; ++x) {
+            const double white = grey[0].at<float>(y, x), black = grey[1].at<float>(y, x);
+            const double contrast = white - black;
+            if (!(contrast >= cfg.min_contrast)) continue;
+            double value[2] = {nan, nan};
+            std::size_t at = 2;
+            for (int axis = 0; axis < 2; ++axis) {
+                const int bits = axis == 0 ? col_bits : row_bits;
+                const int n = axis == 0 ? width : height;
+                // Every bit; `unsure` marks those whose pair is too close to call.
+                int gray = 0, unsure = 0;
+                for (int b = bits - 1; b >= 0; --b, at += 2) {
+                    const double diff = grey[at].at<float>(y, x) - grey[at + 1].at<float>(y, x);
+                    if (std::abs(diff) < cfg.min_bit_margin * contrast)
+                        unsure |= 1 << b;
+                    else if (diff > 0)
+                        gray |= 1 << b;
+                }
+                auto toBinary = [bits](int g) {
+                    int binary = 0;
+                    for (int b = bits - 1, prev = 0; b >= 0; --b) {
+                        prev ^= (g >> b) & 1;
+                        binary |= prev << b;
+                    }
+                    return binary;
+                };
+                // The unresolved low bits (stripes finer than the camera sees): the range's centre.
+                int low = 0;
+                while (low < bits && (unsure >> low) & 1) ++low;
+                if (bits - low < std::min(cfg.min_bits, bits)) break;
+                const int high_unsure = unsure >> low;
+                const int mask_low = (1 << low) - 1;
+                double v = 0;
+                if (high_unsure == 0) {
+                    v = (toBinary(gray & ~mask_low) & ~mask_low) + 0.5 * mask_low;
+                } else if ((high_unsure & (high_unsure - 1)) == 0) {
+                    // One unsure bit above the resolved ones: on the boundary between two
+                    // neighbouring codes (Gray code: only that bit differs), if they are neighbours.
+                    const int bit = 1 << (low + __builtin_ctz(high_unsure));
+                    const int a = toBinary(gray & ~mask_low & ~bit) & ~mask_low,
+                              b = toBinary((gray & ~mask_low) | bit) & ~mask_low;
+                    if (std::abs(a - b) != (1 << low)) break;
+                    v = 0.5 * (a + b) + 0.5 * mask_low;
+                } else {
+                    break;
+                }
+                if (v > n - 1) break;  // codes beyond the framebuffer: a misread
+                value[axis] = v;
+            }
+            if (std::isnan(value[0]) || std::isnan(value[1])) continue;
+            d.column.at<double>(y, x) = value[0];
+            d.row.at<double>(y, x) = value[1];
+            d.confidence.at<uchar>(y, x) = 255;
+            ++d.decoded;
+        }
+    return d;
+}
+
+}  // namespace projsurf

@@ -1,0 +1,196 @@
+#include "projsurf/calibration/projected_picture.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <opencv2/imgproc.hpp>
+
+#include "projsurf/calibration/greyscale.hpp"
+
+namespace projsurf {
+
+namespace {
+
+cv::Mat grey8(const cv::Mat &m) {
+    cv::Mat g = greyscale(m);
+    if (g.depth() != CV_8U) g.convertTo(g, CV_8U);
+    return g;
+}
+
+/// The corner of `pts` extreme in direction (sx, sy): TL = (-1,-1), TR = (1,-1), ...
+cv::Point2f extreme(const std::vector<cv::Point> &pts, int sx, int sy) {
+    cv::Point2f best = pts.front();
+    double score = -HUGE_VAL;
+    for (const auto &p : pts) {
+        const double s = sx * p.x + sy * p.y;
+        if (s > score) score = s, best = p;
+    }
+    return best;
+}
+
+/// The largest bright region's outline (CHAIN_APPROX_NONE); empty if none.
+std::vector<cv::Point> largestContour(const cv::Mat &mask) {
+    std::vector<std::vector<cv::Point>> contours;
+    cv::findContours(mask.clone(), contours, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
+    std::size_t best = contours.size();
+    double area = 0;
+    for (std::size_t i = 0; i < contours.size(); ++i) {
+        const double a = cv::contourArea(contours[i]);
+        if (a > area) area = a, best = i;
+    }
+    return best < contours.size() ? contours[best] : std::vector<cv::Point>{};
+}
+
+}  // namespace
+
+std::optional<Corners2> litFramebufferCorners(const cv::Mat &framebuffer) {
+    const cv::Mat g = grey8(framebuffer);
+    cv::Mat mask = g > 0;
+    const auto c = largestContour(mask);
+    if (c.size() < 4) return std::nullopt;
+    const int sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+    Corners2 out;
+    for (int i = 0; i < 4; ++i) {
+        const cv::Point2f p = extreme(c, sx[i], sy[i]);
+        // Outer pixel corner: half a pixel outwards.
+        out[i] = Eigen::Vector2d(p.x + 0.5 * sx[i], p.y + 0.5 * sy[i]);
+    }
+    return out;
+}
+
+cv::Mat verificationCard(int width, int height) {
+    cv::Mat card(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
+    cv::circle(card, {width / 2, height / 2}, std::max(2, std::min(width, height) / 10), cv::Scalar(160, 160, 160),
+               cv::FILLED);
+    return card;
+}
+
+FoundPicture findProjectedPicture(const cv::Mat &colour, const cv::Mat &depth, const CameraIntrinsics &camera,
+                                  double min_area_px) {
+    FoundPicture f;
+    const cv::Mat g = grey8(colour);
+    cv::Mat smooth;
+    cv::GaussianBlur(g, smooth, cv::Size(3, 3), 0.0);
+    cv::Mat mask;
+    const double level = cv::threshold(smooth, mask, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
+    cv::morphologyEx(mask, mask, cv::MORPH_CLOSE, cv::getStructuringElement(cv::MORPH_ELLIPSE, {5, 5}));
+    const auto contour = largestContour(mask);
+    if (contour.size() < 8 || cv::contourArea(contour) < min_area_px) {
+        f.reason = "no bright picture in the colour image";
+        return f;
+    }
+    // Bright against dark: the lit level must clearly exceed the ambient one.
+    {
+        cv::Mat inside(mask.size(), CV_8U, cv::Scalar(0));
+        cv::drawContours(inside, std::vector<std::vector<cv::Point>>{contour}, 0, cv::Scalar(255), cv::FILLED);
+        const double lit = cv::mean(smooth, inside)[0], dark = cv::mean(smooth, ~inside)[0];
+        if (!(lit - dark > 30.0) || level <= 0) {
+            f.reason = "the picture is not clearly brighter than its surroundings";
+            return f;
+        }
+    }
+    std::vector<cv::Point> hull;
+    cv::convexHull(contour, hull);
+    std::vector<cv::Point> approx;
+    const double perimeter = cv::arcLength(hull, true);
+    for (double eps = 0.01; eps <= 0.1 && approx.size() != 4; eps += 0.005)
+        cv::approxPolyDP(hull, approx, eps * perimeter, true);
+    if (approx.size() != 4) {
+        f.reason = "the bright region is not a quadrilateral";
+        return f;
+    }
+    // Order the rough corners TL, TR, BR, BL.
+    std::array<cv::Point2f, 4> rough;
+    const int sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+    for (int i = 0; i < 4; ++i) rough[i] = extreme(approx, sx[i], sy[i]);
+    cv::Point2f centroid(0, 0);
+    for (const auto &r : rough) centroid += 0.25f * r;
+    // Each edge: the outline's points in its middle 80 %, a line, moved half a pixel out (the
+    // outline runs through the centres of the outermost bright pixels).
+    std::array<cv::Vec3d, 4> lines;  // a x + b y = c, (a, b) unit, pointing outwards
+    for (int e = 0; e < 4; ++e) {
+        const cv::Point2f a = rough[e], b = rough[(e + 1) % 4];
+        const cv::Point2f d = b - a;
+        const double len2 = d.dot(d);
+        if (!(len2 > 16)) {
+            f.reason = "the picture is too small in the colour image";
+            return f;
+        }
+        std::vector<cv::Point2f> pts;
+        for (const auto &p : contour) {
+            const cv::Point2f q = cv::Point2f(p) - a;
+            const double t = q.dot(d) / len2;
+            const double off = std::abs(q.x * d.y - q.y * d.x) / std::sqrt(len2);
+            if (t > 0.1 && t < 0.9 && off < 4.0) pts.push_back(p);
+        }
+        if (pts.size() < 5) {
+            f.reason = "an edge of the picture is not visible";
+            return f;
+        }
+        cv::Vec4f l;
+        cv::fitLine(pts, l, cv::DIST_HUBER, 0, 0.01, 0.01);
+        cv::Vec2d n(-l[1], l[0]);
+        double c = n[0] * l[2] + n[1] * l[3];
+        if (n[0] * centroid.x + n[1] * centroid.y > c) n = -n, c = -c;  // outwards
+        lines[e] = cv::Vec3d(n[0], n[1], c + 0.5);
+    }
+    for (int i = 0; i < 4; ++i) {
+        const cv::Vec3d &l1 = lines[(i + 3) % 4], &l2 = lines[i];  // the edges meeting at corner i
+        const double det = l1[0] * l2[1] - l1[1] * l2[0];
+        if (!(std::abs(det) > 1e-9)) {
+            f.reason = "two edges of the picture are parallel";
+            return f;
+        }
+        f.image_px[i] = Eigen::Vector2d((l1[2] * l2[1] - l1[1] * l2[2]) / det, (l1[0] * l2[2] - l1[2] * l2[0]) / det);
+    }
+    // The plane through the depth inside the picture (shrunk away from its edges).
+    cv::Mat inside(mask.size(), CV_8U, cv::Scalar(0));
+    std::vector<cv::Point> quad;
+    for (const auto &p : f.image_px) quad.emplace_back(cvRound(p.x()), cvRound(p.y()));
+    cv::fillConvexPoly(inside, quad, cv::Scalar(255));
+    cv::erode(inside, inside, cv::getStructuringElement(cv::MORPH_RECT, {9, 9}));
+    std::vector<Eigen::Vector3d> pts;
+    for (int y = 0; y < depth.rows; y += 2)
+        for (int x = 0; x < depth.cols; x += 2) {
+            if (!inside.at<uchar>(y, x)) continue;
+            const int raw = depth.at<std::uint16_t>(y, x);
+            if (raw > 0) pts.push_back(camera.backProject(x, y, raw / camera.depth_scale));
+        }
+    if (pts.size() < 50) {
+        f.reason = "too few depth readings inside the picture";
+        return f;
+    }
+    // Least squares, then once more without points more than 3 cm off.
+    Plane plane;
+    for (int pass = 0; pass < 2; ++pass) {
+        Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+        int n = 0;
+        for (const auto &p : pts)
+            if (pass == 0 || std::abs(plane.signedDistance(p)) < 0.03) mean += p, ++n;
+        if (n < 50) break;
+        mean /= n;
+        Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+        for (const auto &p : pts)
+            if (pass == 0 || std::abs(plane.signedDistance(p)) < 0.03) cov += (p - mean) * (p - mean).transpose();
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+        Eigen::Vector3d normal = es.eigenvectors().col(0);
+        if (normal.dot(mean) > 0) normal = -normal;  // towards the camera
+        plane = makePlane(normal, -normal.dot(mean));
+    }
+    f.plane = plane;
+    for (int i = 0; i < 4; ++i) {
+        const Eigen::Vector3d ray = camera.backProject(f.image_px[i].x(), f.image_px[i].y(), 1.0).normalized();
+        const auto hit = intersectRay(plane, Eigen::Vector3d::Zero(), ray);
+        if (!hit) {
+            f.reason = "a corner's camera ray misses the fitted plane";
+            return f;
+        }
+        f.corners[i] = *hit;
+    }
+    f.found = true;
+    return f;
+}
+
+}  // namespace projsurf

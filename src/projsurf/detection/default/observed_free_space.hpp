@@ -1,0 +1,42 @@
+#pragma once
+// Where on a plane the camera saw free wall (the default method's 3.2.2): a cell is free when
+// wall points were seen in it (gaps between samples closed), nothing was seen through it, and
+// no point in front of the wall shadows it from the projector.
+#include <Eigen/Core>
+#include <array>
+#include <opencv2/core.hpp>
+
+#include "projsurf/detection/outline_raster.hpp"
+#include "projsurf/detection/default/plane_observation.hpp"
+
+namespace projsurf {
+
+/// Why a cell of the raster is not free (what an overlay shows).
+enum class CellState : uchar {
+    Free = 0,
+    NoReading = 1,    ///< no wall point seen there (missing depth, or off the wall)
+    SeenThrough = 2,  ///< points beyond the wall seen through it (a hole, a door, glass)
+    InFront = 3,      ///< something between the projector and the wall shadows it
+    Edge = 4,         ///< the cell along the edge of the observed wall (its true edge may be a cell in)
+    // Free by depth, but unfit by its colour (detection/colour/surface_suitability.hpp): 4 + its Unfit value.
+    Glare = 5,      ///< blown out: specular or emissive (glass, a lamp, a screen)
+    Dark = 6,       ///< too dark (low albedo)
+    Textured = 7,   ///< textured or edgy (a framed picture, a calendar, a busy pattern)
+    Saturated = 8,  ///< too saturated a colour
+};
+
+struct SurfaceCells {
+    cv::Mat free;   ///< CV_8U, 255 = free surface (the footprint not applied)
+    cv::Mat state;  ///< CV_8U, a CellState per cell
+};
+
+/// Free surface from an observation: support closed over gaps up to `gap_cells` cells;
+/// blocked where more points were seen through than on the wall, or shadowed, ignoring blocked
+/// cells with fewer than `min_blocked_neighbours` blocked cells in their 3x3 (sensor noise);
+/// one cell trimmed off every edge so the picture never hangs over the wall's true edge.
+SurfaceCells observedFreeSurface(const PlaneObservation &observation, int gap_cells, int min_blocked_neighbours);
+
+/// Cells of `raster` wholly inside the convex footprint (plane coordinates): 255, else 0.
+cv::Mat footprintCells(const RasterFrame &raster, const std::array<Eigen::Vector2d, 4> &footprint_uv);
+
+}  // namespace projsurf

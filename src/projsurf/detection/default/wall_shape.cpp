@@ -1,0 +1,105 @@
+#include "projsurf/detection/default/wall_shape.hpp"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+
+namespace projsurf {
+
+std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const std::vector<float> &band,
+                                      const Plane &plane, const PlaneFrame &frame, const WallShapeOptions &options) {
+    struct Sample {
+        Eigen::Vector2d uv;
+        double h, band, z;
+    };
+    std::vector<Sample> near;
+    Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e30), hi = Eigen::Vector2d::Constant(-1e30);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const Eigen::Vector3d p = points[i].cast<double>();
+        const double h = plane.signedDistance(p);
+        if (!(std::abs(h) <= options.capture_bands * band[i])) continue;
+        near.push_back({frame.toPlane(p), h, band[i], p.z()});
+        lo = lo.cwiseMin(near.back().uv);
+        hi = hi.cwiseMax(near.back().uv);
+    }
+    if (static_cast<int>(near.size()) < options.min_points) return std::nullopt;
+    // A few thousand points pin six coefficients down; keep every k-th of the rest.
+    if (static_cast<int>(near.size()) > options.max_points) {
+        const std::size_t k = (near.size() + options.max_points - 1) / options.max_points;
+        std::size_t j = 0;
+        for (std::size_t i = 0; i < near.size(); i += k) near[j++] = near[i];
+        near.resize(j);
+    }
+    WallShape shape;
+    shape.centre = 0.5 * (lo + hi);
+    auto basis = [&](const Eigen::Vector2d &uv) {
+        const double x = uv.x() - shape.centre.x(), y = uv.y() - shape.centre.y();
+        return (Eigen::Matrix<double, 6, 1>() << 1.0, x, y, x * x, x * y, y * y).finished();
+    };
+    for (int it = 0; it < options.iterations; ++it) {
+        Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
+        Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
+        for (const Sample &s : near) {
+            const double r = (s.h - shape.height(s.uv)) / (options.tukey_bands * s.band);
+            if (std::abs(r) >= 1.0) continue;
+            const double w = (1.0 - r * r) * (1.0 - r * r);
+            const Eigen::Matrix<double, 6, 1> phi = basis(s.uv);
+            const Eigen::Matrix<double, 6, 1> wphi = w * phi;
+            for (int i = 0; i < 6; ++i)
+                for (int j = 0; j <= i; ++j) A(i, j) += wphi[i] * phi[j];
+            b += wphi * s.h;
+        }
+        const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(A.selfadjointView<Eigen::Lower>());
+        if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-12)) return std::nullopt;
+        shape.c = ldlt.solve(b);
+        if (!shape.c.allFinite()) return std::nullopt;
+    }
+    // A bend larger than any sensor gives means the fit followed something else.
+    for (const Eigen::Vector2d &corner : {lo, hi, Eigen::Vector2d(lo.x(), hi.y()), Eigen::Vector2d(hi.x(), lo.y())})
+        if (!(std::abs(shape.height(corner)) <= options.max_bend)) return std::nullopt;
+    std::vector<double> scaled;
+    scaled.reserve(near.size());
+    for (const Sample &s : near) scaled.push_back(std::abs(s.h - shape.height(s.uv)) / (s.z * s.z));
+    std::nth_element(scaled.begin(), scaled.begin() + scaled.size() / 2, scaled.end());
+    shape.noise_k = 1.4826 * scaled[scaled.size() / 2];
+    return shape;
+}
+
+DepthTolerance toleranceFor(const WallShape &shape, const DepthTolerance &model, double lo, double hi) {
+    DepthTolerance t = model;
+    if (shape.noise_k > 0.0) t.noise_k = std::clamp(shape.noise_k, lo * model.noise_k, hi * model.noise_k);
+    return t;
+}
+
+double localNoiseK(const Cloud &cloud, const std::vector<int> &sample, const std::vector<float> &band,
+                   const Plane &plane, double capture_bands, int offset, int min_pairs) {
+    if (!cloud.organized() || offset < 1) return 0.0;
+    const Eigen::Vector3f n = plane.normal.cast<float>();
+    const float d = static_cast<float>(plane.d);
+    std::vector<double> diffs;  // |h_i - h_j| / z^2
+    for (std::size_t k = 0; k < sample.size(); ++k) {
+        const int i = sample[k];
+        const Point &p = cloud.points[i];
+        const float h = n.dot(p) + d, cap = static_cast<float>(capture_bands) * band[k];
+        if (!(std::abs(h) <= cap)) continue;
+        const int u = i % cloud.width, v = i / cloud.width;
+        for (const int j :
+             {u + offset < cloud.width ? i + offset : -1, v + offset < cloud.height ? i + offset * cloud.width : -1}) {
+            if (j < 0) continue;
+            const Point &q = cloud.points[j];
+            const float hq = n.dot(q) + d;
+            if (!(std::abs(hq) <= cap)) continue;
+            diffs.push_back(std::abs(h - hq) / (static_cast<double>(p.z()) * p.z()));
+        }
+    }
+    if (static_cast<int>(diffs.size()) < min_pairs) return 0.0;
+    const std::size_t keep = diffs.size() * 9 / 10;
+    std::nth_element(diffs.begin(), diffs.begin() + keep, diffs.end());
+    double sum = 0.0;
+    for (std::size_t k = 0; k < keep; ++k) sum += diffs[k];
+    // a - b ~ N(0, sqrt(2) sigma) for independent readings; the mean of the smallest 90 % of
+    // |N(0, s)| is 0.6573 s.
+    return sum / static_cast<double>(keep) / (0.6573 * std::sqrt(2.0));
+}
+
+}  // namespace projsurf
