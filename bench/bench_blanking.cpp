@@ -1,6 +1,6 @@
 #include "bench_blanking.hpp"
 
-#include "projsurf/eval/walk_in.hpp"
+#include "eval/walk_in.hpp"
 #include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/scenarios.hpp"

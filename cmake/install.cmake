@@ -1,7 +1,7 @@
 # Install rules and the exported package: `cmake --install build --prefix P` gives
-#   P/include/projsurf/{types,calibration,detection,keystone,people,planning,tracking,sim,io,eval}/*.hpp
-#   P/lib/libprojsurf_{core,sim,io,eval}.so*     P/bin/projsurf
-#   P/lib/cmake/projsurf/  find_package(projsurf [COMPONENTS core sim io eval]) -> projsurf::<component>
+#   P/include/projsurf/{types,calibration,detection,keystone,people,planning,tracking,sim,io,frontend}/*.hpp
+#   P/lib/libprojsurf_{core,sim,io,frontend}.so*     P/bin/projsurf (the evaluation, eval/, is linked into it, not installed)
+#   P/lib/cmake/projsurf/  find_package(projsurf [COMPONENTS core sim io frontend]) -> projsurf::<component>
 #   P/lib/pkgconfig/       projsurf-core.pc (the core), projsurf.pc (all of them)
 # Each component has its own export file, so find_package(projsurf COMPONENTS core) looks up
 # only what the core's headers need (Eigen, OpenCV core): no nlohmann-json, PCL or CLI11.
@@ -11,7 +11,7 @@ set(PROJSURF_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/projsurf)
 
 set(PROJSURF_COMPONENTS core sim)
 if(TARGET projsurf_io)
-  list(APPEND PROJSURF_COMPONENTS io eval)
+  list(APPEND PROJSURF_COMPONENTS io)
 endif()
 if(TARGET projsurf_frontend)
   list(APPEND PROJSURF_COMPONENTS frontend)  # the CLI links it
@@ -37,7 +37,7 @@ install(FILES ${PROJECT_BINARY_DIR}/projsurf-config.cmake ${PROJECT_BINARY_DIR}/
 set(PROJSURF_PKGCONFIG_DIR ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 file(RELATIVE_PATH PROJSURF_PC_TO_PREFIX /prefix/${PROJSURF_PKGCONFIG_DIR} /prefix)
 string(REGEX REPLACE "/$" "" PROJSURF_PC_TO_PREFIX "${PROJSURF_PC_TO_PREFIX}")
-# Static libraries: a program links what projsurf_io and projsurf_eval use inside too (pkg-config --static).
+# Static libraries: a program links what projsurf_io uses inside too (pkg-config --static).
 set(PROJSURF_PC_IO_PRIVATE "")
 if(NOT PROJSURF_SHARED_LIBS)
   set(PROJSURF_PC_IO_PRIVATE yaml-cpp)

@@ -10,7 +10,7 @@
 
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/cloud.hpp"
-#include "projsurf/eval/real_labels.hpp"
+#include "eval/real_labels.hpp"
 #include "projsurf/io/errors.hpp"
 
 namespace projsurf::test {

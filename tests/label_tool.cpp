@@ -25,10 +25,10 @@
 #include <string>
 
 #include "projsurf/detection/gravity.hpp"
-#include "projsurf/eval/label_overlay.hpp"
-#include "projsurf/eval/label_reference.hpp"
-#include "projsurf/eval/labelled_eval.hpp"
-#include "projsurf/eval/real_labels.hpp"
+#include "eval/label_overlay.hpp"
+#include "eval/label_reference.hpp"
+#include "eval/labelled_eval.hpp"
+#include "eval/real_labels.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/scenarios.hpp"

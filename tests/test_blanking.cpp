@@ -7,7 +7,7 @@
 
 #include "projsurf/people/beam_blanking.hpp"
 #include "projsurf/keystone/keystone.hpp"
-#include "projsurf/eval/walk_in.hpp"
+#include "eval/walk_in.hpp"
 #include "projsurf/frontend/test_card.hpp"
 #include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"

@@ -9,7 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "cli_run.hpp"
-#include "projsurf/eval/walk_in.hpp"
+#include "eval/walk_in.hpp"
 #include "projsurf/frontend/test_card.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/detection_json.hpp"

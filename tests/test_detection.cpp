@@ -5,7 +5,7 @@
 #include <random>
 
 #include "projsurf/detection/gravity.hpp"
-#include "projsurf/eval/scoring.hpp"
+#include "eval/scoring.hpp"
 #include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "fresh_dir.hpp"
-#include "projsurf/eval/experiments.hpp"
+#include "eval/experiments.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/scenarios.hpp"
 

@@ -17,8 +17,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/eval/experiments.hpp"
-#include "projsurf/eval/realistic_suite.hpp"
+#include "eval/experiments.hpp"
+#include "eval/realistic_suite.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/ground_truth.hpp"

@@ -12,7 +12,7 @@
 #include "projsurf/types/plane_frame.hpp"
 #include "projsurf/types/point_grid.hpp"
 #include "projsurf/detection/colour/surface_suitability.hpp"
-#include "projsurf/eval/colour_suite.hpp"
+#include "eval/colour_suite.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/detection/detector.hpp"

@@ -8,7 +8,7 @@
 
 #include "cli_run.hpp"
 #include "projsurf/calibration/projected_picture.hpp"
-#include "projsurf/eval/experiments.hpp"
+#include "eval/experiments.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/detection/detector.hpp"

@@ -10,11 +10,11 @@
 #include <stdexcept>
 
 #include "cli/commands.hpp"
-#include "projsurf/eval/demo.hpp"
-#include "projsurf/eval/lens_offset_demo.hpp"
-#include "projsurf/eval/plan_demo.hpp"
-#include "projsurf/eval/plot.hpp"
-#include "projsurf/eval/walk_in.hpp"
+#include "eval/demo.hpp"
+#include "eval/lens_offset_demo.hpp"
+#include "eval/plan_demo.hpp"
+#include "eval/plot.hpp"
+#include "eval/walk_in.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"

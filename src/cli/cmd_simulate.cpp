@@ -12,7 +12,7 @@
 #include <stdexcept>
 
 #include "cli/commands.hpp"
-#include "projsurf/eval/truth_json.hpp"
+#include "eval/truth_json.hpp"
 #include "projsurf/frontend/aspect.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"

@@ -1,4 +1,4 @@
-#include "projsurf/eval/lens_offset_demo.hpp"
+#include "eval/lens_offset_demo.hpp"
 
 #include "projsurf/keystone/keystone.hpp"
 #include "projsurf/sim/sensor_model.hpp"

@@ -9,7 +9,7 @@
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/cloud.hpp"
 #include "projsurf/types/plane_frame.hpp"
-#include "projsurf/eval/real_labels.hpp"
+#include "eval/real_labels.hpp"
 
 namespace projsurf {
 

@@ -1,4 +1,4 @@
-#include "projsurf/eval/real_gallery.hpp"
+#include "eval/real_gallery.hpp"
 
 #include "projsurf/detection/gravity.hpp"
 
@@ -8,7 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/eval/plot.hpp"
+#include "eval/plot.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"

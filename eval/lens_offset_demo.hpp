@@ -7,7 +7,7 @@
 #include <string>
 
 #include "projsurf/types/projector.hpp"
-#include "projsurf/eval/experiments.hpp"
+#include "eval/experiments.hpp"
 #include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/render.hpp"

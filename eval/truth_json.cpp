@@ -1,4 +1,4 @@
-#include "projsurf/eval/truth_json.hpp"
+#include "eval/truth_json.hpp"
 
 #include "projsurf/types/plane.hpp"
 #include "projsurf/io/files.hpp"

@@ -1,4 +1,4 @@
-#include "projsurf/eval/scoring.hpp"
+#include "eval/scoring.hpp"
 
 #include <cmath>
 #include <limits>

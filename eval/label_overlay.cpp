@@ -1,4 +1,4 @@
-#include "projsurf/eval/label_overlay.hpp"
+#include "eval/label_overlay.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,10 +1,10 @@
-#include "projsurf/eval/real_scoring.hpp"
+#include "eval/real_scoring.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "projsurf/eval/label_reference.hpp"
+#include "eval/label_reference.hpp"
 
 namespace projsurf {
 

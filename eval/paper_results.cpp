@@ -1,4 +1,4 @@
-#include "projsurf/eval/paper_results.hpp"
+#include "eval/paper_results.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "projsurf/eval/report.hpp"
+#include "eval/report.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +9,8 @@
 #include <set>
 #include <sstream>
 
-#include "projsurf/eval/paper_results.hpp"
-#include "projsurf/eval/plot.hpp"
+#include "eval/paper_results.hpp"
+#include "eval/plot.hpp"
 #include "projsurf/io/files.hpp"
 
 namespace fs = std::filesystem;

@@ -1,4 +1,4 @@
-#include "projsurf/eval/colour_suite.hpp"
+#include "eval/colour_suite.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -10,7 +10,7 @@
 
 #include "projsurf/detection/colour/colour_registration.hpp"
 #include "projsurf/detection/rectangle_search.hpp"
-#include "projsurf/eval/experiments.hpp"
+#include "eval/experiments.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/exact_depth.hpp"
 #include "projsurf/sim/ground_truth.hpp"

@@ -1,4 +1,4 @@
-#include "projsurf/eval/experiments.hpp"
+#include "eval/experiments.hpp"
 
 #include <algorithm>
 #include <chrono>

@@ -1,12 +1,12 @@
-#include "projsurf/eval/realistic_suite.hpp"
+#include "eval/realistic_suite.hpp"
 
 #include <chrono>
 #include <cstdio>
 #include <map>
 #include <sstream>
 
-#include "projsurf/eval/experiments.hpp"
-#include "projsurf/eval/scoring.hpp"
+#include "eval/experiments.hpp"
+#include "eval/scoring.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/scenarios_realistic.hpp"
 

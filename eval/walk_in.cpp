@@ -1,4 +1,4 @@
-#include "projsurf/eval/walk_in.hpp"
+#include "eval/walk_in.hpp"
 
 #include <chrono>
 #include <opencv2/imgproc.hpp>

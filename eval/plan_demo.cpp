@@ -1,4 +1,4 @@
-#include "projsurf/eval/plan_demo.hpp"
+#include "eval/plan_demo.hpp"
 
 #include "projsurf/keystone/keystone.hpp"
 

@@ -1,4 +1,4 @@
-#include "projsurf/eval/demo.hpp"
+#include "eval/demo.hpp"
 
 #include <chrono>
 #include <cmath>

@@ -8,9 +8,9 @@
 
 #include <opencv2/core.hpp>
 
-#include "projsurf/eval/experiments.hpp"
-#include "projsurf/eval/labelled_eval.hpp"
-#include "projsurf/eval/real_gallery.hpp"
+#include "eval/experiments.hpp"
+#include "eval/labelled_eval.hpp"
+#include "eval/real_gallery.hpp"
 
 namespace projsurf {
 

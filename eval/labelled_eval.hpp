@@ -11,9 +11,9 @@
 
 #include <opencv2/core.hpp>
 
-#include "projsurf/eval/real_gallery.hpp"
-#include "projsurf/eval/real_labels.hpp"
-#include "projsurf/eval/real_scoring.hpp"
+#include "eval/real_gallery.hpp"
+#include "eval/real_labels.hpp"
+#include "eval/real_scoring.hpp"
 
 namespace projsurf {
 

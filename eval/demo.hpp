@@ -11,7 +11,7 @@
 #include <opencv2/core.hpp>
 
 #include "projsurf/keystone/keystone.hpp"
-#include "projsurf/eval/experiments.hpp"
+#include "eval/experiments.hpp"
 #include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"

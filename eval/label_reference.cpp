@@ -1,4 +1,4 @@
-#include "projsurf/eval/label_reference.hpp"
+#include "eval/label_reference.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "projsurf/eval/real_labels.hpp"
+#include "eval/real_labels.hpp"
 #include "projsurf/io/yaml_numbers.hpp"
 
 #include <yaml-cpp/yaml.h>

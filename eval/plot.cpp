@@ -1,4 +1,4 @@
-#include "projsurf/eval/plot.hpp"
+#include "eval/plot.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "projsurf/eval/labelled_eval.hpp"
+#include "eval/labelled_eval.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,8 +10,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "projsurf/detection/colour/colour_registration.hpp"
-#include "projsurf/eval/label_overlay.hpp"
-#include "projsurf/eval/plot.hpp"
+#include "eval/label_overlay.hpp"
+#include "eval/plot.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"

@@ -1,4 +1,4 @@
-#include "projsurf/eval/projector_eval.hpp"
+#include "eval/projector_eval.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -6,7 +6,7 @@
 #include <cstdio>
 
 #include "projsurf/keystone/keystone.hpp"
-#include "projsurf/eval/experiments.hpp"
+#include "eval/experiments.hpp"
 #include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
