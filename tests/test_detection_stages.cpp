@@ -223,6 +223,54 @@ TEST(WallShape, FollowsASmoothBendButNotWhatStandsProudOfTheWall) {
         fitWallShape({pts.begin(), pts.begin() + 10}, {band.begin(), band.begin() + 10}, wall, frame).has_value());
 }
 
+TEST(WallShape, ItsReliefFollowsADistortionWaveAQuadraticCannotButNotABoxProudOfTheWall) {
+    // A Kinect-v1-like distortion (features of about 100 px: waves of 1 m, 210 px, at 2.5 m) of
+    // 2 cm amplitude, and a box 8 cm proud.
+    CameraIntrinsics cam;
+    auto wave = [](double x, double y) { return 0.02 * std::sin(2 * M_PI * x / 1.0) * std::cos(2 * M_PI * y / 1.0); };
+    const cv::Rect box(420, 120, 90, 90);
+    const Cloud cloud = bentWall(cam, 2.5, wave, 0.003, 5, box, 0.08);
+    const std::vector<int> sample = samplePoints(cloud, 12000);
+    std::vector<Point> pts;
+    std::vector<float> band;
+    DepthTolerance tol;
+    for (int i : sample) {
+        pts.push_back(cloud.points[i]);
+        band.push_back(tol.band(cloud.points[i].z()));
+    }
+    const Plane wall = makePlane({0, 0, -1}, 2.5);
+    const PlaneFrame frame = makePlaneFrame(wall, Eigen::Vector3d::UnitY(), {0, 0, 2.5});
+    WallShapeOptions flat;
+    flat.relief.enabled = false;
+    const auto with = fitWallShape(pts, band, wall, frame, {}, cam.fx);
+    const auto without = fitWallShape(pts, band, wall, frame, flat, cam.fx);
+    ASSERT_TRUE(with && without);
+    EXPECT_FALSE(with->relief.empty());
+    EXPECT_TRUE(without->relief.empty());
+    // On the wall away from the box (plane coordinates: u = x, v = -y): the relief follows the
+    // wave, the quadratic alone misses it by about its amplitude somewhere.
+    double worst_with = 0.0, worst_without = 0.0, sum_with = 0.0;
+    int n = 0;
+    for (double x = -0.9; x <= 0.9; x += 0.05)
+        for (double y = -0.6; y <= 0.6; y += 0.05) {
+            const Eigen::Vector2d uv(x, -y);
+            const Eigen::Vector2d px = cam.project(Eigen::Vector3d(x, y, 2.5));
+            if (std::abs(px.x() - (box.x + box.width / 2)) < 90 && std::abs(px.y() - (box.y + box.height / 2)) < 90)
+                continue;
+            worst_with = std::max(worst_with, std::abs(with->height(uv) - wave(x, y)));
+            sum_with += std::abs(with->height(uv) - wave(x, y));
+            ++n;
+            worst_without = std::max(worst_without, std::abs(without->height(uv) - wave(x, y)));
+        }
+    EXPECT_LT(worst_with, 0.008);
+    EXPECT_LT(sum_with / n, 0.004);
+    EXPECT_GT(worst_without, 0.015);
+    // The box (8 cm proud) is not followed: the relief stays near the wall at its centre.
+    const Eigen::Vector3d centre = cam.backProject(box.x + box.width / 2.0, box.y + box.height / 2.0, 2.5);
+    const Eigen::Vector2d cuv(centre.x(), -centre.y());
+    EXPECT_LT(with->height(cuv) - wave(centre.x(), centre.y()), 0.03);
+}
+
 TEST(PlanarRegions, FindsEachWallOfACornerOnceAndNeverTheFloorWhateverTheOrder) {
     // A room corner seen by a level camera: a back wall at z = 3, a side wall at x = 1, a floor at y = 1.
     CameraIntrinsics cam;

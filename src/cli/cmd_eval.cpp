@@ -41,7 +41,8 @@ struct EvalOptions {
     bool labels_dir_given = false;
     bool no_progress = false;
     bool projector_only = false;  // only the projector table (issue 12)
-    bool colour_only = false;     // only the colour suite (issue 15)
+    bool colour_only = false;     // only the colour suite
+    bool realistic_only = false;  // only the realistic-sensor suite
 };
 
 /// The 1-minute load average (Linux), NaN when unknown.
@@ -101,6 +102,21 @@ void runColourTable(const EvalOptions &o) {
     std::printf("%s; wrote %s/colour.md\n", sim::colourSuiteSummary(colour).c_str(), o.out.c_str());
 }
 
+/// The realistic suite alone (realistic sensors and scenes): DIR/realistic.md and its summary line.
+void runRealisticTable(const EvalOptions &o) {
+    sim::RealisticSuiteOptions ropt = o.quick ? sim::quickRealisticSuite() : sim::RealisticSuiteOptions{};
+    if (!o.quick) ropt.rounds = o.rounds;
+    ropt.seed = o.seed;
+    const sim::RealisticSuiteResult realistic = sim::runRealisticSuite(ropt, sim::defaultVariant().config);
+    std::error_code ec;
+    fs::create_directories(o.out, ec);
+    if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
+    const std::string md = sim::realisticSuiteMarkdown(realistic);
+    writeFileAtomic((fs::path(o.out) / "realistic.md").string(), md);
+    std::printf("%s", md.c_str());
+    std::printf("%s; wrote %s/realistic.md\n", sim::realisticSuiteSummary(realistic).c_str(), o.out.c_str());
+}
+
 void run(const EvalOptions &o, const std::string &command) {
     if (o.out.empty()) throw InputError("--out", "an output directory is required");
     if (o.rounds < 1 || o.rounds > 100) throw InputError("--rounds", "must be between 1 and 100");
@@ -120,6 +136,7 @@ void run(const EvalOptions &o, const std::string &command) {
 
     if (o.projector_only) return runProjectorTable(o);
     if (o.colour_only) return runColourTable(o);
+    if (o.realistic_only) return runRealisticTable(o);
     // The default real-frame folder is taken from the working directory, and said (before the
     // long simulation) when it is not there.
     if (!o.real_dir_given && !fs::is_directory(o.real_dir, ec))
@@ -232,6 +249,11 @@ void addEvalCommand(CLI::App &app) {
                   "Only the colour suite (surface suitability on simulated walls with pictures, screens, windows, "
                   "dark panels and plain paints): DIR/colour.md; --rounds per scene, 2 with --quick")
         ->excludes("--projector-only");
+    sub->add_flag("--realistic-only", o->realistic_only,
+                  "Only the realistic-sensor suite (Kinect v1, ToF and D435 units on plain walls, frames, TVs, "
+                  "windows, clutter): DIR/realistic.md; --rounds per scene and sensor, 2 with --quick")
+        ->excludes("--projector-only")
+        ->excludes("--colour-only");
     sub->callback([o, real, labels] {
         EvalOptions opts = *o;
         opts.real_dir_given = real->count() > 0;

@@ -52,6 +52,13 @@ struct WallConfig {
     double local_cap = 1.0;  ///< the wall's noise is at most this many times the local noise (or the model's)
     int noise_offset_px =
         8;  ///< px between the readings whose differences measure the noise (stereo noise is correlated over ~4 px)
+    /// Least-squares refits of the plane to the points on the wall's shape (the segmentation's
+    /// plane is fitted to part of the wall), each followed by a new shape; a refit that turns
+    /// the plane by less than refit_min_turn (rad) and moves it by less than refit_min_shift (m)
+    /// ends them.
+    int plane_refits = 1;
+    double refit_min_turn = 0.002;
+    double refit_min_shift = 0.002;
 };
 
 /// Default method, stage 3: where on a plane the camera saw free wall (paper 3.2.2).

@@ -117,12 +117,12 @@ std::vector<PlaneCandidate> findCandidates(const CloudSample &s, const DetectorC
     return out;
 }
 
-/// Each wall's bend and noise as the camera saw them, and its sampled points on that shape.
-void shapeWall(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cfg, PlaneCandidate &c) {
-    c.tolerance = cfg.tolerance;
-    if (!cfg.wall.fit_shape) return;
-    const auto shape = fitWallShape(s.points, s.band, c.plane, c.frame, cfg.wall.shape);
-    if (!shape) return;
+/// The wall's bend and noise about the candidate's plane as the camera saw them, and its
+/// sampled points on that shape; false when no shape could be fitted.
+bool fitShape(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cfg, PlaneCandidate &c) {
+    const double focal = s.camera ? s.camera->fx : CameraIntrinsics{}.fx;
+    const auto shape = fitWallShape(s.points, s.band, c.plane, c.frame, cfg.wall.shape, focal);
+    if (!shape) return false;
     c.shape = *shape;
     // The residual about the shape also counts what the shape cannot follow (a window recess, a
     // box): on depth images it may exceed the noise measured between nearby readings only by
@@ -142,6 +142,24 @@ void shapeWall(const Cloud &cloud, const CloudSample &s, const DetectorConfig &c
             c.inlier_indices.push_back(k);
     }
     c.inliers = static_cast<int>(c.inlier_indices.size());
+    return true;
+}
+
+/// Each wall's shape, and its plane refitted (least squares) to all the points on that shape:
+/// the plane a segmentation found on part of the wall tilts with the sensor's error there.
+void shapeWall(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cfg, const Eigen::Vector3d &gravity,
+               PlaneCandidate &c) {
+    c.tolerance = cfg.tolerance;
+    if (!cfg.wall.fit_shape) return;
+    for (int round = 0;; ++round) {
+        if (!fitShape(cloud, s, cfg, c) || round >= cfg.wall.plane_refits) return;
+        const auto refit = fitPlane(cloud.points, c.inlier_indices);
+        if (!refit || tiltFromVertical(*refit, gravity) > cfg.max_tilt) return;
+        const double turn = std::acos(std::min(1.0, std::abs(refit->normal.dot(c.plane.normal))));
+        if (turn < cfg.wall.refit_min_turn && std::abs(refit->d - c.plane.d) < cfg.wall.refit_min_shift) return;
+        c.plane = *refit;
+        c.frame = makePlaneFrame(c.plane, gravity, centroid(cloud.points, c.inlier_indices));
+    }
 }
 
 /// The projector's footprint on the candidate and the raster over the part of it where the
@@ -344,15 +362,15 @@ struct Choice {
 /// candidate by candidate in `usable` order; one that could not hold a bigger rectangle than
 /// the one accepted is not looked at.
 Choice chooseCandidate(const Cloud &cloud, const CloudSample &s, const Projector &projector, const DetectorConfig &cfg,
-                       double aspect, const std::vector<int> &usable, std::vector<PlaneCandidate> &candidates,
-                       DefaultScratch &scratch, StageTimer &time) {
+                       const Eigen::Vector3d &gravity, double aspect, const std::vector<int> &usable,
+                       std::vector<PlaneCandidate> &candidates, DefaultScratch &scratch, StageTimer &time) {
     Choice r;
     for (int k : usable) {
         PlaneCandidate &c = candidates[k];
         if (r.chosen && c.bound <= r.chosen->rectangle.area()) break;
         // How the wall departs from its plane (the depth camera's bend) and its noise; on that
         // shape its points may reach further, so the raster is laid again.
-        shapeWall(cloud, s, cfg, c);
+        shapeWall(cloud, s, cfg, gravity, c);
         const bool framed = frameCandidate(cloud, s, projector, cfg, aspect, c);
         time.lap("wall_shape");
         if (!framed) continue;
@@ -450,7 +468,7 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     time.lap("free_space");
 
     // 4. Shape, free space, colour, rectangle and check of each, until none could beat the best.
-    Choice choice = chooseCandidate(cloud, sample, projector, cfg, aspect, usable, candidates, scratch, time);
+    Choice choice = chooseCandidate(cloud, sample, projector, cfg, gravity, aspect, usable, candidates, scratch, time);
 
     // 5. The answer, and the plane shown with it.
     describeAnswer(cfg, candidates, usable, std::move(choice), det);

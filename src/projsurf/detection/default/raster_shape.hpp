@@ -1,14 +1,22 @@
 #pragma once
-// A wall's shape (detection/default/wall_shape.hpp) as a quadratic in the raster's (column, row)
-// coordinates, in float: what the per-point passes over a raster evaluate at a point's foot
-// (column = (u - top_left.x) / cell, row = (top_left.y - v) / cell, fractional).
+// A wall's shape (detection/default/wall_shape.hpp) in the raster's (column, row) coordinates,
+// in float: what the per-point passes over a raster evaluate at a point's foot (column =
+// (u - top_left.x) / cell, row = (top_left.y - v) / cell, fractional): the quadratic as a
+// polynomial, the relief looked up at the centre of the cell (it changes by far less than a
+// millimetre over a cell).
+#include <algorithm>
+#include <vector>
+
 #include "projsurf/detection/outline_raster.hpp"
 #include "projsurf/detection/default/wall_shape.hpp"
 
 namespace projsurf {
 
 struct RasterShape {
-    float k[6];  ///< 1, col, row, col^2, col row, row^2
+    float k[6];                 ///< 1, col, row, col^2, col row, row^2
+    std::vector<float> relief;  ///< rows x cols, the relief at each cell's centre (empty: none)
+    float last_col = 0.0f, last_row = 0.0f;
+    int cols = 0;
 
     RasterShape(const WallShape &s, const RasterFrame &raster) {
         // u = a + e col, v = b - e row about the shape's centre.
@@ -19,10 +27,24 @@ struct RasterShape {
         const double k3 = c[3] * e * e, k4 = -c[4] * e * e, k5 = c[5] * e * e;
         const double all[6] = {k0, k1, k2, k3, k4, k5};
         for (int i = 0; i < 6; ++i) k[i] = static_cast<float>(all[i]);
+        if (s.relief.empty()) return;
+        cols = raster.cols;
+        last_col = static_cast<float>(raster.cols - 1);
+        last_row = static_cast<float>(raster.rows - 1);
+        relief.resize(static_cast<std::size_t>(raster.rows) * raster.cols);
+        for (int r = 0; r < raster.rows; ++r)
+            for (int c = 0; c < raster.cols; ++c)
+                relief[static_cast<std::size_t>(r) * cols + c] = static_cast<float>(
+                    s.relief.at(raster.top_left + Eigen::Vector2d(c + 0.5, -(r + 0.5)) * raster.cell));
     }
-    /// Height (m) above the plane at raster position (col, row).
+    /// Height (m) above the plane at raster position (col, row); beyond the raster the relief
+    /// of its border cell (NaN positions read cell 0).
     float at(float col, float row) const {
-        return k[0] + col * (k[1] + k[3] * col + k[4] * row) + row * (k[2] + k[5] * row);
+        const float q = k[0] + col * (k[1] + k[3] * col + k[4] * row) + row * (k[2] + k[5] * row);
+        if (relief.empty()) return q;
+        const int c = static_cast<int>(std::min(last_col, std::max(0.0f, col)));
+        const int r = static_cast<int>(std::min(last_row, std::max(0.0f, row)));
+        return q + relief[static_cast<std::size_t>(r) * cols + c];
     }
 };
 

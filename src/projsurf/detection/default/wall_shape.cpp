@@ -7,7 +7,8 @@
 namespace projsurf {
 
 std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const std::vector<float> &band,
-                                      const Plane &plane, const PlaneFrame &frame, const WallShapeOptions &options) {
+                                      const Plane &plane, const PlaneFrame &frame, const WallShapeOptions &options,
+                                      double focal_px) {
     struct Sample {
         Eigen::Vector2d uv;
         double h, band, z;
@@ -57,6 +58,19 @@ std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const st
     // A bend larger than any sensor gives means the fit followed something else.
     for (const Eigen::Vector2d &corner : {lo, hi, Eigen::Vector2d(lo.x(), hi.y()), Eigen::Vector2d(hi.x(), lo.y())})
         if (!(std::abs(shape.height(corner)) <= options.max_bend)) return std::nullopt;
+    if (options.relief.enabled) {
+        // The relief on every point near the quadratic (the distortion may carry a point
+        // further from the plane than the capture above).
+        std::vector<ReliefSample> relief;
+        relief.reserve(points.size());
+        for (std::size_t i = 0; i < points.size(); ++i) {
+            const Eigen::Vector3d p = points[i].cast<double>();
+            const Eigen::Vector2d uv = frame.toPlane(p);
+            const double r = plane.signedDistance(p) - shape.quadratic(uv);
+            if (std::abs(r) <= options.capture_bands * band[i]) relief.push_back({uv, r, band[i], p.z()});
+        }
+        shape.relief = fitWallRelief(relief, focal_px, options.relief);
+    }
     std::vector<double> scaled;
     scaled.reserve(near.size());
     for (const Sample &s : near) scaled.push_back(std::abs(s.h - shape.height(s.uv)) / (s.z * s.z));

@@ -1,0 +1,88 @@
+#include "projsurf/detection/default/wall_relief.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+namespace projsurf {
+namespace {
+
+/// Node cell (i, j) and the bilinear fractions (a, b) of a point, clamped to the grid.
+struct NodeCell {
+    int i, j;
+    double a, b;
+};
+
+NodeCell nodeCell(const WallRelief &g, const Eigen::Vector2d &uv) {
+    const double fu = std::min(double(g.nu - 1), std::max(0.0, (uv.x() - g.origin.x()) / g.spacing));
+    const double fv = std::min(double(g.nv - 1), std::max(0.0, (uv.y() - g.origin.y()) / g.spacing));
+    const int i = std::min(static_cast<int>(fu), g.nu - 2), j = std::min(static_cast<int>(fv), g.nv - 2);
+    return {i, j, fu - i, fv - j};
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+}
+
+}  // namespace
+
+WallRelief fitWallRelief(const std::vector<ReliefSample> &samples, double focal_px, const WallReliefOptions &opt) {
+    WallRelief g;
+    if (!opt.enabled || samples.size() < 200 || !(focal_px > 0.0) || opt.node_px <= 0.0 || opt.rounds < 1) return g;
+    std::vector<double> depths;
+    depths.reserve(samples.size());
+    Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e30), hi = Eigen::Vector2d::Constant(-1e30);
+    for (const ReliefSample &s : samples) {
+        depths.push_back(s.z);
+        lo = lo.cwiseMin(s.uv);
+        hi = hi.cwiseMax(s.uv);
+    }
+    const double extent = (hi - lo).maxCoeff();
+    const double spacing =
+        std::max(opt.node_px * median(depths) / focal_px, extent / std::max(1, opt.max_nodes - 1));
+    if (!(spacing > 1e-4) || !std::isfinite(extent)) return g;
+    g.origin = lo;
+    g.spacing = spacing;
+    g.nu = std::max(2, static_cast<int>(std::ceil((hi.x() - lo.x()) / spacing)) + 1);
+    g.nv = std::max(2, static_cast<int>(std::ceil((hi.y() - lo.y()) / spacing)) + 1);
+    const double sigma = std::max(0.5, opt.sigma_px / opt.node_px);  // in nodes
+
+    cv::Mat num(g.nv, g.nu, CV_64F), den(g.nv, g.nu, CV_64F);
+    std::vector<float> heights;
+    for (int round = 0; round < opt.rounds; ++round) {
+        num.setTo(0.0);
+        den.setTo(0.0);
+        for (const ReliefSample &s : samples) {
+            const double t = (s.r - g.at(s.uv)) / (opt.tukey_bands * s.band);
+            if (!(std::abs(t) < 1.0)) continue;
+            const double w = (1.0 - t * t) * (1.0 - t * t);
+            const NodeCell c = nodeCell(g, s.uv);
+            const double wn[4] = {(1 - c.a) * (1 - c.b), c.a * (1 - c.b), (1 - c.a) * c.b, c.a * c.b};
+            const int di[4] = {0, 1, 0, 1}, dj[4] = {0, 0, 1, 1};
+            for (int k = 0; k < 4; ++k) {
+                num.at<double>(c.j + dj[k], c.i + di[k]) += wn[k] * w * s.r;
+                den.at<double>(c.j + dj[k], c.i + di[k]) += wn[k] * w;
+            }
+        }
+        // Normalised convolution: zeros beyond the grid carry no weight.
+        cv::GaussianBlur(num, num, cv::Size(), sigma, sigma, cv::BORDER_CONSTANT);
+        cv::GaussianBlur(den, den, cv::Size(), sigma, sigma, cv::BORDER_CONSTANT);
+        std::vector<double> weights;
+        for (int j = 0; j < g.nv; ++j)
+            for (int i = 0; i < g.nu; ++i)
+                if (den.at<double>(j, i) > 0.0) weights.push_back(den.at<double>(j, i));
+        const double floor = opt.min_weight_share * median(weights);
+        if (!(floor > 0.0)) return WallRelief{};
+        heights.assign(static_cast<std::size_t>(g.nu) * g.nv, 0.0f);
+        for (int j = 0; j < g.nv; ++j)
+            for (int i = 0; i < g.nu; ++i)
+                heights[static_cast<std::size_t>(j) * g.nu + i] =
+                    static_cast<float>(num.at<double>(j, i) / std::max(den.at<double>(j, i), floor));
+        g.h = heights;
+    }
+    return g;
+}
+
+}  // namespace projsurf
