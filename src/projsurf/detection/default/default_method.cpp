@@ -146,19 +146,23 @@ bool fitShape(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cf
 }
 
 /// Each wall's shape, and its plane refitted (least squares) to all the points on that shape:
-/// the plane a segmentation found on part of the wall tilts with the sensor's error there.
+/// the plane a segmentation found on part of the wall tilts with the sensor's error there. A
+/// refit is kept only when more points lie on its shape (a narrow face next to another would
+/// otherwise lean towards it).
 void shapeWall(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cfg, const Eigen::Vector3d &gravity,
                PlaneCandidate &c) {
     c.tolerance = cfg.tolerance;
-    if (!cfg.wall.fit_shape) return;
-    for (int round = 0;; ++round) {
-        if (!fitShape(cloud, s, cfg, c) || round >= cfg.wall.plane_refits) return;
+    if (!cfg.wall.fit_shape || !fitShape(cloud, s, cfg, c)) return;
+    for (int round = 0; round < cfg.wall.plane_refits; ++round) {
         const auto refit = fitPlane(cloud.points, c.inlier_indices);
         if (!refit || tiltFromVertical(*refit, gravity) > cfg.max_tilt) return;
         const double turn = std::acos(std::min(1.0, std::abs(refit->normal.dot(c.plane.normal))));
         if (turn < cfg.wall.refit_min_turn && std::abs(refit->d - c.plane.d) < cfg.wall.refit_min_shift) return;
-        c.plane = *refit;
-        c.frame = makePlaneFrame(c.plane, gravity, centroid(cloud.points, c.inlier_indices));
+        PlaneCandidate moved = c;
+        moved.plane = *refit;
+        moved.frame = makePlaneFrame(moved.plane, gravity, centroid(cloud.points, c.inlier_indices));
+        if (!fitShape(cloud, s, cfg, moved) || moved.inliers <= c.inliers) return;
+        c = std::move(moved);
     }
 }
 
