@@ -4,7 +4,11 @@
 #include <algorithm>
 #include <random>
 
+#include "projsurf/detection/default/planar_regions.hpp"
 #include "projsurf/detection/gravity.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/types/point_grid.hpp"
+#include <opencv2/imgproc.hpp>
 #include "eval/scoring.hpp"
 #include "projsurf/detection/detector.hpp"
 #include "projsurf/sim/ground_truth.hpp"
@@ -177,4 +181,34 @@ TEST(Detection, UnorganizedCloudGivesTheSameAnswer) {
     const sim::Score score = sim::scoreDetection(det, truth, projector, sc.gravity, projector.aspect());
     EXPECT_TRUE(score.valid) << score.why;
     EXPECT_TRUE(score.success) << score.area << " vs best " << score.best_area << ": " << score.why;
+}
+
+// A plain wall at 1.8 m seen through 2-2.5 cm of noise correlated over a few pixels (a poor
+// stereo unit): too rough for any planar region to grow, still a plain wall to a robust plane
+// fit. The detector must find it, not answer "no vertical plane in view".
+TEST(Detection, APlainWallBehindCorrelatedNoiseIsNeverMissed) {
+    const CameraIntrinsics cam;
+    cv::Mat noise(cam.height, cam.width, CV_64F);
+    cv::randn(noise, 0.0, 1.0);
+    cv::GaussianBlur(noise, noise, cv::Size(), 3.0);
+    cv::Scalar mean, dev;
+    cv::meanStdDev(noise, mean, dev);
+    noise *= 0.022 / dev[0];
+    Cloud wall;
+    wall.width = cam.width;
+    wall.height = cam.height;
+    for (int v = 0; v < cam.height; ++v)
+        for (int u = 0; u < cam.width; ++u)
+            wall.points.push_back(cam.backProject(u, v, 1.8 + noise.at<double>(v, u)).cast<float>());
+    DetectorConfig regions_only;
+    std::vector<std::int16_t> labels;
+    PointGrid grid;
+    fillPointGrid(wall, regions_only.free_space.stride, grid);
+    ASSERT_TRUE(findVerticalRegions(grid, Eigen::Vector3d::UnitY(), regions_only.tolerance, regions_only.planes.regions)
+                    .empty())
+        << "the noise should defeat the segmentation, or this test tests nothing";
+    const Detection det = detectSurface(wall, sim::exampleProjector(), DetectorConfig{});
+    ASSERT_TRUE(det.found) << det.reason;
+    EXPECT_NEAR(det.plane.d, 1.8, 0.03);
+    EXPECT_GT(std::abs(det.plane.normal.z()), std::cos(2.0 * M_PI / 180.0));
 }

@@ -463,6 +463,12 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
         cfg.planes.image_regions && scratch.grid.organized
             ? findRegionCandidates(sample, scratch.grid, cfg, gravity, scratch.region_labels, scratch.regions)
             : findCandidates(sample, cfg, gravity);
+    // A depth image whose cells are all too rough to grow regions (a poor stereo unit's
+    // correlated noise) may still hold a plain wall: the robust plane search runs then.
+    if (candidates.empty() && cfg.planes.image_regions && scratch.grid.organized) {
+        scratch.region_labels.clear();
+        candidates = findCandidates(sample, cfg, gravity);
+    }
     for (const auto &c : candidates) det.debug.candidates.push_back(c.plane);
     time.lap("planes");
     if (candidates.empty()) return time.fail("no vertical plane in view");
