@@ -57,8 +57,8 @@ struct WallConfig {
     /// the plane by less than refit_min_turn (rad) and moves it by less than refit_min_shift (m)
     /// ends them.
     int plane_refits = 1;
-    double refit_min_turn = 0.002;
-    double refit_min_shift = 0.002;
+    double refit_min_turn = 0.0087;  // 0.5 deg: a quarter of the 2 deg an upright picture may lean
+    double refit_min_shift = 0.005;
 };
 
 /// Default method, stage 3: where on a plane the camera saw free wall (paper 3.2.2).
