@@ -28,9 +28,10 @@ std::string fmt(const char *f, double v) {
     return buf;
 }
 
+/// Written so that it reads back to the same doubles: the command then gives the same answer.
 std::string vec(const Eigen::Vector3d &v) {
     char buf[96];
-    std::snprintf(buf, sizeof buf, "%.6g,%.6g,%.6g", v.x(), v.y(), v.z());
+    std::snprintf(buf, sizeof buf, "%.17g,%.17g,%.17g", v.x(), v.y(), v.z());
     return buf;
 }
 
