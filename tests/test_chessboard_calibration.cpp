@@ -133,8 +133,8 @@ TEST(ChessboardCalibrateReal, ProcamSampleDataBesideItsPublishedCalibration) {
     // The camera sees the board directly: its intrinsics agree with the published ones closely.
     const double cam_fx = j["camera"]["fx"], pub_fx = j["published"]["camera"]["fx"];
     EXPECT_NEAR(cam_fx / pub_fx, 1.0, 0.01);
-    // The projector's pose: the translation's direction as published.
-    EXPECT_LT(j["difference"]["translation_direction_deg"].get<double>(), 2.0);
-    EXPECT_LT(j["reprojection_rms_px"].get<double>(), 1.0);
+    // Both devices' board corners agree with one rigid pose within the 0.5 px.
+    EXPECT_LE(j["reprojection_rms_px"].get<double>(), 0.5);
+    EXPECT_GT(j["decoded_board_share"].get<double>(), 0.5);
     fs::remove_all(dir);
 }

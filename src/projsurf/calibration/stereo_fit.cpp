@@ -63,8 +63,11 @@ StereoFit fitStereo(const std::vector<StereoView> &views, cv::Size camera_size, 
     try {
         cv::Mat kc, dc, kp, dp, r, t, e, f;
         std::vector<cv::Mat> rv, tv;
-        const double rms_c = cv::calibrateCamera(board, cam, camera_size, kc, dc, rv, tv);
-        const double rms_p = cv::calibrateCamera(board, proj, projector_size, kp, dp, rv, tv);
+        // Tangential distortion held at zero: over a few board poses seen through narrow lenses
+        // it trades against the principal point and the pose instead of measuring the lens.
+        const int flags = cv::CALIB_ZERO_TANGENT_DIST;
+        const double rms_c = cv::calibrateCamera(board, cam, camera_size, kc, dc, rv, tv, flags);
+        const double rms_p = cv::calibrateCamera(board, proj, projector_size, kp, dp, rv, tv, flags);
         fit.rms_px = cv::stereoCalibrate(board, cam, proj, kc, dc, kp, dp, camera_size, r, t, e, f,
                                          cv::CALIB_FIX_INTRINSIC);
         fit.camera = fromCv(kc, dc, rms_c);

@@ -1,7 +1,8 @@
 #pragma once
 // Camera and projector calibrated together from chessboard poses (no depth): the board's
 // corners in the camera image and, carried through the decoded structured light, in the
-// framebuffer. Each device alone by Zhang's method (cv::calibrateCamera), then the pair by
+// framebuffer. Each device alone by Zhang's method (cv::calibrateCamera; radial k1 k2 k3,
+// tangential p1 p2 held at zero), then the pair by
 // cv::stereoCalibrate with those intrinsics held, which gives the projector's pose relative to
 // the camera. OpenCV's convention throughout: P_proj = R P_cam + t, in the board's units.
 #include <array>
