@@ -185,9 +185,9 @@ void run(const CalibrateOptions &o) {
         return runStructured(o, res_w, res_h);
     if (isProcamFolder(o.captures)) return runChessboard(o, res_w, res_h);
     if (!fs::exists(dir / "camera.yaml", ec))
-        throw InputError(o.captures, "holds no camera.yaml (disc mode, or structured light with depth: "
-                                     "patterns.yaml + pose_<k>/) and no capture_<k>/graycode_<NN>.png "
-                                     "(chessboard mode)");
+        throw InputError((dir / "camera.yaml").string(),
+                         "no such file (the disc mode needs it; structured light with depth needs patterns.yaml + "
+                         "pose_<k>/ beside it; the chessboard mode needs capture_<k>/graycode_<NN>.png instead)");
     const CameraIntrinsics camera = readCamera((dir / "camera.yaml").string());
 
     // capture_<k>_rgb.png for k = 0..N-1, each with its capture_<k>_depth.png.

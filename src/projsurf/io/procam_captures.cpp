@@ -19,28 +19,20 @@ namespace {
 const std::regex kPoseName(R"(capture_(\d{1,4}))");
 const std::regex kImageName(R"(graycode_(\d{1,3})\.(png|jpg|jpeg|bmp|tif|tiff))", std::regex::icase);
 
-/// capture number -> folder.
-std::map<int, fs::path> poseFolders(const fs::path &dir) {
+/// Number -> entry of DIR's entries whose name matches `name` (folders only, or files only).
+std::map<int, fs::path> numberedEntries(const fs::path &dir, const std::regex &name, bool folders) {
     std::map<int, fs::path> out;
     std::error_code ec;
     for (const auto &e : fs::directory_iterator(dir, ec)) {
         std::smatch m;
-        const std::string name = e.path().filename().string();
-        if (e.is_directory(ec) && std::regex_match(name, m, kPoseName)) out[std::stoi(m[1])] = e.path();
+        const std::string n = e.path().filename().string();
+        if (e.is_directory(ec) == folders && std::regex_match(n, m, name)) out[std::stoi(m[1])] = e.path();
     }
     return out;
 }
 
-std::map<int, fs::path> poseImages(const fs::path &pose) {
-    std::map<int, fs::path> out;
-    std::error_code ec;
-    for (const auto &e : fs::directory_iterator(pose, ec)) {
-        std::smatch m;
-        const std::string name = e.path().filename().string();
-        if (std::regex_match(name, m, kImageName)) out[std::stoi(m[1])] = e.path();
-    }
-    return out;
-}
+std::map<int, fs::path> poseFolders(const fs::path &dir) { return numberedEntries(dir, kPoseName, true); }
+std::map<int, fs::path> poseImages(const fs::path &pose) { return numberedEntries(pose, kImageName, false); }
 
 }  // namespace
 
