@@ -16,12 +16,15 @@
 #include "projsurf/calibration/decoded_points.hpp"
 #include "projsurf/calibration/gray_code.hpp"
 #include "projsurf/calibration/projector_fit.hpp"
+#include "projsurf/frontend/chessboard_calibration.hpp"
 #include "projsurf/frontend/resolution.hpp"
+#include "projsurf/io/chessboard_report.hpp"
 #include "projsurf/io/calibration_report.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"
 #include "projsurf/io/pattern_files.hpp"
+#include "projsurf/io/procam_captures.hpp"
 #include "projsurf/io/structured_report.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
@@ -39,6 +42,7 @@ struct CalibrateOptions {
     std::string fov = "39.3,24.0";        // deg, Aaxa P300 (paper 3.1.2)
     std::string resolution = "1280,800";  // px, Aaxa P300
     int threshold = 50;                   // paper 3.1.1
+    double square_m = 0;                  // chessboard mode: the printed square's edge, m (no default: measure it)
     bool resolution_given = false;
 };
 
@@ -130,6 +134,39 @@ void runStructured(const CalibrateOptions &o, int res_w, int res_h) {
               << fmt(" (framebuffer coverage %.0f %%, relief %.0f mm)\n", fit.coverage * 100, fit.relief_m * 1000);
 }
 
+/// Chessboard mode: procam-style poses (capture_<k>/graycode_<NN>.png), no depth.
+void runChessboard(const CalibrateOptions &o, int res_w, int res_h) {
+    if (!(o.square_m > 0 && o.square_m < 10))
+        throw InputError("--square-m", "the chessboard mode needs the printed square's edge in metres (0 < s < 10)");
+    std::optional<std::pair<int, int>> resolution;
+    if (o.resolution_given) resolution = std::make_pair(res_w, res_h);
+    const ProcamFolder folder = readProcamFolder(o.captures, resolution);
+    const frontend::ChessboardCalibration cal = frontend::calibrateChessboard(folder, o.square_m);
+    ChessboardReport report;
+    report.captures_dir = o.captures;
+    report.created_utc = utcNow();
+    report.poses = static_cast<int>(folder.poses.size());
+    report.square_m = o.square_m;
+    report.decoded_board_share = cal.decoded_board_share;
+    writeChessboardCalibration(o.out, cal.fit, cal.width, cal.height, report);
+    const StereoFit &f = cal.fit;
+    std::cout << "projsurf calibrate: chessboard, " << folder.poses.size() << " pose(s), board " << cal.inner.width
+              << "x" << cal.inner.height << " inner corners, projector " << cal.width << "x" << cal.height << " -> "
+              << o.out << "\n";
+    for (const auto &p : cal.poses)
+        std::cout << "  " << p.dir << ": "
+                  << (p.board ? std::to_string(p.carried) + "/" + std::to_string(p.corners) + " corners carried" +
+                                    fmt(", board %.1f %% decoded", 100 * p.board_share)
+                              : std::string("no chessboard found"))
+                  << "\n";
+    std::cout << fmt("  projector fx %.1f fy %.1f cx %.1f cy %.1f px", f.projector.fx, f.projector.fy, f.projector.cx,
+                     f.projector.cy)
+              << fmt(", camera fx %.1f fy %.1f px\n", f.camera.fx, f.camera.fy)
+              << fmt("  translation [%.4f, %.4f, %.4f] m", f.translation[0], f.translation[1], f.translation[2])
+              << fmt(" (P_proj = R P_cam + t); reprojection rms %.3f px (camera %.3f, projector %.3f)\n", f.rms_px,
+                     f.camera.rms_px, f.projector.rms_px);
+}
+
 void run(const CalibrateOptions &o) {
     if (!o.write_picture.empty()) return writePicture(o);
     if (o.captures.empty()) throw CLI::RequiredError("--captures");
@@ -146,6 +183,11 @@ void run(const CalibrateOptions &o) {
     const fs::path dir(o.captures);
     if (fs::exists(dir / "patterns.yaml", ec) && fs::is_directory(dir / "pose_0", ec))
         return runStructured(o, res_w, res_h);
+    if (isProcamFolder(o.captures)) return runChessboard(o, res_w, res_h);
+    if (!fs::exists(dir / "camera.yaml", ec))
+        throw InputError((dir / "camera.yaml").string(),
+                         "no such file (the disc mode needs it; structured light with depth needs patterns.yaml + "
+                         "pose_<k>/ beside it; the chessboard mode needs capture_<k>/graycode_<NN>.png instead)");
     const CameraIntrinsics camera = readCamera((dir / "camera.yaml").string());
 
     // capture_<k>_rgb.png for k = 0..N-1, each with its capture_<k>_depth.png.
@@ -266,7 +308,8 @@ void addCalibrateCommand(CLI::App &app) {
     sub->add_option(
         "--captures", opts->captures,
         "folder with camera.yaml and capture_k_rgb.png / capture_k_depth.png, k = 0..N-1 (N >= 3); or "
-        "with patterns.yaml and pose_k/ (structured light, see projsurf patterns); required unless --write-picture");
+        "with patterns.yaml and pose_k/ (structured light, see projsurf patterns); or with capture_k/graycode_NN.png "
+        "(chessboard mode, OpenCV's Gray-code order, no depth: needs --square-m); required unless --write-picture");
     sub->add_option("--out", opts->out, "calibration YAML to write; required unless --write-picture");
     sub->add_option("--write-picture", opts->write_picture,
                     "write the calibration picture (black, one white disc in the centre) at --resolution "
@@ -275,6 +318,7 @@ void addCalibrateCommand(CLI::App &app) {
         ->capture_default_str();
     auto *res = sub->add_option("--resolution", opts->resolution, "projector framebuffer width,height, px")
                     ->capture_default_str();
+    sub->add_option("--square-m", opts->square_m, "chessboard mode: the printed square's edge, m");
     sub->add_option("--threshold", opts->threshold, "grey level that separates the disc from the background (0-254)")
         ->capture_default_str();
     sub->callback([opts, res] {

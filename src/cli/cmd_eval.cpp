@@ -15,14 +15,18 @@
 #include "eval/colour_suite.hpp"
 #include "eval/experiments.hpp"
 #include "eval/labelled_eval.hpp"
+#include "eval/procam_comparison.hpp"
 #include "eval/projector_eval.hpp"
 #include "eval/real_gallery.hpp"
 #include "eval/real_labels.hpp"
 #include "eval/realistic_suite.hpp"
 #include "eval/report.hpp"
+#include "projsurf/frontend/chessboard_calibration.hpp"
 #include "projsurf/frontend/progress.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/procam_captures.hpp"
+#include "projsurf/io/procam_xml.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
 namespace fs = std::filesystem;
@@ -43,7 +47,32 @@ struct EvalOptions {
     bool projector_only = false;  // only the projector table (issue 12)
     bool colour_only = false;     // only the colour suite
     bool realistic_only = false;  // only the realistic-sensor suite
+    std::string procam;           // a procam-calibration sample_data folder: ours beside its XML
+    std::string json;             // with --procam: the comparison as JSON
+    // The board's square: procam-calibration's README runs its sample_data with chess_block_size
+    // 75 (read as mm); its XML's translation is in those units.
+    double square_m = 0.075;
+    double published_square = 75;
 };
+
+/// Our chessboard calibration of a procam-calibration folder beside its calibration_result.xml.
+void runProcam(const EvalOptions &o) {
+    if (!(o.square_m > 0 && o.square_m < 10)) throw InputError("--square-m", "must be between 0 and 10 m");
+    if (!o.json.empty()) requireWritableFile(o.json);
+    const PublishedProcam published = readProcamXml((fs::path(o.procam) / "calibration_result.xml").string());
+    const ProcamFolder folder = readProcamFolder(o.procam, std::nullopt);
+    const frontend::ChessboardCalibration cal = frontend::calibrateChessboard(folder, o.square_m);
+    const double unit_m = o.square_m / o.published_square;
+    const sim::ProcamComparison c = sim::compareProcam(cal.fit, published, unit_m);
+    std::printf("eval --procam %s: %zu poses, board %dx%d inner corners, projector %dx%d\n", o.procam.c_str(),
+                folder.poses.size(), cal.inner.width, cal.inner.height, cal.width, cal.height);
+    for (const auto &p : cal.poses)
+        std::printf("  %s: %s, %d/%d corners carried, board %.1f %% decoded\n", p.dir.c_str(),
+                    p.board ? "board" : "no board", p.carried, p.corners, 100 * p.board_share);
+    std::printf("\n%s", sim::procamTable(cal.fit, published, c, unit_m, o.square_m, cal.decoded_board_share).c_str());
+    if (!o.json.empty())
+        writeFileAtomic(o.json, sim::procamJson(cal.fit, published, c, unit_m, o.square_m, cal.decoded_board_share));
+}
 
 /// The 1-minute load average (Linux), NaN when unknown.
 double loadAverage() {
@@ -118,6 +147,8 @@ void runRealisticTable(const EvalOptions &o) {
 }
 
 void run(const EvalOptions &o, const std::string &command) {
+    if (!o.procam.empty()) return runProcam(o);
+    if (!o.json.empty()) throw InputError("--json", "only with --procam");
     if (o.out.empty()) throw InputError("--out", "an output directory is required");
     if (o.rounds < 1 || o.rounds > 100) throw InputError("--rounds", "must be between 1 and 100");
     const fs::path out(o.out);
@@ -231,7 +262,8 @@ void addEvalCommand(CLI::App &app) {
     auto o = std::make_shared<EvalOptions>();
     auto *sub =
         app.add_subcommand("eval", "Re-run the paper's experiments in simulation and write a report with charts");
-    sub->add_option("--out", o->out, "Output directory for report.md, charts and gallery/ (created)")->required();
+    sub->add_option("--out", o->out,
+                    "Output directory for report.md, charts and gallery/ (created); required unless --procam");
     sub->add_option("--rounds", o->rounds, "Noise seeds per pose (default 10, as in the paper)");
     sub->add_flag("--quick", o->quick, "2 rounds and the 2 m poses only (for tests and CI)");
     sub->add_option("--seed", o->seed, "Base seed (default 1)");
@@ -254,6 +286,12 @@ void addEvalCommand(CLI::App &app) {
                   "windows, clutter): DIR/realistic.md; --rounds per scene and sensor, 2 with --quick")
         ->excludes("--projector-only")
         ->excludes("--colour-only");
+    sub->add_option("--procam", o->procam,
+                    "Only the real projector-camera check: calibrate a procam-calibration sample_data folder "
+                    "(capture_k/graycode_NN.png, calibration_result.xml) with the chessboard mode and print it "
+                    "beside its published calibration");
+    sub->add_option("--json", o->json, "with --procam: write the comparison as JSON");
+    sub->add_option("--square-m", o->square_m, "with --procam: the board's square, m (default 0.075: its README's 75)");
     sub->callback([o, real, labels] {
         EvalOptions opts = *o;
         opts.real_dir_given = real->count() > 0;

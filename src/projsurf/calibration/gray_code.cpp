@@ -1,5 +1,6 @@
 #include "projsurf/calibration/gray_code.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -32,6 +33,12 @@ std::vector<GrayPattern> grayPatterns(int width, int height) {
     return out;
 }
 
+std::vector<GrayPattern> openCvGrayPatterns(int width, int height) {
+    std::vector<GrayPattern> out = grayPatterns(width, height);
+    std::rotate(out.begin(), out.begin() + 2, out.end());
+    return out;
+}
+
 cv::Mat grayPatternImage(const GrayPattern &p, int width, int height) {
     cv::Mat img(height, width, CV_8UC1, cv::Scalar(p.kind == GrayPattern::Kind::Black ? 0 : 255));
     if (p.kind == GrayPattern::Kind::White || p.kind == GrayPattern::Kind::Black) return img;
@@ -61,16 +68,34 @@ cv::Mat toGrey(const cv::Mat &m) {
 }  // namespace
 
 GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, int width, int height, const GrayDecodeConfig &cfg) {
+    return decodeGray(captures, grayPatterns(width, height), width, height, cfg);
+}
+
+GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, const std::vector<GrayPattern> &order, int width,
+                        int height, const GrayDecodeConfig &cfg) {
+    // Where each pattern of grayPatterns' order was captured.
     const auto patterns = grayPatterns(width, height);
+    std::vector<int> slot(patterns.size(), -1);
+    if (order.size() != patterns.size())
+        throw std::invalid_argument("gray decode: " + std::to_string(order.size()) + " patterns in the order for " +
+                                    std::to_string(patterns.size()));
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        std::size_t k = 0;
+        while (k < patterns.size() && !(patterns[k].kind == order[i].kind && patterns[k].bit == order[i].bit &&
+                                        patterns[k].inverse == order[i].inverse))
+            ++k;
+        if (k == patterns.size() || slot[k] >= 0)
+            throw std::invalid_argument("gray decode: pattern '" + order[i].name + "' unknown or repeated");
+        slot[k] = static_cast<int>(i);
+    }
     if (captures.size() != patterns.size())
         throw std::invalid_argument("gray decode: " + std::to_string(captures.size()) + " captures for " +
                                     std::to_string(patterns.size()) + " patterns");
     const cv::Size size = captures[0].size();
     std::vector<cv::Mat> grey;
-    for (const auto &c : captures) {
+    for (const auto &c : captures)
         if (c.size() != size || c.empty()) throw std::invalid_argument("gray decode: captures of different sizes");
-        grey.push_back(toGrey(c));
-    }
+    for (const int i : slot) grey.push_back(toGrey(captures[i]));
     GrayDecoding d;
     const double nan = std::numeric_limits<double>::quiet_NaN();
     d.column = cv::Mat(size, CV_64F, cv::Scalar(nan));
@@ -83,6 +108,7 @@ GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, int width, int hei
             const double contrast = white - black;
             if (!(contrast >= cfg.min_contrast)) continue;
             double value[2] = {nan, nan};
+            double weakest = 1.0;  // the least resolved bit's margin, share of the contrast
             std::size_t at = 2;
             for (int axis = 0; axis < 2; ++axis) {
                 const int bits = axis == 0 ? col_bits : row_bits;
@@ -91,10 +117,12 @@ GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, int width, int hei
                 int gray = 0, unsure = 0;
                 for (int b = bits - 1; b >= 0; --b, at += 2) {
                     const double diff = grey[at].at<float>(y, x) - grey[at + 1].at<float>(y, x);
-                    if (std::abs(diff) < cfg.min_bit_margin * contrast)
+                    if (std::abs(diff) < cfg.min_bit_margin * contrast) {
                         unsure |= 1 << b;
-                    else if (diff > 0)
-                        gray |= 1 << b;
+                        continue;
+                    }
+                    weakest = std::min(weakest, std::abs(diff) / contrast);
+                    if (diff > 0) gray |= 1 << b;
                 }
                 auto toBinary = [bits](int g) {
                     int binary = 0;
@@ -130,7 +158,7 @@ GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, int width, int hei
             if (std::isnan(value[0]) || std::isnan(value[1])) continue;
             d.column.at<double>(y, x) = value[0];
             d.row.at<double>(y, x) = value[1];
-            d.confidence.at<uchar>(y, x) = 255;
+            d.confidence.at<uchar>(y, x) = cv::saturate_cast<uchar>(std::max(1.0, 255.0 * weakest));
             ++d.decoded;
         }
     return d;

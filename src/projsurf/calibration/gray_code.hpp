@@ -24,6 +24,10 @@ struct GrayPattern {
 /// The patterns in the order to project: white, black, then columns and rows from the most
 /// significant bit, each followed by its inverse.
 std::vector<GrayPattern> grayPatterns(int width, int height);
+/// OpenCV's order (cv::structured_light::GrayCodePattern::generate, as procam-calibration
+/// tools project it): columns then rows from the most significant bit, each followed by its
+/// inverse, then white and black appended. The same images as grayPatterns, reordered.
+std::vector<GrayPattern> openCvGrayPatterns(int width, int height);
 /// Bits to code `n` values.
 int grayBits(int n);
 /// The 8-bit framebuffer image (width x height, CV_8UC1) of a pattern.
@@ -39,7 +43,10 @@ struct GrayDecodeConfig {
 struct GrayDecoding {
     cv::Mat column;      ///< CV_64F, framebuffer u, NaN where not decoded
     cv::Mat row;         ///< CV_64F, framebuffer v, NaN where not decoded
-    cv::Mat confidence;  ///< CV_8U, 255 where both are decoded
+    /// CV_8U, 0 where not decoded; else the weakest resolved bit's |pattern - inverse| as a
+    /// share of (white - black), times 255 (pattern and inverse: independent of gamma and of
+    /// ambient light, which both add to or scale the pair alike).
+    cv::Mat confidence;
     int decoded = 0;     ///< pixels with both
 };
 
@@ -48,5 +55,10 @@ struct GrayDecoding {
 /// mismatch.
 GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, int width, int height,
                         const GrayDecodeConfig &config = {});
+/// The same for captures in any order of the same set: `captures[i]` taken while `order[i]`
+/// was projected (every column and row bit with its inverse, white and black, once each; else
+/// std::invalid_argument).
+GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, const std::vector<GrayPattern> &order, int width,
+                        int height, const GrayDecodeConfig &config = {});
 
 }  // namespace projsurf

@@ -1,0 +1,49 @@
+#pragma once
+// Camera and projector calibrated together from chessboard poses (no depth): the board's
+// corners in the camera image and, carried through the decoded structured light, in the
+// framebuffer. Each device alone by Zhang's method (cv::calibrateCamera; radial k1 k2 k3,
+// tangential p1 p2 held at zero), then the pair by
+// cv::stereoCalibrate with those intrinsics held, which gives the projector's pose relative to
+// the camera. OpenCV's convention throughout: P_proj = R P_cam + t, in the board's units.
+#include <array>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "projsurf/types/projector.hpp"
+
+namespace projsurf {
+
+/// One chessboard pose: object points (z = 0) and where each was seen, same order.
+struct StereoView {
+    std::vector<cv::Point3f> board;
+    std::vector<cv::Point2f> camera;     ///< camera px
+    std::vector<cv::Point2f> projector;  ///< framebuffer px
+};
+
+struct DeviceIntrinsics {
+    double fx = 0, fy = 0, cx = 0, cy = 0;  ///< px, pixel centres at integers
+    std::array<double, 5> distortion{{0, 0, 0, 0, 0}};  ///< OpenCV k1 k2 p1 p2 k3
+    double rms_px = 0;  ///< its own calibration's reprojection RMS
+};
+
+struct StereoFit {
+    bool ok = false;
+    std::string problem;
+    DeviceIntrinsics camera, projector;
+    cv::Matx33d rotation = cv::Matx33d::eye();  ///< projector from camera
+    cv::Vec3d translation{0, 0, 0};             ///< board units
+    double rms_px = 0;                          ///< stereo reprojection RMS over both devices
+    std::size_t views = 0, points = 0;
+};
+
+/// The contract's projector from the fit: intrinsics, distortion, rotation (columns: the
+/// projector's axes in the camera frame, R^T) and origin (-R^T t, in the board's units: metres
+/// when the board was given in metres).
+Projector stereoProjector(const StereoFit &fit, int width, int height);
+
+/// `views`: 2 or more (3 or more recommended). Sizes in px.
+StereoFit fitStereo(const std::vector<StereoView> &views, cv::Size camera_size, cv::Size projector_size);
+
+}  // namespace projsurf

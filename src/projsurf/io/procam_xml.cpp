@@ -1,0 +1,65 @@
+#include "projsurf/io/procam_xml.hpp"
+
+#include <filesystem>
+
+#include <opencv2/core.hpp>
+
+#include "projsurf/io/errors.hpp"
+
+namespace projsurf {
+namespace {
+
+cv::Mat matrix(const cv::FileStorage &fs, const std::string &path, const std::string &key, int rows, int cols,
+               const std::string &alias = "") {
+    cv::Mat m;
+    cv::FileNode n = fs[key];
+    if (n.empty() && !alias.empty()) n = fs[alias];
+    if (!n.empty()) n >> m;
+    if (m.empty() || static_cast<int>(m.total()) != rows * cols)
+        throw InputError(path, "lacks a " + std::to_string(rows) + "x" + std::to_string(cols) + " matrix '" + key + "'");
+    m.convertTo(m, CV_64F);
+    return m.reshape(1, rows);
+}
+
+}  // namespace
+
+PublishedProcam readProcamXml(const std::string &path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, "no such file");
+    cv::FileStorage fs;
+    try {
+        fs.open(path, cv::FileStorage::READ);
+    } catch (const cv::Exception &) {
+        throw InputError(path, "not a readable OpenCV FileStorage file");
+    }
+    if (!fs.isOpened()) throw InputError(path, "not a readable OpenCV FileStorage file");
+    PublishedProcam p;
+    try {
+        const cv::Mat ci = matrix(fs, path, "cam_int", 3, 3), cd = matrix(fs, path, "cam_dist", 1, 5);
+        const cv::Mat pi = matrix(fs, path, "proj_int", 3, 3), pd = matrix(fs, path, "proj_dist", 1, 5);
+        const cv::Mat r = matrix(fs, path, "rotation", 3, 3, "roration"), t = matrix(fs, path, "translation", 3, 1);
+        p.cam_fx = ci.at<double>(0, 0);
+        p.cam_fy = ci.at<double>(1, 1);
+        p.cam_cx = ci.at<double>(0, 2);
+        p.cam_cy = ci.at<double>(1, 2);
+        p.proj_fx = pi.at<double>(0, 0);
+        p.proj_fy = pi.at<double>(1, 1);
+        p.proj_cx = pi.at<double>(0, 2);
+        p.proj_cy = pi.at<double>(1, 2);
+        for (int i = 0; i < 5; ++i) {
+            p.cam_distortion[i] = cd.at<double>(0, i);
+            p.proj_distortion[i] = pd.at<double>(0, i);
+        }
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) p.rotation(i, j) = r.at<double>(i, j);
+            p.translation[i] = t.at<double>(i, 0);
+        }
+        const cv::FileNode rms = fs["rms"];
+        if (rms.isReal() || rms.isInt()) p.rms = static_cast<double>(rms);
+    } catch (const cv::Exception &) {
+        throw InputError(path, "a matrix could not be read");
+    }
+    return p;
+}
+
+}  // namespace projsurf

@@ -1,0 +1,140 @@
+// The chessboard mode of structured light: OpenCV's Gray-code order decoded under gamma and
+// ambient light, the capture folder's problems named, and (when the public procam-calibration
+// sample data is on this machine) the calibration beside the published one.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <stdexcept>
+
+#include "cli_run.hpp"
+#include "projsurf/calibration/gray_code.hpp"
+
+namespace fs = std::filesystem;
+using namespace projsurf;
+
+namespace {
+
+/// What a camera sees of a framebuffer image it views pixel for pixel: ambient light plus a
+/// gamma-encoded response (no blur), 8 bits.
+cv::Mat seen(const cv::Mat &framebuffer, double ambient, double gain, double gamma) {
+    cv::Mat out(framebuffer.size(), CV_8UC1);
+    for (int y = 0; y < out.rows; ++y)
+        for (int x = 0; x < out.cols; ++x)
+            out.at<uchar>(y, x) = cv::saturate_cast<uchar>(
+                ambient + gain * std::pow(framebuffer.at<uchar>(y, x) / 255.0, gamma));
+    return out;
+}
+
+/// The procam-calibration sample_data folder: $PROJSURF_PROCAM_DIR, else /work/data/procam/sample_data.
+fs::path procamDir() {
+    const char *env = std::getenv("PROJSURF_PROCAM_DIR");
+    return env ? fs::path(env) : fs::path("/work/data/procam/sample_data");
+}
+
+}  // namespace
+
+TEST(ChessboardGrayCode, OpenCvOrderIsTheSameSetReordered) {
+    const auto ours = grayPatterns(100, 60), opencv = openCvGrayPatterns(100, 60);
+    ASSERT_EQ(ours.size(), opencv.size());
+    EXPECT_EQ(opencv[opencv.size() - 2].kind, GrayPattern::Kind::White);
+    EXPECT_EQ(opencv.back().kind, GrayPattern::Kind::Black);
+    EXPECT_EQ(opencv[0].kind, GrayPattern::Kind::Column);
+    EXPECT_FALSE(opencv[0].inverse);
+    EXPECT_TRUE(opencv[1].inverse);
+    EXPECT_EQ(opencv[0].bit, grayBits(100) - 1);  // most significant first
+}
+
+TEST(ChessboardGrayCode, DecodesOpenCvOrderUnderGammaAndAmbientLight) {
+    const int w = 96, h = 40;
+    const auto order = openCvGrayPatterns(w, h);
+    std::vector<cv::Mat> captures;
+    for (const auto &p : order) captures.push_back(seen(grayPatternImage(p, w, h), 40.0, 120.0, 2.2));
+    const GrayDecoding d = decodeGray(captures, order, w, h);
+    ASSERT_EQ(d.decoded, w * h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            ASSERT_DOUBLE_EQ(d.column.at<double>(y, x), x) << "at " << x << "," << y;
+            ASSERT_DOUBLE_EQ(d.row.at<double>(y, x), y) << "at " << x << "," << y;
+            ASSERT_GT(d.confidence.at<uchar>(y, x), 0);
+        }
+    // Read in our own order instead, the same captures decode to garbage or not at all.
+    const GrayDecoding wrong = decodeGray(captures, w, h);
+    int right = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            right += wrong.column.at<double>(y, x) == x && wrong.row.at<double>(y, x) == y;
+    EXPECT_LT(right, w * h / 10);
+}
+
+TEST(ChessboardGrayCode, LowContrastPixelsAreLeftOpen) {
+    const int w = 32, h = 16;
+    const auto order = openCvGrayPatterns(w, h);
+    std::vector<cv::Mat> captures;
+    for (const auto &p : order) captures.push_back(seen(grayPatternImage(p, w, h), 60.0, 5.0, 1.0));
+    EXPECT_EQ(decodeGray(captures, order, w, h).decoded, 0);  // 5 grey levels of contrast: shadow
+}
+
+TEST(ChessboardGrayCode, AnOrderMissingAPatternIsRefused) {
+    auto order = openCvGrayPatterns(32, 16);
+    order[1] = order[0];  // a pattern twice, its inverse never
+    std::vector<cv::Mat> captures(order.size(), cv::Mat(4, 4, CV_8UC1, cv::Scalar(0)));
+    EXPECT_THROW(decodeGray(captures, order, 32, 16), std::invalid_argument);
+}
+
+TEST(ChessboardCalibrateCli, SaysWhatTheFolderLacks) {
+    const fs::path dir = test::freshDir("chessboard_lacks");
+    const fs::path caps = dir / "caps";
+    fs::create_directories(caps / "capture_0");
+    cv::imwrite((caps / "capture_0" / "graycode_00.png").string(), cv::Mat(8, 8, CV_8UC1, cv::Scalar(0)));
+    // No projector size: neither graycode_pattern/ nor --resolution.
+    auto r = test::cli("calibrate --captures " + caps.string() + " --out " + (dir / "c.yaml").string() +
+                           " --square-m 0.03",
+                       dir);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("--resolution"), std::string::npos) << r.err;
+    // With it: the second capture of the set is missing.
+    r = test::cli("calibrate --captures " + caps.string() + " --out " + (dir / "c.yaml").string() +
+                      " --square-m 0.03 --resolution 32,16",
+                  dir);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("graycode_01"), std::string::npos) << r.err;
+    // Without the square size the chessboard mode cannot give metres.
+    r = test::cli("calibrate --captures " + caps.string() + " --out " + (dir / "c.yaml").string(), dir);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("--square-m"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "c.yaml"));
+    // A folder of neither kind says what each mode needs.
+    fs::create_directories(dir / "empty");
+    r = test::cli("calibrate --captures " + (dir / "empty").string() + " --out " + (dir / "c.yaml").string(), dir);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("graycode"), std::string::npos) << r.err;
+    fs::remove_all(dir);
+}
+
+// The public real data (kamino410/procam-calibration, MIT): five board poses of a real
+// projector. Skipped when the folder is not on this machine (see docs/projector.md).
+TEST(ChessboardCalibrateReal, ProcamSampleDataBesideItsPublishedCalibration) {
+    const fs::path data = procamDir();
+    if (!fs::exists(data / "calibration_result.xml")) GTEST_SKIP() << data << " not here";
+    const fs::path dir = test::freshDir("chessboard_real");
+    const auto r = test::cli("eval --procam " + data.string() + " --json " + (dir / "p.json").string(), dir, 300);
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::ifstream in(dir / "p.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    for (const char *key : {"projector", "camera", "rotation", "translation", "square_m", "reprojection_rms_px",
+                            "decoded_board_share"})
+        EXPECT_TRUE(j.contains(key)) << key;
+    ASSERT_EQ(j["projector"]["distortion"].size(), 5u);
+    ASSERT_EQ(j["rotation"].size(), 3u);
+    // The camera sees the board directly: its intrinsics agree with the published ones closely.
+    const double cam_fx = j["camera"]["fx"], pub_fx = j["published"]["camera"]["fx"];
+    EXPECT_NEAR(cam_fx / pub_fx, 1.0, 0.01);
+    // Both devices' board corners agree with one rigid pose within the 0.5 px.
+    EXPECT_LE(j["reprojection_rms_px"].get<double>(), 0.5);
+    EXPECT_GT(j["decoded_board_share"].get<double>(), 0.5);
+    fs::remove_all(dir);
+}
