@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "cli_run.hpp"
 #include "projsurf/calibration/projected_picture.hpp"
@@ -97,8 +98,16 @@ TEST(Verify, CliReportsPassedForTheRightCalibrationAndNotFoundForADarkImage) {
     EXPECT_NE(json.find("\"passed\": true"), std::string::npos) << json;
     cv::imwrite((dir / "caps" / "rgb.png").string(), cv::Mat(480, 640, CV_8UC3, cv::Scalar(20, 20, 20)));
     const auto dark = test::cli(args, dir);
-    EXPECT_EQ(dark.status, 0) << dark.err;
+    EXPECT_EQ(dark.status, 3) << dark.err;  // a failed check exits 3, like calibrate's redo
     EXPECT_NE(test::slurp(dir / "v.json").find("\"found\": false"), std::string::npos);
+    // A bright quadrilateral that is not the card (a lit window: no grey disc at its centre).
+    cv::Mat window(480, 640, CV_8UC3, cv::Scalar(20, 20, 20));
+    cv::rectangle(window, cv::Rect(200, 150, 240, 150), cv::Scalar(250, 250, 250), cv::FILLED);
+    cv::imwrite((dir / "caps" / "rgb.png").string(), window);
+    const auto other = test::cli(args, dir);
+    EXPECT_EQ(other.status, 3) << other.err;
+    EXPECT_NE(test::slurp(dir / "v.json").find("\"found\": false"), std::string::npos) << test::slurp(dir / "v.json");
+    EXPECT_NE(other.out.find("not the test card"), std::string::npos) << other.out;
     // A framebuffer of another size: one line, exit 2.
     cv::imwrite((dir / "fb.png").string(), cv::Mat(100, 100, CV_8UC3, cv::Scalar(255, 255, 255)));
     const auto bad = test::cli(args, dir);
