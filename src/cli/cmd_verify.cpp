@@ -90,7 +90,7 @@ void run(const VerifyOptions &o) {
 
     const FoundPicture found = findProjectedPicture(rgb, depth, camera);
     std::string json;
-    bool passed = false;
+    bool passed = true;  // not found: `found: false`, exit 0 (the contract); found off target: exit 3
     if (!found.found) {
         json = "{\"found\": false, \"reason\": \"" + found.reason + "\", \"passed\": false}\n";
         std::cout << "projsurf verify: picture not found: " << found.reason << "\n";
@@ -122,7 +122,7 @@ void run(const VerifyOptions &o) {
             eq8.diagonal_pct);
     }
     if (!o.json.empty()) writeFileAtomic(o.json, json);
-    if (!passed) throw ExitStatus{kExitCheckFailed};  // like calibrate's redo: written, but not to be trusted
+    if (!passed) throw ExitStatus{kExitCheckFailed};  // like calibrate's redo: written, but the check failed
 }
 
 }  // namespace

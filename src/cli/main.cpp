@@ -1,5 +1,5 @@
 // projsurf: find where a robot's projector can show a picture on a wall, and warp the
-// picture so it appears undistorted there. See README.md and the contract (INTERFACE.md).
+// picture so it appears undistorted there. See README.md and the contract (docs/interface.md).
 #include <cstring>
 #include <iostream>
 #include <new>

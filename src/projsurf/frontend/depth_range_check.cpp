@@ -26,7 +26,7 @@ std::optional<std::string> depthRangeWarning(const Cloud &cloud, const std::stri
         std::snprintf(buf, sizeof buf, "%s: the median depth is %.2f m, %s; check its depth_scale (depth PNG units "
                       "per metre: 1000 for millimetres, 5000 for TUM, 10000 for 0.1 mm)",
                       source.c_str(), *median, side);
-    } else if (*median > 100.0) {
+    } else if (*median > 100.0 && *median < 100000.0) {  // 0.1-100 m in millimetres
         std::snprintf(buf, sizeof buf, "%s: the median depth is %.0f m; the cloud looks like millimetres, and "
                       "projsurf reads metres (scale it by 0.001)",
                       source.c_str(), *median);

@@ -20,7 +20,7 @@ std::optional<double> medianDepth(const Cloud &cloud);
 /// The warning text (without "projsurf: warning: ") when the median depth is outside
 /// [kMinSensorRange, kMaxSensorRange], else nullopt. `source` names the file to fix: the
 /// camera YAML of a depth PNG (`from_depth_image`: its depth_scale is the usual cause), or the
-/// cloud file (a median beyond 100 "m" is named as millimetres).
+/// cloud file (a median of 100 to 100000 "m" is named as millimetres).
 std::optional<std::string> depthRangeWarning(const Cloud &cloud, const std::string &source, bool from_depth_image);
 
 }  // namespace projsurf::frontend
