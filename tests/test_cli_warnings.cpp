@@ -8,6 +8,9 @@
 #include <fstream>
 #include <regex>
 
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+
 #include "cli_run.hpp"
 
 namespace fs = std::filesystem;
@@ -15,8 +18,9 @@ using namespace projsurf::test;
 
 namespace {
 
-/// The TUM office frame: a camera pitched about 30 deg down at a partition (depth in 0.2 mm).
-const fs::path kFrame = fs::path(PROJSURF_SHARED_DIR) / "data/real/tum_o3d_fr3_office_partition";
+/// The TUM office frame: a camera pitched about 30 deg down at a partition (depth in 0.2 mm);
+/// it ships in the repository's data/.
+const fs::path kFrame = fs::path(PROJSURF_SOURCE_DIR) / "data/tum_o3d_fr3_office_partition";
 const std::string kCalib = std::string(PROJSURF_SOURCE_DIR) + "/examples/calib/example_calib.yaml";
 
 std::string depthArgs(const fs::path &camera = kFrame / "camera.yaml") {
@@ -77,3 +81,136 @@ TEST(CliWarnings, CalibrationInRadiansOrMillimetresIsRefused) {
     }
     fs::remove_all(dir);
 }
+
+TEST(CliWarnings, DepthScaleFiveTimesTooSmallOrACloudInMillimetresIsNamed) {
+    const fs::path dir = freshDir("warnings_range");
+    // 5000 -> 1000: the median depth is 5 times too far (about 12 m).
+    writeEdited(kFrame / "camera.yaml", dir / "camera.yaml", "depth_scale: *[0-9.]+", "depth_scale: 1000");
+    auto r = cli(depthArgs(dir / "camera.yaml") + " --calib " + kCalib + " --gravity auto --json " +
+                     (dir / "a.json").string(),
+                 dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("projsurf: warning: " + (dir / "camera.yaml").string() + ": the median depth is"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("about 8 m"), std::string::npos) << r.err;
+    // 5000 -> 40000: 8 times too near (about 0.3 m), below the minimum range.
+    writeEdited(kFrame / "camera.yaml", dir / "near.yaml", "depth_scale: *[0-9.]+", "depth_scale: 40000");
+    r = cli(depthArgs(dir / "near.yaml") + " --calib " + kCalib + " --gravity auto --json " + (dir / "b.json").string(),
+            dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("minimum range"), std::string::npos) << r.err;
+    // The right scale: no range warning.
+    r = cli(depthArgs() + " --calib " + kCalib + " --gravity auto --json " + (dir / "c.json").string(), dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err.find("median depth"), std::string::npos) << r.err;
+    // A cloud written in millimetres (an ASCII PCD, z about 2000).
+    {
+        std::ofstream pcd(dir / "mm.pcd");
+        pcd << "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 400\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 "
+               "0\nPOINTS 400\nDATA ascii\n";
+        for (int i = 0; i < 400; ++i) pcd << (i % 20) * 50 - 500 << " " << (i / 20) * 50 - 500 << " 2000\n";
+    }
+    r = cli("detect --cloud " + (dir / "mm.pcd").string() + " --calib " + kCalib + " --json " + (dir / "d.json").string(),
+            dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("projsurf: warning: " + (dir / "mm.pcd").string() + ": the median depth is 2000 m; the "
+                         "cloud looks like millimetres"),
+              std::string::npos)
+        << r.err;
+    fs::remove_all(dir);
+}
+
+TEST(CliWarnings, AnUpVectorOrAnOpticalAxisGivenAsGravityIsExplained) {
+    const fs::path dir = freshDir("warnings_gravity");
+    auto r = cli(depthArgs() + " --calib " + kCalib + " --gravity 0,-1,0 --json " + (dir / "a.json").string(), dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("projsurf: warning: --gravity 0,-1,0 puts the floor above the camera"), std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("give 0,1,0"), std::string::npos) << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    r = cli(depthArgs() + " --calib " + kCalib + " --gravity 0,0,1 --json " + (dir / "b.json").string(), dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("projsurf: warning: --gravity 0,0,1 points along the camera's optical axis"),
+              std::string::npos)
+        << r.err;
+    // Down given as down: no gravity warning.
+    r = cli(depthArgs() + " --calib " + kCalib + " --gravity 0,1,0 --json " + (dir / "c.json").string(), dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err.find("--gravity 0,1,0"), std::string::npos) << r.err;
+    fs::remove_all(dir);
+}
+
+TEST(CliWarnings, ColourThatIsNotEightBitBgrIsRefusedAsPythonDoes) {
+    const fs::path dir = freshDir("warnings_rgb");
+    cv::imwrite((dir / "grey.png").string(), cv::Mat(480, 640, CV_8UC1, cv::Scalar(128)));
+    for (const auto &[file, what] : {std::pair<fs::path, std::string>{kFrame / "depth.png", "16-bit with 1 channel"},
+                                     {dir / "grey.png", "8-bit with 1 channel"}}) {
+        const auto r = cli(depthArgs() + " --calib " + kCalib + " --rgb " + file.string() + " --json " +
+                               (dir / "a.json").string(),
+                           dir);
+        EXPECT_EQ(r.status, 2) << r.err;
+        EXPECT_EQ(lines(r.err), 1) << r.err;
+        EXPECT_NE(r.err.find("projsurf: error: " + file.string() + ": expected 8-bit 3-channel colour"),
+                  std::string::npos)
+            << r.err;
+        EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(dir / "a.json"));
+    }
+    fs::remove_all(dir);
+}
+
+TEST(CliWarnings, SwappedFilesRosCameraInfoUnknownKeysAndImagesAsJsonAreNamed) {
+    const fs::path dir = freshDir("warnings_files");
+    const std::string camera = (kFrame / "camera.yaml").string();
+    auto r = cli(depthArgs(kCalib) + " --calib " + camera + " --json " + (dir / "a.json").string(), dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--camera and --calib swapped?"), std::string::npos) << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    // A typo in camera.yaml: warned, the rest read.
+    writeEdited(kFrame / "camera.yaml", dir / "typo.yaml", "depth_scale", "depth_scal");
+    r = cli(depthArgs(dir / "typo.yaml") + " --calib " + kCalib + " --gravity auto --json " + (dir / "b.json").string(),
+            dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("unknown key 'camera.depth_scal' is ignored"), std::string::npos) << r.err;
+    // A ROS camera_info YAML: read (depth in mm, so the TUM frame is 5 times too far: warned);
+    // with distortion: refused.
+    const std::string info =
+        "image_width: 640\nimage_height: 480\ncamera_name: depth\ncamera_matrix:\n  rows: 3\n  cols: 3\n  data: "
+        "[535.4, 0, 320.1, 0, 539.2, 247.6, 0, 0, 1]\ndistortion_model: plumb_bob\ndistortion_coefficients:\n  rows: "
+        "1\n  cols: 5\n  data: [";
+    std::ofstream(dir / "info.yaml") << info << "0, 0, 0, 0, 0]\n";
+    std::ofstream(dir / "distorted.yaml") << info << "0.1, 0, 0, 0, 0]\n";
+    r = cli(depthArgs(dir / "info.yaml") + " --calib " + kCalib + " --gravity auto --json " + (dir / "c.json").string(),
+            dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "c.json"));
+    EXPECT_NE(r.err.find("the median depth is"), std::string::npos) << r.err;
+    r = cli(depthArgs(dir / "distorted.yaml") + " --calib " + kCalib + " --json " + (dir / "d.json").string(), dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("non-zero distortion_coefficients"), std::string::npos) << r.err;
+    // The overlay PNG given as the detection.
+    r = cli(depthArgs() + " --calib " + kCalib + " --gravity auto --json " + (dir / "e.json").string() + " --overlay " +
+                (dir / "e.png").string(),
+            dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = cli("correct --calib " + kCalib + " --detection " + (dir / "e.png").string() + " --image " +
+                (kFrame / "rgb.png").string() + " --out " + (dir / "fb.png").string(),
+            dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find((dir / "e.png").string() + ": is a PNG image, not a JSON file"), std::string::npos) << r.err;
+    fs::remove_all(dir);
+}
+
+TEST(CliWarnings, VersionAndUsageMistakesCarryTheErrorPrefix) {
+    const fs::path dir = freshDir("warnings_usage");
+    auto r = cli("--version", dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out.rfind("projsurf ", 0), 0u) << r.out;
+    r = cli("detect --no-such-option 1", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err.rfind("projsurf: error: ", 0), 0u) << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    fs::remove_all(dir);
+}
+

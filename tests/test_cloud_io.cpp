@@ -595,7 +595,7 @@ TEST(CloudIoDepth, BadDepthImagesAndCameraFiles) {
 }
 
 TEST(CloudIoDepth, RealTumFrame) {
-    const std::string frame = std::string(PROJSURF_SHARED_DIR) + "/data/real/tum_o3d_fr3_office_partition";
+    const std::string frame = std::string(PROJSURF_SOURCE_DIR) + "/data/tum_o3d_fr3_office_partition";
     const Cloud c = readDepthCloud(frame + "/depth.png", frame + "/camera.yaml");
     EXPECT_EQ(c.width, 640);
     EXPECT_EQ(c.height, 480);

@@ -189,7 +189,11 @@ TEST_F(Hostile, FarAndNonFinitePointsAreAFrameNotACrash) {
     for (const char *method : {"default", "paper"}) {
         const CliRun r = cli(detectArgs(at("far.pcd")) + " --method " + method, dir_);
         EXPECT_EQ(r.status, 0) << method << ": " << r.err;
-        EXPECT_EQ(r.err, "") << method;
+        // At most the one line that says most points are beyond any sensor's range.
+        EXPECT_TRUE(r.err.empty() || (r.err.rfind("projsurf: warning: ", 0) == 0 &&
+                                      r.err.find('\n') == r.err.size() - 1 &&
+                                      r.err.find("farther than an RGB-D camera reads") != std::string::npos))
+            << method << ": " << r.err;
         EXPECT_TRUE(nlohmann::json::accept(r.out)) << r.out;
     }
     // A depth_scale that turns every reading into kilometres and beyond.

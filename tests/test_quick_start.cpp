@@ -75,3 +75,27 @@ TEST(QuickStart, CalibrateStillNeedsCapturesWithoutWritePicture) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     fs::remove_all(dir);
 }
+
+TEST(QuickStart, TheReadmeCommandsRunFromAPlainClone) {
+    // Only what the repository holds: data/ (a real frame) and examples/calib.
+    const fs::path dir = freshDir("quick_start_clone");
+    const std::string src = PROJSURF_SOURCE_DIR, frame = src + "/data/tum_o3d_fr3_office_partition",
+                      calib = src + "/examples/calib/example_calib.yaml";
+    CliRun r = cli("detect --depth " + frame + "/depth.png --camera " + frame + "/camera.yaml --rgb " + frame +
+                       "/rgb.png --calib " + calib + " --gravity auto --aspect 16:9 --json " + (dir / "det.json").string() +
+                       " --overlay " + (dir / "det.png").string(),
+                   dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("found "), std::string::npos) << r.out;
+    r = cli("verify --write-card " + (dir / "card.png").string() + " --resolution 1280,720", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = cli("correct --calib " + calib + " --detection " + (dir / "det.json").string() + " --image " +
+                (dir / "card.png").string() + " --out " + (dir / "framebuffer.png").string(),
+            dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const cv::Mat fb = cv::imread((dir / "framebuffer.png").string(), cv::IMREAD_COLOR);
+    ASSERT_EQ(fb.cols, 1280);
+    ASSERT_EQ(fb.rows, 800);
+    EXPECT_GT(cv::countNonZero(fb.reshape(1) > 200), 1000);  // the card is in the framebuffer, lit
+    fs::remove_all(dir);
+}

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "cli_run.hpp"
 #include "projsurf/calibration/projected_picture.hpp"
@@ -95,10 +96,23 @@ TEST(Verify, CliReportsPassedForTheRightCalibrationAndNotFoundForADarkImage) {
     const std::string json = test::slurp(dir / "v.json");
     EXPECT_NE(json.find("\"found\": true"), std::string::npos) << json;
     EXPECT_NE(json.find("\"passed\": true"), std::string::npos) << json;
+    // The same capture against a tolerance no real landing meets: written, FAILED, exit 3.
+    const auto strict = test::cli(args + " --tolerance 0.000001", dir);
+    EXPECT_EQ(strict.status, 3) << strict.err;
+    EXPECT_NE(test::slurp(dir / "v.json").find("\"passed\": false"), std::string::npos);
+    EXPECT_NE(strict.out.find("FAILED"), std::string::npos) << strict.out;
     cv::imwrite((dir / "caps" / "rgb.png").string(), cv::Mat(480, 640, CV_8UC3, cv::Scalar(20, 20, 20)));
     const auto dark = test::cli(args, dir);
-    EXPECT_EQ(dark.status, 0) << dark.err;
+    EXPECT_EQ(dark.status, 0) << dark.err;  // not found: `found: false`, exit 0 (the contract)
     EXPECT_NE(test::slurp(dir / "v.json").find("\"found\": false"), std::string::npos);
+    // A bright quadrilateral that is not the card (a lit window: no grey disc at its centre).
+    cv::Mat window(480, 640, CV_8UC3, cv::Scalar(20, 20, 20));
+    cv::rectangle(window, cv::Rect(200, 150, 240, 150), cv::Scalar(250, 250, 250), cv::FILLED);
+    cv::imwrite((dir / "caps" / "rgb.png").string(), window);
+    const auto other = test::cli(args, dir);
+    EXPECT_EQ(other.status, 0) << other.err;
+    EXPECT_NE(test::slurp(dir / "v.json").find("\"found\": false"), std::string::npos) << test::slurp(dir / "v.json");
+    EXPECT_NE(other.out.find("not the test card"), std::string::npos) << other.out;
     // A framebuffer of another size: one line, exit 2.
     cv::imwrite((dir / "fb.png").string(), cv::Mat(100, 100, CV_8UC3, cv::Scalar(255, 255, 255)));
     const auto bad = test::cli(args, dir);

@@ -12,6 +12,8 @@
 #include "projsurf/detection/gravity.hpp"
 #include "projsurf/frontend/aspect.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
+#include "projsurf/frontend/depth_range_check.hpp"
+#include "projsurf/frontend/gravity_sanity.hpp"
 #include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
@@ -57,22 +59,6 @@ void warnIfTilted(const Cloud &cloud) {
                      "projsurf: warning: the floor says the camera is tilted %.0f deg from level; give --gravity auto "
                      "(or the robot's gravity) so that the picture stands upright\n",
                      *deg);
-}
-
-/// Depths that no RGB-D camera reads (median beyond 10 m or nearer than 0.2 m): a wrong
-/// depth_scale in the camera file is the usual cause.
-void warnIfImplausibleDepth(const Cloud &cloud, const std::string &camera_file) {
-    std::vector<float> z;
-    for (std::size_t i = 0; i < cloud.points.size(); i += 37)
-        if (isFinite(cloud.points[i])) z.push_back(cloud.points[i].z());
-    if (z.size() < 100) return;
-    std::nth_element(z.begin(), z.begin() + z.size() / 2, z.end());
-    const float median = z[z.size() / 2];
-    if (median > 10.0f || median < 0.2f)
-        std::fprintf(stderr,
-                     "projsurf: warning: %s: the median depth is %.2f m, outside what RGB-D cameras read; "
-                     "check its depth_scale (depth PNG units per metre)\n",
-                     camera_file.c_str(), median);
 }
 
 /// --rgb: the colour goes into the cloud only when its edges fit the depth's (issue 14), else
@@ -257,12 +243,20 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     if (!o.cloud.empty()) {
         cloud = readCloud(o.cloud);
     } else {
-        camera = std::make_unique<CameraIntrinsics>(readCamera(o.camera));
+        std::vector<std::string> camera_warnings;
+        camera = std::make_unique<CameraIntrinsics>(readCamera(o.camera, &camera_warnings));
+        for (const std::string &w : camera_warnings) std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
         cloud = readDepthCloud(o.depth, o.camera);
     }
     cv::Mat color;
     if (!o.rgb.empty()) {
-        color = readImage(o.rgb, cv::IMREAD_COLOR);
+        color = readImage(o.rgb, cv::IMREAD_UNCHANGED);
+        if (color.depth() != CV_8U || color.channels() != 3)
+            throw InputError(o.rgb, std::string("expected 8-bit 3-channel colour (B, G, R), got ") +
+                                        (color.depth() == CV_8U ? "8" : color.depth() == CV_16U ? "16" : "non-8") +
+                                        "-bit with " + std::to_string(color.channels()) + " channel" +
+                                        (color.channels() == 1 ? "" : "s") +
+                                        (color.depth() == CV_16U && color.channels() == 1 ? " (a depth PNG?)" : ""));
         if (cloud.organized() && (color.cols != cloud.width || color.rows != cloud.height))
             throw InputError(o.rgb, "colour image is " + std::to_string(color.cols) + "x" + std::to_string(color.rows) +
                                         ", the cloud is " + std::to_string(cloud.width) + "x" +
@@ -281,7 +275,11 @@ void run(const DetectOptions &o, const CLI::App &sub) {
         std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
     else if (o.gravity.empty())
         warnIfTilted(cloud);
-    if (!o.depth.empty()) warnIfImplausibleDepth(cloud, o.camera);
+    if (!o.gravity.empty() && !gravity_choice.from_floor)
+        for (const std::string &w : frontend::gravityWarnings("--gravity", gravity_choice.gravity, cloud))
+            std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
+    if (const auto w = frontend::depthRangeWarning(cloud, o.depth.empty() ? o.cloud : o.camera, !o.depth.empty()))
+        std::fprintf(stderr, "projsurf: warning: %s\n", w->c_str());
     SurfaceDetector detector(projector, cfg);
     Detection det = detectChecked(detector, cloud, gravity, o.cloud.empty() ? o.depth : o.cloud);
     frontend::enforceMinimumSize(det, minimum, "--min-width", "--min-area");

@@ -90,8 +90,9 @@ void run(const VerifyOptions &o) {
 
     const FoundPicture found = findProjectedPicture(rgb, depth, camera);
     std::string json;
+    bool passed = true;  // not found: `found: false`, exit 0 (the contract); found off target: exit 3
     if (!found.found) {
-        json = "{\"found\": false, \"reason\": \"" + found.reason + "\"}\n";
+        json = "{\"found\": false, \"reason\": \"" + found.reason + "\", \"passed\": false}\n";
         std::cout << "projsurf verify: picture not found: " << found.reason << "\n";
     } else {
         double worst = 0;
@@ -105,7 +106,7 @@ void run(const VerifyOptions &o) {
             errors += buf;
         }
         const ShapeErrors eq8 = shapeErrors(found.corners);
-        const bool passed = worst <= o.tolerance;
+        passed = worst <= o.tolerance;
         char buf[600];
         std::snprintf(
             buf, sizeof buf,
@@ -121,6 +122,7 @@ void run(const VerifyOptions &o) {
             eq8.diagonal_pct);
     }
     if (!o.json.empty()) writeFileAtomic(o.json, json);
+    if (!passed) throw ExitStatus{kExitCheckFailed};  // like calibrate's redo: written, but the check failed
 }
 
 }  // namespace

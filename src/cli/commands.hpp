@@ -11,6 +11,7 @@ struct ExitStatus {
     int code;
 };
 constexpr int kExitRedo = 3;  ///< calibrate: written, but the captures disagree (verdict redo)
+constexpr int kExitCheckFailed = 3;  ///< verify: result written, but a corner landed beyond --tolerance
 
 void addDetectCommand(CLI::App &app);     // cmd_detect.cpp
 void addCalibrateCommand(CLI::App &app);  // cmd_calibrate.cpp

@@ -1,5 +1,5 @@
 // projsurf: find where a robot's projector can show a picture on a wall, and warp the
-// picture so it appears undistorted there. See README.md and the contract (INTERFACE.md).
+// picture so it appears undistorted there. See README.md and the contract (docs/interface.md).
 #include <cstring>
 #include <iostream>
 #include <new>
@@ -43,6 +43,7 @@ std::string oneLine(std::string s) {
 int main(int argc, char **argv) {
     CLI::App app{"projsurf: projection surface detection and keystone correction for mobile robots"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", std::string("projsurf ") + PROJSURF_VERSION_STRING);
     projsurf::cli::addDetectCommand(app);
     projsurf::cli::addCalibrateCommand(app);
     projsurf::cli::addCorrectCommand(app);
@@ -66,8 +67,11 @@ int main(int argc, char **argv) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp &e) {
         return app.exit(e);
+    } catch (const CLI::CallForVersion &e) {
+        return app.exit(e);
     } catch (const CLI::ParseError &e) {
-        std::cerr << "projsurf: " << e.what() << " (see projsurf --help)\n";
+        // Usage mistakes too carry the one error prefix (an InputError's line form).
+        std::cerr << "projsurf: error: " << oneLine(e.what()) << " (see projsurf --help)\n";
         return 2;
     } catch (const projsurf::InputError &e) {
         std::cerr << "projsurf: error: " << e.what() << "\n";

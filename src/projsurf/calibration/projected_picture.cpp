@@ -13,6 +13,10 @@ namespace projsurf {
 
 namespace {
 
+/// The card's disc (grey 160 on white 255, 0.63) must read at least this much darker than the
+/// rest of the lit picture in the camera, allowing for exposure and blur.
+constexpr double kCardDiscDarker = 0.85;
+
 cv::Mat grey8(const cv::Mat &m) {
     cv::Mat g = greyscale(m);
     if (g.depth() != CV_8U) g.convertTo(g, CV_8U);
@@ -144,6 +148,25 @@ FoundPicture findProjectedPicture(const cv::Mat &colour, const cv::Mat &depth, c
             return f;
         }
         f.image_px[i] = Eigen::Vector2d((l1[2] * l2[1] - l1[1] * l2[2]) / det, (l1[0] * l2[2] - l1[2] * l2[0]) / det);
+    }
+    // The test card's signature: its grey disc at the picture's centre (where the diagonals
+    // cross, in perspective too). A bright quadrilateral without it (a window, a lit wall) is
+    // not the card.
+    {
+        const Eigen::Vector2d &p0 = f.image_px[0], &p1 = f.image_px[1], &p2 = f.image_px[2], &p3 = f.image_px[3];
+        const Eigen::Vector2d d1 = p2 - p0, d2 = p3 - p1, r = p1 - p0;
+        const double den = d1.x() * d2.y() - d1.y() * d2.x();
+        const Eigen::Vector2d centre = p0 + (std::abs(den) > 1e-9 ? (r.x() * d2.y() - r.y() * d2.x()) / den : 0.5) * d1;
+        const double side = std::min({(p1 - p0).norm(), (p2 - p3).norm(), (p3 - p0).norm(), (p2 - p1).norm()});
+        const int radius = std::max(1, static_cast<int>(0.4 * side / 10.0));  // the card's disc: 1/10 of its side
+        cv::Mat disc(mask.size(), CV_8U, cv::Scalar(0)), lit_mask;
+        cv::circle(disc, {cvRound(centre.x()), cvRound(centre.y())}, radius, cv::Scalar(255), cv::FILLED);
+        cv::bitwise_and(mask, ~disc, lit_mask);
+        const double centre_level = cv::mean(smooth, disc)[0], lit = cv::mean(smooth, lit_mask)[0];
+        if (!(centre_level < kCardDiscDarker * lit)) {
+            f.reason = "a bright quadrilateral, but not the test card (no grey disc at its centre)";
+            return f;
+        }
     }
     // The plane through the depth inside the picture (shrunk away from its edges).
     cv::Mat inside(mask.size(), CV_8U, cv::Scalar(0));

@@ -27,7 +27,8 @@ struct FoundPicture {
 };
 
 /// `colour`: 8-bit (grey or BGR); `depth`: CV_16UC1 of the same size, registered. The
-/// picture must cover at least `min_area_px` camera pixels.
+/// picture must cover at least `min_area_px` camera pixels and be the test card
+/// (verificationCard): a bright quadrilateral without its darker centre disc is not found.
 FoundPicture findProjectedPicture(const cv::Mat &colour, const cv::Mat &depth, const CameraIntrinsics &camera,
                                   double min_area_px = 400.0);
 

@@ -133,6 +133,11 @@ std::string readSmallTextFile(const std::string &path, std::uint64_t max_bytes, 
     std::ifstream in(path, std::ios::binary);
     in.read(text.data(), static_cast<std::streamsize>(text.size()));
     if (static_cast<std::uintmax_t>(in.gcount()) != size) throw InputError(path, "cannot read the file");
+    // An image where a text file belongs (an --overlay PNG given as --detection): say so.
+    const std::string image_format = readImageHeader(text).format;
+    if (!image_format.empty() && image_format != "PNM")
+        throw InputError(path, "is a " + image_format + " image, not a " + kind + " file");
+    if (text.find('\0') != std::string::npos) throw InputError(path, std::string("binary data, not a ") + kind + " file");
     // Nesting: brackets, and (YAML blocks) indentation steps; quotes and comments are not
     // told apart, which only ever overcounts.
     int depth = 0, max_depth = 0;

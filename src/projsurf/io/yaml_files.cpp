@@ -104,6 +104,9 @@ std::string readCalibrationVerdict(const std::string &path) {
 
 Projector readCalibration(const std::string &path) {
     const YAML::Node root = loadYaml(path);
+    if (!root["projector"] && (root["camera"] || root["camera_matrix"]))
+        throw InputError(path, "is camera intrinsics, not a projector calibration (projector:); --camera and --calib "
+                               "swapped?");
     const YAML::Node p = child(path, root, "projector", "");
     const auto res = numbers(path, child(path, p, "resolution", "projector."), "projector.resolution", 2);
     const auto fov = numbers(path, child(path, p, "fov_deg", "projector."), "projector.fov_deg", 2);
@@ -190,25 +193,84 @@ void writeCalibration(const std::string &path, const Projector &projector) {
     writeFileAtomic(path, std::string(out.c_str()) + "\n");
 }
 
-CameraIntrinsics readCamera(const std::string &path) {
-    const YAML::Node root = loadYaml(path);
-    const YAML::Node c = child(path, root, "camera", "");
+namespace {
+
+/// A ROS camera_info YAML (camera_calibration's format) as intrinsics.
+CameraIntrinsics rosCameraInfo(const std::string &path, const YAML::Node &root) {
     CameraIntrinsics cam;
-    const double w = number(path, child(path, c, "width", "camera."), "camera.width");
-    const double h = number(path, child(path, c, "height", "camera."), "camera.height");
+    const double w = number(path, child(path, root, "image_width", ""), "image_width");
+    const double h = number(path, child(path, root, "image_height", ""), "image_height");
     if (w < 1 || h < 1 || w > 16384 || h > 16384 || w != std::floor(w) || h != std::floor(h))
-        throw InputError(path, "camera.width and camera.height must be positive whole numbers");
-    if (w * h > static_cast<double>(limits::kMaxDepthPixels))
-        throw InputError(path, "camera image of " + std::to_string(static_cast<int>(w)) + " x " +
-                                   std::to_string(static_cast<int>(h)) + " pixels exceeds the limit of " +
-                                   std::to_string(limits::kMaxDepthPixels) + " pixels");
+        throw InputError(path, "image_width and image_height must be positive whole numbers");
     cam.width = static_cast<int>(w);
     cam.height = static_cast<int>(h);
-    cam.fx = number(path, child(path, c, "fx", "camera."), "camera.fx");
-    cam.fy = number(path, child(path, c, "fy", "camera."), "camera.fy");
-    cam.cx = number(path, child(path, c, "cx", "camera."), "camera.cx");
-    cam.cy = number(path, child(path, c, "cy", "camera."), "camera.cy");
-    cam.depth_scale = c["depth_scale"] ? number(path, c["depth_scale"], "camera.depth_scale") : 1000.0;
+    const auto k = numbers(path, child(path, child(path, root, "camera_matrix", ""), "data", "camera_matrix."),
+                           "camera_matrix.data", 9);
+    cam.fx = k[0];
+    cam.fy = k[4];
+    cam.cx = k[2];
+    cam.cy = k[5];
+    if (root["distortion_coefficients"] && root["distortion_coefficients"]["data"]) {
+        const YAML::Node d = root["distortion_coefficients"]["data"];
+        if (!d.IsSequence()) throw InputError(path, "'distortion_coefficients.data' must be a list of numbers");
+        for (std::size_t i = 0; i < d.size(); ++i)
+            if (number(path, d[i], "distortion_coefficients.data") != 0.0)
+                throw InputError(path, "camera_info has non-zero distortion_coefficients; projsurf reads rectified "
+                                       "(pinhole) depth: give the camera_info of the rectified image (image_rect, "
+                                       "all-zero D) or rectify first");
+    }
+    cam.depth_scale = 1000.0;  // 16UC1 depth is in millimetres (REP 118)
+    return cam;
+}
+
+void noteUnknownKeys(const std::string &path, const YAML::Node &node, const std::string &where,
+                     const std::vector<std::string> &known, std::vector<std::string> *warnings) {
+    if (!warnings || !node.IsMap()) return;
+    for (const auto &kv : node) {
+        const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
+        if (std::find(known.begin(), known.end(), key) == known.end())
+            warnings->push_back(path + ": unknown key '" + where + key + "' is ignored (known: " + [&] {
+                std::string list;
+                for (const auto &k : known) list += (list.empty() ? "" : ", ") + k;
+                return list;
+            }() + ")");
+    }
+}
+
+}  // namespace
+
+CameraIntrinsics readCamera(const std::string &path, std::vector<std::string> *warnings) {
+    const YAML::Node root = loadYaml(path);
+    CameraIntrinsics cam;
+    if (!root["camera"] && root["camera_matrix"]) {
+        cam = rosCameraInfo(path, root);
+        noteUnknownKeys(path, root, "",
+                        {"image_width", "image_height", "camera_name", "camera_matrix", "distortion_model",
+                         "distortion_coefficients", "rectification_matrix", "projection_matrix"},
+                        warnings);
+    } else {
+        if (!root["camera"] && root["projector"])
+            throw InputError(path, "is a projector calibration (projector:), not camera intrinsics (camera:); "
+                                   "--camera and --calib swapped?");
+        const YAML::Node c = child(path, root, "camera", "");
+        const double w = number(path, child(path, c, "width", "camera."), "camera.width");
+        const double h = number(path, child(path, c, "height", "camera."), "camera.height");
+        if (w < 1 || h < 1 || w > 16384 || h > 16384 || w != std::floor(w) || h != std::floor(h))
+            throw InputError(path, "camera.width and camera.height must be positive whole numbers");
+        cam.width = static_cast<int>(w);
+        cam.height = static_cast<int>(h);
+        cam.fx = number(path, child(path, c, "fx", "camera."), "camera.fx");
+        cam.fy = number(path, child(path, c, "fy", "camera."), "camera.fy");
+        cam.cx = number(path, child(path, c, "cx", "camera."), "camera.cx");
+        cam.cy = number(path, child(path, c, "cy", "camera."), "camera.cy");
+        cam.depth_scale = c["depth_scale"] ? number(path, c["depth_scale"], "camera.depth_scale") : 1000.0;
+        noteUnknownKeys(path, root, "", {"camera"}, warnings);
+        noteUnknownKeys(path, c, "camera.", {"width", "height", "fx", "fy", "cx", "cy", "depth_scale"}, warnings);
+    }
+    if (static_cast<double>(cam.width) * cam.height > static_cast<double>(limits::kMaxDepthPixels))
+        throw InputError(path, "camera image of " + std::to_string(cam.width) + " x " + std::to_string(cam.height) +
+                                   " pixels exceeds the limit of " + std::to_string(limits::kMaxDepthPixels) +
+                                   " pixels");
     if (!(cam.fx > 0 && cam.fy > 0)) throw InputError(path, "camera.fx and camera.fy must be positive");
     if (!(cam.depth_scale > 0)) throw InputError(path, "camera.depth_scale must be positive");
     return cam;

@@ -1,6 +1,7 @@
 #pragma once
 // The contract's YAML files: projector calibration and camera intrinsics.
 #include <string>
+#include <vector>
 
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/projector.hpp"
@@ -22,8 +23,12 @@ YAML::Node calibrationNode(const Projector &projector);
 /// Writes a calibration file with only the required keys (atomically).
 void writeCalibration(const std::string &path, const Projector &projector);
 
-/// Reads camera intrinsics (`camera:` block); throws InputError on any problem.
-CameraIntrinsics readCamera(const std::string &path);
+/// Reads camera intrinsics: projsurf's `camera:` block (width, height, fx, fy, cx, cy,
+/// depth_scale), or a ROS camera_info YAML (image_width, image_height, camera_matrix; its
+/// depth_scale is 1000, 16UC1 millimetres by REP 118; non-zero distortion_coefficients are
+/// refused: projsurf reads rectified, pinhole depth). Throws InputError on any problem. With
+/// `warnings`, keys it does not know (a typo such as `depth_scal`) are added there, one line each.
+CameraIntrinsics readCamera(const std::string &path, std::vector<std::string> *warnings = nullptr);
 void writeCamera(const std::string &path, const CameraIntrinsics &camera);
 
 }  // namespace projsurf
