@@ -16,18 +16,19 @@ std::string num(double v) {
 }
 
 /// Empty when a focal length of `f` px over `side` px gives an angle of view in the range.
-std::string focalProblem(const std::string &key, double f, int side) {
+std::string focalProblem(const std::string &key, double f, int side, bool narrow_ok = false) {
     if (!std::isfinite(f) || !(f > 0)) return key + " must be a positive finite number";
     const double fov = 2.0 * std::atan(0.5 * side / f) / kDeg;
-    if (fov < kMinLensFovDeg || fov > kMaxLensFovDeg)
+    if ((!narrow_ok && fov < kMinLensFovDeg) || fov > kMaxLensFovDeg)
         return key + " = " + num(f) + " px gives a " + num(fov) + " deg angle of view over " + std::to_string(side) +
                " px (a lens gives " + num(kMinLensFovDeg) + "-" + num(kMaxLensFovDeg) + ")";
     return "";
 }
 
-std::string centreProblem(const std::string &key, double c, int side) {
+std::string centreProblem(const std::string &key, double c, int side, bool crop_ok = false) {
     if (!std::isfinite(c)) return key + " is not finite";
-    if (std::abs(c - 0.5 * side) > 4.0 * side) return key + " = " + num(c) + " lies implausibly far outside the image";
+    // A crop of a frame keeps the full frame's principal point: only a far-off one is refused.
+    if (std::abs(c - 0.5 * side) > (crop_ok ? 1e6 : 4.0 * side)) return key + " = " + num(c) + " lies implausibly far outside the image";
     return "";
 }
 
@@ -70,13 +71,14 @@ std::string lensModelProblem(const Projector &p) {
 
 std::string cameraModelProblem(const CameraIntrinsics &c) {
     if (c.width < 1 || c.height < 1) return "camera.width and camera.height must be positive whole numbers";
-    for (const std::string &e : {focalProblem("camera.fx", c.fx, c.width), focalProblem("camera.fy", c.fy, c.height),
-                                 centreProblem("camera.cx", c.cx, c.width), centreProblem("camera.cy", c.cy, c.height)})
+    for (const std::string &e : {focalProblem("camera.fx", c.fx, c.width, true), focalProblem("camera.fy", c.fy, c.height, true),
+                                 centreProblem("camera.cx", c.cx, c.width, true), centreProblem("camera.cy", c.cy, c.height, true)})
         if (!e.empty()) return e;
-    // Units per metre: 1 (metres) to 1e6 (micrometres); 1000 is millimetres.
-    if (!std::isfinite(c.depth_scale) || !(c.depth_scale >= 1e-3 && c.depth_scale <= 1e6))
+    // Units per metre (1000 is millimetres): wide bounds, so only a scale that makes every
+    // depth infinite or zero is refused (a crop of a frame or far test scenes stay readable).
+    if (!std::isfinite(c.depth_scale) || !(c.depth_scale >= 1e-12 && c.depth_scale <= 1e12))
         return "camera.depth_scale = " + num(c.depth_scale) +
-               " is not a plausible number of depth units per metre (1000 = millimetres; 0.001 to 1e6 accepted)";
+               " is not a plausible number of depth units per metre (1000 = millimetres; 1e-12 to 1e12 accepted)";
     return "";
 }
 
