@@ -1,8 +1,10 @@
 #include "image_array.hpp"
 
+#include <cstdint>
 #include <string>
 
 #include "projsurf/io/errors.hpp"
+#include "projsurf/io/limits.hpp"
 
 namespace py = pybind11;
 
@@ -34,15 +36,26 @@ cv::Mat matFromArray(const py::array &image, const char *name, py::object &keep)
                                    py::str(py::handle(image.dtype())).cast<std::string>());
     if (image.ndim() != 2 && !(image.ndim() == 3 && image.shape(2) >= 1 && image.shape(2) <= 4))
         throw InputError(name, "expected an (H, W) or (H, W, C) image with C = 1..4 channels");
+    // The size before any conversion or copy: a broadcast array may announce terabytes.
+    if (image.shape(0) < 1 || image.shape(1) < 1) throw InputError(name, "the image is empty");
+    const auto pixels = static_cast<std::uint64_t>(image.shape(0)) * static_cast<std::uint64_t>(image.shape(1));
+    if (image.shape(0) > limits::kMaxFramebufferSide * 4 || image.shape(1) > limits::kMaxFramebufferSide * 4 ||
+        pixels > limits::kMaxImagePixels)
+        throw InputError(name, "image of " + std::to_string(image.shape(1)) + " x " + std::to_string(image.shape(0)) +
+                                   " pixels exceeds the limit of " + std::to_string(limits::kMaxImagePixels) +
+                                   " pixels");
     const int rows = static_cast<int>(image.shape(0)), cols = static_cast<int>(image.shape(1));
     const int channels = image.ndim() == 3 ? static_cast<int>(image.shape(2)) : 1;
-    if (rows < 1 || cols < 1) throw InputError(name, "the image is empty");
     const py::ssize_t elem = image.itemsize();
     const bool packed_rows = image.strides(1) == channels * elem && (channels == 1 || image.strides(2) == elem) &&
                              image.strides(0) >= cols * channels * elem;
     py::array source = image;
     if (!packed_rows) {
         source = py::array::ensure(image, py::array::c_style);
+        if (!source) {
+            PyErr_Clear();
+            throw InputError(name, "cannot make a contiguous copy of the image (out of memory?)");
+        }
         keep = source;
     }
     return cv::Mat(rows, cols, CV_MAKETYPE(depth, channels), const_cast<void *>(source.data()),

@@ -14,6 +14,7 @@
 #include "detector_options.hpp"
 #include "image_array.hpp"
 #include "points_array.hpp"
+#include "projsurf/types/lens_model_check.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/detection/colour/colour_registration.hpp"
 #include "projsurf/keystone/keystone.hpp"
@@ -48,6 +49,7 @@ Projector makeProjector(std::pair<int, int> resolution, std::pair<double, double
     if (!origin.allFinite()) throw InputError("origin", "is not finite");
     p.origin = origin;
     p.direction = direction.norm() > 0 ? direction.normalized() : direction;
+    if (const std::string problem = lensModelProblem(p); !problem.empty()) throw InputError("Projector", problem);
     if (!isValidProjector(p))
         throw InputError("direction", "the axis must be finite, non-zero and not parallel to the camera's y axis");
     return p;

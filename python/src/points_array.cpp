@@ -1,9 +1,11 @@
 #include "points_array.hpp"
 
+#include <cstdint>
 #include <cstring>
 #include <string>
 
 #include "projsurf/io/errors.hpp"
+#include "projsurf/io/limits.hpp"
 
 namespace py = pybind11;
 
@@ -51,8 +53,20 @@ Cloud cloudFromPoints(const py::handle &points) {
     if (dt.kind() != 'f' && dt.kind() != 'i' && dt.kind() != 'u')
         throw InputError("points",
                          "expected numbers, got an array of dtype " + py::str(py::handle(dt)).cast<std::string>());
-    if (!dt.is(py::dtype::of<float>()) && !dt.is(py::dtype::of<double>()))
+    // The size before any conversion or copy: a broadcast array may announce terabytes.
+    const bool shaped = (a.ndim() == 2 && a.shape(1) == 3) || (a.ndim() == 3 && a.shape(2) == 3);
+    if (!shaped) throw InputError("points", "expected an (N, 3) or (H, W, 3) array, got shape " + shapeText(a));
+    const auto count = static_cast<std::uint64_t>(a.shape(0)) * static_cast<std::uint64_t>(a.ndim() == 3 ? a.shape(1) : 1);
+    if (count > limits::kMaxCloudPoints)
+        throw InputError("points", "cloud of " + std::to_string(count) + " points exceeds the limit of " +
+                                       std::to_string(limits::kMaxCloudPoints) + " points");
+    if (!dt.is(py::dtype::of<float>()) && !dt.is(py::dtype::of<double>())) {
         a = py::array_t<double, py::array::forcecast>::ensure(a);  // integers: through double
+        if (!a) {
+            PyErr_Clear();
+            throw InputError("points", "cannot convert the points to floating point (out of memory?)");
+        }
+    }
 
     Cloud cloud;
     py::ssize_t rows = 1, cols = 0, row_stride = 0, col_stride = 0, xyz_stride = 0;

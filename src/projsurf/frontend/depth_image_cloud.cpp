@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "projsurf/io/errors.hpp"
+#include "projsurf/types/lens_model_check.hpp"
 
 namespace projsurf::frontend {
 
@@ -21,6 +22,7 @@ CameraIntrinsics pinholeCamera(const std::string &what, int width, int height, d
     cam.cx = cx;
     cam.cy = cy;
     cam.depth_scale = depth_scale;
+    if (const std::string problem = cameraModelProblem(cam); !problem.empty()) throw InputError(what, problem);
     return cam;
 }
 

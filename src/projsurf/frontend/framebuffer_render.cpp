@@ -13,6 +13,10 @@ constexpr double kLetterboxShare = 0.005;
 FramebufferRender keystoneFor(const Projector &projector, const Rectangle &rect, cv::Size picture,
                               double tolerance_px) {
     FramebufferRender out;
+    if (!(tolerance_px >= 0.0 && tolerance_px <= 1e6)) {  // NaN too: the CLI and Python share this
+        out.problem = "the keystone tolerance must be a finite number of pixels, 0 or more";
+        return out;
+    }
     KeystoneResult k = computeKeystone(projector, rect, picture, tolerance_px);
     if (!k.keystone) {
         out.problem = k.problem;

@@ -107,9 +107,25 @@ void OutputGroup::commit() {
 }
 
 void requireReadable(const std::string &path) {
+    // The kind of file first, never by opening it: a FIFO or a device would block the open or
+    // the read forever.
     std::error_code ec;
-    if (!fs::exists(path, ec)) throw InputError(path, "no such file");
-    if (fs::is_directory(path, ec)) throw InputError(path, "is a directory, expected a file");
+    const fs::file_status st = fs::status(path, ec);
+    if (ec && ec != std::errc::no_such_file_or_directory) {
+        if (ec == std::errc::too_many_symbolic_link_levels) throw InputError(path, "symbolic link loop");
+        throw InputError(path, "cannot read the file: " + ec.message());
+    }
+    if (!fs::exists(st)) {
+        std::error_code lec;
+        if (fs::is_symlink(fs::symlink_status(path, lec))) throw InputError(path, "dangling symbolic link");
+        throw InputError(path, "no such file");
+    }
+    if (fs::is_directory(st)) throw InputError(path, "is a directory, expected a file");
+    if (fs::is_fifo(st)) throw InputError(path, "is a FIFO (named pipe), expected a regular file");
+    if (fs::is_character_file(st) || fs::is_block_file(st))
+        throw InputError(path, "is a device, expected a regular file");
+    if (fs::is_socket(st)) throw InputError(path, "is a socket, expected a regular file");
+    if (!fs::is_regular_file(st)) throw InputError(path, "not a regular file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, "cannot open for reading");
 }

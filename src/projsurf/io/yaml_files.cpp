@@ -1,3 +1,4 @@
+#include "projsurf/types/lens_model_check.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 #include <yaml-cpp/yaml.h>
@@ -141,6 +142,7 @@ Projector readCalibration(const std::string &path) {
     if (dir.norm() < 1e-9) throw InputError(path, "projector.axis.direction is the zero vector");
     proj.direction = dir.normalized();
     readFullModel(path, p, proj);
+    if (const std::string problem = lensModelProblem(proj); !problem.empty()) throw InputError(path, problem);
     if (!isValidProjector(proj))
         throw InputError(path,
                          "projector.axis.direction is (nearly) vertical: the projector's image axes are undefined");
@@ -273,6 +275,7 @@ CameraIntrinsics readCamera(const std::string &path, std::vector<std::string> *w
                                    " pixels");
     if (!(cam.fx > 0 && cam.fy > 0)) throw InputError(path, "camera.fx and camera.fy must be positive");
     if (!(cam.depth_scale > 0)) throw InputError(path, "camera.depth_scale must be positive");
+    if (const std::string problem = cameraModelProblem(cam); !problem.empty()) throw InputError(path, problem);
     return cam;
 }
 

@@ -1,5 +1,7 @@
 #include "projsurf/people/beam_blanking.hpp"
 
+#include "projsurf/types/clamp_to_int.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -75,8 +77,8 @@ double pixelAngle(const Cloud &cloud) {
 
 BeamBlanker::BeamBlanker(const Projector &projector, const BlankingOptions &options)
     : projector_(projector), options_(options) {
-    configure(
-        std::max(1, static_cast<int>(std::lround(options_.cell_angle * std::max(projector_.fx(), projector_.fy())))));
+    configure(clampToInt(std::round(options_.cell_angle * std::max(projector_.fx(), projector_.fy())), 1,
+                         std::max(1, std::max(projector_.width, projector_.height))));
     mask_ = cv::Mat::zeros(projector_.height, projector_.width, CV_8U);
 }
 
@@ -87,7 +89,10 @@ void BeamBlanker::configure(int cell_px) {
     const double corner_x = 0.5 * projector_.width / projector_.fx(),
                  corner_y = 0.5 * projector_.height / projector_.fy();
     off_axis_ = std::sqrt(1.0 + corner_x * corner_x + corner_y * corner_y);
-    pad_ = static_cast<int>(std::ceil(marginCells(options_.ray_margin, focal, cell_, options_.min_depth, off_axis_)));
+    // Clamped: a degenerate focal length (a lens model no reader lets through, but the class is
+    // public) must not overflow the conversion; a pad wider than the framebuffer adds nothing.
+    pad_ = clampToInt(std::ceil(marginCells(options_.ray_margin, focal, cell_, options_.min_depth, off_axis_)), 0,
+                      std::max(1, std::max(projector_.width, projector_.height)));
     off_axis_ = std::hypot(corner_x + pad_ * cell_ / projector_.fx(), corner_y + pad_ * cell_ / projector_.fy());
     off_axis_ = std::sqrt(1.0 + off_axis_ * off_axis_);
     grid_w_ = (projector_.width + cell_ - 1) / cell_ + 2 * pad_;
@@ -101,7 +106,7 @@ const cv::Mat &BeamBlanker::compute(const Cloud &cloud, const Plane &plane) {
     {
         const double focal = std::max(projector_.fx(), projector_.fy());
         const double angle = std::max(options_.cell_angle, options_.cell_per_pixel * pixelAngle(cloud));
-        const int cell = std::max(1, static_cast<int>(std::lround(angle * focal)));
+        const int cell = clampToInt(std::round(angle * focal), 1, std::max(1, std::max(projector_.width, projector_.height)));
         if (cell != cell_) configure(cell);
     }
     const Eigen::Vector3f o = projector_.origin.cast<float>();

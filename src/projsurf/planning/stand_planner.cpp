@@ -1,5 +1,7 @@
 #include "projsurf/planning/stand_planner.hpp"
 
+#include "projsurf/types/clamp_to_int.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -62,7 +64,8 @@ public:
 
 private:
     static constexpr double kCell = 0.05;
-    static int cellOf(double v) { return static_cast<int>(std::floor(v / kCell + 0.5)); }
+    // Clamped far outside any raster (its side is bounded), so a point at 1e20 m is just off it.
+    static int cellOf(double v) { return clampToInt(std::floor(v / kCell + 0.5), -(1 << 28), 1 << 28); }
     int index(const Eigen::Vector3d &p) const {
         const int x = cellOf(p.dot(e1_)) + half_, y = cellOf(p.dot(e2_)) + half_;
         if (x < 0 || y < 0 || x >= side_ || y >= side_) return -1;
