@@ -194,6 +194,17 @@ Cloud bentWall(const CameraIntrinsics &cam, double z, const std::function<double
     return c;
 }
 
+/// The points of `sample` and the default tolerance's inlier band at each.
+std::pair<std::vector<Point>, std::vector<float>> sampledWithBands(const Cloud &cloud, const std::vector<int> &sample) {
+    std::pair<std::vector<Point>, std::vector<float>> out;
+    const DepthTolerance tol;
+    for (int i : sample) {
+        out.first.push_back(cloud.points[i]);
+        out.second.push_back(tol.band(cloud.points[i].z()));
+    }
+    return out;
+}
+
 }  // namespace
 
 TEST(WallShape, FollowsASmoothBendButNotWhatStandsProudOfTheWall) {
@@ -201,13 +212,7 @@ TEST(WallShape, FollowsASmoothBendButNotWhatStandsProudOfTheWall) {
     auto bend = [](double x, double y) { return 0.012 * (x * x + y * y) - 0.01 * x; };  // 4 cm at the image corners
     const Cloud cloud = bentWall(cam, 2.5, bend, 0.004, 3, cv::Rect(400, 100, 120, 120), 0.10);
     const std::vector<int> sample = samplePoints(cloud, 12000);
-    std::vector<Point> pts;
-    std::vector<float> band;
-    DepthTolerance tol;
-    for (int i : sample) {
-        pts.push_back(cloud.points[i]);
-        band.push_back(tol.band(cloud.points[i].z()));
-    }
+    const auto [pts, band] = sampledWithBands(cloud, sample);
     const Plane wall = makePlane({0, 0, -1}, 2.5);
     const PlaneFrame frame = makePlaneFrame(wall, Eigen::Vector3d::UnitY(), {0, 0, 2.5});
     const auto shape = fitWallShape(pts, band, wall, frame);
@@ -231,13 +236,7 @@ TEST(WallShape, ItsReliefFollowsADistortionWaveAQuadraticCannotButNotABoxProudOf
     const cv::Rect box(420, 120, 90, 90);
     const Cloud cloud = bentWall(cam, 2.5, wave, 0.003, 5, box, 0.08);
     const std::vector<int> sample = samplePoints(cloud, 12000);
-    std::vector<Point> pts;
-    std::vector<float> band;
-    DepthTolerance tol;
-    for (int i : sample) {
-        pts.push_back(cloud.points[i]);
-        band.push_back(tol.band(cloud.points[i].z()));
-    }
+    const auto [pts, band] = sampledWithBands(cloud, sample);
     const Plane wall = makePlane({0, 0, -1}, 2.5);
     const PlaneFrame frame = makePlaneFrame(wall, Eigen::Vector3d::UnitY(), {0, 0, 2.5});
     WallShapeOptions flat;

@@ -119,31 +119,30 @@ sim::ColourSuiteOptions colourSuiteOptions(const EvalOptions &o) {
     return copt;
 }
 
-/// The colour suite alone (detection/colour/surface_suitability.hpp): DIR/colour.md and its summary line.
-void runColourTable(const EvalOptions &o) {
-    const sim::ColourSuiteResult colour = sim::runColourSuite(colourSuiteOptions(o), sim::defaultVariant().config);
+/// One suite's table alone: DIR/<file> (created with DIR), the table and its summary line on stdout.
+void writeSuiteTable(const EvalOptions &o, const std::string &file, const std::string &md,
+                     const std::string &summary) {
     std::error_code ec;
     fs::create_directories(o.out, ec);
     if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
-    const std::string md = sim::colourSuiteMarkdown(colour);
-    writeFileAtomic((fs::path(o.out) / "colour.md").string(), md);
+    writeFileAtomic((fs::path(o.out) / file).string(), md);
     std::printf("%s", md.c_str());
-    std::printf("%s; wrote %s/colour.md\n", sim::colourSuiteSummary(colour).c_str(), o.out.c_str());
+    std::printf("%s; wrote %s/%s\n", summary.c_str(), o.out.c_str(), file.c_str());
 }
 
-/// The realistic suite alone (realistic sensors and scenes): DIR/realistic.md and its summary line.
+/// The colour suite alone (detection/colour/surface_suitability.hpp).
+void runColourTable(const EvalOptions &o) {
+    const sim::ColourSuiteResult colour = sim::runColourSuite(colourSuiteOptions(o), sim::defaultVariant().config);
+    writeSuiteTable(o, "colour.md", sim::colourSuiteMarkdown(colour), sim::colourSuiteSummary(colour));
+}
+
+/// The realistic suite alone (realistic sensors and scenes).
 void runRealisticTable(const EvalOptions &o) {
     sim::RealisticSuiteOptions ropt = o.quick ? sim::quickRealisticSuite() : sim::RealisticSuiteOptions{};
     if (!o.quick) ropt.rounds = o.rounds;
     ropt.seed = o.seed;
     const sim::RealisticSuiteResult realistic = sim::runRealisticSuite(ropt, sim::defaultVariant().config);
-    std::error_code ec;
-    fs::create_directories(o.out, ec);
-    if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
-    const std::string md = sim::realisticSuiteMarkdown(realistic);
-    writeFileAtomic((fs::path(o.out) / "realistic.md").string(), md);
-    std::printf("%s", md.c_str());
-    std::printf("%s; wrote %s/realistic.md\n", sim::realisticSuiteSummary(realistic).c_str(), o.out.c_str());
+    writeSuiteTable(o, "realistic.md", sim::realisticSuiteMarkdown(realistic), sim::realisticSuiteSummary(realistic));
 }
 
 void run(const EvalOptions &o, const std::string &command) {
