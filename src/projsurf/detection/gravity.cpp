@@ -76,7 +76,6 @@ std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, cons
             rn = -rn;
             rd = -rd;
         }
-        if (rn.dot(g) < cos_max) break;
         // After the first fit (from the three-point seed), a refinement moves the normal by a
         // fraction of a degree; more is a jump onto the
         // surface beside the floor, so the last fit stands.
