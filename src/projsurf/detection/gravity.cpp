@@ -1,5 +1,6 @@
 #include "projsurf/detection/gravity.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -7,6 +8,23 @@
 #include "projsurf/types/plane.hpp"
 
 namespace projsurf {
+
+namespace {
+
+struct Candidate {
+    Eigen::Vector3f n;  // unit, along the prior (down)
+    float d = 0.0f;     // n.p + d = 0; -d is the camera's height above the plane
+    int score = 0;
+};
+
+std::vector<int> inliersOf(const std::vector<Point> &pts, const Eigen::Vector3f &n, float d, float band) {
+    std::vector<int> in;
+    for (int i = 0; i < static_cast<int>(pts.size()); ++i)
+        if (std::abs(n.dot(pts[i]) + d) <= band) in.push_back(i);
+    return in;
+}
+
+}  // namespace
 
 std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, const Eigen::Vector3d &prior,
                                                         double max_angle, double min_share, unsigned seed) {
@@ -17,12 +35,12 @@ std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, cons
     if (pts.size() < 50) return std::nullopt;
     const Eigen::Vector3f g = prior.normalized().cast<float>();
     const float cos_max = static_cast<float>(std::cos(max_angle));
-    const float band = 0.03f;  // m: floors are flat; Kinect noise at 1-3 m is below this
+    const float band = 0.03f;         // m: floors are flat; Kinect noise at 1-3 m is below this
+    const int min_score = static_cast<int>(std::ceil(min_share * pts.size()));
     std::mt19937 rng(seed);
     std::uniform_int_distribution<std::size_t> pick(0, pts.size() - 1);
-    int best = 0;
-    Eigen::Vector3f best_n = g;
-    float best_d = 0.0f;
+    // Every large plane in the cone below the camera.
+    std::vector<Candidate> large;
     for (int it = 0; it < 300; ++it) {
         const Point &a = pts[pick(rng)], &b = pts[pick(rng)], &c = pts[pick(rng)];
         Eigen::Vector3f n = (b - a).cross(c - a);
@@ -34,21 +52,42 @@ std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, cons
         if (d >= 0.0f) continue;  // camera must be above it: n.0 + d < 0 means the plane is below
         int score = 0;
         for (const auto &p : pts) score += std::abs(n.dot(p) + d) <= band;
-        if (score > best) {
-            best = score;
-            best_n = n;
-            best_d = d;
-        }
+        if (score >= min_score) large.push_back({n, d, score});
     }
-    if (best < min_share * pts.size()) return std::nullopt;
-    std::vector<int> inliers;
-    for (int i = 0; i < static_cast<int>(pts.size()); ++i)
-        if (std::abs(best_n.dot(pts[i]) + best_d) <= band) inliers.push_back(i);
-    Eigen::Vector3d n = best_n.cast<double>();
-    if (const auto refined = fitPlane(pts, inliers))
-        n = refined->normal.dot(n) < 0 ? -refined->normal : refined->normal;
+    if (large.empty()) return std::nullopt;
+    const int biggest = std::max_element(large.begin(), large.end(), [](auto &x, auto &y) {
+                            return x.score < y.score;
+                        })->score;
+    // The biggest of them (choosing the lowest instead picks planes tilted through the far floor).
+    const Candidate *floor = nullptr;
+    for (const auto &c : large)
+        if (c.score == biggest) { floor = &c; break; }
+    // Least squares on the floor's inliers, twice: the RANSAC normal from three points is only
+    // a seed (a few degrees off on noisy depth); each refit re-selects the inliers within the band.
+    Eigen::Vector3f n = floor->n;
+    float d = floor->d;
+    std::vector<int> inliers = inliersOf(pts, n, d, band);
+    for (int round = 0; round < 3; ++round) {
+        const auto refined = fitPlane(pts, inliers);
+        if (!refined) break;
+        Eigen::Vector3f rn = refined->normal.cast<float>();
+        float rd = static_cast<float>(refined->d);
+        if (rn.dot(n) < 0) {
+            rn = -rn;
+            rd = -rd;
+        }
+        // After the first fit (from the three-point seed), a refinement moves the normal by a
+        // fraction of a degree; more is a jump onto the
+        // surface beside the floor, so the last fit stands.
+        if (round > 0 && rn.dot(n) < std::cos(2.0f * static_cast<float>(M_PI) / 180.0f)) break;
+        std::vector<int> next = inliersOf(pts, rn, rd, band);
+        if (static_cast<int>(next.size()) < min_score) break;
+        n = rn;
+        d = rd;
+        inliers = std::move(next);
+    }
     GravityEstimate out;
-    out.gravity = n.normalized();
+    out.gravity = n.cast<double>().normalized();
     out.floor_points = static_cast<int>(inliers.size());
     out.angle_to_prior = std::acos(std::min(1.0, out.gravity.dot(prior.normalized())));
     return out;
