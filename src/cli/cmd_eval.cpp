@@ -15,6 +15,7 @@
 #include "eval/colour_suite.hpp"
 #include "eval/experiments.hpp"
 #include "eval/labelled_eval.hpp"
+#include "eval/plan_suite.hpp"
 #include "eval/projector_eval.hpp"
 #include "eval/real_gallery.hpp"
 #include "eval/real_labels.hpp"
@@ -42,6 +43,7 @@ struct EvalOptions {
     bool no_progress = false;
     bool projector_only = false;  // only the projector table (issue 12)
     bool colour_only = false;     // only the colour suite (issue 15)
+    bool plan_only = false;       // only the plan suite (where to stand)
 };
 
 /// The 1-minute load average (Linux), NaN when unknown.
@@ -101,6 +103,25 @@ void runColourTable(const EvalOptions &o) {
     std::printf("%s; wrote %s/colour.md\n", sim::colourSuiteSummary(colour).c_str(), o.out.c_str());
 }
 
+/// The plan suite alone (eval/plan_suite.hpp): DIR/plan.md and its summary line; --quick skips the reference search.
+void runPlanTable(const EvalOptions &o) {
+    std::vector<sim::PlanSceneResult> rows;
+    sim::PlanSuiteOptions popt;
+    popt.reference = !o.quick;
+    for (const sim::PlanScene &scene : sim::planSuiteScenes()) {
+        rows.push_back(sim::runPlanScene(scene, popt));
+        if (!o.no_progress)
+            std::fprintf(stderr, "plan suite: %zu scenes done\r", rows.size());
+    }
+    std::error_code ec;
+    fs::create_directories(o.out, ec);
+    if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
+    const std::string md = sim::planSuiteMarkdown(rows);
+    writeFileAtomic((fs::path(o.out) / "plan.md").string(), md);
+    std::printf("%s", md.c_str());
+    std::printf("%s; wrote %s/plan.md\n", sim::planSuiteSummary(rows).c_str(), o.out.c_str());
+}
+
 void run(const EvalOptions &o, const std::string &command) {
     if (o.out.empty()) throw InputError("--out", "an output directory is required");
     if (o.rounds < 1 || o.rounds > 100) throw InputError("--rounds", "must be between 1 and 100");
@@ -120,6 +141,7 @@ void run(const EvalOptions &o, const std::string &command) {
 
     if (o.projector_only) return runProjectorTable(o);
     if (o.colour_only) return runColourTable(o);
+    if (o.plan_only) return runPlanTable(o);
     // The default real-frame folder is taken from the working directory, and said (before the
     // long simulation) when it is not there.
     if (!o.real_dir_given && !fs::is_directory(o.real_dir, ec))
@@ -232,6 +254,11 @@ void addEvalCommand(CLI::App &app) {
                   "Only the colour suite (surface suitability on simulated walls with pictures, screens, windows, "
                   "dark panels and plain paints): DIR/colour.md; --rounds per scene, 2 with --quick")
         ->excludes("--projector-only");
+    sub->add_flag("--plan-only", o->plan_only,
+                  "Only the plan suite (where to stand: planned, rendered from the moved robot, detected there, "
+                  "against an exhaustive reference search): DIR/plan.md; --quick skips the reference")
+        ->excludes("--projector-only")
+        ->excludes("--colour-only");
     sub->callback([o, real, labels] {
         EvalOptions opts = *o;
         opts.real_dir_given = real->count() > 0;
