@@ -81,11 +81,12 @@ void collectInFront(const Cloud &cloud, const SeenSurface &seen, const FloorOccu
             const Eigen::Vector3d p = pf.cast<double>();
             const double h = seen.plane.signedDistance(p) - seen.shape.height(seen.frame.toPlane(p));
             if (h <= seen.tolerance.margin(pf.z()) || floor.aboveFloor(p) < o.obstacle_height) continue;
-            if (voxels.insert(key(p)).second)
-                s.in_front.push_back((Eigen::Vector3d(std::floor(p.x() / o.voxel), std::floor(p.y() / o.voxel),
-                                                      std::floor(p.z() / o.voxel)) +
-                                      Eigen::Vector3d::Constant(0.5)) *
-                                     o.voxel);
+            if (!voxels.insert(key(p)).second) continue;
+            const Eigen::Vector3d centre = (Eigen::Vector3d(std::floor(p.x() / o.voxel), std::floor(p.y() / o.voxel),
+                                                            std::floor(p.z() / o.voxel)) +
+                                            Eigen::Vector3d::Constant(0.5)) *
+                                           o.voxel;
+            s.in_front.push_back({s.frame.toPlane(centre), s.plane.signedDistance(centre)});
         }
 }
 

@@ -29,8 +29,14 @@ struct PlanSurface {
     cv::Mat free;      ///< CV_8U, 255 = free (seen free, or assumed beyond the view)
     cv::Mat assumed;   ///< CV_8U, 255 = assumed free beyond the view
     cv::Mat integral;  ///< CV_32S (rows + 1) x (cols + 1), the free cells' integral image
-    std::vector<Eigen::Vector3d> in_front;  ///< voxel centres of points in front of it (camera frame)
-    double voxel = 0.04;                    ///< m, their voxels' side
+    /// The points in front of it, one per voxel: the voxel centre's plane coordinates and its
+    /// height above the plane (m, towards the camera).
+    struct InFront {
+        Eigen::Vector2d uv;
+        double h;
+    };
+    std::vector<InFront> in_front;
+    double voxel = 0.04;  ///< m, their voxels' side
 };
 
 /// The plan's surfaces from the seen ones (their rasters extended by beyond_view); `camera`:

@@ -35,9 +35,11 @@ bool reachable(Context &x, const Stance &s) {
     return !x.floor.occupied(s.translation, x.radius) && !x.floor.pathBlocked(s.translation, x.radius);
 }
 
-std::optional<StanceCandidate> evaluate(Context &x, int surface, const Stance &s, const StanceFootprint &fp) {
+/// The picture from a stance; nullopt when none, or when it could not reach `min_area` (or the width wanted).
+std::optional<StanceCandidate> evaluate(Context &x, int surface, const Stance &s, const StanceFootprint &fp,
+                                        double min_area) {
     ++x.out.evaluated;
-    const auto pic = pictureFromStance(x.surfaces[surface], x.projector, fp, s, x.limits, x.mask);
+    const auto pic = pictureFromStance(x.surfaces[surface], x.projector, fp, s, x.limits, x.mask, min_area, x.o.width);
     if (!pic) return std::nullopt;
     if (x.o.width > 0.0) x.out.widest = std::max(x.out.widest, pic->width);
     return StanceCandidate{surface, s, *pic};
@@ -57,7 +59,7 @@ bool better(const StanceSearchOptions &o, const StanceCandidate &a, const std::o
 
 /// Every position of the coarse grid times every coarse turn times every surface, bounded.
 std::vector<Bounded> boundStances(Context &x) {
-    const double step = std::max(x.o.step, x.o.max_move / 10.0);
+    const double step = std::max(x.o.step, x.o.max_move / 8.0);
     const int n = static_cast<int>(std::floor(x.o.max_move / step + 1e-9));
     const int turns = std::max(1, static_cast<int>(std::lround(360.0 / x.o.turn_step_deg)));
     std::vector<Bounded> out;
@@ -89,7 +91,7 @@ std::vector<StanceCandidate> bestByArea(Context &x, std::vector<Bounded> &all) {
     for (const Bounded &b : all) {
         if (b.blocked) continue;
         if (best && b.area < 0.99 * best->picture.area()) break;
-        const auto c = evaluate(x, b.surface, b.stance, b.footprint);
+        const auto c = evaluate(x, b.surface, b.stance, b.footprint, best ? 0.99 * best->picture.area() : 0.0);
         if (!c) continue;
         seen.push_back(*c);
         if (better(x.o, *c, best)) best = c;
@@ -120,7 +122,7 @@ std::vector<StanceCandidate> firstWideEnough(Context &x, std::vector<Bounded> &a
     for (const Bounded &b : all) {
         if (b.blocked || b.width + 1e-9 < x.o.width) continue;
         if (best && b.stance.move() > best->stance.move() + 1e-9) break;
-        const auto c = evaluate(x, b.surface, b.stance, b.footprint);
+        const auto c = evaluate(x, b.surface, b.stance, b.footprint, 0.0);
         if (c && better(x.o, *c, best)) best = c;
     }
     return best ? std::vector<StanceCandidate>{*best} : std::vector<StanceCandidate>{};
@@ -128,10 +130,10 @@ std::vector<StanceCandidate> firstWideEnough(Context &x, std::vector<Bounded> &a
 
 /// Local search about a seed: moves and turns by a step, halved down to the fine step.
 StanceCandidate refine(Context &x, StanceCandidate c) {
-    const double coarse = std::max(x.o.step, x.o.max_move / 10.0);
+    const double coarse = std::max(x.o.step, x.o.max_move / 8.0);
     double step = 0.5 * coarse, turn = 0.5 * x.o.turn_step_deg * kPi / 180.0;
     while (step >= x.o.fine_step - 1e-12) {
-        for (int round = 0; round < 8; ++round) {
+        for (int round = 0; round < 6; ++round) {
             std::optional<StanceCandidate> next;
             const double moves[6][3] = {{step, 0, 0}, {-step, 0, 0}, {0, step, 0}, {0, -step, 0}, {0, 0, turn}, {0, 0, -turn}};
             for (const auto &d : moves) {
@@ -139,7 +141,7 @@ StanceCandidate refine(Context &x, StanceCandidate c) {
                 if (!reachable(x, s)) continue;
                 const auto fp = stanceFootprint(x.surfaces[c.surface], x.projector, x.rays, s, x.limits);
                 if (!fp) continue;
-                const auto t = evaluate(x, c.surface, s, *fp);
+                const auto t = evaluate(x, c.surface, s, *fp, x.o.width > 0.0 ? 0.0 : 0.99 * c.picture.area());
                 if (t && better(x.o, *t, next ? next : std::optional<StanceCandidate>(c))) next = t;
             }
             if (!next) break;
@@ -158,7 +160,7 @@ double blockedArea(Context &x, const std::vector<Bounded> &all, double best) {
     for (const Bounded &b : all) {
         if (!b.blocked || b.area <= 1.05 * best) continue;
         if (++looked > 40) break;
-        if (const auto c = evaluate(x, b.surface, b.stance, b.footprint)) out = std::max(out, c->picture.area());
+        if (const auto c = evaluate(x, b.surface, b.stance, b.footprint, 1.05 * best)) out = std::max(out, c->picture.area());
     }
     return out;
 }

@@ -17,9 +17,9 @@ namespace projsurf {
 struct StanceSearchOptions {
     double max_move = 2.0;      ///< m
     double width = 0.0;         ///< m; > 0: the shortest move showing at least this width
-    double step = 0.2;          ///< m, the coarse grid of positions (at least max_move / 10)
-    double turn_step_deg = 10;  ///< deg, the coarse turns
-    double fine_step = 0.025;   ///< m, the refinement stops at this step
+    double step = 0.25;         ///< m, the coarse grid of positions (at least max_move / 8)
+    double turn_step_deg = 15;  ///< deg, the coarse turns
+    double fine_step = 0.025;   ///< m, the refinement stops below this step
     int refine = 6;             ///< best distinct stances refined
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <opencv2/imgproc.hpp>
 
 #include "projsurf/detection/projector_footprint.hpp"
 #include "projsurf/detection/rectangle_search.hpp"
@@ -9,27 +10,45 @@
 namespace projsurf {
 namespace {
 
-/// Cells of `mask` (on `sub`) in the shadow of the points in front of the surface, cast from `emitter`.
-void castShadows(const PlanSurface &s, const RasterFrame &sub, const Eigen::Vector3d &emitter, double voxel,
-                 cv::Mat &mask) {
+/// Cells of `mask` (on `sub`) in the shadow of the points in front of the surface, cast from
+/// `emitter`: the point q at height h_q over the plane, seen from e at h_e, shadows the plane
+/// at uv_e + k (uv_q - uv_e), k = h_e / (h_e - h_q), a voxel's shadow k times as large. Small
+/// shadows (most: things near the wall) are marked at their centre in `small` and grown by
+/// one disc of kSmall cells at the end; larger ones are drawn one by one.
+void castShadows(const PlanSurface &s, const RasterFrame &sub, const Eigen::Vector3d &emitter, cv::Mat &mask,
+                 cv::Mat &small) {
+    constexpr int kSmall = 3;  ///< cells
     const double he = s.plane.signedDistance(emitter);
-    for (const Eigen::Vector3d &q : s.in_front) {
-        const double hq = s.plane.signedDistance(q);
-        if (hq >= he - 0.5 * voxel || hq <= 0.0) continue;  // behind the emitter (or at it): no shadow
-        const double k = he / (he - hq);
-        const Eigen::Vector2d cell = sub.toCell(s.frame.toPlane(emitter + k * (q - emitter)));
-        const double radius = 0.75 * k * voxel / sub.cell + 0.5;
-        const int c0 = static_cast<int>(std::floor(cell.x() - radius)), c1 = static_cast<int>(std::ceil(cell.x() + radius));
-        const int r0 = static_cast<int>(std::floor(cell.y() - radius)), r1 = static_cast<int>(std::ceil(cell.y() + radius));
-        if (c1 < 0 || r1 < 0 || c0 >= mask.cols || r0 >= mask.rows) continue;
-        for (int r = std::max(0, r0); r <= std::min(mask.rows - 1, r1); ++r) {
+    const Eigen::Vector2d ue = s.frame.toPlane(emitter);
+    const double cols = mask.cols, rows = mask.rows;
+    small.create(mask.rows + 2 * kSmall, mask.cols + 2 * kSmall, CV_8UC1);
+    small.setTo(0);
+    for (const PlanSurface::InFront &q : s.in_front) {
+        if (q.h >= he - 0.5 * s.voxel || q.h <= 0.0) continue;  // behind the emitter (or at it): no shadow
+        const double k = he / (he - q.h);
+        const Eigen::Vector2d cell = sub.toCell(ue + k * (q.uv - ue));
+        const double radius = 0.75 * k * s.voxel / sub.cell + 0.5;
+        if (cell.x() + radius < 0 || cell.y() + radius < 0 || cell.x() - radius >= cols || cell.y() - radius >= rows)
+            continue;
+        if (radius <= kSmall) {
+            small.at<uchar>(static_cast<int>(cell.y() + kSmall), static_cast<int>(cell.x() + kSmall)) = 255;
+            continue;
+        }
+        const int c0 = std::max(0, static_cast<int>(cell.x() - radius)),
+                  c1 = std::min(mask.cols - 1, static_cast<int>(cell.x() + radius));
+        const int r0 = std::max(0, static_cast<int>(cell.y() - radius)),
+                  r1 = std::min(mask.rows - 1, static_cast<int>(cell.y() + radius));
+        for (int r = r0; r <= r1; ++r) {
             uchar *row = mask.ptr<uchar>(r);
-            for (int c = std::max(0, c0); c <= std::min(mask.cols - 1, c1); ++c) {
-                const double dx = c + 0.5 - cell.x(), dy = r + 0.5 - cell.y();
+            const double dy = r + 0.5 - cell.y();
+            for (int c = c0; c <= c1; ++c) {
+                const double dx = c + 0.5 - cell.x();
                 if (dx * dx + dy * dy <= radius * radius) row[c] = 0;
             }
         }
     }
+    cv::dilate(small, small, cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * kSmall + 1, 2 * kSmall + 1}));
+    mask.setTo(0, small(cv::Rect(kSmall, kSmall, mask.cols, mask.rows)));
 }
 
 double shoelace(const std::array<Eigen::Vector2d, 4> &q) {
@@ -89,7 +108,8 @@ std::optional<StanceFootprint> stanceFootprint(const PlanSurface &s, const Proje
 
 std::optional<Rectangle> pictureFromStance(const PlanSurface &s, const Projector &projector,
                                            const StanceFootprint &fp, const Stance &stance,
-                                           const StanceLimits &limits, cv::Mat &mask) {
+                                           const StanceLimits &limits, cv::Mat &mask, double min_area,
+                                           double min_width) {
     RasterFrame sub = s.raster;
     sub.top_left = s.raster.toPlane({double(fp.cells.x), double(fp.cells.y)});
     sub.cols = fp.cells.width;
@@ -98,19 +118,27 @@ std::optional<Rectangle> pictureFromStance(const PlanSurface &s, const Projector
     mask.setTo(0);
     fillPolygon(mask, sub, insetConvexPolygon({fp.uv.begin(), fp.uv.end()}, 0.7072 * sub.cell), 255);
     mask &= s.free(fp.cells);
-    // Within range of the moved camera (the cells' centres, half a diagonal in).
+    // Within range of the moved camera (the cells' centres, half a diagonal in): the camera's
+    // foot on the plane at cell (fc, fr), its height hc over it.
     const double reach = limits.max_distance - 0.7072 * sub.cell;
+    const Eigen::Vector2d foot = sub.toCell(s.frame.toPlane(stance.translation));
+    const double hc = s.plane.signedDistance(stance.translation);
+    const double left = (reach * reach - hc * hc) / (sub.cell * sub.cell);  // cells^2 along the plane
     for (int r = 0; r < mask.rows; ++r) {
         uchar *row = mask.ptr<uchar>(r);
-        for (int c = 0; c < mask.cols; ++c)
-            if (row[c] && (s.frame.toCamera(sub.toPlane({c + 0.5, r + 0.5})) - stance.translation).squaredNorm() >
-                              reach * reach)
-                row[c] = 0;
+        const double dy = r + 0.5 - foot.y();
+        for (int c = 0; c < mask.cols; ++c) {
+            const double dx = c + 0.5 - foot.x();
+            if (dx * dx + dy * dy > left) row[c] = 0;
+        }
     }
-    castShadows(s, sub, stance.rotation * projector.origin + stance.translation, s.voxel, mask);
-    castShadows(s, sub, stance.translation, s.voxel, mask);
     Eigen::Vector2d centre = Eigen::Vector2d::Zero();
     for (const auto &w : fp.uv) centre += 0.25 * w;
+    const auto unshadowed = largestFreeRectangle(mask, sub, s.frame, limits.aspect, centre);
+    if (!unshadowed || unshadowed->area() < min_area || unshadowed->width + 1e-9 < min_width) return std::nullopt;
+    thread_local cv::Mat small;
+    castShadows(s, sub, stance.rotation * projector.origin + stance.translation, mask, small);
+    castShadows(s, sub, stance.translation, mask, small);
     return largestFreeRectangle(mask, sub, s.frame, limits.aspect, centre);
 }
 

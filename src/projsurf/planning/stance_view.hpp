@@ -45,10 +45,13 @@ std::optional<StanceFootprint> stanceFootprint(const PlanSurface &surface, const
                                                const std::array<Eigen::Vector3d, 4> &rays, const Stance &stance,
                                                const StanceLimits &limits);
 
-/// The largest picture from the stance (today's camera frame), nullopt when none fits.
+/// The largest picture from the stance (today's camera frame), nullopt when none fits, or when
+/// even without the shadows it would be smaller than `min_area` or narrower than `min_width`
+/// (the shadows, the costly part, are cast only for a picture that may matter).
 /// `mask`: scratch, reused.
 std::optional<Rectangle> pictureFromStance(const PlanSurface &surface, const Projector &projector,
                                            const StanceFootprint &footprint, const Stance &stance,
-                                           const StanceLimits &limits, cv::Mat &mask);
+                                           const StanceLimits &limits, cv::Mat &mask, double min_area = 0.0,
+                                           double min_width = 0.0);
 
 }  // namespace projsurf

@@ -26,7 +26,7 @@ std::string limitOf(const PlanOptions &o, const StanceSearch &s, const Rectangle
         return metres("range: the picture's far corner is at the depth camera's %.1f m", o.max_distance);
     if (s.blocked_area > 1.05 * picture.area())
         return metres("floor space: stances the floor refuses would show %.2f m^2", s.blocked_area);
-    if (stance.move() >= o.max_move - 0.5 * std::max(o.step, o.max_move / 10.0))
+    if (stance.move() >= o.max_move - 0.5 * std::max(o.step, o.max_move / 8.0))
         return metres("--max-move: the move is %.2f m long", stance.move());
     return "the wall's extent: the free surface seen holds no larger picture";
 }

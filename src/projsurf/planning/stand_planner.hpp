@@ -23,8 +23,8 @@ namespace projsurf {
 struct PlanOptions {
     double max_move = 2.0;      ///< m, the translation's length at most (contract default)
     double width = 0.0;         ///< m; > 0: the shortest move giving at least this width
-    double step = 0.2;          ///< m, the coarse grid of positions (at least max_move / 10; refined to 2.5 cm)
-    double turn_step_deg = 10;  ///< deg, the coarse turns, all the way round (refined to 1.25 deg)
+    double step = 0.25;         ///< m, the coarse grid of positions (at least max_move / 8; refined to 3 cm)
+    double turn_step_deg = 15;  ///< deg, the coarse turns, all the way round (refined to 1.9 deg)
     double robot_radius = 0.3;  ///< m, the robot's footprint on the floor (a small mobile base)
     double cell = 0.02;         ///< m, the plan's free-surface raster (coarser than detection's 0.01: speed)
     double obstacle_height = 0.08;  ///< m above the floor: higher points occupy (floor noise and thresholds below)
