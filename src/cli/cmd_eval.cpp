@@ -108,6 +108,7 @@ void runPlanTable(const EvalOptions &o) {
     std::vector<sim::PlanSceneResult> rows;
     sim::PlanSuiteOptions popt;
     popt.reference = !o.quick;
+    popt.seed = o.seed;
     for (const sim::PlanScene &scene : sim::planSuiteScenes()) {
         rows.push_back(sim::runPlanScene(scene, popt));
         if (!o.no_progress)
@@ -256,7 +257,7 @@ void addEvalCommand(CLI::App &app) {
         ->excludes("--projector-only");
     sub->add_flag("--plan-only", o->plan_only,
                   "Only the plan suite (where to stand: planned, rendered from the moved robot, detected there, "
-                  "against an exhaustive reference search): DIR/plan.md; --quick skips the reference")
+                  "against an exhaustive reference search): DIR/plan.md; --seed renders the frames, --quick skips the reference")
         ->excludes("--projector-only")
         ->excludes("--colour-only");
     sub->callback([o, real, labels] {

@@ -15,9 +15,9 @@ namespace projsurf {
 
 struct PlanSurfaceOptions {
     /// m the free wall is assumed to go on beyond the edge of the camera's view (our choice:
-    /// a wall seen to the image border rarely ends just there; half a metre lets the plan step
-    /// back for a wider picture without trusting much unseen wall)
-    double beyond_view = 0.5;
+    /// a wall seen to the image border rarely ends just there; this much lets the plan step
+    /// back for a wider picture without trusting much unseen wall: docs/planning.md)
+    double beyond_view = 0.75;
     double voxel = 0.04;  ///< m, the points in front are kept one per voxel (shadows are cast per voxel)
     double obstacle_height = 0.08;  ///< m above the floor: lower points in front of the wall are floor
 };

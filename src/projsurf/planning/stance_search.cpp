@@ -39,7 +39,7 @@ bool reachable(Context &x, const Stance &s) {
 std::optional<StanceCandidate> evaluate(Context &x, int surface, const Stance &s, const StanceFootprint &fp,
                                         double min_area) {
     ++x.out.evaluated;
-    const auto pic = pictureFromStance(x.surfaces[surface], x.projector, fp, s, x.limits, x.mask, min_area, x.o.width);
+    const auto pic = pictureFromStance(x.surfaces[surface], x.projector, fp, s, x.limits, x.mask, min_area);
     if (!pic) return std::nullopt;
     if (x.o.width > 0.0) x.out.widest = std::max(x.out.widest, pic->width);
     return StanceCandidate{surface, s, *pic};

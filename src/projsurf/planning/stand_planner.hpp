@@ -31,7 +31,7 @@ struct PlanOptions {
     /// m, the picture's farthest corner from the moved camera at most: the depth camera must
     /// still see the wall to detect and track it (Kinect v1: 1.7 cm noise at 3.5 m, K&OE 2012).
     double max_distance = 3.5;
-    double beyond_view = 0.5;  ///< m of wall assumed free beyond the camera's view (plan_surfaces.hpp)
+    double beyond_view = 0.75;  ///< m of wall assumed free beyond the camera's view (plan_surfaces.hpp)
     /// A move is proposed only for a picture this many times today's (our choice: 5 % more is
     /// not worth driving for).
     double min_gain = 1.05;
