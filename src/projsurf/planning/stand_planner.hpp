@@ -26,7 +26,7 @@ struct PlanOptions {
     double step = 0.25;         ///< m, the coarse grid of positions (at least max_move / 8; refined to 3 cm)
     double turn_step_deg = 15;  ///< deg, the coarse turns, all the way round (refined to 1.9 deg)
     double robot_radius = 0.3;  ///< m, the robot's footprint on the floor (a small mobile base)
-    double cell = 0.02;         ///< m, the plan's free-surface raster (coarser than detection's 0.01: speed)
+    double cell = 0.03;         ///< m, the plan's free-surface raster (coarser than detection's 0.01: speed)
     double obstacle_height = 0.08;  ///< m above the floor: higher points occupy (floor noise and thresholds below)
     /// m, the picture's farthest corner from the moved camera at most: the depth camera must
     /// still see the wall to detect and track it (Kinect v1: 1.7 cm noise at 3.5 m, K&OE 2012).
