@@ -69,6 +69,7 @@ std::vector<Bounded> boundStances(Context &x) {
             if (std::hypot(f, l) > x.o.max_move + 1e-9) continue;
             const Stance at = makeStance(x.floor.frame(), f, l, 0.0);
             const bool blocked = (i != 0 || j != 0) && !reachable(x, at);
+            ++x.out.positions;
             x.out.occupied += blocked ? 1 : 0;
             for (int k = 0; k < turns; ++k) {
                 const Stance s = makeStance(x.floor.frame(), f, l, (k - turns / 2) * 2.0 * kPi / turns);
@@ -125,7 +126,13 @@ std::vector<StanceCandidate> firstWideEnough(Context &x, std::vector<Bounded> &a
         const auto c = evaluate(x, b.surface, b.stance, b.footprint, 0.0);
         if (c && better(x.o, *c, best)) best = c;
     }
-    return best ? std::vector<StanceCandidate>{*best} : std::vector<StanceCandidate>{};
+    if (best) return {*best};
+    // None wide enough: the widest there is, for the reason (the 20 widest bounds looked at).
+    std::sort(all.begin(), all.end(), [](const Bounded &a, const Bounded &b) { return a.width > b.width; });
+    int looked = 0;
+    for (const Bounded &b : all)
+        if (!b.blocked && ++looked <= 20) evaluate(x, b.surface, b.stance, b.footprint, 0.0);
+    return {};
 }
 
 /// Local search about a seed: moves and turns by a step, halved down to the fine step.

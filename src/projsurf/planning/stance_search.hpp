@@ -33,7 +33,9 @@ struct StanceSearch {
     std::optional<StanceCandidate> best;
     double blocked_area = 0.0;   ///< m^2, the largest picture seen from stances the floor refuses
     double widest = 0.0;         ///< m, the widest picture seen (with a width wanted)
-    int tried = 0, occupied = 0;  ///< positions x turns looked at; positions the floor refuses
+    int tried = 0;      ///< positions x turns looked at
+    int positions = 0;  ///< positions of the grid (today's included)
+    int occupied = 0;   ///< of them, those the floor refuses
     int evaluated = 0;           ///< pictures computed
 };
 

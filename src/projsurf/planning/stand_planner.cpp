@@ -34,11 +34,11 @@ std::string limitOf(const PlanOptions &o, const StanceSearch &s, const Rectangle
 /// Why nothing was found.
 std::string reasonOf(const PlanOptions &o, const StanceSearch &s, int surfaces) {
     if (surfaces == 0) return "no free vertical surface seen";
-    if (s.occupied > 0 && s.tried == 0) return "floor space: every position within --max-move is occupied";
+    if (s.positions > 1 && s.occupied == s.positions - 1)
+        return "floor space: every position within --max-move but today's is occupied";
     if (o.width > 0.0)
         return metres("no stance within --max-move shows a picture %.2f m wide", o.width) +
-               metres(" (the widest is %.2f m", s.widest) +
-               (s.occupied > 0 ? std::string("; the floor refuses some stances)") : std::string(")"));
+               metres(" (the widest is %.2f m)", s.widest);
     return "no reachable stance shows a picture on a surface seen";
 }
 
