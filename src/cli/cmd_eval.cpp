@@ -91,16 +91,20 @@ sim::ColourSuiteOptions colourSuiteOptions(const EvalOptions &o) {
     return copt;
 }
 
-/// The colour suite alone (detection/colour/surface_suitability.hpp): DIR/colour.md and its summary line.
-void runColourTable(const EvalOptions &o) {
-    const sim::ColourSuiteResult colour = sim::runColourSuite(colourSuiteOptions(o), sim::defaultVariant().config);
+/// One suite's table: DIR/<name>, printed, and its summary line.
+void writeSuiteTable(const EvalOptions &o, const std::string &name, const std::string &md, const std::string &summary) {
     std::error_code ec;
     fs::create_directories(o.out, ec);
     if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
-    const std::string md = sim::colourSuiteMarkdown(colour);
-    writeFileAtomic((fs::path(o.out) / "colour.md").string(), md);
+    writeFileAtomic((fs::path(o.out) / name).string(), md);
     std::printf("%s", md.c_str());
-    std::printf("%s; wrote %s/colour.md\n", sim::colourSuiteSummary(colour).c_str(), o.out.c_str());
+    std::printf("%s; wrote %s/%s\n", summary.c_str(), o.out.c_str(), name.c_str());
+}
+
+/// The colour suite alone (detection/colour/surface_suitability.hpp): DIR/colour.md and its summary line.
+void runColourTable(const EvalOptions &o) {
+    const sim::ColourSuiteResult colour = sim::runColourSuite(colourSuiteOptions(o), sim::defaultVariant().config);
+    writeSuiteTable(o, "colour.md", sim::colourSuiteMarkdown(colour), sim::colourSuiteSummary(colour));
 }
 
 /// The plan suite alone (eval/plan_suite.hpp): DIR/plan.md and its summary line; --quick skips the reference search.
@@ -114,13 +118,8 @@ void runPlanTable(const EvalOptions &o) {
         if (!o.no_progress)
             std::fprintf(stderr, "plan suite: %zu scenes done\r", rows.size());
     }
-    std::error_code ec;
-    fs::create_directories(o.out, ec);
-    if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
-    const std::string md = sim::planSuiteMarkdown(rows);
-    writeFileAtomic((fs::path(o.out) / "plan.md").string(), md);
-    std::printf("%s", md.c_str());
-    std::printf("%s; wrote %s/plan.md\n", sim::planSuiteSummary(rows).c_str(), o.out.c_str());
+    if (!o.no_progress) std::fprintf(stderr, "\n");
+    writeSuiteTable(o, "plan.md", sim::planSuiteMarkdown(rows), sim::planSuiteSummary(rows));
 }
 
 void run(const EvalOptions &o, const std::string &command) {

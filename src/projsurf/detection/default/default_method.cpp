@@ -117,6 +117,17 @@ std::vector<PlaneCandidate> findCandidates(const CloudSample &s, const DetectorC
     return out;
 }
 
+/// 3.2.1: the point grid of the free-space passes, and every vertical plane in view: a depth
+/// image's planar regions, else sequential RANSAC.
+std::vector<PlaneCandidate> findPlanes(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cfg,
+                                       const Eigen::Vector3d &gravity, DefaultScratch &scratch) {
+    fillPointGrid(cloud, cfg.free_space.stride, scratch.grid);
+    scratch.region_labels.clear();
+    return cfg.planes.image_regions && scratch.grid.organized
+               ? findRegionCandidates(s, scratch.grid, cfg, gravity, scratch.region_labels, scratch.regions)
+               : findCandidates(s, cfg, gravity);
+}
+
 /// Each wall's bend and noise as the camera saw them, and its sampled points on that shape.
 void shapeWall(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cfg, PlaneCandidate &c) {
     c.tolerance = cfg.tolerance;
@@ -442,12 +453,7 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     if (sample.points.size() < 3) return time.fail("no points to search (empty or all-NaN cloud)");
 
     // 2. Every vertical plane in view, biggest first (3.2.1).
-    fillPointGrid(cloud, cfg.free_space.stride, scratch.grid);
-    scratch.region_labels.clear();
-    std::vector<PlaneCandidate> candidates =
-        cfg.planes.image_regions && scratch.grid.organized
-            ? findRegionCandidates(sample, scratch.grid, cfg, gravity, scratch.region_labels, scratch.regions)
-            : findCandidates(sample, cfg, gravity);
+    std::vector<PlaneCandidate> candidates = findPlanes(cloud, sample, cfg, gravity, scratch);
     for (const auto &c : candidates) det.debug.candidates.push_back(c.plane);
     time.lap("planes");
     if (candidates.empty()) return time.fail("no vertical plane in view");
@@ -470,12 +476,7 @@ SeenSurfaces seeVerticalSurfaces(const Cloud &cloud, const DetectorConfig &cfg, 
     const CloudSample sample = sampleCloud(cloud, cfg);
     out.camera = sample.camera;
     if (sample.points.size() < 3) return out;
-    fillPointGrid(cloud, cfg.free_space.stride, scratch.grid);
-    scratch.region_labels.clear();
-    std::vector<PlaneCandidate> candidates =
-        cfg.planes.image_regions && scratch.grid.organized
-            ? findRegionCandidates(sample, scratch.grid, cfg, gravity, scratch.region_labels, scratch.regions)
-            : findCandidates(sample, cfg, gravity);
+    std::vector<PlaneCandidate> candidates = findPlanes(cloud, sample, cfg, gravity, scratch);
     if (scratch.observations.size() < candidates.size()) scratch.observations.resize(candidates.size());
     DetectorConfig fine = cfg;
     fine.free_space.cell = cell;
