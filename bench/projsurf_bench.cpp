@@ -24,6 +24,7 @@
 
 #include "bench_blanking.hpp"
 #include "bench_common.hpp"
+#include "bench_plan.hpp"
 #include "pcl_reference.hpp"
 #include "projsurf/types/projector.hpp"
 #include "projsurf/io/errors.hpp"
@@ -271,6 +272,7 @@ struct Options {
     int cpu = 0;
     bool quick = false;
     bool scale = false;
+    bool plan_only = false;
     bool sim = true;
     int scale_reps = 10;
 };
@@ -573,6 +575,7 @@ int main(int argc, char **argv) {
     app.add_flag("--quick", o.quick, "smoke run: 1 frame, 1 repetition, no warm-up");
     app.add_flag("!--no-sim", o.sim, "skip the simulator's paper scenes");
     app.add_flag("--scale", o.scale, "time against the number of points, 160x120 ... 1280x720");
+    app.add_flag("--plan-only", o.plan_only, "only the plan table (planStand per frame, 3 runs each)");
     app.add_option("--scale-reps", o.scale_reps, "repetitions per frame in --scale")->check(CLI::Range(1, 100000));
     try {
         app.parse(argc, argv);
@@ -612,6 +615,10 @@ int main(int argc, char **argv) {
         printHeader(o, pinned);
         if (o.scale) {
             reportScale(any, o, projector);
+        } else if (o.plan_only) {
+            std::vector<BenchFrame> frames = real;
+            frames.insert(frames.end(), simulated.begin(), simulated.end());
+            reportPlan(frames, projector, o.quick ? 0 : 1, o.quick ? 1 : 3);
         } else {
             const std::string memory = reportMemory(any, projector);  // first: a clean parent to fork
             if (!real.empty()) reportFrameSet("Real frames (" + o.data + ")", real, o, projector);
@@ -619,6 +626,7 @@ int main(int argc, char **argv) {
                 reportFrameSet("Simulator: the paper's scenes (Kinect v1 model)", simulated, o, projector);
             reportKeystone(o, projector);
             reportBlanking(o, real, projector);
+            reportPlan(any, projector, o.quick ? 0 : 1, o.quick ? 1 : 3);
             std::cout << memory;
             std::cout << "Peak RSS of this benchmark process (libraries, every frame as loaded, all three pipelines): "
                       << fmt(peakRssMiB()) << " MiB.\n";

@@ -13,6 +13,7 @@
 #include "detection_dict.hpp"
 #include "detector_options.hpp"
 #include "image_array.hpp"
+#include "plan_function.hpp"
 #include "points_array.hpp"
 #include "projsurf/types/lens_model_check.hpp"
 #include "projsurf/types/camera.hpp"
@@ -258,6 +259,8 @@ PYBIND11_MODULE(projsurf, m) {
         "`image` ((H, W) or (H, W, C), uint8, uint16 or float32; channels kept in their order) whole and\n"
         "undistorted in the detected rectangle (letterboxed, never stretched). The image is read in place.\n"
         "detection: the dict of detect(), or (4, 3) corners. Raises InputError.");
+
+    addPlanFunction(m);
 
     m.attr("__version__") = PROJSURF_VERSION;
 }

@@ -9,6 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "conversions.hpp"
+#include "projsurf/frontend/detect_answer.hpp"
 #include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/frontend/test_card.hpp"
@@ -352,7 +353,11 @@ bool ProjsurfNode::onPlan(std_srvs::Trigger::Request &, std_srvs::Trigger::Respo
         if (!params_.fixed_frame.empty() &&
             lookup(params_.fixed_frame, cloud_header_.frame_id, cloud_header_.stamp, fixed_from_camera, problem))
             frame = params_.fixed_frame;
-        const NodePlanner::Answer a = planner_->plan(cloud_, gravity, fixed_from_camera, frame, cloud_header_.stamp);
+        // Today's answer is ~detect's, by the same call.
+        const Detection today = frontend::detectAnswer(detector_, cloud_, gravity, params_.minimum, "the latest cloud",
+                                                       "~min_width", "~min_area");
+        const NodePlanner::Answer a =
+            planner_->plan(cloud_, gravity, today, fixed_from_camera, frame, cloud_header_.stamp);
         res.success = a.found;
         res.message = a.message;
     } catch (const std::exception &e) {  // never take the node down for one bad frame

@@ -3,9 +3,7 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <visualization_msgs/Marker.h>
 
-#include <cmath>
-#include <cstdio>
-#include <nlohmann/json.hpp>
+#include "projsurf/frontend/plan_json.hpp"
 
 namespace projsurf::ros_node {
 
@@ -16,13 +14,13 @@ NodePlanner::NodePlanner(ros::NodeHandle &pnh, const Projector &projector, const
     marker_pub_ = pnh.advertise<visualization_msgs::Marker>("plan_marker", 1, true);
 }
 
-NodePlanner::Answer NodePlanner::plan(const Cloud &cloud, const Eigen::Vector3d &gravity,
+NodePlanner::Answer NodePlanner::plan(const Cloud &cloud, const Eigen::Vector3d &gravity, const Detection &today,
                                       const Eigen::Isometry3d &fixed_from_camera, const std::string &frame,
                                       const ros::Time &stamp) {
     Answer a;
-    const PlanResult r = planStand(cloud, projector_, config_, gravity, options_);
+    const PlanResult r = planStand(cloud, projector_, config_, gravity, options_, today);
     if (!r.found) {
-        a.message = "no plan: " + r.reason;
+        a.message = "no plan: " + r.reason + "; " + frontend::planToJson(r).dump();
         return a;
     }
     a.found = true;
@@ -65,17 +63,7 @@ NodePlanner::Answer NodePlanner::plan(const Cloud &cloud, const Eigen::Vector3d 
     }
     marker_pub_.publish(m);
 
-    nlohmann::json j;
-    j["translation"] = {r.translation.x(), r.translation.y(), r.translation.z()};
-    j["predicted"] = {
-        {"width_m", r.predicted.width}, {"height_m", r.predicted.height}, {"area_m2", r.predicted.area()}};
-    j["today_area_m2"] = r.today.area();
-    char buf[200];
-    std::snprintf(buf, sizeof buf, "move %.2f m, turn %.1f deg: %.2f x %.2f m (%.2f m^2; %.2f m^2 without moving); ",
-                  r.translation.norm(),
-                  std::acos(std::max(-1.0, std::min(1.0, (r.rotation.trace() - 1.0) / 2.0))) * 180.0 / 3.14159265358979,
-                  r.predicted.width, r.predicted.height, r.predicted.area(), r.today.area());
-    a.message = buf + j.dump();
+    a.message = frontend::planSummary(r) + "; " + frontend::planToJson(r).dump();
     return a;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The node's ~plan (contract "Where to stand", issue 13): on the latest cloud, where the
 // robot should stand for the largest picture (or ~plan_width). Answered through
-// std_srvs/Trigger (success = found, message = summary and the plan JSON); the moved camera's
+// std_srvs/Trigger (success = found, message = the summary in words and the plan JSON, as
+// `projsurf plan` writes them); the moved camera's
 // pose is published as ~plan_pose (geometry_msgs/PoseStamped, camera optical frame's pose in
 // ~fixed_frame, else in the cloud's frame) and the predicted rectangle as ~plan_marker.
 #include <ros/ros.h>
@@ -22,9 +23,10 @@ public:
         bool found = false;
         std::string message;
     };
-    /// Plans on `cloud` (camera frame `camera_frame`); `fixed_from_camera` maps it into `frame`.
-    Answer plan(const Cloud &cloud, const Eigen::Vector3d &gravity, const Eigen::Isometry3d &fixed_from_camera,
-                const std::string &frame, const ros::Time &stamp);
+    /// Plans on `cloud` (camera frame `camera_frame`), `today` being ~detect's answer on it;
+    /// `fixed_from_camera` maps it into `frame`.
+    Answer plan(const Cloud &cloud, const Eigen::Vector3d &gravity, const Detection &today,
+                const Eigen::Isometry3d &fixed_from_camera, const std::string &frame, const ros::Time &stamp);
 
 private:
     Projector projector_;

@@ -14,6 +14,7 @@
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/depth_range_check.hpp"
 #include "projsurf/frontend/gravity_sanity.hpp"
+#include "projsurf/frontend/detect_answer.hpp"
 #include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
@@ -39,17 +40,6 @@ struct DetectOptions {
     DetectorConfig config;
     double min_width = -1.0, min_area = -1.0;  ///< m, m^2; < 0: the method's default (frontend/minimum_size.hpp)
 };
-
-/// detectSurface, with a library failure on this cloud (an OpenCV assertion) reported as
-/// a problem of the input file, on one line.
-Detection detectChecked(SurfaceDetector &detector, const Cloud &cloud, const Eigen::Vector3d &gravity,
-                        const std::string &source) {
-    try {
-        return detector.detect(cloud, gravity);
-    } catch (const cv::Exception &e) {
-        throw InputError(source, "cannot be processed (" + e.func + ": " + e.err + ")");
-    }
-}
 
 /// A level camera is assumed (no --gravity), but the floor says the camera is tilted.
 void warnIfTilted(const Cloud &cloud) {
@@ -144,9 +134,8 @@ void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &
     SurfaceDetector detector(projector, cfg);  // one for the whole bag: its buffers are reused
     auto detectOne = [&](const Cloud &cloud, const BagCloudInfo &info) {
         const Eigen::Vector3d down = frontend::resolveGravity(gravity, cloud).gravity;
-        Detection det =
-            detectChecked(detector, cloud, down, o.bag + ":" + topic.topic + "#" + std::to_string(info.index));
-        frontend::enforceMinimumSize(det, minimum, "--min-width", "--min-area");
+        const Detection det = frontend::detectAnswer(detector, cloud, down, minimum,
+                                                     o.bag + ":" + topic.topic + "#" + std::to_string(info.index));
         nlohmann::json j = detectionToJson(det, cfg, &projector);
         j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", topic.topic}};
         found += det.found ? 1 : 0;
@@ -281,8 +270,7 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     if (const auto w = frontend::depthRangeWarning(cloud, o.depth.empty() ? o.cloud : o.camera, !o.depth.empty()))
         std::fprintf(stderr, "projsurf: warning: %s\n", w->c_str());
     SurfaceDetector detector(projector, cfg);
-    Detection det = detectChecked(detector, cloud, gravity, o.cloud.empty() ? o.depth : o.cloud);
-    frontend::enforceMinimumSize(det, minimum, "--min-width", "--min-area");
+    const Detection det = frontend::detectAnswer(detector, cloud, gravity, minimum, o.cloud.empty() ? o.depth : o.cloud);
     const nlohmann::json j = detectionToJson(det, cfg, &projector);
     // Both outputs, or neither: written beside their targets, renamed once both are there.
     OutputGroup outputs;

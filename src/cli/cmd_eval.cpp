@@ -16,6 +16,7 @@
 #include "eval/experiments.hpp"
 #include "eval/labelled_eval.hpp"
 #include "eval/procam_comparison.hpp"
+#include "eval/plan_suite.hpp"
 #include "eval/projector_eval.hpp"
 #include "eval/real_gallery.hpp"
 #include "eval/real_labels.hpp"
@@ -53,6 +54,7 @@ struct EvalOptions {
     // 75 (read as mm); its XML's translation is in those units.
     double square_m = 0.075;
     double published_square = 75;
+    bool plan_only = false;       // only the plan suite (where to stand)
 };
 
 /// Our chessboard calibration of a procam-calibration folder beside its calibration_result.xml.
@@ -145,6 +147,21 @@ void runRealisticTable(const EvalOptions &o) {
     writeSuiteTable(o, "realistic.md", sim::realisticSuiteMarkdown(realistic), sim::realisticSuiteSummary(realistic));
 }
 
+/// The plan suite alone (eval/plan_suite.hpp): DIR/plan.md and its summary line; --quick skips the reference search.
+void runPlanTable(const EvalOptions &o) {
+    std::vector<sim::PlanSceneResult> rows;
+    sim::PlanSuiteOptions popt;
+    popt.reference = !o.quick;
+    popt.seed = o.seed;
+    for (const sim::PlanScene &scene : sim::planSuiteScenes()) {
+        rows.push_back(sim::runPlanScene(scene, popt));
+        if (!o.no_progress)
+            std::fprintf(stderr, "plan suite: %zu scenes done\r", rows.size());
+    }
+    if (!o.no_progress) std::fprintf(stderr, "\n");
+    writeSuiteTable(o, "plan.md", sim::planSuiteMarkdown(rows), sim::planSuiteSummary(rows));
+}
+
 void run(const EvalOptions &o, const std::string &command) {
     if (!o.procam.empty()) return runProcam(o);
     if (!o.json.empty()) throw InputError("--json", "only with --procam");
@@ -167,6 +184,7 @@ void run(const EvalOptions &o, const std::string &command) {
     if (o.projector_only) return runProjectorTable(o);
     if (o.colour_only) return runColourTable(o);
     if (o.realistic_only) return runRealisticTable(o);
+    if (o.plan_only) return runPlanTable(o);
     // The default real-frame folder is taken from the working directory, and said (before the
     // long simulation) when it is not there.
     if (!o.real_dir_given && !fs::is_directory(o.real_dir, ec))
@@ -291,6 +309,12 @@ void addEvalCommand(CLI::App &app) {
                     "beside its published calibration");
     sub->add_option("--json", o->json, "with --procam: write the comparison as JSON");
     sub->add_option("--square-m", o->square_m, "with --procam: the board's square, m (default 0.075: its README's 75)");
+    sub->add_flag("--plan-only", o->plan_only,
+                  "Only the plan suite (where to stand: planned, rendered from the moved robot, detected there, "
+                  "against an exhaustive reference search): DIR/plan.md; --seed renders the frames, --quick skips the reference")
+        ->excludes("--projector-only")
+        ->excludes("--colour-only")
+        ->excludes("--realistic-only");
     sub->callback([o, real, labels] {
         EvalOptions opts = *o;
         opts.real_dir_given = real->count() > 0;

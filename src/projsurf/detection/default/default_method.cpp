@@ -117,6 +117,25 @@ std::vector<PlaneCandidate> findCandidates(const CloudSample &s, const DetectorC
     return out;
 }
 
+/// 3.2.1: the point grid of the free-space passes, and every vertical plane in view: a depth
+/// image's planar regions, else (or when no region grows) sequential RANSAC.
+std::vector<PlaneCandidate> findPlanes(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cfg,
+                                       const Eigen::Vector3d &gravity, DefaultScratch &scratch) {
+    fillPointGrid(cloud, cfg.free_space.stride, scratch.grid);
+    scratch.region_labels.clear();
+    const bool regions = cfg.planes.image_regions && scratch.grid.organized;
+    std::vector<PlaneCandidate> out =
+        regions ? findRegionCandidates(s, scratch.grid, cfg, gravity, scratch.region_labels, scratch.regions)
+                : findCandidates(s, cfg, gravity);
+    // A depth image whose cells are all too rough to grow regions (a poor stereo unit's
+    // correlated noise) may still hold a plain wall: the robust plane search runs then.
+    if (out.empty() && regions) {
+        scratch.region_labels.clear();
+        out = findCandidates(s, cfg, gravity);
+    }
+    return out;
+}
+
 /// The wall's bend and noise about the candidate's plane as the camera saw them, and its
 /// sampled points on that shape; false when no shape could be fitted.
 bool fitShape(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cfg, PlaneCandidate &c) {
@@ -166,6 +185,18 @@ void shapeWall(const Cloud &cloud, const CloudSample &s, const DetectorConfig &c
     }
 }
 
+/// The bounding box of the candidate's inliers in its plane coordinates (and its area).
+void inlierExtent(const Cloud &cloud, PlaneCandidate &c, Eigen::Vector2d &lo, Eigen::Vector2d &hi) {
+    lo = Eigen::Vector2d::Constant(1e9);
+    hi = Eigen::Vector2d::Constant(-1e9);
+    for (int i : c.inlier_indices) {
+        const Eigen::Vector2d uv = c.frame.toPlane(cloud.points[i].cast<double>());
+        lo = lo.cwiseMin(uv);
+        hi = hi.cwiseMax(uv);
+    }
+    c.spread_area = std::max(0.0, (hi - lo).prod());
+}
+
 /// The projector's footprint on the candidate and the raster over the part of it where the
 /// plane was seen; false when the projector does not reach the plane or the two do not meet.
 bool frameCandidate(const Cloud &cloud, const CloudSample &s, const Projector &projector, const DetectorConfig &cfg,
@@ -179,13 +210,8 @@ bool frameCandidate(const Cloud &cloud, const CloudSample &s, const Projector &p
         hi = hi.cwiseMax(w);
     }
     // Only where the plane was seen can the picture go: clip to its inliers' extent.
-    Eigen::Vector2d ilo = Eigen::Vector2d::Constant(1e9), ihi = Eigen::Vector2d::Constant(-1e9);
-    for (int i : c.inlier_indices) {
-        const Eigen::Vector2d uv = c.frame.toPlane(cloud.points[i].cast<double>());
-        ilo = ilo.cwiseMin(uv);
-        ihi = ihi.cwiseMax(uv);
-    }
-    c.spread_area = std::max(0.0, (ihi - ilo).prod());
+    Eigen::Vector2d ilo, ihi;
+    inlierExtent(cloud, c, ilo, ihi);
     const double cell = cfg.free_space.cell;
     lo = lo.cwiseMax(ilo - Eigen::Vector2d::Constant(cell));
     hi = hi.cwiseMin(ihi + Eigen::Vector2d::Constant(cell));
@@ -457,18 +483,7 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     if (sample.points.size() < 3) return time.fail("no points to search (empty or all-NaN cloud)");
 
     // 2. Every vertical plane in view, biggest first (3.2.1).
-    fillPointGrid(cloud, cfg.free_space.stride, scratch.grid);
-    scratch.region_labels.clear();
-    std::vector<PlaneCandidate> candidates =
-        cfg.planes.image_regions && scratch.grid.organized
-            ? findRegionCandidates(sample, scratch.grid, cfg, gravity, scratch.region_labels, scratch.regions)
-            : findCandidates(sample, cfg, gravity);
-    // A depth image whose cells are all too rough to grow regions (a poor stereo unit's
-    // correlated noise) may still hold a plain wall: the robust plane search runs then.
-    if (candidates.empty() && cfg.planes.image_regions && scratch.grid.organized) {
-        scratch.region_labels.clear();
-        candidates = findCandidates(sample, cfg, gravity);
-    }
+    std::vector<PlaneCandidate> candidates = findPlanes(cloud, sample, cfg, gravity, scratch);
     for (const auto &c : candidates) det.debug.candidates.push_back(c.plane);
     time.lap("planes");
     if (candidates.empty()) return time.fail("no vertical plane in view");
@@ -483,6 +498,47 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     // 5. The answer, and the plane shown with it.
     describeAnswer(cfg, candidates, usable, std::move(choice), det);
     return time.finish();
+}
+
+SeenSurfaces seeVerticalSurfaces(const Cloud &cloud, const DetectorConfig &cfg, const Eigen::Vector3d &gravity,
+                                 double cell, double reach, DefaultScratch &scratch) {
+    SeenSurfaces out;
+    const CloudSample sample = sampleCloud(cloud, cfg);
+    out.camera = sample.camera;
+    if (sample.points.size() < 3) return out;
+    std::vector<PlaneCandidate> candidates = findPlanes(cloud, sample, cfg, gravity, scratch);
+    if (scratch.observations.size() < candidates.size()) scratch.observations.resize(candidates.size());
+    DetectorConfig fine = cfg;
+    fine.free_space.cell = cell;
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+        PlaneCandidate &c = candidates[k];
+        c.observed = &scratch.observations[k];
+        shapeWall(cloud, sample, cfg, gravity, c);
+        Eigen::Vector2d lo, hi;
+        inlierExtent(cloud, c, lo, hi);
+        // Within `reach` of the camera's foot on the plane (a far plane is not rastered whole).
+        const Eigen::Vector2d foot = c.frame.toPlane(Eigen::Vector3d::Zero());
+        lo = (lo - Eigen::Vector2d::Constant(cell)).cwiseMax(foot - Eigen::Vector2d::Constant(reach));
+        hi = (hi + Eigen::Vector2d::Constant(cell)).cwiseMin(foot + Eigen::Vector2d::Constant(reach));
+        if (!(lo.array() < hi.array()).all()) continue;
+        c.raster = makeRasterFrame(lo, hi, cell);
+        // No lens in front of the plane: nothing counts as shadowing it (what does depends on
+        // where a projector stands); every pixel is looked at.
+        Projector on_plane;
+        on_plane.origin = c.frame.origin;
+        observeFreeSpace(cloud, scratch, on_plane, fine, c);
+        SeenSurface s;
+        s.plane = c.plane;
+        s.frame = c.frame;
+        s.raster = c.raster;
+        s.free = c.surface;
+        s.state = c.cell_state;
+        s.tolerance = c.tolerance;
+        s.shape = c.shape;
+        s.inliers = c.inliers;
+        out.surfaces.push_back(std::move(s));
+    }
+    return out;
 }
 
 }  // namespace projsurf

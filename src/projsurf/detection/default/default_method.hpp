@@ -2,8 +2,10 @@
 // The default detection: every vertical plane, free space where the wall was seen, the
 // picture upright with respect to gravity, a surface check relative to the depth noise.
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include "projsurf/types/camera.hpp"
 #include "projsurf/types/cloud.hpp"
 #include "projsurf/detection/default/planar_regions.hpp"
 #include "projsurf/detection/default/plane_observation.hpp"
@@ -24,6 +26,29 @@ struct DefaultScratch {
     std::vector<PlanarRegion> regions;           ///< depth images: the planar regions found
     std::vector<std::uint8_t> exclude;           ///< grid elements of another region than the candidate's
 };
+
+/// A vertical plane in view and where the camera saw it free with no projector in the way:
+/// nothing counts as shadowing it (what does depends on where a projector stands).
+struct SeenSurface {
+    Plane plane;
+    PlaneFrame frame;
+    RasterFrame raster;
+    cv::Mat free;   ///< CV_8U on `raster`, 255 = seen free (wall seen, nothing seen through it)
+    cv::Mat state;  ///< CV_8U CellState per cell
+    DepthTolerance tolerance;
+    WallShape shape;
+    int inliers = 0;
+};
+
+struct SeenSurfaces {
+    std::vector<SeenSurface> surfaces;       ///< biggest first, as detection finds them
+    std::optional<CameraIntrinsics> camera;  ///< organized clouds: the pinhole they were seen through
+};
+
+/// Every vertical plane detection considers, each observed over all of the part the camera
+/// saw within `reach` m (along the plane) of the camera, on a raster of `cell` m.
+SeenSurfaces seeVerticalSurfaces(const Cloud &cloud, const DetectorConfig &config, const Eigen::Vector3d &gravity,
+                                 double cell, double reach, DefaultScratch &scratch);
 
 /// `gravity` in the camera frame; aspect = width / height.
 Detection detectDefault(const Cloud &cloud, const Projector &projector, const DetectorConfig &config,

@@ -1,0 +1,52 @@
+#include "plan_function.hpp"
+
+#include <pybind11/stl.h>
+
+#include "detector_options.hpp"
+#include "points_array.hpp"
+#include "projsurf/frontend/detect_answer.hpp"
+#include "projsurf/frontend/plan_json.hpp"
+#include "projsurf/io/errors.hpp"
+#include "projsurf/planning/stand_planner.hpp"
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace projsurf::python {
+
+void addPlanFunction(py::module_ &m) {
+    m.def(
+        "plan",
+        [](const py::object &points, const Projector &projector, const py::object &aspect, const py::object &gravity,
+           double width, double max_move, const py::object &min_width, const py::object &min_area) {
+            if (!(width >= 0.0 && width <= 50.0)) throw InputError("width", "must be between 0 and 50 m");
+            if (!(max_move >= 0.0 && max_move <= 10.0)) throw InputError("max_move", "must be between 0 and 10 m");
+            const DetectorOptions options =
+                detectorOptions(aspect, gravity, "default", "concave", 42u, min_width, min_area);
+            const Cloud cloud = cloudFromPoints(points);
+            PlanOptions plan;
+            plan.width = width;
+            plan.max_move = max_move;
+            std::string text;
+            {
+                py::gil_scoped_release unlocked;
+                const Eigen::Vector3d down = gravityFor(options, cloud);
+                // Today's answer is detect()'s, by the same call.
+                SurfaceDetector detector(projector, options.config);
+                const Detection today =
+                    frontend::detectAnswer(detector, cloud, down, options.minimum, "points", "min_width", "min_area");
+                text = frontend::planToJson(planStand(cloud, projector, options.config, down, plan, today)).dump();
+            }
+            return py::module_::import("json").attr("loads")(text);
+        },
+        "points"_a, "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(), "width"_a = 0.0,
+        "max_move"_a = 2.0, "min_width"_a = py::none(), "min_area"_a = py::none(),
+        "Where the robot should stand for the largest picture (width > 0: the shortest move showing at least\n"
+        "that width, m), moving at most max_move m on the floor. points, projector, aspect, gravity, min_width,\n"
+        "min_area as for detect(). Returns the dict of `projsurf plan --json`: found, reason, camera_pose\n"
+        "(rotation, translation: P_today = R P_moved + t), predicted, move (forward_m, left_m, turn_left_deg,\n"
+        "words: the gravity-levelled robot frame), today (detect()'s rectangle where the robot stands, or None),\n"
+        "today_reason, limit, search. Raises InputError for bad points or options.");
+}
+
+}  // namespace projsurf::python

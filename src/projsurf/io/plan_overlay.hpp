@@ -1,0 +1,17 @@
+#pragma once
+// A picture of a plan: on the frame, today's rectangle (detect's answer, with what detect's
+// overlay shows) and the proposed one; beside it, a top-down sketch of what the camera saw on
+// the floor with the robot now and after the move.
+#include <opencv2/core.hpp>
+
+#include "projsurf/types/camera.hpp"
+#include "projsurf/planning/stand_planner.hpp"
+
+namespace projsurf {
+
+/// `camera`: intrinsics of an organized cloud (nullptr: estimated from the cloud); `gravity`:
+/// the plan's; `robot_radius`: m, the disc drawn.
+cv::Mat renderPlanOverlay(const Cloud &cloud, const PlanResult &plan, const DetectorConfig &config,
+                          const CameraIntrinsics *camera, const Eigen::Vector3d &gravity, double robot_radius);
+
+}  // namespace projsurf

@@ -1,0 +1,46 @@
+#pragma once
+// The search of the stance space: every turn about gravity (all the way round, in coarse
+// steps) at every position of a grid on the free floor within the longest move, on every
+// surface; the stances ranked by an upper bound of their picture and looked at best first,
+// until no unseen one could be better; then the best few refined by a local search in finer
+// steps. With a width wanted: the stances in order of their move (then their turn), the
+// first that shows a picture that wide, refined towards a shorter move.
+#include <optional>
+#include <vector>
+
+#include "projsurf/planning/floor_occupancy.hpp"
+#include "projsurf/planning/plan_surfaces.hpp"
+#include "projsurf/planning/stance_view.hpp"
+
+namespace projsurf {
+
+struct StanceSearchOptions {
+    double max_move = 2.0;      ///< m
+    double width = 0.0;         ///< m; > 0: the shortest move showing at least this width
+    double step = 0.25;         ///< m, the coarse grid of positions (at least max_move / 8)
+    double turn_step_deg = 15;  ///< deg, the coarse turns
+    double fine_step = 0.025;   ///< m, the refinement stops below this step
+    int refine = 6;             ///< best distinct stances refined
+};
+
+struct StanceCandidate {
+    int surface = -1;
+    Stance stance;
+    Rectangle picture;  ///< today's camera frame
+};
+
+struct StanceSearch {
+    std::optional<StanceCandidate> best;
+    double blocked_area = 0.0;   ///< m^2, the largest picture seen from stances the floor refuses
+    double widest = 0.0;         ///< m, the widest picture seen (with a width wanted)
+    int tried = 0;      ///< positions x turns looked at
+    int positions = 0;  ///< positions of the grid (today's included)
+    int occupied = 0;   ///< of them, those the floor refuses
+    int evaluated = 0;           ///< pictures computed
+};
+
+StanceSearch searchStances(const std::vector<PlanSurface> &surfaces, const Projector &projector,
+                           const FloorOccupancy &floor, const StanceLimits &limits, double robot_radius,
+                           const StanceSearchOptions &options);
+
+}  // namespace projsurf
