@@ -18,6 +18,7 @@
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios_realistic.hpp"
 #include "projsurf/sim/wall_frame.hpp"
+#include "projsurf/types/formatted.hpp"
 
 namespace projsurf::sim {
 namespace {
@@ -312,14 +313,6 @@ ColourSuiteResult runColourSuite(const ColourSuiteOptions &o, const DetectorConf
     return res;
 }
 
-namespace {
-std::string fmt(const char *f, double v) {
-    char b[64];
-    std::snprintf(b, sizeof b, f, v);
-    return b;
-}
-}  // namespace
-
 std::string colourSuiteMarkdown(const ColourSuiteResult &result) {
     std::ostringstream md;
     md << "Scenes of `sim/colour_suite.hpp` (realistic Kinect v1 depth, registered colour under room light), "
@@ -334,13 +327,13 @@ std::string colourSuiteMarkdown(const ColourSuiteResult &result) {
           "worst on unfit (off) | plain: worst vs off | suitability ms | target |\n";
     md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto &r : result.rows) {
-        md << "| " << r.scene.scene << " | " << fmt("%.1f m", r.scene.distance) << " | "
-           << fmt("%.0f°", r.scene.angle_deg) << " | " << fmt("%.2f m²", r.depth_best) << " | "
-           << fmt("%.2f m²", r.suitable_best) << " | " << fmt("%.2f m²", r.mean_area) << " | "
-           << (r.plain ? std::string("-") : fmt("%.1f %%", r.max_unfit_pct)) << " | "
-           << (r.plain ? std::string("-") : fmt("%.0f %%", r.min_area_pct)) << " | " << fmt("%.2f m²", r.mean_area_off)
-           << " | " << (r.plain ? std::string("-") : fmt("%.0f %%", r.max_off_unfit_pct)) << " | "
-           << (r.plain ? fmt("%.1f %%", r.worst_plain_pct) : std::string("-")) << " | " << fmt("%.2f", r.suitability_ms)
+        md << "| " << r.scene.scene << " | " << formatted("%.1f m", r.scene.distance) << " | "
+           << formatted("%.0f°", r.scene.angle_deg) << " | " << formatted("%.2f m²", r.depth_best) << " | "
+           << formatted("%.2f m²", r.suitable_best) << " | " << formatted("%.2f m²", r.mean_area) << " | "
+           << (r.plain ? std::string("-") : formatted("%.1f %%", r.max_unfit_pct)) << " | "
+           << (r.plain ? std::string("-") : formatted("%.0f %%", r.min_area_pct)) << " | " << formatted("%.2f m²", r.mean_area_off)
+           << " | " << (r.plain ? std::string("-") : formatted("%.0f %%", r.max_off_unfit_pct)) << " | "
+           << (r.plain ? formatted("%.1f %%", r.worst_plain_pct) : std::string("-")) << " | " << formatted("%.2f", r.suitability_ms)
            << " | " << (r.ok() ? "holds" : "**misses**") << " |\n";
     }
     return md.str();
@@ -351,7 +344,7 @@ std::string colourSuiteSummary(const ColourSuiteResult &result) {
     for (const auto &r : result.rows) ok += r.ok();
     return "colour suite: " + std::to_string(ok) + " / " + std::to_string(result.rows.size()) +
            " scenes meet the targets (" + std::to_string(result.rounds) + " rounds each, " +
-           fmt("%.0f s", result.seconds) + ")";
+           formatted("%.0f s", result.seconds) + ")";
 }
 
 }  // namespace projsurf::sim

@@ -16,17 +16,12 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/yaml_files.hpp"
+#include "projsurf/types/formatted.hpp"
 
 namespace fs = std::filesystem;
 
 namespace projsurf {
 namespace {
-
-std::string fmt(const char *f, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, v);
-    return buf;
-}
 
 /// Written so that it reads back to the same doubles: the command then gives the same answer.
 std::string vec(const Eigen::Vector3d &v) {
@@ -42,7 +37,7 @@ double median(std::vector<double> v) {
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-std::string pct(double share) { return fmt("%.1f", 100.0 * share); }
+std::string pct(double share) { return formatted("%.1f", 100.0 * share); }
 
 /// The detector with the frame's registered colour (as `detect --rgb --suitability avoid`: the
 /// colour is used only when checkColourRegistration does not reject it), scored with the
@@ -93,11 +88,11 @@ ColourRun runWithColour(const LabelledFrame &f, const std::string &dir, const Ca
     if (!c.detection.found)
         caption += "nothing found";
     else
-        caption += fmt("%.3f m^2", c.detection.area) +
-                   fmt(", %.0f %% unsuitable", 100.0 * c.with_colour.unsuitable_share) +
-                   (c.colour_used ? fmt(" (depth only %.0f %%)", 100.0 * c.depth_only.unsuitable_share)
+        caption += formatted("%.3f m^2", c.detection.area) +
+                   formatted(", %.0f %% unsuitable", 100.0 * c.with_colour.unsuitable_share) +
+                   (c.colour_used ? formatted(" (depth only %.0f %%)", 100.0 * c.depth_only.unsuitable_share)
                                   : std::string(" (colour not used)"));
-    caption += f.label.colour.best.found ? ", best " + fmt("%.3f", f.label.colour.best.area()) : ", no usable surface";
+    caption += f.label.colour.best.found ? ", best " + formatted("%.3f", f.label.colour.best.area()) : ", no usable surface";
     c.overlay = withCaption(img, caption, 0.45);
     return c;
 }
@@ -155,8 +150,8 @@ LabelledFrame evaluateLabelledFrame(const std::string &label_path, const std::st
     if (!f.score.found)
         caption += "nothing found";
     else
-        caption += fmt("%.3f m^2", f.score.area) + (f.score.valid ? ", valid" : ", INVALID (" + f.score.why + ")");
-    caption += f.label.best.found ? ", label best " + fmt("%.3f m^2", f.label.best.area()) : ", no usable surface";
+        caption += formatted("%.3f m^2", f.score.area) + (f.score.valid ? ", valid" : ", INVALID (" + f.score.why + ")");
+    caption += f.label.best.found ? ", label best " + formatted("%.3f m^2", f.label.best.area()) : ", no usable surface";
     f.overlay = withCaption(img, caption, 0.45);
     if (f.label.colour.judged) f.colour = runWithColour(f, dir, camera, cloud, cfg, background);
     return f;
@@ -252,11 +247,11 @@ std::string colourReportMarkdown(const std::vector<LabelledFrame> &frames, const
         if (!c.judged) continue;
         md << "| [" << f.name << "](" << pictures << "/" << f.name << "_colour.png) | "
            << (c.colour_used ? "used" : "not used: " + c.colour_note) << " | "
-           << (f.label.colour.best.found ? fmt("%.3f", f.label.colour.best.area()) : "none") << " | "
+           << (f.label.colour.best.found ? formatted("%.3f", f.label.colour.best.area()) : "none") << " | "
            << f.label.colour.unsuitable.size() << " | ";
         for (const ColourScore *a : {&c.depth_only, &c.with_colour})
-            md << (a->score.found ? fmt("%.3f", a->score.area) : "—") << " | "
-               << (a->score.has_best ? fmt("%.2f", a->score.ratio) : "") << " | "
+            md << (a->score.found ? formatted("%.3f", a->score.area) : "—") << " | "
+               << (a->score.has_best ? formatted("%.2f", a->score.ratio) : "") << " | "
                << (a->score.right ? "yes" : "**no**") << " | "
                << (a->score.found ? pct(a->unsuitable_share) + (a->clean() ? "" : " ✗") : "") << " | ";
         md << (c.with_colour.score.right ? "" : c.with_colour.score.why) << " |\n";
@@ -275,11 +270,11 @@ std::string colourCsv(const std::vector<LabelledFrame> &frames) {
         const ColourRun &c = f.colour;
         if (!c.judged) continue;
         csv << f.name << "," << (c.colour_used ? "yes" : "no") << ","
-            << (f.label.colour.best.found ? fmt("%.4f", f.label.colour.best.area()) : "") << ","
+            << (f.label.colour.best.found ? formatted("%.4f", f.label.colour.best.area()) : "") << ","
             << f.label.colour.unsuitable.size();
         for (const ColourScore *a : {&c.depth_only, &c.with_colour})
-            csv << "," << (a->score.found ? fmt("%.4f", a->score.area) : "") << "," << fmt("%.4f", a->score.ratio)
-                << "," << (a->score.right ? "yes" : "no") << "," << fmt("%.4f", a->unsuitable_share);
+            csv << "," << (a->score.found ? formatted("%.4f", a->score.area) : "") << "," << formatted("%.4f", a->score.ratio)
+                << "," << (a->score.right ? "yes" : "no") << "," << formatted("%.4f", a->unsuitable_share);
         csv << ",\"" << c.with_colour.score.why << "\"\n";
     }
     return csv.str();
@@ -312,16 +307,16 @@ std::string labelledReportMarkdown(const std::vector<LabelledFrame> &frames, con
           "centre moves (m) |\n|---|---:|---:|---:|---|---:|---|---|---:|---:|\n";
     for (const auto &f : frames) {
         md << "| [" << f.name << "](" << pictures << "/" << f.name << ".png) | ";
-        md << (f.label.best.found ? fmt("%.3f", f.label.best.area()) : "none") << " | "
-           << (f.score.found ? fmt("%.3f", f.score.area) : "—") << " | "
-           << (f.score.has_best ? fmt("%.2f", f.score.ratio) : "") << " | " << (f.score.right ? "yes" : "**no**")
-           << " | " << (f.score.found ? fmt("%.0f", 100.0 * f.score.free_fraction) : "") << " | "
+        md << (f.label.best.found ? formatted("%.3f", f.label.best.area()) : "none") << " | "
+           << (f.score.found ? formatted("%.3f", f.score.area) : "—") << " | "
+           << (f.score.has_best ? formatted("%.2f", f.score.ratio) : "") << " | " << (f.score.right ? "yes" : "**no**")
+           << " | " << (f.score.found ? formatted("%.0f", 100.0 * f.score.free_fraction) : "") << " | "
            << (f.score.right ? "" : f.score.why) << " | ";
         for (std::size_t i = 0; i < f.seeds.size(); ++i)
-            md << (i ? " " : "") << (f.seeds[i].found ? fmt("%.3f", f.seeds[i].area) : "—")
+            md << (i ? " " : "") << (f.seeds[i].found ? formatted("%.3f", f.seeds[i].area) : "—")
                << (f.seeds[i].valid ? "" : "✗");
-        md << " | " << fmt("%.1f %%", 100.0 * f.seed_spread) << (f.seed_same_validity ? "" : ", validity changes")
-           << " | " << fmt("%.2f", f.seed_shift) << " |\n";
+        md << " | " << formatted("%.1f %%", 100.0 * f.seed_spread) << (f.seed_same_validity ? "" : ", validity changes")
+           << " | " << formatted("%.2f", f.seed_shift) << " |\n";
     }
     md << "\n✗ = not right on that seed. Commands: `projsurf detect --depth <frame>/depth.png --camera "
           "<frame>/camera.yaml --calib <label file> --gravity <label gravity> --seed <s>` (the label file holds the "
@@ -334,13 +329,13 @@ std::string labelledCsv(const std::vector<LabelledFrame> &frames) {
     std::ostringstream csv;
     csv << "frame,best_m2,area_m2,ratio,right,free,why,seed_areas_m2,seed_spread\n";
     for (const auto &f : frames) {
-        csv << f.name << "," << (f.label.best.found ? fmt("%.4f", f.label.best.area()) : "") << ","
-            << (f.score.found ? fmt("%.4f", f.score.area) : "") << "," << fmt("%.4f", f.score.ratio) << ","
-            << (f.score.right ? "yes" : "no") << "," << fmt("%.3f", f.score.free_fraction) << ",\"" << f.score.why
+        csv << f.name << "," << (f.label.best.found ? formatted("%.4f", f.label.best.area()) : "") << ","
+            << (f.score.found ? formatted("%.4f", f.score.area) : "") << "," << formatted("%.4f", f.score.ratio) << ","
+            << (f.score.right ? "yes" : "no") << "," << formatted("%.3f", f.score.free_fraction) << ",\"" << f.score.why
             << "\",";
         for (std::size_t i = 0; i < f.seeds.size(); ++i)
-            csv << (i ? " " : "") << f.seeds[i].seed << ":" << fmt("%.4f", f.seeds[i].area);
-        csv << "," << fmt("%.4f", f.seed_spread) << "\n";
+            csv << (i ? " " : "") << f.seeds[i].seed << ":" << formatted("%.4f", f.seeds[i].area);
+        csv << "," << formatted("%.4f", f.seed_spread) << "\n";
     }
     return csv.str();
 }

@@ -9,6 +9,7 @@
 #include "eval/scoring.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/scenarios_realistic.hpp"
+#include "projsurf/types/formatted.hpp"
 
 namespace projsurf::sim {
 
@@ -137,12 +138,6 @@ std::vector<SensorKind> kindsIn(const RealisticSuiteResult &result) {
     return kinds;
 }
 
-std::string fmt(const char *f, double v) {
-    char b[64];
-    std::snprintf(b, sizeof b, f, v);
-    return b;
-}
-
 }  // namespace
 
 std::string realisticSuiteMarkdown(const RealisticSuiteResult &result) {
@@ -157,7 +152,7 @@ std::string realisticSuiteMarkdown(const RealisticSuiteResult &result) {
     for (SensorKind k : kinds) {
         const SensorTotals t = sensorTotals(result, k);
         md << "| " << sensorName(k) << " | " << t.rounds << " | "
-           << fmt("%.1f %%", t.rounds ? 100.0 * t.success / t.rounds : 0.0) << " | " << t.scenes_ok << " / " << t.scenes
+           << formatted("%.1f %%", t.rounds ? 100.0 * t.success / t.rounds : 0.0) << " | " << t.scenes_ok << " / " << t.scenes
            << " |\n";
     }
     md << "\nPer scene and sensor: success % (rounds found / valid / successful), mean found area (m²); and the "
@@ -169,16 +164,16 @@ std::string realisticSuiteMarkdown(const RealisticSuiteResult &result) {
     md << "---|\n";
     for (std::size_t i = 0; i < result.rows.size();) {
         const RealisticCase &c = result.rows[i].scene;
-        md << "| " << c.scenario << " | " << fmt("%.1f m", c.distance) << " | " << fmt("%.0f°", c.angle_deg) << " | "
-           << fmt("%.2f m²", result.rows[i].best_area) << " |";
+        md << "| " << c.scenario << " | " << formatted("%.1f m", c.distance) << " | " << formatted("%.0f°", c.angle_deg) << " | "
+           << formatted("%.2f m²", result.rows[i].best_area) << " |";
         std::string failures;
         std::size_t j = i;
         for (; j < result.rows.size() && result.rows[j].scene.scenario == c.scenario &&
                result.rows[j].scene.distance == c.distance && result.rows[j].scene.angle_deg == c.angle_deg;
              ++j) {
             const RealisticRow &r = result.rows[j];
-            md << " " << fmt("%.0f", r.successPct()) << " (" << r.found << "/" << r.valid << "/" << r.success << "), "
-               << fmt("%.2f", r.mean_area) << " |";
+            md << " " << formatted("%.0f", r.successPct()) << " (" << r.found << "/" << r.valid << "/" << r.success << "), "
+               << formatted("%.2f", r.mean_area) << " |";
             if (!r.failure.empty())
                 failures += (failures.empty() ? "" : "; ") + sensorName(r.sensor) + ": " + r.failure;
         }
@@ -193,10 +188,10 @@ std::string realisticSuiteSummary(const RealisticSuiteResult &result) {
     s << "realistic suite:";
     for (SensorKind k : kindsIn(result)) {
         const SensorTotals t = sensorTotals(result, k);
-        s << " " << sensorName(k) << " " << fmt("%.1f%%", t.rounds ? 100.0 * t.success / t.rounds : 0.0) << " ("
+        s << " " << sensorName(k) << " " << formatted("%.1f%%", t.rounds ? 100.0 * t.success / t.rounds : 0.0) << " ("
           << t.scenes_ok << "/" << t.scenes << " scenes >= 98%)";
     }
-    s << ", " << result.rounds << " rounds, " << fmt("%.0f s", result.seconds);
+    s << ", " << result.rounds << " rounds, " << formatted("%.0f s", result.seconds);
     return s.str();
 }
 

@@ -1,6 +1,8 @@
 // `--gravity auto` on the labelled real frames: the angle between the floor's down and the
-// label's gravity, printed per frame (the table in docs/wall_model.md, "Gravity from the floor"),
-// and bounded on the frames whose label gravity is the floor's.
+// label's gravity, printed per frame (the table in docs/wall_model.md, "Gravity from the floor").
+// Most labels store an earlier floor estimate (source: auto), so on them this is a regression
+// guard (the estimate stays within 1 deg of the stored one), not a check against independent
+// truth; the frames listed are those where it held when the refit was made.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,9 +20,35 @@ namespace fs = std::filesystem;
 using namespace projsurf;
 
 namespace {
-// Frames whose label gravity is the floor's (not turned to walls or furniture, see each note)
-// and on which the floor estimate is within the bound.
-const std::set<std::string> kFloorBounded = {"7scenes_3dm_redkitchen_000008", "7scenes_3dm_redkitchen_000057", "7scenes_redkitchen_000450", "7scenes_redkitchen_000750", "7scenes_redkitchen_000850", "cape_tunnel_structure_wall_0000", "nyu_basement_metric3d_00000", "nyu_basement_metric3d_00050", "nyu_basement_metric3d_00100", "nyu_o3d_basement_closet", "nyu_rgbdtut_cafe_counter", "pcl_five_people_lab", "peac_stairs_wall", "realsense_floorlevel_bedroom_wall", "slambook_diningroom_2", "slambook_diningroom_5", "sun3d_3dm_cubicles_000935", "sun3d_3dm_cubicles_000984", "sun3d_nvblox_studyroom_000116", "sunrgbd_o3d_office_corridor", "tum_fr3_cabinet_cubeslam_0000", "tum_fr3_cabinet_cubeslam_0020", "tum_o3d_fr3_office_partition", "ufsec_livingroom_sofa_1", };
+// Frames whose label gravity is the floor's (source: auto, not turned to walls or furniture)
+// and on which the estimate was within the bound (bundlefusion_copyroom_000000 at 1.69 deg and
+// tum_fr3_cabinet_cubeslam_0040 at 1.07 deg were not).
+const std::set<std::string> kFloorBounded = {
+    "7scenes_3dm_redkitchen_000008",
+    "7scenes_3dm_redkitchen_000057",
+    "7scenes_redkitchen_000450",
+    "7scenes_redkitchen_000750",
+    "7scenes_redkitchen_000850",
+    "cape_tunnel_structure_wall_0000",
+    "nyu_basement_metric3d_00000",
+    "nyu_basement_metric3d_00050",
+    "nyu_basement_metric3d_00100",
+    "nyu_o3d_basement_closet",
+    "nyu_rgbdtut_cafe_counter",
+    "pcl_five_people_lab",
+    "peac_stairs_wall",
+    "realsense_floorlevel_bedroom_wall",
+    "slambook_diningroom_2",
+    "slambook_diningroom_5",
+    "sun3d_3dm_cubicles_000935",
+    "sun3d_3dm_cubicles_000984",
+    "sun3d_nvblox_studyroom_000116",
+    "sunrgbd_o3d_office_corridor",
+    "tum_fr3_cabinet_cubeslam_0000",
+    "tum_fr3_cabinet_cubeslam_0020",
+    "tum_o3d_fr3_office_partition",
+    "ufsec_livingroom_sofa_1",
+};
 constexpr double kBoundDeg = 1.0;  // deg: issue target for `--gravity auto` where the floor is visible
 }  // namespace
 

@@ -57,8 +57,8 @@ struct WallConfig {
     /// the plane by less than refit_min_turn (rad) and moves it by less than refit_min_shift (m)
     /// ends them.
     int plane_refits = 1;
-    double refit_min_turn = 0.0087;  // 0.5 deg: a quarter of the 2 deg an upright picture may lean
-    double refit_min_shift = 0.005;
+    double refit_min_turn = 0.0087;  ///< rad, 0.5 deg: a quarter of the 2 deg an upright picture may lean
+    double refit_min_shift = 0.005;  ///< m, measured on the labelled real frames (docs/wall_model.md)
 };
 
 /// Default method, stage 3: where on a plane the camera saw free wall (paper 3.2.2).

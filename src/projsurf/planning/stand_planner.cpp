@@ -8,26 +8,21 @@
 #include "projsurf/planning/floor_occupancy.hpp"
 #include "projsurf/planning/plan_surfaces.hpp"
 #include "projsurf/planning/stance_search.hpp"
+#include "projsurf/types/formatted.hpp"
 
 namespace projsurf {
 namespace {
-
-std::string metres(const char *format, double v) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
 
 /// What keeps the best picture from being larger.
 std::string limitOf(const PlanOptions &o, const StanceSearch &s, const Rectangle &picture, const Stance &stance) {
     double far = 0.0;
     for (const auto &c : picture.corners) far = std::max(far, (c - stance.translation).norm());
     if (far >= o.max_distance - 2.0 * o.cell)
-        return metres("range: the picture's far corner is at the depth camera's %.1f m", o.max_distance);
+        return formatted("range: the picture's far corner is at the depth camera's %.1f m", o.max_distance);
     if (s.blocked_area > 1.05 * picture.area())
-        return metres("floor space: stances the floor refuses would show %.2f m^2", s.blocked_area);
+        return formatted("floor space: stances the floor refuses would show %.2f m^2", s.blocked_area);
     if (stance.move() >= o.max_move - 0.5 * std::max(o.step, o.max_move / 8.0))
-        return metres("--max-move: the move is %.2f m long", stance.move());
+        return formatted("--max-move: the move is %.2f m long", stance.move());
     return "the wall's extent: the free surface seen holds no larger picture";
 }
 
@@ -37,8 +32,8 @@ std::string reasonOf(const PlanOptions &o, const StanceSearch &s, int surfaces) 
     if (s.positions > 1 && s.occupied == s.positions - 1)
         return "floor space: every position within --max-move but today's is occupied";
     if (o.width > 0.0)
-        return metres("no stance within --max-move shows a picture %.2f m wide", o.width) +
-               metres(" (the widest is %.2f m)", s.widest);
+        return formatted("no stance within --max-move shows a picture %.2f m wide", o.width) +
+               formatted(" (the widest is %.2f m)", s.widest);
     return "no reachable stance shows a picture on a surface seen";
 }
 

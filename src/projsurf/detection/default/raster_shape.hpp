@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <vector>
 
-#include "projsurf/detection/outline_raster.hpp"
 #include "projsurf/detection/default/wall_shape.hpp"
+#include "projsurf/detection/outline_raster.hpp"
 
 namespace projsurf {
 
@@ -32,28 +32,14 @@ struct RasterShape {
         last_col = static_cast<float>(raster.cols - 1);
         last_row = static_cast<float>(raster.rows - 1);
         relief.resize(static_cast<std::size_t>(raster.rows) * raster.cols);
-        // Bilinear in the node grid: the column weights once, then each row from two node rows.
+        // The column intervals once, then each row from two node rows.
         const WallRelief &g = s.relief;
-        auto node = [](double f, int n, int &i, float &a) {
-            f = std::min(double(n - 1), std::max(0.0, f));
-            i = std::min(static_cast<int>(f), n - 2);
-            a = static_cast<float>(f - i);
-        };
-        std::vector<int> ci(raster.cols);
-        std::vector<float> ca(raster.cols);
-        for (int c = 0; c < raster.cols; ++c)
-            node((raster.top_left.x() + (c + 0.5) * raster.cell - g.origin.x()) / g.spacing, g.nu, ci[c], ca[c]);
+        std::vector<WallRelief::Axis> u(raster.cols);
+        for (int c = 0; c < raster.cols; ++c) u[c] = g.uAxis(raster.top_left.x() + (c + 0.5) * raster.cell);
         for (int r = 0; r < raster.rows; ++r) {
-            int j;
-            float b;
-            node((raster.top_left.y() - (r + 0.5) * raster.cell - g.origin.y()) / g.spacing, g.nv, j, b);
-            const float *r0 = g.h.data() + static_cast<std::size_t>(j) * g.nu, *r1 = r0 + g.nu;
+            const WallRelief::Axis v = g.vAxis(raster.top_left.y() - (r + 0.5) * raster.cell);
             float *out = relief.data() + static_cast<std::size_t>(r) * cols;
-            for (int c = 0; c < raster.cols; ++c) {
-                const int i = ci[c];
-                const float a = ca[c];
-                out[c] = (1.0f - b) * ((1.0f - a) * r0[i] + a * r0[i + 1]) + b * ((1.0f - a) * r1[i] + a * r1[i + 1]);
-            }
+            for (int c = 0; c < raster.cols; ++c) out[c] = static_cast<float>(g.at(u[c], v));
         }
     }
     /// Height (m) above the plane at raster position (col, row); beyond the raster the relief

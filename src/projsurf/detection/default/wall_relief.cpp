@@ -7,19 +7,6 @@
 namespace projsurf {
 namespace {
 
-/// Node cell (i, j) and the bilinear fractions (a, b) of a point, clamped to the grid.
-struct NodeCell {
-    int i, j;
-    double a, b;
-};
-
-NodeCell nodeCell(const WallRelief &g, const Eigen::Vector2d &uv) {
-    const double fu = std::min(double(g.nu - 1), std::max(0.0, (uv.x() - g.origin.x()) / g.spacing));
-    const double fv = std::min(double(g.nv - 1), std::max(0.0, (uv.y() - g.origin.y()) / g.spacing));
-    const int i = std::min(static_cast<int>(fu), g.nu - 2), j = std::min(static_cast<int>(fv), g.nv - 2);
-    return {i, j, fu - i, fv - j};
-}
-
 double median(std::vector<double> v) {
     if (v.empty()) return 0.0;
     std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
@@ -40,8 +27,7 @@ WallRelief fitWallRelief(const std::vector<ReliefSample> &samples, double focal_
         hi = hi.cwiseMax(s.uv);
     }
     const double extent = (hi - lo).maxCoeff();
-    const double spacing =
-        std::max(opt.node_px * median(depths) / focal_px, extent / std::max(1, opt.max_nodes - 1));
+    const double spacing = std::max(opt.node_px * median(depths) / focal_px, extent / std::max(1, opt.max_nodes - 1));
     if (!(spacing > 1e-4) || !std::isfinite(extent)) return g;
     g.origin = lo;
     g.spacing = spacing;
@@ -55,15 +41,15 @@ WallRelief fitWallRelief(const std::vector<ReliefSample> &samples, double focal_
         num.setTo(0.0);
         den.setTo(0.0);
         for (const ReliefSample &s : samples) {
-            const double t = (s.r - g.at(s.uv)) / (opt.tukey_bands * s.band);
+            const WallRelief::Axis u = g.uAxis(s.uv.x()), v = g.vAxis(s.uv.y());
+            const double t = (s.r - (g.empty() ? 0.0 : g.at(u, v))) / (opt.tukey_bands * s.band);
             if (!(std::abs(t) < 1.0)) continue;
             const double w = (1.0 - t * t) * (1.0 - t * t);
-            const NodeCell c = nodeCell(g, s.uv);
-            const double wn[4] = {(1 - c.a) * (1 - c.b), c.a * (1 - c.b), (1 - c.a) * c.b, c.a * c.b};
+            const double wn[4] = {(1 - u.a) * (1 - v.a), u.a * (1 - v.a), (1 - u.a) * v.a, u.a * v.a};
             const int di[4] = {0, 1, 0, 1}, dj[4] = {0, 0, 1, 1};
             for (int k = 0; k < 4; ++k) {
-                num.at<double>(c.j + dj[k], c.i + di[k]) += wn[k] * w * s.r;
-                den.at<double>(c.j + dj[k], c.i + di[k]) += wn[k] * w;
+                num.at<double>(v.i + dj[k], u.i + di[k]) += wn[k] * w * s.r;
+                den.at<double>(v.i + dj[k], u.i + di[k]) += wn[k] * w;
             }
         }
         // Normalised convolution: zeros beyond the grid carry no weight.

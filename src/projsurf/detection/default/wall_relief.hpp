@@ -19,17 +19,27 @@ struct WallRelief {
     int nu = 0, nv = 0;
     std::vector<float> h;  ///< nv x nu, row j = v index
 
-    bool empty() const { return h.empty(); }
-    double at(const Eigen::Vector2d &uv) const {
-        if (h.empty()) return 0.0;
-        // Clamped into the grid (NaN reads node 0): max before min, the constant first.
-        const double fu = std::min(double(nu - 1), std::max(0.0, (uv.x() - origin.x()) / spacing));
-        const double fv = std::min(double(nv - 1), std::max(0.0, (uv.y() - origin.y()) / spacing));
-        const int i = std::min(static_cast<int>(fu), nu - 2), j = std::min(static_cast<int>(fv), nv - 2);
-        const double a = fu - i, b = fv - j;
-        const float *r0 = h.data() + static_cast<std::size_t>(j) * nu + i, *r1 = r0 + nu;
-        return (1.0 - b) * ((1.0 - a) * r0[0] + a * r0[1]) + b * ((1.0 - a) * r1[0] + a * r1[1]);
+    /// Where a coordinate falls along one axis of `n` nodes (`f` in node units): the node
+    /// interval `i` and the fraction `a` into it, clamped to the grid (NaN reads node 0).
+    struct Axis {
+        int i;
+        double a;
+    };
+    static Axis axis(double f, int n) {
+        f = std::min(double(n - 1), std::max(0.0, f));  // max before min, the constant first: NaN -> 0
+        const int i = std::min(static_cast<int>(f), n - 2);
+        return {i, f - i};
     }
+    Axis uAxis(double u) const { return axis((u - origin.x()) / spacing, nu); }
+    Axis vAxis(double v) const { return axis((v - origin.y()) / spacing, nv); }
+    /// The bilinear value in node interval (u.i, v.i).
+    double at(const Axis &u, const Axis &v) const {
+        const float *r0 = h.data() + static_cast<std::size_t>(v.i) * nu + u.i, *r1 = r0 + nu;
+        return (1.0 - v.a) * ((1.0 - u.a) * r0[0] + u.a * r0[1]) + v.a * ((1.0 - u.a) * r1[0] + u.a * r1[1]);
+    }
+
+    bool empty() const { return h.empty(); }
+    double at(const Eigen::Vector2d &uv) const { return h.empty() ? 0.0 : at(uAxis(uv.x()), vAxis(uv.y())); }
 };
 
 struct WallReliefOptions {
