@@ -11,11 +11,13 @@
 
 #include "projsurf/detection/colour/colour_registration.hpp"
 #include "eval/label_overlay.hpp"
+#include "eval/label_reference.hpp"
 #include "eval/plot.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/yaml_files.hpp"
+#include "projsurf/sim/scenarios.hpp"
 #include "projsurf/types/formatted.hpp"
 
 namespace fs = std::filesystem;
@@ -97,6 +99,33 @@ ColourRun runWithColour(const LabelledFrame &f, const std::string &dir, const Ca
     return c;
 }
 
+/// The detector with the example calibration's projector: validity against the label, and the
+/// reference search with the same projector to tell a miss from rightly nothing.
+ExampleRun runWithExampleProjector(const LabelledFrame &f, const std::string &dir, const CameraIntrinsics &camera,
+                                   const Cloud &cloud, const DetectorConfig &config, const cv::Mat &background) {
+    ExampleRun e;
+    RealLabel label = f.label;
+    label.projector = sim::exampleProjector();
+    e.reference = referenceBest(cloud, camera, label);
+    label.best = e.reference;
+    e.detection = detectRealFrame(dir, label.projector, config, f.label.gravity);
+    e.command = "projsurf detect --depth " + dir + "/depth.png --camera " + dir +
+                "/camera.yaml --calib examples/calib/example_calib.yaml --gravity " + vec(f.label.gravity) +
+                " --seed " + std::to_string(config.seed);
+    e.score = scoreRealRectangle(label, camera, e.detection.found, e.detection.rectangle);
+    e.off_surface = e.detection.found && !e.score.valid;
+    e.right = e.score.valid || (!e.detection.found && !e.reference.found);
+    cv::Mat img = renderLabelOverlay(background, label, camera, e.detection.found ? &e.detection.rectangle : nullptr);
+    std::string caption = f.name + " (example calibration): ";
+    if (!e.detection.found)
+        caption += "nothing found";
+    else
+        caption += formatted("%.3f m^2", e.detection.area) + (e.score.valid ? ", valid" : ", INVALID (" + e.score.why + ")");
+    caption += e.reference.found ? ", reference " + formatted("%.3f m^2", e.reference.area()) : ", reference: nothing";
+    e.overlay = withCaption(img, caption, 0.45);
+    return e;
+}
+
 }  // namespace
 
 std::vector<unsigned> stabilitySeeds() { return {1, 2, 3, 4, 5, 42}; }
@@ -154,6 +183,7 @@ LabelledFrame evaluateLabelledFrame(const std::string &label_path, const std::st
     caption += f.label.best.found ? ", label best " + formatted("%.3f m^2", f.label.best.area()) : ", no usable surface";
     f.overlay = withCaption(img, caption, 0.45);
     if (f.label.colour.judged) f.colour = runWithColour(f, dir, camera, cloud, cfg, background);
+    f.example = runWithExampleProjector(f, dir, camera, cloud, cfg, background);
     return f;
 }
 
@@ -181,6 +211,65 @@ std::string labelledSummaryLine(const LabelledSummary &s) {
                   "rectangle, invalid = 0); seed-stable %d of %d",
                   s.right, s.frames, s.median_ratio, s.worst_ratio, s.with_best, s.seed_stable, s.frames);
     return buf;
+}
+
+ExampleSummary summariseExample(const std::vector<LabelledFrame> &frames) {
+    ExampleSummary s;
+    for (const auto &f : frames) {
+        const ExampleRun &e = f.example;
+        ++s.frames;
+        s.right += e.right;
+        s.valid += e.score.valid;
+        s.off_surface += e.off_surface;
+        s.missed += !e.detection.found && e.reference.found;
+        s.rightly_none += !e.detection.found && !e.reference.found;
+    }
+    return s;
+}
+
+std::string exampleSummaryLine(const ExampleSummary &s) {
+    using std::to_string;
+    return "labelled real frames, example calibration: " + to_string(s.right) + " of " + to_string(s.frames) +
+           " right; " + to_string(s.valid) + " valid, " + to_string(s.off_surface) +
+           " off the labelled surfaces (furniture, obstacles), " + to_string(s.missed) + " missed, " +
+           to_string(s.rightly_none) + " rightly nothing";
+}
+
+std::string exampleReportMarkdown(const std::vector<LabelledFrame> &frames, const std::string &pictures) {
+    std::ostringstream md;
+    md << "### With the example calibration\n\n"
+          "The same frames with one projector for all, `examples/calib/example_calib.yaml` (what a user has before "
+          "calibrating), and the label's gravity. Judged for validity only: a rectangle must be valid on a labelled "
+          "surface as above (so not on furniture, a person or an obstacle: the target is none off the labelled "
+          "surfaces); nothing found is right where the reference search with this projector (blue) finds no usable "
+          "surface either, a *miss* otherwise.\n\n";
+    md << "**" << exampleSummaryLine(summariseExample(frames)) << ".**\n\n";
+    md << "| Frame | reference (m²) | detector (m²) | right | free % | surface | why not |\n|---|---:|---:|---|---:|---|---|\n";
+    for (const auto &f : frames) {
+        const ExampleRun &e = f.example;
+        md << "| [" << f.name << "](" << pictures << "/" << f.name << "_example.png) | "
+           << (e.reference.found ? formatted("%.3f", e.reference.area()) : "none") << " | "
+           << (e.detection.found ? formatted("%.3f", e.detection.area) : "—") << " | "
+           << (e.right ? "yes" : e.off_surface ? "**no: off**" : "**no: miss**") << " | "
+           << (e.detection.found ? formatted("%.0f", 100.0 * e.score.free_fraction) : "") << " | " << e.score.surface
+           << " | " << (e.score.valid || !e.detection.found ? "" : e.score.why) << " |\n";
+    }
+    md << "\nCommand: `projsurf detect --depth <frame>/depth.png --camera <frame>/camera.yaml --calib "
+          "examples/calib/example_calib.yaml --gravity <label gravity>`.\n\n";
+    return md.str();
+}
+
+std::string exampleCsv(const std::vector<LabelledFrame> &frames) {
+    std::ostringstream csv;
+    csv << "frame,reference_m2,area_m2,right,off_surface,free,surface,why\n";
+    for (const auto &f : frames) {
+        const ExampleRun &e = f.example;
+        csv << f.name << "," << (e.reference.found ? formatted("%.4f", e.reference.area()) : "") << ","
+            << (e.detection.found ? formatted("%.4f", e.detection.area) : "") << "," << (e.right ? "yes" : "no") << ","
+            << (e.off_surface ? "yes" : "no") << "," << formatted("%.3f", e.score.free_fraction) << "," << e.score.surface
+            << ",\"" << (e.score.valid ? "" : e.score.why) << "\"\n";
+    }
+    return csv.str();
 }
 
 ColourSummary summariseColour(const std::vector<LabelledFrame> &frames) {
@@ -321,6 +410,7 @@ std::string labelledReportMarkdown(const std::vector<LabelledFrame> &frames, con
     md << "\n✗ = not right on that seed. Commands: `projsurf detect --depth <frame>/depth.png --camera "
           "<frame>/camera.yaml --calib <label file> --gravity <label gravity> --seed <s>` (the label file holds the "
           "projector block of a calibration file).\n\n";
+    md << exampleReportMarkdown(frames, pictures);
     md << colourReportMarkdown(frames, pictures);
     return md.str();
 }
@@ -346,8 +436,11 @@ void writeLabelledPictures(const std::string &dir, const std::vector<LabelledFra
     writeFileAtomic((fs::path(dir) / "results.csv").string(), labelledCsv(frames));
     if (summariseColour(frames).judged > 0)
         writeFileAtomic((fs::path(dir) / "colour_results.csv").string(), colourCsv(frames));
+    writeFileAtomic((fs::path(dir) / "example_results.csv").string(), exampleCsv(frames));
     std::vector<cv::Mat> panels;
     for (const auto &f : frames) {
+        if (!f.example.overlay.empty())
+            writeImageAtomic((fs::path(dir) / (f.name + "_example.png")).string(), f.example.overlay);
         if (!f.colour.overlay.empty())
             writeImageAtomic((fs::path(dir) / (f.name + "_colour.png")).string(), f.colour.overlay);
         if (f.overlay.empty()) continue;

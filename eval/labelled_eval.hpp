@@ -37,6 +37,21 @@ struct ColourRun {
     cv::Mat overlay;           ///< BGR: renderColourLabelOverlay
 };
 
+/// The frame once more with the example calibration's projector (sim::exampleProjector(), as
+/// examples/calib/example_calib.yaml) and the label's gravity: a user's first run, one projector
+/// for every frame. Scored for validity only: a found rectangle must be valid on a labelled
+/// surface (not on furniture, a person or an obstacle); nothing found is right where the
+/// reference search with that projector finds no usable surface either.
+struct ExampleRun {
+    GalleryEntry detection;
+    RealScore score;        ///< against the label (its best is the label projector's: ratio unused)
+    LabelBest reference;    ///< the reference search with the example projector
+    bool right = false;     ///< valid, or nothing found where the reference finds nothing
+    bool off_surface = false;  ///< found but not valid: the answer the target forbids
+    std::string command;    ///< the equivalent `projsurf detect` command line
+    cv::Mat overlay;        ///< BGR: label polygons, reference (blue), detector (magenta)
+};
+
 struct LabelledFrame {
     std::string name;  ///< frame folder name
     std::string label_path;
@@ -50,6 +65,7 @@ struct LabelledFrame {
     std::string command;  ///< the equivalent `projsurf detect` command line
     cv::Mat overlay;      ///< BGR: label polygons, label best (blue), detector (magenta)
     ColourRun colour;
+    ExampleRun example;
 };
 
 struct LabelledSummary {
@@ -58,6 +74,16 @@ struct LabelledSummary {
     int with_best = 0;                             ///< frames whose label has a best rectangle
     double median_ratio = 0.0, worst_ratio = 0.0;  ///< over frames with a best (invalid = 0)
     int seed_stable = 0;                           ///< spread <= 2 % and the same validity on every seed
+};
+
+/// Over every frame, the example-calibration runs.
+struct ExampleSummary {
+    int frames = 0;
+    int right = 0;
+    int valid = 0;        ///< found and valid
+    int off_surface = 0;  ///< found and not valid (target: 0)
+    int missed = 0;       ///< nothing found where the reference finds a surface
+    int rightly_none = 0; ///< nothing found and the reference finds nothing
 };
 
 /// Over the frames judged on colour: how often each answer is right against the colour-aware
@@ -86,6 +112,15 @@ LabelledSummary summariseLabelled(const std::vector<LabelledFrame> &frames);
 /// rectangle); seed-stable 19 of 23".
 std::string labelledSummaryLine(const LabelledSummary &summary);
 
+ExampleSummary summariseExample(const std::vector<LabelledFrame> &frames);
+/// "labelled real frames, example calibration: 25 of 30 right; 20 valid, 2 off the labelled
+/// surfaces, 3 missed, 5 rightly nothing".
+std::string exampleSummaryLine(const ExampleSummary &summary);
+/// The example-calibration table (Markdown; part of labelledReportMarkdown).
+/// Frame, reference area, detector area, right, off surface, free share, surface, why (CSV).
+std::string exampleCsv(const std::vector<LabelledFrame> &frames);
+std::string exampleReportMarkdown(const std::vector<LabelledFrame> &frames, const std::string &pictures);
+
 ColourSummary summariseColour(const std::vector<LabelledFrame> &frames);
 /// "labelled real frames with colour: 15 judged (14 with registered colour); right 9 with colour,
 /// 9 depth only; of the 11 with a usable surface, on clean wall ... 11 with colour, 11 depth only; ...".
@@ -103,7 +138,8 @@ std::string labelledCsv(const std::vector<LabelledFrame> &frames);
 /// colour): area, ratio, right, share over unsuitable polygons (CSV with a header line).
 std::string colourCsv(const std::vector<LabelledFrame> &frames);
 /// Writes dir/<frame>.png per frame, dir/contact_sheet.png and dir/results.csv, and for the
-/// frames judged on colour dir/<frame>_colour.png and dir/colour_results.csv; `dir` is created.
+/// frames judged on colour dir/<frame>_colour.png and dir/colour_results.csv, and dir/<frame>_example.png and
+/// dir/example_results.csv; `dir` is created.
 void writeLabelledPictures(const std::string &dir, const std::vector<LabelledFrame> &frames);
 
 }  // namespace projsurf

@@ -55,6 +55,7 @@ struct EvalOptions {
     double square_m = 0.075;
     double published_square = 75;
     bool plan_only = false;       // only the plan suite (where to stand)
+    bool labelled_only = false;   // only the labelled real frames
 };
 
 /// Our chessboard calibration of a procam-calibration folder beside its calibration_result.xml.
@@ -162,6 +163,56 @@ void runPlanTable(const EvalOptions &o) {
     writeSuiteTable(o, "plan.md", sim::planSuiteMarkdown(rows), sim::planSuiteSummary(rows));
 }
 
+/// The labelled real frames, each with the label's projector and gravity and again with the
+/// example calibration.
+std::vector<LabelledFrame> runLabelled(const std::vector<std::string> &labels,
+                                       const std::vector<std::string> &label_frames, const std::string &real_dir,
+                                       bool labels_dir_given, const sim::Progress &progress) {
+    std::vector<LabelledFrame> labelled;
+    std::error_code ec;
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        // The default labels go with the default frames: a --real-dir of other frames skips them.
+        if (!labels_dir_given && !fs::is_directory(fs::path(real_dir) / label_frames[i], ec)) continue;
+        if (progress)
+            progress(static_cast<int>(i), static_cast<int>(labels.size()),
+                     "labelled " + fs::path(labels[i]).stem().string());
+        labelled.push_back(evaluateLabelledFrame(labels[i], real_dir, DetectorConfig{}, stabilitySeeds()));
+    }
+    if (progress && !labelled.empty())
+        progress(static_cast<int>(labels.size()), static_cast<int>(labels.size()), "labelled frames");
+    return labelled;
+}
+
+void printLabelledLines(const std::vector<LabelledFrame> &labelled) {
+    if (labelled.empty()) return;
+    std::printf("%s\n", labelledSummaryLine(summariseLabelled(labelled)).c_str());
+    std::printf("%s\n", exampleSummaryLine(summariseExample(labelled)).c_str());
+    if (summariseColour(labelled).judged > 0) std::printf("%s\n", colourSummaryLine(summariseColour(labelled)).c_str());
+}
+
+/// The labelled real frames alone: DIR/labelled.md, DIR/labels/ and the summary lines.
+void runLabelledTable(const EvalOptions &o, const std::vector<std::string> &labels,
+                      const std::vector<std::string> &label_frames, const std::string &labels_dir) {
+    std::error_code ec;
+    if (o.real_dir.empty() || !fs::is_directory(o.real_dir, ec))
+        throw InputError(o.real_dir.empty() ? std::string("--real-dir") : o.real_dir,
+                         "no folder of real frames (--labelled-only needs them)");
+    if (labels.empty()) throw InputError(labels_dir.empty() ? std::string("--labels") : labels_dir, "no label files");
+    std::unique_ptr<frontend::ProgressLine> bar;
+    if (!o.no_progress) bar = std::make_unique<frontend::ProgressLine>("eval", "frames", true);
+    const sim::Progress progress =
+        !bar ? sim::Progress()
+             : sim::Progress([&bar](int done, int total, const std::string &what) { bar->update(done, total, what); });
+    const std::vector<LabelledFrame> labelled = runLabelled(labels, label_frames, o.real_dir, o.labels_dir_given, progress);
+    if (bar) bar->endLine();
+    fs::create_directories(o.out, ec);
+    if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
+    writeLabelledPictures((fs::path(o.out) / "labels").string(), labelled);
+    writeFileAtomic((fs::path(o.out) / "labelled.md").string(), labelledReportMarkdown(labelled, labels_dir, "labels"));
+    printLabelledLines(labelled);
+    std::printf("wrote %s/labelled.md\n", o.out.c_str());
+}
+
 void run(const EvalOptions &o, const std::string &command) {
     if (!o.procam.empty()) return runProcam(o);
     if (!o.json.empty()) throw InputError("--json", "only with --procam");
@@ -185,6 +236,7 @@ void run(const EvalOptions &o, const std::string &command) {
     if (o.colour_only) return runColourTable(o);
     if (o.realistic_only) return runRealisticTable(o);
     if (o.plan_only) return runPlanTable(o);
+    if (o.labelled_only) return runLabelledTable(o, labels, label_frames, labels_dir);
     // The default real-frame folder is taken from the working directory, and said (before the
     // long simulation) when it is not there.
     if (!o.real_dir_given && !fs::is_directory(o.real_dir, ec))
@@ -232,19 +284,10 @@ void run(const EvalOptions &o, const std::string &command) {
     info.real_dir = frames.empty() ? "" : real_dir;
 
     // Labelled real frames: each label's projector and gravity, scored against the label.
-    std::vector<LabelledFrame> labelled;
-    for (std::size_t i = 0; i < labels.size() && !frames.empty(); ++i) {
-        // The default labels go with the default frames: a --real-dir of other frames skips them.
-        if (!o.labels_dir_given && !fs::is_directory(fs::path(real_dir) / label_frames[i], ec)) continue;
-        if (progress)
-            progress(static_cast<int>(i), static_cast<int>(labels.size()),
-                     "labelled " + fs::path(labels[i]).stem().string());
-        labelled.push_back(evaluateLabelledFrame(labels[i], real_dir, DetectorConfig{}, stabilitySeeds()));
-    }
-    if (progress && !labelled.empty()) {
-        progress(static_cast<int>(labels.size()), static_cast<int>(labels.size()), "labelled frames");
-        bar->endLine();
-    }
+    const std::vector<LabelledFrame> labelled =
+        frames.empty() ? std::vector<LabelledFrame>{}
+                       : runLabelled(labels, label_frames, real_dir, o.labels_dir_given, progress);
+    if (bar && !labelled.empty()) bar->endLine();
     if (!labelled.empty()) {
         info.labelled = &labelled;
         info.labels_dir = labels_dir;
@@ -268,8 +311,7 @@ void run(const EvalOptions &o, const std::string &command) {
                 gallery.size(), o.out.c_str());
     std::printf("%s\n", sim::realisticSuiteSummary(realistic).c_str());
     std::printf("%s\n", sim::colourSuiteSummary(colour).c_str());
-    if (!labelled.empty()) std::printf("%s\n", labelledSummaryLine(summariseLabelled(labelled)).c_str());
-    if (summariseColour(labelled).judged > 0) std::printf("%s\n", colourSummaryLine(summariseColour(labelled)).c_str());
+    printLabelledLines(labelled);
     if (!o.quick) runProjectorTable(o);
 }
 
@@ -315,6 +357,13 @@ void addEvalCommand(CLI::App &app) {
         ->excludes("--projector-only")
         ->excludes("--colour-only")
         ->excludes("--realistic-only");
+    sub->add_flag("--labelled-only", o->labelled_only,
+                  "Only the labelled real frames (each with its label's projector and with the example calibration, "
+                  "scored against the label): DIR/labelled.md and DIR/labels/")
+        ->excludes("--projector-only")
+        ->excludes("--colour-only")
+        ->excludes("--realistic-only")
+        ->excludes("--plan-only");
     sub->callback([o, real, labels] {
         EvalOptions opts = *o;
         opts.real_dir_given = real->count() > 0;
