@@ -77,10 +77,10 @@ TEST(QuickStart, CalibrateStillNeedsCapturesWithoutWritePicture) {
 }
 
 TEST(QuickStart, TheReadmeCommandsRunFromAPlainClone) {
-    // Only what the repository holds: data/ (a real frame) and examples/calib.
+    // Only what the repository holds: data/ (a real frame and its calibration).
     const fs::path dir = freshDir("quick_start_clone");
     const std::string src = PROJSURF_SOURCE_DIR, frame = src + "/data/tum_o3d_fr3_office_partition",
-                      calib = src + "/examples/calib/example_calib.yaml";
+                      calib = frame + "/calib.yaml";
     CliRun r = cli("detect --depth " + frame + "/depth.png --camera " + frame + "/camera.yaml --rgb " + frame +
                        "/rgb.png --calib " + calib + " --gravity auto --aspect 16:9 --json " + (dir / "det.json").string() +
                        " --overlay " + (dir / "det.png").string(),

@@ -5,6 +5,7 @@
 #include "projsurf/detection/default/planar_regions.hpp"
 #include "projsurf/detection/colour/surface_suitability.hpp"
 #include "projsurf/detection/default/wall_shape.hpp"
+#include "projsurf/detection/default/face_surround.hpp"
 
 namespace projsurf {
 
@@ -61,6 +62,14 @@ struct WallConfig {
     double refit_min_shift = 0.005;  ///< m, measured on the labelled real frames (docs/wall_model.md)
 };
 
+/// Default method, stage 2: faces that stand free in the room (furniture, boxes, people) are
+/// objects, not projection surfaces (detection/default/face_surround.hpp); depth images only.
+struct ObjectFaceConfig {
+    bool avoid = true;  ///< skip faces that stand free; false takes any vertical face (the paper's behaviour)
+    FaceSurroundOptions surround;
+    FreeStandingRule rule;
+};
+
 /// Default method, stage 3: where on a plane the camera saw free wall (paper 3.2.2).
 struct FreeSpaceConfig {
     double cell = 0.01;  ///< m, raster cell (area error < 0.05 m^2 at 3 m, measured)
@@ -113,6 +122,7 @@ struct DetectorConfig {
     DepthTolerance tolerance;  ///< how far off a plane a reading may be (default method)
     PlaneSearchConfig planes;
     WallConfig wall;
+    ObjectFaceConfig objects;
     FreeSpaceConfig free_space;
     SurfaceCheckConfig check;
     SuitabilityConfig suitability;

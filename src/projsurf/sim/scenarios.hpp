@@ -52,9 +52,9 @@ const std::vector<std::string> &scenarioNames();
 ///  corner           a room corner: a second wall at right angles, at least 1 m right of the axis
 ///  desk             a desk (1.2 x 0.75 x 0.6 m, solid) against the wall, hiding its lower part
 /// The wall is projection surface 0 (the corner's side wall and the room behind the door are
-/// surface 1); the vertical faces of the closet, the desk and the big box (front and sides)
-/// are projection surfaces of their own; small boxes, the person, the
-/// poster and the floor are not (Quad::surface).
+/// surface 1); the vertical faces of the closet and the desk (front and sides) are projection
+/// surfaces of their own; the big box (an object standing free before the wall), small boxes,
+/// the person, the poster and the floor are not (Quad::surface).
 Scenario makeScenario(const std::string &name, double distance, double angle_deg);
 
 /// Rolls the camera (and the projector mounted on it) by `roll_deg` about its optical axis:

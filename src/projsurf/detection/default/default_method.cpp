@@ -9,6 +9,7 @@
 
 #include "projsurf/types/camera.hpp"
 #include "projsurf/detection/image_boxes.hpp"
+#include "projsurf/detection/default/face_surround.hpp"
 #include "projsurf/detection/default/observed_free_space.hpp"
 #include "projsurf/detection/default/planar_regions.hpp"
 #include "projsurf/detection/point_sampling.hpp"
@@ -183,6 +184,13 @@ void shapeWall(const Cloud &cloud, const CloudSample &s, const DetectorConfig &c
         if (!fitShape(cloud, s, cfg, moved) || moved.inliers <= c.inliers) return;
         c = std::move(moved);
     }
+}
+
+/// A face that stands free in the room (an object on the scene, not a wall); depth images only.
+bool standsFree(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cfg, const PlaneCandidate &c) {
+    if (!cfg.objects.avoid || !s.camera) return false;
+    const FaceSurround f = faceSurround(cloud, *s.camera, c.frame, c.inlier_indices, c.tolerance, cfg.objects.surround);
+    return standsFree(f, cfg.objects.rule);
 }
 
 /// The bounding box of the candidate's inliers in its plane coordinates (and its area).
@@ -386,6 +394,7 @@ struct Choice {
     const PlaneCandidate *checked = nullptr;
     SurfaceCheckResult check;
     std::vector<int> placed;
+    std::vector<int> objects;  ///< candidates skipped as faces that stand free
 };
 
 /// Stage 4: each wall's shape, free space (3.2.2), colour, rectangle and surface check (3.2.3),
@@ -401,8 +410,10 @@ Choice chooseCandidate(const Cloud &cloud, const CloudSample &s, const Projector
         // How the wall departs from its plane (the depth camera's bend) and its noise; on that
         // shape its points may reach further, so the raster is laid again.
         shapeWall(cloud, s, cfg, gravity, c);
-        const bool framed = frameCandidate(cloud, s, projector, cfg, aspect, c);
+        const bool object = standsFree(cloud, s, cfg, c);
+        const bool framed = !object && frameCandidate(cloud, s, projector, cfg, aspect, c);
         time.lap("wall_shape");
+        if (object) r.objects.push_back(k);
         if (!framed) continue;
         observeFreeSpace(cloud, scratch, projector, cfg, c);
         time.lap("free_space");
@@ -460,6 +471,8 @@ void describeAnswer(const DetectorConfig &cfg, const std::vector<PlaneCandidate>
         det.suitability = reportSuitability(cfg, *choice.chosen);
     } else if (usable.empty()) {
         det.reason = "the projector workspace does not reach any vertical plane in view";
+    } else if (placed.empty() && !choice.objects.empty()) {
+        det.reason = "the projector reaches only faces that stand free in the room (furniture, boxes, people), no wall";
     } else if (placed.empty()) {
         det.reason = "no free area for the picture on any vertical plane";
     } else {

@@ -1,0 +1,66 @@
+#pragma once
+// What the depth camera sees just beyond the edges of a vertical face, and whether the face
+// stands free in the room: furniture, a box or a person is bounded by open space (the camera
+// sees past the face's plane above it and beside it), while a wall meets a ceiling, another
+// wall or the edge of the view, all in front of its plane or beyond the image.
+#include <Eigen/Core>
+#include <vector>
+
+#include "projsurf/types/camera.hpp"
+#include "projsurf/types/cloud.hpp"
+#include "projsurf/types/depth_tolerance.hpp"
+#include "projsurf/types/plane_frame.hpp"
+
+namespace projsurf {
+
+/// The readings looked at beyond one edge of a face, one per position along it.
+struct EdgeView {
+    int past = 0;    ///< the ray beyond the edge ends behind the face's plane: open space there
+    int front = 0;   ///< it ends in front of the plane (a ceiling, a wall at a corner, an obstacle)
+    int on = 0;      ///< on the plane: the face goes on (or a surface in line with it)
+    int unseen = 0;  ///< beyond the image, behind the camera, or no reading
+    int seen() const { return past + front + on; }
+    int positions() const { return seen() + unseen; }
+    /// Of the positions that tell open space from a bounding surface (past or front), the share open.
+    double pastShare() const { return past + front > 0 ? static_cast<double>(past) / (past + front) : 0.0; }
+};
+
+struct FaceSurround {
+    EdgeView top, left, right;  ///< as seen facing the face (left and right on the viewer's side)
+    double width = 0.0, height = 0.0;  ///< m, the face's size: the median unbroken stretch per row / column
+};
+
+struct FaceSurroundOptions {
+    int bins = 16;              ///< positions along each edge (columns for the top, rows for the sides)
+    int min_bin_points = 3;     ///< face points a position needs for its edge to be taken there
+    double edge_quantile = 0.97;  ///< the edge at a position: this quantile of the face's points there (stray inliers)
+    std::vector<double> offsets = {0.04, 0.10, 0.20};  ///< m beyond the edge, looked at nearest first
+    double min_step = 0.05;     ///< m, a reading this far off the plane (and beyond the noise margin) is off it
+    int search_px = 2;          ///< px, a missing reading is looked for this far around its pixel
+    double max_gap = 0.10;      ///< m, a gap this wide between a face's points ends it (for its size)
+};
+
+/// What the camera sees beyond the top, left and right edges of the face made of `points`
+/// (indices into the organized `cloud`) on the plane of the upright `frame`. `camera` maps the
+/// cloud's points to their pixels.
+FaceSurround faceSurround(const Cloud &cloud, const CameraIntrinsics &camera, const PlaneFrame &frame,
+                          const std::vector<int> &points, const DepthTolerance &tolerance,
+                          const FaceSurroundOptions &options = {});
+
+struct FreeStandingRule {
+    double min_seen = 0.4;  ///< share of an edge's positions that must be past or front for it to count
+    double min_past = 0.6;  ///< share of those open behind (pastShare) for the edge to be open
+    /// A face at least this tall and wide serves like a wall even when it stands free: a
+    /// full-height wardrobe or closet front (paper 4.2 projects on one), taller than a person and
+    /// wider than a door.
+    double wall_height = 1.8;  ///< m
+    double wall_width = 0.8;   ///< m
+};
+
+/// A face stands free (an object on the scene, not a wall) when the camera sees past its plane
+/// above its top edge and beside at least one side: bounded by open space, not by a ceiling,
+/// walls or the view's border. Built-in fronts running to the ceiling or wall to wall do not,
+/// nor does a face of a wall's size (FreeStandingRule::wall_height, wall_width).
+bool standsFree(const FaceSurround &surround, const FreeStandingRule &rule = {});
+
+}  // namespace projsurf
