@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "cli_run.hpp"
+#include "projsurf/calibration/chessboard_pose.hpp"
 #include "projsurf/calibration/gray_code.hpp"
 
 namespace fs = std::filesystem;
@@ -78,6 +79,57 @@ TEST(ChessboardGrayCode, LowContrastPixelsAreLeftOpen) {
     EXPECT_EQ(decodeGray(captures, order, w, h).decoded, 0);  // 5 grey levels of contrast: shadow
 }
 
+/// A board's dark square as a camera sees it: a 512 x 256 framebuffer's top-left 128 x 64
+/// pixels, each over 2 x 2 camera pixels (procam-calibration's rig: 1.8), `gain` grey levels
+/// of the projector's light on 20 of ambient, Gaussian sensor noise of `sigma` levels (seeded).
+constexpr int kFbW = 512, kFbH = 256, kCamW = 256, kCamH = 128;
+std::vector<cv::Mat> darkSquare(const std::vector<GrayPattern> &order, double gain, double sigma) {
+    cv::RNG rng(7);
+    std::vector<cv::Mat> out;
+    for (const auto &p : order) {
+        const cv::Mat fb = grayPatternImage(p, kFbW, kFbH);
+        cv::Mat c(kCamH, kCamW, CV_8UC1);
+        for (int y = 0; y < kCamH; ++y)
+            for (int x = 0; x < kCamW; ++x)
+                c.at<uchar>(y, x) = cv::saturate_cast<uchar>(20.0 + gain * fb.at<uchar>(y / 2, x / 2) / 255.0 +
+                                                              rng.gaussian(sigma));
+        out.push_back(c);
+    }
+    return out;
+}
+
+TEST(ChessboardGrayCode, DarkSquaresDecodeFromTheirNeighbourhoodsMeans) {
+    // 6 grey levels of light under 1.5 of noise: a bit's pair alone is 2.8 sigma apart, too
+    // close to call for most pixels; their 3 x 3 means are 8.5 sigma apart.
+    const int w = kCamW, h = kCamH;
+    const auto order = openCvGrayPatterns(kFbW, kFbH);
+    const auto captures = darkSquare(order, 6.0, 1.5);
+    GrayDecodeConfig alone = boardDecodeConfig();
+    alone.pool_px = 0;
+    const GrayDecoding a = decodeGray(captures, order, kFbW, kFbH, alone);
+    const GrayDecoding d = decodeGray(captures, order, kFbW, kFbH, boardDecodeConfig());
+    EXPECT_LT(a.decoded, w * h / 2);
+    EXPECT_GT(d.decoded, 9 * w * h / 10);
+    EXPECT_EQ(d.decoded - a.decoded, d.pooled);
+    // Decoded where they are: within the 3 x 3 mean's reach (1 px) and the unresolved bits'.
+    int far = 0;
+    for (int y = 1; y + 1 < h; ++y)
+        for (int x = 1; x + 1 < w; ++x) {
+            const double u = d.column.at<double>(y, x), v = d.row.at<double>(y, x);
+            if (std::isnan(u)) continue;
+            far += std::abs(u - x / 2) > 2.5 || std::abs(v - y / 2) > 2.5;
+        }
+    EXPECT_LT(far, w * h / 100);
+}
+
+TEST(ChessboardGrayCode, NoiseWithoutTheProjectorsLightDecodesNothing) {
+    // No projector light at all, 2 levels of noise: the board's decoder (no fixed shadow level)
+    // still decodes nothing, alone or from the means.
+    const auto order = openCvGrayPatterns(kFbW, kFbH);
+    const GrayDecoding d = decodeGray(darkSquare(order, 0.0, 2.0), order, kFbW, kFbH, boardDecodeConfig());
+    EXPECT_LT(d.decoded, kCamW * kCamH / 1000);
+}
+
 TEST(ChessboardGrayCode, AnOrderMissingAPatternIsRefused) {
     auto order = openCvGrayPatterns(32, 16);
     order[1] = order[0];  // a pattern twice, its inverse never
@@ -136,5 +188,7 @@ TEST(ChessboardCalibrateReal, ProcamSampleDataBesideItsPublishedCalibration) {
     // Both devices' board corners agree with one rigid pose within the 0.5 px.
     EXPECT_LE(j["reprojection_rms_px"].get<double>(), 0.5);
     EXPECT_GT(j["decoded_board_share"].get<double>(), 0.5);
+    // The projector's principal point comes with its standard deviation.
+    EXPECT_GT(j["projector"]["sigma"]["cx"].get<double>(), 0.0);
     fs::remove_all(dir);
 }

@@ -162,6 +162,7 @@ void decodePass(const std::vector<cv::Mat> &grey, int width, int height, const G
             d.column.at<double>(y, x) = u;
             d.row.at<double>(y, x) = v;
             d.confidence.at<uchar>(y, x) = cv::saturate_cast<uchar>(std::max(1.0, 255.0 * weakest / direct));
+            d.direct.at<float>(y, x) = static_cast<float>(direct);
             ++d.decoded;
             if (pooled) ++d.pooled;
         }
@@ -203,6 +204,7 @@ GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, const std::vector<
     d.column = cv::Mat(size, CV_64F, cv::Scalar(nan));
     d.row = cv::Mat(size, CV_64F, cv::Scalar(nan));
     d.confidence = cv::Mat(size, CV_8U, cv::Scalar(0));
+    d.direct = cv::Mat(size, CV_32F, cv::Scalar(0));
     decodePass(grey, width, height, cfg, false, d);
     if (cfg.pool_px > 0) {
         // Pixels too dark to decode alone (a board's black squares): the same rules on the

@@ -57,6 +57,9 @@ struct GrayDecoding {
     /// share of the pixel's direct light (its largest |pattern - inverse|), times 255 (pattern and inverse: independent of gamma and of
     /// ambient light, which both add to or scale the pair alike).
     cv::Mat confidence;
+    /// CV_32F, grey levels: the pixel's direct light from the projector (its largest |pattern -
+    /// inverse|), 0 where not decoded.
+    cv::Mat direct;
     int decoded = 0;     ///< pixels with both
     int pooled = 0;      ///< of them, decoded from neighbourhood means (GrayDecodeConfig::pool_px)
 };
