@@ -80,7 +80,7 @@ std::string procamTable(const StereoFit &o, const PublishedProcam &p, const Proc
 }
 
 std::string procamJson(const StereoFit &o, const PublishedProcam &p, const ProcamComparison &c, double unit_m,
-                       double square_m, double share) {
+                       double square_m, double share, const std::vector<double> &pose_shares) {
     nlohmann::json j;
     j["projector"] = {{"fx", o.projector.fx},
                       {"fy", o.projector.fy},
@@ -103,6 +103,7 @@ std::string procamJson(const StereoFit &o, const PublishedProcam &p, const Proca
     j["camera_rms_px"] = o.camera.rms_px;
     j["projector_rms_px"] = o.projector.rms_px;
     j["decoded_board_share"] = share;
+    j["decoded_board_share_per_pose"] = pose_shares;
     const Eigen::Vector3d tp = p.translation * unit_m;
     j["published"] = {
         {"projector",

@@ -188,7 +188,15 @@ TEST(ChessboardCalibrateReal, ProcamSampleDataBesideItsPublishedCalibration) {
     // Both devices' board corners agree with one rigid pose within the 0.5 px.
     EXPECT_LE(j["reprojection_rms_px"].get<double>(), 0.5);
     EXPECT_GT(j["decoded_board_share"].get<double>(), 0.5);
-    // The projector's principal point comes with its standard deviation.
+    // The projector's principal point comes with its standard deviation, the share per pose.
     EXPECT_GT(j["projector"]["sigma"]["cx"].get<double>(), 0.0);
+    ASSERT_EQ(j["decoded_board_share_per_pose"].size(), 5u);
+    // A published XML that is not there: one line naming it, exit 2, no JSON written.
+    const auto bad = test::cli("eval --procam " + data.string() + " --published " + (dir / "none.xml").string() +
+                                   " --json " + (dir / "q.json").string(),
+                               dir, 300);
+    EXPECT_EQ(bad.status, 2) << bad.err;
+    EXPECT_NE(bad.err.find("none.xml"), std::string::npos) << bad.err;
+    EXPECT_FALSE(fs::exists(dir / "q.json"));
     fs::remove_all(dir);
 }

@@ -76,8 +76,13 @@ void runProcam(const EvalOptions &o) {
         std::printf("  %s: %s, %d/%d corners carried, board %.1f %% decoded\n", p.dir.c_str(),
                     p.board ? "board" : "no board", p.carried, p.corners, 100 * p.board_share);
     std::printf("\n%s", sim::procamTable(cal.fit, published, c, unit_m, o.square_m, cal.decoded_board_share).c_str());
-    if (!o.json.empty())
-        writeFileAtomic(o.json, sim::procamJson(cal.fit, published, c, unit_m, o.square_m, cal.decoded_board_share));
+    if (!o.json.empty()) {
+        std::vector<double> shares;
+        for (const auto &p : cal.poses)
+            if (p.board) shares.push_back(p.board_share);
+        writeFileAtomic(o.json,
+                        sim::procamJson(cal.fit, published, c, unit_m, o.square_m, cal.decoded_board_share, shares));
+    }
 }
 
 /// The 1-minute load average (Linux), NaN when unknown.
