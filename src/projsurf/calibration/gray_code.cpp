@@ -148,8 +148,9 @@ void decodePass(const std::vector<cv::Mat> &grey, int width, int height, const G
             mean_sum /= pairs;
             double var = 0;
             for (int i = 0; i < pairs; ++i) var += (sum[i] - mean_sum) * (sum[i] - mean_sum);
-            // var(p + q - white - black) is 4 sigma^2, var(p - q) is 2 sigma^2.
-            const double sigma = std::max(std::sqrt(var / std::max(1, pairs - 1) / 2.0),
+            // White + black is the same for every pair, so over the pairs the sum varies by the
+            // pattern's and the inverse's noise alone: 2 sigma^2, as p - q does.
+            const double sigma = std::max(std::sqrt(var / std::max(1, pairs - 1)),
                                           pooled ? kQuantisationNoise / (2 * cfg.pool_px + 1) : kQuantisationNoise);
             const double noise_margin = cfg.noise_sigmas * sigma;
             if (!(direct >= noise_margin) || !(direct > 0)) continue;  // the projector's light is not told from noise
