@@ -40,7 +40,8 @@ struct GrayDecodeConfig {
     double min_bit_margin = 0.25;
     /// |pattern - inverse| a bit needs, in the pixel's measured noise (the spread over the
     /// pairs of pattern + inverse - white - black, which complementary patterns make zero);
-    /// 3 sigma: about one bit in 700 decided by noise. The pixel's direct light must reach it too.
+    /// 3 sigma: a pair with no light between them passes it one time in 740. The pixel's direct
+    /// light must reach it too.
     double noise_sigmas = 3.0;
     int min_bits = 6;              ///< resolved most-significant bits needed per axis
     /// Camera px; > 0: pixels that do not decode alone are decoded again from the means of
@@ -54,8 +55,9 @@ struct GrayDecoding {
     cv::Mat column;      ///< CV_64F, framebuffer u, NaN where not decoded
     cv::Mat row;         ///< CV_64F, framebuffer v, NaN where not decoded
     /// CV_8U, 0 where not decoded; else the weakest resolved bit's |pattern - inverse| as a
-    /// share of the pixel's direct light (its largest |pattern - inverse|), times 255 (pattern and inverse: independent of gamma and of
-    /// ambient light, which both add to or scale the pair alike).
+    /// share of the pixel's direct light (its largest |pattern - inverse|), times 255 (pattern
+    /// and inverse: independent of gamma and of ambient light, which both add to or scale the
+    /// pair alike).
     cv::Mat confidence;
     /// CV_32F, grey levels: the pixel's direct light from the projector (its largest |pattern -
     /// inverse|), 0 where not decoded.
