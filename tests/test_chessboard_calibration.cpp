@@ -13,6 +13,7 @@
 #include "cli_run.hpp"
 #include "projsurf/calibration/chessboard_pose.hpp"
 #include "projsurf/calibration/gray_code.hpp"
+#include "projsurf/calibration/local_homography.hpp"
 
 namespace fs = std::filesystem;
 using namespace projsurf;
@@ -128,6 +129,40 @@ TEST(ChessboardGrayCode, NoiseWithoutTheProjectorsLightDecodesNothing) {
     const auto order = openCvGrayPatterns(kFbW, kFbH);
     const GrayDecoding d = decodeGray(darkSquare(order, 0.0, 2.0), order, kFbW, kFbH, boardDecodeConfig());
     EXPECT_LT(d.decoded, kCamW * kCamH / 1000);
+}
+
+TEST(ChessboardLocalHomography, OnlyTheWellLitPixelsCarryTheCorner) {
+    // A corner with two bright and two dark quadrants; the dark ones' decoded positions are
+    // off by 2 projector px (their light is mostly the bright neighbours', blurred in).
+    const cv::Point2f corner(20.3f, 20.7f);
+    const auto truth = [](double x, double y) { return cv::Point2d(100 + 0.55 * x, 50 + 0.52 * y); };
+    GrayDecoding d;
+    d.column = cv::Mat(41, 41, CV_64F);
+    d.row = cv::Mat(41, 41, CV_64F);
+    d.confidence = cv::Mat(41, 41, CV_8U, cv::Scalar(255));
+    d.direct = cv::Mat(41, 41, CV_32F);
+    for (int y = 0; y < 41; ++y)
+        for (int x = 0; x < 41; ++x) {
+            const bool bright = (x < corner.x) == (y < corner.y);
+            const cv::Point2d p = truth(x, y) + (bright ? cv::Point2d(0, 0) : cv::Point2d(2, 0));
+            d.column.at<double>(y, x) = p.x;
+            d.row.at<double>(y, x) = p.y;
+            d.direct.at<float>(y, x) = bright ? 80.f : 8.f;
+        }
+    const cv::Point2d want = truth(corner.x, corner.y);
+    LocalHomographyConfig lit;
+    lit.half_patch = 8;  // 17 x 17, as at 1280 camera px wide
+    const auto kept = cornersInProjector(d, {corner}, lit);
+    ASSERT_TRUE(kept[0].ok);
+    EXPECT_NEAR(kept[0].projector.x, want.x, 0.05);
+    EXPECT_NEAR(kept[0].projector.y, want.y, 0.05);
+    // Every pixel: the dark quadrants pull the corner by about half their offset.
+    LocalHomographyConfig all = lit;
+    all.min_direct_share = 0;
+    all.ransac_px = 5;
+    const auto pulled = cornersInProjector(d, {corner}, all);
+    ASSERT_TRUE(pulled[0].ok);
+    EXPECT_GT(std::abs(pulled[0].projector.x - want.x), 0.5);
 }
 
 TEST(ChessboardGrayCode, AnOrderMissingAPatternIsRefused) {
