@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <opencv2/calib3d.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <stdexcept>
 
@@ -163,6 +164,62 @@ TEST(ChessboardLocalHomography, OnlyTheWellLitPixelsCarryTheCorner) {
     const auto pulled = cornersInProjector(d, {corner}, all);
     ASSERT_TRUE(pulled[0].ok);
     EXPECT_GT(std::abs(pulled[0].projector.x - want.x), 0.5);
+}
+
+// Real captures (tests/data/procam_excerpt: a 160 x 160 crop of procam-calibration's pose 1,
+// MIT): the black squares decode only from their 3 x 3 means, and what decodes lies on the
+// board's plane: one camera-to-projector homography (fitted to the pixels decoded alone) within
+// a Gray-code misread's smallest error (a wrong resolved bit above the open ones: 16 px or more
+// here), closer for the pixels decoded alone, which resolve more bits.
+TEST(ChessboardGrayCode, RealCapturesDecodeTheDarkSquaresOnTheBoardsPlane) {
+    const fs::path dir = fs::path(PROJSURF_SOURCE_DIR) / "tests/data/procam_excerpt/capture_1";
+    std::vector<cv::Mat> captures;
+    for (int i = 0; i < 42; ++i) {
+        char name[32];
+        std::snprintf(name, sizeof name, "graycode_%02d.png", i);
+        captures.push_back(cv::imread((dir / name).string(), cv::IMREAD_GRAYSCALE));
+        ASSERT_FALSE(captures.back().empty()) << dir / name;
+    }
+    const auto order = openCvGrayPatterns(1024, 768);
+    GrayDecodeConfig alone = boardDecodeConfig();
+    alone.pool_px = 0;
+    const GrayDecoding a = decodeGray(captures, order, 1024, 768, alone);
+    const GrayDecoding d = decodeGray(captures, order, 1024, 768, boardDecodeConfig());
+    const double area = static_cast<double>(captures[0].total());
+    std::vector<cv::Point2f> cam, proj;
+    for (int y = 0; y < a.column.rows; ++y)
+        for (int x = 0; x < a.column.cols; ++x)
+            if (!std::isnan(a.column.at<double>(y, x))) {
+                cam.emplace_back(static_cast<float>(x), static_cast<float>(y));
+                proj.emplace_back(static_cast<float>(a.column.at<double>(y, x)),
+                                  static_cast<float>(a.row.at<double>(y, x)));
+            }
+    const cv::Mat h = cv::findHomography(cam, proj, cv::RANSAC, 2.0, cv::noArray(), 2000, 0.999);
+    ASSERT_FALSE(h.empty());
+    // Per pass (0: alone, 1: the 3 x 3 pass): decoded, within 2, 8 px, beyond 16 px.
+    int n[2][4] = {{0, 0, 0, 0}, {0, 0, 0, 0}};
+    for (int y = 0; y < d.column.rows; ++y)
+        for (int x = 0; x < d.column.cols; ++x) {
+            if (std::isnan(d.column.at<double>(y, x))) continue;
+            const cv::Vec3d q = cv::Matx33d(h) * cv::Vec3d(x, y, 1);
+            const double e = std::hypot(q[0] / q[2] - d.column.at<double>(y, x), q[1] / q[2] - d.row.at<double>(y, x));
+            int *c = n[std::isnan(a.column.at<double>(y, x)) ? 1 : 0];
+            ++c[0];
+            c[1] += e <= 2;
+            c[2] += e <= 8;
+            c[3] += e > 16;
+        }
+    std::printf("excerpt: decoded alone %.1f %%, with the 3 x 3 pass %.1f %%; within 2 / 8 px of the plane: alone "
+                "%.1f / %.1f %%, the pass's %.1f / %.1f %%; beyond 16 px: %d, %d\n",
+                100 * a.decoded / area, 100 * d.decoded / area, 100.0 * n[0][1] / n[0][0], 100.0 * n[0][2] / n[0][0],
+                100.0 * n[1][1] / std::max(1, n[1][0]), 100.0 * n[1][2] / std::max(1, n[1][0]), n[0][3], n[1][3]);
+    EXPECT_EQ(n[0][0], a.decoded);
+    EXPECT_LT(a.decoded, 0.7 * area);  // the black squares' pixels mostly not
+    EXPECT_GT(d.decoded, 0.85 * area);
+    EXPECT_GT(n[0][1], 0.9 * n[0][0]);
+    EXPECT_GT(n[0][2], 0.99 * n[0][0]);
+    EXPECT_GT(n[1][2], 0.98 * n[1][0]);
+    EXPECT_LE(n[0][3] + n[1][3], static_cast<int>(0.001 * d.decoded));  // misreads
 }
 
 TEST(ChessboardGrayCode, AnOrderMissingAPatternIsRefused) {
