@@ -279,7 +279,7 @@ TEST(ChessboardCalibrateReal, ProcamSampleDataBesideItsPublishedCalibration) {
     EXPECT_NEAR(cam_fx / pub_fx, 1.0, 0.01);
     // Both devices' board corners agree with one rigid pose within the 0.5 px.
     EXPECT_LE(j["reprojection_rms_px"].get<double>(), 0.5);
-    EXPECT_GT(j["decoded_board_share"].get<double>(), 0.5);
+    EXPECT_GE(j["decoded_board_share"].get<double>(), 0.9);  // the target, on the mean of the poses
     // The projector's principal point comes with its standard deviation, the share per pose.
     EXPECT_GT(j["projector"]["sigma"]["cx"].get<double>(), 0.0);
     ASSERT_EQ(j["decoded_board_share_per_pose"].size(), 5u);
