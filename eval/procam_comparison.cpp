@@ -54,8 +54,10 @@ std::string procamTable(const StereoFit &o, const PublishedProcam &p, const Proc
     std::string s = "| | ours | published | difference |\n|---|---:|---:|---:|\n";
     s += line("| projector fx (px) | %.1f | %.1f | %+.2f %% |\n", o.projector.fx, p.proj_fx, c.fx_pct);
     s += line("| projector fy (px) | %.1f | %.1f | %+.2f %% |\n", o.projector.fy, p.proj_fy, c.fy_pct);
-    s += line("| projector cx (px) | %.1f | %.1f | %+.1f px |\n", o.projector.cx, p.proj_cx, c.cx_px);
-    s += line("| projector cy (px) | %.1f | %.1f | %+.1f px |\n", o.projector.cy, p.proj_cy, c.cy_px);
+    s += line("| projector cx (px) | %.1f ± %.1f | %.1f |", o.projector.cx, o.projector.sigma[2], p.proj_cx);
+    s += line(" %+.1f px |\n", c.cx_px, 0, 0);
+    s += line("| projector cy (px) | %.1f ± %.1f | %.1f |", o.projector.cy, o.projector.sigma[3], p.proj_cy);
+    s += line(" %+.1f px |\n", c.cy_px, 0, 0);
     s += line("| camera fx (px) | %.1f | %.1f | %+.2f %% |\n", o.camera.fx, p.cam_fx,
               100 * (o.camera.fx - p.cam_fx) / p.cam_fx);
     s += line("| camera fy (px) | %.1f | %.1f | %+.2f %% |\n", o.camera.fy, p.cam_fy,
@@ -69,7 +71,8 @@ std::string procamTable(const StereoFit &o, const PublishedProcam &p, const Proc
     s += line(" [%.4f, %.4f, %.4f] |", tp.x(), tp.y(), tp.z());
     s += line(" %.2f deg, length x %.3f |\n", c.translation_dir_deg, c.translation_ratio, 0);
     s += line("| stereo reprojection RMS (px) | %.3f | %.3f | |\n", o.rms_px, p.rms, 0);
-    s += line("\nsquare %.4f m; %.0f views, %.0f corners; ", square_m, static_cast<double>(o.views),
+    s += line("\n± one standard deviation of the projector's own fit (its covariance); ", 0, 0, 0);
+    s += line("square %.4f m; %.0f views, %.0f corners; ", square_m, static_cast<double>(o.views),
               static_cast<double>(o.points));
     s += line("camera RMS %.3f px, projector RMS %.3f px; decoded share of the board %.1f %%\n", o.camera.rms_px,
               o.projector.rms_px, 100 * share);
@@ -77,13 +80,17 @@ std::string procamTable(const StereoFit &o, const PublishedProcam &p, const Proc
 }
 
 std::string procamJson(const StereoFit &o, const PublishedProcam &p, const ProcamComparison &c, double unit_m,
-                       double square_m, double share) {
+                       double square_m, double share, const std::vector<double> &pose_shares) {
     nlohmann::json j;
     j["projector"] = {{"fx", o.projector.fx},
                       {"fy", o.projector.fy},
                       {"cx", o.projector.cx},
                       {"cy", o.projector.cy},
-                      {"distortion", o.projector.distortion}};
+                      {"distortion", o.projector.distortion},
+                      {"sigma", {{"fx", o.projector.sigma[0]},
+                                 {"fy", o.projector.sigma[1]},
+                                 {"cx", o.projector.sigma[2]},
+                                 {"cy", o.projector.sigma[3]}}}};
     j["camera"] = {{"fx", o.camera.fx},
                    {"fy", o.camera.fy},
                    {"cx", o.camera.cx},
@@ -96,6 +103,7 @@ std::string procamJson(const StereoFit &o, const PublishedProcam &p, const Proca
     j["camera_rms_px"] = o.camera.rms_px;
     j["projector_rms_px"] = o.projector.rms_px;
     j["decoded_board_share"] = share;
+    j["decoded_board_share_per_pose"] = pose_shares;
     const Eigen::Vector3d tp = p.translation * unit_m;
     j["published"] = {
         {"projector",

@@ -2,6 +2,7 @@
 // Our chessboard calibration beside a published one (procam-calibration's XML): the table
 // `eval --procam` prints and its JSON.
 #include <string>
+#include <vector>
 
 #include "projsurf/calibration/stereo_fit.hpp"
 #include "projsurf/io/procam_xml.hpp"
@@ -25,8 +26,10 @@ std::string procamTable(const StereoFit &ours, const PublishedProcam &published,
 
 /// {"projector": {"fx", "fy", "cx", "cy", "distortion": [5]}, "camera": {"fx", "fy", "cx",
 /// "cy"}, "rotation": 3x3, "translation": [3] (m), "square_m", "reprojection_rms_px",
-/// "decoded_board_share", "published": {...the same keys...}, "difference": {...}}
+/// "decoded_board_share" (the mean over the poses), "decoded_board_share_per_pose": [...],
+/// "published": {...the same keys...}, "difference": {...}}
 std::string procamJson(const StereoFit &ours, const PublishedProcam &published, const ProcamComparison &c,
-                       double published_unit_m, double square_m, double decoded_board_share);
+                       double published_unit_m, double square_m, double decoded_board_share,
+                       const std::vector<double> &pose_shares);
 
 }  // namespace projsurf::sim

@@ -50,6 +50,7 @@ struct EvalOptions {
     bool realistic_only = false;  // only the realistic-sensor suite
     std::string procam;           // a procam-calibration sample_data folder: ours beside its XML
     std::string json;             // with --procam: the comparison as JSON
+    std::string published;        // with --procam: the published XML, default DIR/calibration_result.xml
     // The board's square: procam-calibration's README runs its sample_data with chess_block_size
     // 75 (read as mm); its XML's translation is in those units.
     double square_m = 0.075;
@@ -62,19 +63,27 @@ struct EvalOptions {
 void runProcam(const EvalOptions &o) {
     if (!(o.square_m > 0 && o.square_m < 10)) throw InputError("--square-m", "must be between 0 and 10 m");
     if (!o.json.empty()) requireWritableFile(o.json);
-    const PublishedProcam published = readProcamXml((fs::path(o.procam) / "calibration_result.xml").string());
+    const std::string xml =
+        o.published.empty() ? (fs::path(o.procam) / "calibration_result.xml").string() : o.published;
+    const PublishedProcam published = readProcamXml(xml);
     const ProcamFolder folder = readProcamFolder(o.procam, std::nullopt);
     const frontend::ChessboardCalibration cal = frontend::calibrateChessboard(folder, o.square_m);
     const double unit_m = o.square_m / o.published_square;
     const sim::ProcamComparison c = sim::compareProcam(cal.fit, published, unit_m);
-    std::printf("eval --procam %s: %zu poses, board %dx%d inner corners, projector %dx%d\n", o.procam.c_str(),
-                folder.poses.size(), cal.inner.width, cal.inner.height, cal.width, cal.height);
+    std::printf("eval --procam %s: %zu poses, board %dx%d inner corners, projector %dx%d; published: %s\n",
+                o.procam.c_str(), folder.poses.size(), cal.inner.width, cal.inner.height, cal.width, cal.height,
+                xml.c_str());
     for (const auto &p : cal.poses)
         std::printf("  %s: %s, %d/%d corners carried, board %.1f %% decoded\n", p.dir.c_str(),
                     p.board ? "board" : "no board", p.carried, p.corners, 100 * p.board_share);
     std::printf("\n%s", sim::procamTable(cal.fit, published, c, unit_m, o.square_m, cal.decoded_board_share).c_str());
-    if (!o.json.empty())
-        writeFileAtomic(o.json, sim::procamJson(cal.fit, published, c, unit_m, o.square_m, cal.decoded_board_share));
+    if (!o.json.empty()) {
+        std::vector<double> shares;
+        for (const auto &p : cal.poses)
+            if (p.board) shares.push_back(p.board_share);
+        writeFileAtomic(o.json,
+                        sim::procamJson(cal.fit, published, c, unit_m, o.square_m, cal.decoded_board_share, shares));
+    }
 }
 
 /// The 1-minute load average (Linux), NaN when unknown.
@@ -350,6 +359,9 @@ void addEvalCommand(CLI::App &app) {
                     "(capture_k/graycode_NN.png, calibration_result.xml) with the chessboard mode and print it "
                     "beside its published calibration");
     sub->add_option("--json", o->json, "with --procam: write the comparison as JSON");
+    sub->add_option("--published", o->published,
+                    "with --procam: the published calibration to compare with (OpenCV XML; default "
+                    "DIR/calibration_result.xml)");
     sub->add_option("--square-m", o->square_m, "with --procam: the board's square, m (default 0.075: its README's 75)");
     sub->add_flag("--plan-only", o->plan_only,
                   "Only the plan suite (where to stand: planned, rendered from the moved robot, detected there, "

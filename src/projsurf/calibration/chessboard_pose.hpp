@@ -13,19 +13,22 @@
 
 namespace projsurf {
 
-/// The decoder's thresholds for a board: min_contrast 8 grey levels (not 20), margin 0.25.
+/// The decoder's thresholds for a board: no fixed shadow level (a printed board's black squares
+/// reflect a tenth of the light of its white ones: white - black 4-20 grey levels on
+/// procam-calibration's captures), the measured noise decides what is lit; pixels too dark to
+/// decode alone are decoded from their 3 x 3 means (1 camera px of blur, about 0.6 projector px
+/// on that rig; the corners' local homographies average over 17 x 17).
 inline GrayDecodeConfig boardDecodeConfig() {
     GrayDecodeConfig c;
-    c.min_contrast = 8.0;
+    c.min_contrast = 0.0;
+    c.pool_px = 1;
     return c;
 }
 
 struct ChessboardPoseConfig {
     std::vector<cv::Size> board_sizes;  ///< inner corners to try; empty = found from the image
     double square = 1.0;                ///< board square edge, in the units the translation is wanted in
-    /// A printed board's black squares reflect a tenth of the light of its white ones (white -
-    /// black 10-20 grey levels on procam-calibration's captures): the shadow threshold is lower
-    /// than the depth mode's, pattern against inverse still decides each bit.
+    /// See boardDecodeConfig.
     GrayDecodeConfig decode = boardDecodeConfig();
     LocalHomographyConfig homography;
 };

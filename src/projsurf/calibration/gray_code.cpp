@@ -65,6 +65,110 @@ cv::Mat toGrey(const cv::Mat &m) {
     return f;
 }
 
+/// Gray code to binary, `bits` wide.
+int grayToBinary(int g, int bits) {
+    int binary = 0;
+    for (int b = bits - 1, prev = 0; b >= 0; --b) {
+        prev ^= (g >> b) & 1;
+        binary |= prev << b;
+    }
+    return binary;
+}
+
+/// One axis from its bits' pattern - inverse differences (most significant first) and the
+/// margin a bit needs: the framebuffer coordinate, or NaN. `weakest` takes the least resolved
+/// bit's |difference|.
+double decodeAxis(const double *diff, int bits, int n, double margin, int min_bits, double &weakest) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    // Every bit; `unsure` marks those whose pair is too close to call.
+    int gray = 0, unsure = 0;
+    for (int k = 0; k < bits; ++k) {
+        const int b = bits - 1 - k;
+        if (std::abs(diff[k]) < margin) {
+            unsure |= 1 << b;
+            continue;
+        }
+        weakest = std::min(weakest, std::abs(diff[k]));
+        if (diff[k] > 0) gray |= 1 << b;
+    }
+    // The unresolved low bits (stripes finer than the camera sees): the range's centre.
+    int low = 0;
+    while (low < bits && (unsure >> low) & 1) ++low;
+    if (bits - low < std::min(min_bits, bits)) return nan;
+    const int high_unsure = unsure >> low;
+    const int mask_low = (1 << low) - 1;
+    double v = 0;
+    if (high_unsure == 0) {
+        v = (grayToBinary(gray & ~mask_low, bits) & ~mask_low) + 0.5 * mask_low;
+    } else if ((high_unsure & (high_unsure - 1)) == 0) {
+        // One unsure bit above the resolved ones: on the boundary between two neighbouring
+        // codes (Gray code: only that bit differs), if they are neighbours.
+        const int bit = 1 << (low + __builtin_ctz(high_unsure));
+        const int a = grayToBinary(gray & ~mask_low & ~bit, bits) & ~mask_low,
+                  b = grayToBinary((gray & ~mask_low) | bit, bits) & ~mask_low;
+        if (std::abs(a - b) != (1 << low)) return nan;
+        v = 0.5 * (a + b) + 0.5 * mask_low;
+    } else {
+        return nan;
+    }
+    if (v > n - 1) return nan;  // codes beyond the framebuffer: a misread
+    return v;
+}
+
+/// 8-bit rounding alone puts 1/sqrt(12) grey levels of noise on each capture; a pattern -
+/// inverse difference carries sqrt(2) of that.
+constexpr double kQuantisationNoise = 0.40824829046386301;  // 1/sqrt(6), grey levels
+
+/// Decodes the pixels whose column is still NaN from `grey` (white, black, then the pairs in
+/// grayPatterns' order); `pooled` marks the pass that decodes from neighbourhood means.
+void decodePass(const std::vector<cv::Mat> &grey, int width, int height, const GrayDecodeConfig &cfg,
+                bool pooled, GrayDecoding &d) {
+    const int col_bits = grayBits(width), row_bits = grayBits(height);
+    const int pairs = col_bits + row_bits;
+    std::vector<double> diff(pairs), sum(pairs);
+    const cv::Size size = grey[0].size();
+    for (int y = 0; y < size.height; ++y)
+        for (int x = 0; x < size.width; ++x) {
+            if (!std::isnan(d.column.at<double>(y, x))) continue;
+            const double white = grey[0].at<float>(y, x), black = grey[1].at<float>(y, x);
+            if (!(white - black >= cfg.min_contrast)) continue;
+            // The pixel's direct light from the projector: the largest pattern - inverse
+            // difference (a coarse stripe's; light scattered from the board's neighbourhood
+            // falls on pattern and inverse alike and cancels there, unlike in white - black).
+            // Its noise, measured: pattern + inverse should equal white + black for every pair
+            // (complementary patterns), so the spread of that sum over the pairs is noise.
+            double direct = 0, mean_sum = 0;
+            for (int i = 0; i < pairs; ++i) {
+                const double p = grey[2 + 2 * i].at<float>(y, x), q = grey[3 + 2 * i].at<float>(y, x);
+                diff[i] = p - q;
+                sum[i] = p + q - white - black;
+                direct = std::max(direct, std::abs(diff[i]));
+                mean_sum += sum[i];
+            }
+            mean_sum /= pairs;
+            double var = 0;
+            for (int i = 0; i < pairs; ++i) var += (sum[i] - mean_sum) * (sum[i] - mean_sum);
+            // White + black is the same for every pair, so over the pairs the sum varies by the
+            // pattern's and the inverse's noise alone: 2 sigma^2, as p - q does.
+            const double sigma = std::max(std::sqrt(var / std::max(1, pairs - 1)),
+                                          pooled ? kQuantisationNoise / (2 * cfg.pool_px + 1) : kQuantisationNoise);
+            const double noise_margin = cfg.noise_sigmas * sigma;
+            if (!(direct >= noise_margin) || !(direct > 0)) continue;  // the projector's light is not told from noise
+            const double margin = std::max(cfg.min_bit_margin * direct, noise_margin);
+            double weakest = direct;
+            const double u = decodeAxis(diff.data(), col_bits, width, margin, cfg.min_bits, weakest);
+            if (std::isnan(u)) continue;
+            const double v = decodeAxis(diff.data() + col_bits, row_bits, height, margin, cfg.min_bits, weakest);
+            if (std::isnan(v)) continue;
+            d.column.at<double>(y, x) = u;
+            d.row.at<double>(y, x) = v;
+            d.confidence.at<uchar>(y, x) = cv::saturate_cast<uchar>(std::max(1.0, 255.0 * weakest / direct));
+            d.direct.at<float>(y, x) = static_cast<float>(direct);
+            ++d.decoded;
+            if (pooled) ++d.pooled;
+        }
+}
+
 }  // namespace
 
 GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, int width, int height, const GrayDecodeConfig &cfg) {
@@ -101,66 +205,15 @@ GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, const std::vector<
     d.column = cv::Mat(size, CV_64F, cv::Scalar(nan));
     d.row = cv::Mat(size, CV_64F, cv::Scalar(nan));
     d.confidence = cv::Mat(size, CV_8U, cv::Scalar(0));
-    const int col_bits = grayBits(width), row_bits = grayBits(height);
-    for (int y = 0; y < size.height; ++y)
-        for (int x = 0; x < size.width; ++x) {
-            const double white = grey[0].at<float>(y, x), black = grey[1].at<float>(y, x);
-            const double contrast = white - black;
-            if (!(contrast >= cfg.min_contrast)) continue;
-            double value[2] = {nan, nan};
-            double weakest = 1.0;  // the least resolved bit's margin, share of the contrast
-            std::size_t at = 2;
-            for (int axis = 0; axis < 2; ++axis) {
-                const int bits = axis == 0 ? col_bits : row_bits;
-                const int n = axis == 0 ? width : height;
-                // Every bit; `unsure` marks those whose pair is too close to call.
-                int gray = 0, unsure = 0;
-                for (int b = bits - 1; b >= 0; --b, at += 2) {
-                    const double diff = grey[at].at<float>(y, x) - grey[at + 1].at<float>(y, x);
-                    if (std::abs(diff) < cfg.min_bit_margin * contrast) {
-                        unsure |= 1 << b;
-                        continue;
-                    }
-                    weakest = std::min(weakest, std::abs(diff) / contrast);
-                    if (diff > 0) gray |= 1 << b;
-                }
-                auto toBinary = [bits](int g) {
-                    int binary = 0;
-                    for (int b = bits - 1, prev = 0; b >= 0; --b) {
-                        prev ^= (g >> b) & 1;
-                        binary |= prev << b;
-                    }
-                    return binary;
-                };
-                // The unresolved low bits (stripes finer than the camera sees): the range's centre.
-                int low = 0;
-                while (low < bits && (unsure >> low) & 1) ++low;
-                if (bits - low < std::min(cfg.min_bits, bits)) break;
-                const int high_unsure = unsure >> low;
-                const int mask_low = (1 << low) - 1;
-                double v = 0;
-                if (high_unsure == 0) {
-                    v = (toBinary(gray & ~mask_low) & ~mask_low) + 0.5 * mask_low;
-                } else if ((high_unsure & (high_unsure - 1)) == 0) {
-                    // One unsure bit above the resolved ones: on the boundary between two
-                    // neighbouring codes (Gray code: only that bit differs), if they are neighbours.
-                    const int bit = 1 << (low + __builtin_ctz(high_unsure));
-                    const int a = toBinary(gray & ~mask_low & ~bit) & ~mask_low,
-                              b = toBinary((gray & ~mask_low) | bit) & ~mask_low;
-                    if (std::abs(a - b) != (1 << low)) break;
-                    v = 0.5 * (a + b) + 0.5 * mask_low;
-                } else {
-                    break;
-                }
-                if (v > n - 1) break;  // codes beyond the framebuffer: a misread
-                value[axis] = v;
-            }
-            if (std::isnan(value[0]) || std::isnan(value[1])) continue;
-            d.column.at<double>(y, x) = value[0];
-            d.row.at<double>(y, x) = value[1];
-            d.confidence.at<uchar>(y, x) = cv::saturate_cast<uchar>(std::max(1.0, 255.0 * weakest));
-            ++d.decoded;
-        }
+    d.direct = cv::Mat(size, CV_32F, cv::Scalar(0));
+    decodePass(grey, width, height, cfg, false, d);
+    if (cfg.pool_px > 0) {
+        // Pixels too dark to decode alone (a board's black squares): the same rules on the
+        // means of their neighbourhoods, whose noise is (2 pool_px + 1) times smaller.
+        const cv::Size box(2 * cfg.pool_px + 1, 2 * cfg.pool_px + 1);
+        for (auto &g : grey) cv::blur(g, g, box, cv::Point(-1, -1), cv::BORDER_REPLICATE);
+        decodePass(grey, width, height, cfg, true, d);
+    }
     return d;
 }
 

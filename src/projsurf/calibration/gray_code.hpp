@@ -35,8 +35,19 @@ cv::Mat grayPatternImage(const GrayPattern &pattern, int width, int height);
 
 struct GrayDecodeConfig {
     double min_contrast = 20.0;    ///< white - black, grey levels: below this the pixel is unlit or dark
-    double min_bit_margin = 0.25;  ///< |pattern - inverse| / (white - black) for a bit to count
+    /// |pattern - inverse| a bit needs, share of the pixel's direct light (its largest
+    /// |pattern - inverse|, a coarse stripe's): less, and inter-reflected light could flip it.
+    double min_bit_margin = 0.25;
+    /// |pattern - inverse| a bit needs, in the pixel's measured noise (the spread over the
+    /// pairs of pattern + inverse - white - black, which complementary patterns make zero);
+    /// 3 sigma: a pair with no light between them passes it one time in 740. The pixel's direct
+    /// light must reach it too.
+    double noise_sigmas = 3.0;
     int min_bits = 6;              ///< resolved most-significant bits needed per axis
+    /// Camera px; > 0: pixels that do not decode alone are decoded again from the means of
+    /// their (2 pool_px + 1)^2 neighbourhoods (noise that much smaller, position blurred by
+    /// pool_px). 0: no second pass.
+    int pool_px = 0;
 };
 
 /// Per camera pixel: the decoded framebuffer position (pixel centres at integers) or NaN.
@@ -44,10 +55,15 @@ struct GrayDecoding {
     cv::Mat column;      ///< CV_64F, framebuffer u, NaN where not decoded
     cv::Mat row;         ///< CV_64F, framebuffer v, NaN where not decoded
     /// CV_8U, 0 where not decoded; else the weakest resolved bit's |pattern - inverse| as a
-    /// share of (white - black), times 255 (pattern and inverse: independent of gamma and of
-    /// ambient light, which both add to or scale the pair alike).
+    /// share of the pixel's direct light (its largest |pattern - inverse|), times 255 (pattern
+    /// and inverse: independent of gamma and of ambient light, which both add to or scale the
+    /// pair alike).
     cv::Mat confidence;
+    /// CV_32F, grey levels: the pixel's direct light from the projector (its largest |pattern -
+    /// inverse|), 0 where not decoded.
+    cv::Mat direct;
     int decoded = 0;     ///< pixels with both
+    int pooled = 0;      ///< of them, decoded from neighbourhood means (GrayDecodeConfig::pool_px)
 };
 
 /// `captures[i]` is the camera's grey (or colour: converted) image while grayPatterns(width,

@@ -16,11 +16,23 @@ std::vector<CornerInProjector> cornersInProjector(const GrayDecoding &d, const s
     for (std::size_t i = 0; i < corners.size(); ++i) {
         const int cx = static_cast<int>(std::lround(corners[i].x)), cy = static_cast<int>(std::lround(corners[i].y));
         std::vector<cv::Point2f> cam, proj;
+        // The patch's brightest direct light, for the share below.
+        std::vector<float> lit;
+        const bool has_light = d.direct.size() == d.column.size() && d.direct.type() == CV_32F;
+        for (int y = std::max(0, cy - half); y <= std::min(d.direct.rows - 1, cy + half); ++y)
+            for (int x = std::max(0, cx - half); x <= std::min(d.direct.cols - 1, cx + half); ++x)
+                if (has_light && !std::isnan(d.column.at<double>(y, x))) lit.push_back(d.direct.at<float>(y, x));
+        float floor_light = 0;
+        if (!lit.empty() && cfg.min_direct_share > 0) {
+            auto at = lit.begin() + static_cast<std::ptrdiff_t>(0.9 * (lit.size() - 1));
+            std::nth_element(lit.begin(), at, lit.end());
+            floor_light = static_cast<float>(cfg.min_direct_share * *at);
+        }
         for (int y = cy - half; y <= cy + half; ++y)
             for (int x = cx - half; x <= cx + half; ++x) {
                 if (x < 0 || y < 0 || x >= d.column.cols || y >= d.column.rows) continue;
                 const double u = d.column.at<double>(y, x), v = d.row.at<double>(y, x);
-                if (std::isnan(u) || std::isnan(v)) continue;
+                if (std::isnan(u) || std::isnan(v) || (has_light && d.direct.at<float>(y, x) < floor_light)) continue;
                 cam.emplace_back(static_cast<float>(x), static_cast<float>(y));
                 proj.emplace_back(static_cast<float>(u), static_cast<float>(v));
             }

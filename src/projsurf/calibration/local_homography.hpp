@@ -18,6 +18,11 @@ struct LocalHomographyConfig {
     int half_patch = 0;
     /// Decoded pixels a patch needs, share of its area; fewer: the corner is left out.
     double min_decoded_share = 0.25;
+    /// Decoded pixels used, by their direct light: at least this share of the patch's brightest
+    /// (its 90th percentile). A printed board's dark squares get a tenth of the light of its
+    /// bright ones, and near the squares' edges much of it is the bright neighbours' light
+    /// blurred in by the camera's lens, carrying the neighbours' projector position. 0: all.
+    double min_direct_share = 0.5;
     double ransac_px = 2.0;  ///< projector px: decoded pixels farther from the patch's homography are misreads
 };
 

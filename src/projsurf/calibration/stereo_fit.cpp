@@ -8,8 +8,9 @@ namespace projsurf {
 
 namespace {
 
-DeviceIntrinsics fromCv(const cv::Mat &k, const cv::Mat &dist, double rms) {
+DeviceIntrinsics fromCv(const cv::Mat &k, const cv::Mat &dist, const cv::Mat &sigma, double rms) {
     DeviceIntrinsics d;
+    for (int i = 0; i < 4 && i < static_cast<int>(sigma.total()); ++i) d.sigma[i] = sigma.at<double>(i);
     d.fx = k.at<double>(0, 0);
     d.fy = k.at<double>(1, 1);
     d.cx = k.at<double>(0, 2);
@@ -63,15 +64,18 @@ StereoFit fitStereo(const std::vector<StereoView> &views, cv::Size camera_size, 
     try {
         cv::Mat kc, dc, kp, dp, r, t, e, f;
         std::vector<cv::Mat> rv, tv;
+        cv::Mat sc, sp, extrinsic_sigma, per_view;
         // Tangential distortion held at zero: over a few board poses seen through narrow lenses
         // it trades against the principal point and the pose instead of measuring the lens.
         const int flags = cv::CALIB_ZERO_TANGENT_DIST;
-        const double rms_c = cv::calibrateCamera(board, cam, camera_size, kc, dc, rv, tv, flags);
-        const double rms_p = cv::calibrateCamera(board, proj, projector_size, kp, dp, rv, tv, flags);
+        const double rms_c =
+            cv::calibrateCamera(board, cam, camera_size, kc, dc, rv, tv, sc, extrinsic_sigma, per_view, flags);
+        const double rms_p =
+            cv::calibrateCamera(board, proj, projector_size, kp, dp, rv, tv, sp, extrinsic_sigma, per_view, flags);
         fit.rms_px = cv::stereoCalibrate(board, cam, proj, kc, dc, kp, dp, camera_size, r, t, e, f,
                                          cv::CALIB_FIX_INTRINSIC);
-        fit.camera = fromCv(kc, dc, rms_c);
-        fit.projector = fromCv(kp, dp, rms_p);
+        fit.camera = fromCv(kc, dc, sc, rms_c);
+        fit.projector = fromCv(kp, dp, sp, rms_p);
         fit.rotation = cv::Matx33d(r);
         fit.translation = cv::Vec3d(t.at<double>(0), t.at<double>(1), t.at<double>(2));
         fit.ok = true;

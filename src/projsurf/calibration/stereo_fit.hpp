@@ -26,6 +26,9 @@ struct DeviceIntrinsics {
     double fx = 0, fy = 0, cx = 0, cy = 0;  ///< px, pixel centres at integers
     std::array<double, 5> distortion{{0, 0, 0, 0, 0}};  ///< OpenCV k1 k2 p1 p2 k3
     double rms_px = 0;  ///< its own calibration's reprojection RMS
+    /// Standard deviations of fx, fy, cx, cy (px) from its own calibration's covariance
+    /// (cv::calibrateCamera): how well the poses constrain them.
+    std::array<double, 4> sigma{{0, 0, 0, 0}};
 };
 
 struct StereoFit {
