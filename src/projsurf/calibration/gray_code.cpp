@@ -59,10 +59,8 @@ cv::Mat grayPatternImage(const GrayPattern &p, int width, int height) {
 
 namespace {
 
-cv::Mat toGrey(const cv::Mat &m) {
-    cv::Mat f;
-    greyscale(m).convertTo(f, CV_32F);
-    return f;
+double greyAt(const cv::Mat &g, int y, int x) {
+    return g.depth() == CV_8U ? g.at<uchar>(y, x) : g.at<float>(y, x);
 }
 
 }  // namespace
@@ -95,7 +93,15 @@ GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, const std::vector<
     std::vector<cv::Mat> grey;
     for (const auto &c : captures)
         if (c.size() != size || c.empty()) throw std::invalid_argument("gray decode: captures of different sizes");
-    for (const int i : slot) grey.push_back(toGrey(captures[i]));
+    // 8-bit captures are read as they are (a float copy of each would quadruple a pose's
+    // memory); any other depth makes every plane float. The values are the grey levels either way.
+    bool eight_bit = true;
+    for (const int i : slot) {
+        grey.push_back(greyscale(captures[i]));
+        eight_bit = eight_bit && grey.back().depth() == CV_8U;
+    }
+    if (!eight_bit)
+        for (auto &g : grey) g.convertTo(g, CV_32F);
     GrayDecoding d;
     const double nan = std::numeric_limits<double>::quiet_NaN();
     d.column = cv::Mat(size, CV_64F, cv::Scalar(nan));
@@ -104,7 +110,7 @@ GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, const std::vector<
     const int col_bits = grayBits(width), row_bits = grayBits(height);
     for (int y = 0; y < size.height; ++y)
         for (int x = 0; x < size.width; ++x) {
-            const double white = grey[0].at<float>(y, x), black = grey[1].at<float>(y, x);
+            const double white = greyAt(grey[0], y, x), black = greyAt(grey[1], y, x);
             const double contrast = white - black;
             if (!(contrast >= cfg.min_contrast)) continue;
             double value[2] = {nan, nan};
@@ -116,7 +122,7 @@ GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, const std::vector<
                 // Every bit; `unsure` marks those whose pair is too close to call.
                 int gray = 0, unsure = 0;
                 for (int b = bits - 1; b >= 0; --b, at += 2) {
-                    const double diff = grey[at].at<float>(y, x) - grey[at + 1].at<float>(y, x);
+                    const double diff = greyAt(grey[at], y, x) - greyAt(grey[at + 1], y, x);
                     if (std::abs(diff) < cfg.min_bit_margin * contrast) {
                         unsure |= 1 << b;
                         continue;
