@@ -4,8 +4,8 @@
 # and plan's search on a cloud, for a bounded time, with ASan + UBSan, in the sanitizer tree
 # (build-sanitize, configured by scripts/sanitize.sh). Seeds are made here from the simulator
 # (`projsurf simulate`, `projsurf detect`): nothing binary is committed. Each reader must run
-# at least FUZZ_RUNS inputs (default 10000; plan, which searches stances for each, a tenth of
-# that) within FUZZ_SECONDS (default 60) with no finding;
+# at least FUZZ_RUNS inputs (default 10000; structured, which writes a folder and decodes it
+# for each, a fifth; plan, which searches stances for each, a tenth) within FUZZ_SECONDS (default 60) with no finding;
 # the memory target (2 GiB) is libFuzzer's -rss_limit_mb and -malloc_limit_mb.
 # Findings (crash-*, oom-*, timeout-*) are kept in build-sanitize/fuzz/artifacts.
 set -euo pipefail
@@ -41,6 +41,7 @@ for name in pcd ply depth_png camera_yaml calib_yaml detection_json bag captures
   corpus="$work/corpus/$name"
   mkdir -p "$corpus"
   need=$runs
+  [ "$name" = structured ] && need=$(( runs / 5 ))
   [ "$name" = plan ] && need=$(( runs / 10 ))
   log="$work/$name.log"
   t0=$(date +%s)
