@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # libFuzzer over every reader (PCD, PLY, depth PNG, camera and calibration YAML, detection
-# JSON, bags, capture images) for a bounded time, with ASan + UBSan, in the sanitizer tree
+# JSON, bags, capture images), a structured-light capture folder through its decoding and fit,
+# and plan's search on a cloud, for a bounded time, with ASan + UBSan, in the sanitizer tree
 # (build-sanitize, configured by scripts/sanitize.sh). Seeds are made here from the simulator
 # (`projsurf simulate`, `projsurf detect`): nothing binary is committed. Each reader must run
-# at least FUZZ_RUNS inputs (default 10000) within FUZZ_SECONDS (default 60) with no finding;
+# at least FUZZ_RUNS inputs (default 10000; structured, which writes a folder and decodes it
+# for each, a fifth; plan, which searches stances for each, a tenth) within FUZZ_SECONDS (default 60) with no finding;
 # the memory target (2 GiB) is libFuzzer's -rss_limit_mb and -malloc_limit_mb.
 # Findings (crash-*, oom-*, timeout-*) are kept in build-sanitize/fuzz/artifacts.
 set -euo pipefail
@@ -30,19 +32,27 @@ export PROJSURF_FUZZ_TMP="$work/tmp"
 "$tree/fuzz/projsurf_fuzz_seeds" "$work/sim" "$work/sim/det.json" "$work/corpus" >/dev/null
 
 rc=0
-for name in pcd ply depth_png camera_yaml calib_yaml detection_json bag captures; do
+# The structured-light harness writes its own seeds (a valid folder); plan starts from the PCDs.
+PROJSURF_FUZZ_WRITE_SEEDS="$work/corpus/structured" "$tree/fuzz/fuzz_structured" >/dev/null
+mkdir -p "$work/corpus/plan"
+cp "$work/corpus/pcd/"* "$work/corpus/plan/"
+
+for name in pcd ply depth_png camera_yaml calib_yaml detection_json bag captures structured plan; do
   corpus="$work/corpus/$name"
   mkdir -p "$corpus"
+  need=$runs
+  [ "$name" = structured ] && need=$(( runs / 5 ))
+  [ "$name" = plan ] && need=$(( runs / 10 ))
   log="$work/$name.log"
   t0=$(date +%s)
   status=0
-  "$tree/fuzz/fuzz_$name" "$corpus" -runs="$runs" -max_total_time="$seconds" -max_len=65536 -timeout=10 \
+  "$tree/fuzz/fuzz_$name" "$corpus" -runs="$need" -max_total_time="$seconds" -max_len=65536 -timeout=10 \
     -rss_limit_mb=2048 -malloc_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$work/artifacts/$name-" \
     >"$log" 2>&1 || status=$?
   done_runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
   echo "fuzz: $name: ${done_runs:-0} inputs in $(( $(date +%s) - t0 )) s, exit $status"
-  if [ "$status" != 0 ] || [ "${done_runs:-0}" -lt "$runs" ]; then
-    echo "fuzz: $name failed (needs $runs inputs, no finding); the end of $log:"
+  if [ "$status" != 0 ] || [ "${done_runs:-0}" -lt "$need" ]; then
+    echo "fuzz: $name failed (needs $need inputs, no finding); the end of $log:"
     tail -n 40 "$log"
     rc=1
   fi

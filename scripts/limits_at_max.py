@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
 """Inputs at projsurf's limits (docs/limits.md), each run through the CLI under GNU time:
-prints peak memory and wall time per case. usage: limits_at_max.py PROJSURF_BINARY WORK_DIR
+prints peak memory and wall time per case. usage: limits_at_max.py PROJSURF_BINARY WORK_DIR [GROUPS]
+GROUPS: a comma-separated subset of readers,structured,plan (default all of them).
 (needs about 2 GB of disk in WORK_DIR; takes a few minutes)."""
 import array, os, struct, subprocess, sys, zlib
 
 cli, work = sys.argv[1], sys.argv[2]
+groups = sys.argv[3].split(",") if len(sys.argv) > 3 else ["readers", "structured", "plan"]
 os.makedirs(work, exist_ok=True)
 P = lambda n: os.path.join(work, n)
 
@@ -72,16 +74,102 @@ def run(name, args):
 
 print("| case | exit | peak memory | wall time | stderr |\n|---|---:|---:|---:|---|")
 calib(P("calib.yaml"), 1280, 800)
-wall_pcd(P("wall_4096.pcd"), 4096, 4096)
-run("detect: 4096 x 4096 organized cloud (2^24 points, the limit)", ["detect", "--calib", P("calib.yaml"), "--cloud", P("wall_4096.pcd"), "--json", P("o1.json")])
-run("detect --method paper: the same cloud", ["detect", "--calib", P("calib.yaml"), "--cloud", P("wall_4096.pcd"), "--method", "paper", "--json", P("o2.json")])
-run("detect --overlay: the same cloud", ["detect", "--calib", P("calib.yaml"), "--cloud", P("wall_4096.pcd"), "--json", P("o3.json"), "--overlay", P("o3.png")])
-compressed_pcd(P("lzf_max.pcd"), 1 << 24, 5)
-run("detect: binary_compressed, 2^24 points of 32 B = 512 MiB decompressed (the limit)", ["detect", "--calib", P("calib.yaml"), "--cloud", P("lzf_max.pcd"), "--json", P("o4.json")])
-open(P("camera.yaml"), "w").write("camera: {width: 4096, height: 4096, fx: 3277, fy: 3277, cx: 2048, cy: 2048}\n")
-png_gray16(P("depth_4096.png"), 4096, 4096, 2000)
-run("detect --depth: 4096 x 4096 depth PNG (2^24 pixels, the limit) + overlay", ["detect", "--calib", P("calib.yaml"), "--depth", P("depth_4096.png"), "--camera", P("camera.yaml"), "--json", P("o5.json"), "--overlay", P("o5.png")])
-png_rgb8(P("picture_8k.png"), 7680, 4320)
-calib(P("calib_8k.yaml"), 7680, 4320)
-run("detect for correct (8K framebuffer)", ["detect", "--calib", P("calib_8k.yaml"), "--cloud", P("wall_4096.pcd"), "--json", P("det8k.json")])
-run("correct: 7680 x 4320 picture into a 7680 x 4320 framebuffer (the limits)", ["correct", "--calib", P("calib_8k.yaml"), "--detection", P("det8k.json"), "--image", P("picture_8k.png"), "--out", P("fb8k.png"), "--json", P("k8k.json")])
+
+def readers():
+  wall_pcd(P("wall_4096.pcd"), 4096, 4096)
+  run("detect: 4096 x 4096 organized cloud (2^24 points, the limit)", ["detect", "--calib", P("calib.yaml"), "--cloud", P("wall_4096.pcd"), "--json", P("o1.json")])
+  run("detect --method paper: the same cloud", ["detect", "--calib", P("calib.yaml"), "--cloud", P("wall_4096.pcd"), "--method", "paper", "--json", P("o2.json")])
+  run("detect --overlay: the same cloud", ["detect", "--calib", P("calib.yaml"), "--cloud", P("wall_4096.pcd"), "--json", P("o3.json"), "--overlay", P("o3.png")])
+  compressed_pcd(P("lzf_max.pcd"), 1 << 24, 5)
+  run("detect: binary_compressed, 2^24 points of 32 B = 512 MiB decompressed (the limit)", ["detect", "--calib", P("calib.yaml"), "--cloud", P("lzf_max.pcd"), "--json", P("o4.json")])
+  open(P("camera.yaml"), "w").write("camera: {width: 4096, height: 4096, fx: 3277, fy: 3277, cx: 2048, cy: 2048}\n")
+  png_gray16(P("depth_4096.png"), 4096, 4096, 2000)
+  run("detect --depth: 4096 x 4096 depth PNG (2^24 pixels, the limit) + overlay", ["detect", "--calib", P("calib.yaml"), "--depth", P("depth_4096.png"), "--camera", P("camera.yaml"), "--json", P("o5.json"), "--overlay", P("o5.png")])
+  png_rgb8(P("picture_8k.png"), 7680, 4320)
+  calib(P("calib_8k.yaml"), 7680, 4320)
+  run("detect for correct (8K framebuffer)", ["detect", "--calib", P("calib_8k.yaml"), "--cloud", P("wall_4096.pcd"), "--json", P("det8k.json")])
+  run("correct: 7680 x 4320 picture into a 7680 x 4320 framebuffer (the limits)", ["correct", "--calib", P("calib_8k.yaml"), "--detection", P("det8k.json"), "--image", P("picture_8k.png"), "--out", P("fb8k.png"), "--json", P("k8k.json")])
+
+def png_gray8_rows(path, w, h, row_of):
+    # An 8-bit grey PNG whose row y is row_of(y) (bytes of length w); equal rows cost nothing.
+    raw = zlib.compressobj(1)
+    data = b"".join(raw.compress(b"\x00" + row_of(y)) for y in range(h)) + raw.flush()
+    chunk = lambda t, d: struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xffffffff)
+    open(path, "wb").write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 0, 0, 0, 0)) +
+                           chunk(b"IDAT", data) + chunk(b"IEND", b""))
+
+def structured_folder(d, w, h, lit, poses=1):
+    # patterns.yaml for 1280 x 800, camera.yaml of w x h, pose_0 with a capture of every pattern:
+    # lit: the framebuffer seen scaled onto the whole camera image (every pixel decodes) on a
+    # flat wall 2 m away; else all black. Further poses are links to pose_0.
+    os.makedirs(os.path.join(d, "pose_0"), exist_ok=True)
+    subprocess.run([cli, "patterns", "--out", d, "--resolution", "1280,800"], check=True, capture_output=True)
+    names = [l.strip()[2:] for l in open(os.path.join(d, "patterns.yaml")) if l.strip().startswith("- ")]
+    open(os.path.join(d, "camera.yaml"), "w").write(
+        "camera: {width: %d, height: %d, fx: %g, fy: %g, cx: %g, cy: %g, depth_scale: 1000}\n"
+        % (w, h, 0.8 * w, 0.8 * w, (w - 1) / 2, (h - 1) / 2))
+    png_gray16(os.path.join(d, "pose_0", "depth.png"), w, h, 2000 if lit else 0)
+    u = [x * 1280 // w for x in range(w)]
+    v = [y * 800 // h for y in range(h)]
+    for n in names:
+        if not lit or n == "black":
+            const = bytes(w) if (n == "black" or not lit) else None
+            png_gray8_rows(os.path.join(d, "pose_0", n + ".png"), w, h, lambda y: const)
+            continue
+        if n == "white":
+            png_gray8_rows(os.path.join(d, "pose_0", n + ".png"), w, h, lambda y: b"\xff" * w)
+            continue
+        axis, bit = n.split("_")[0], int(n.split("_")[1])
+        inv = n.endswith("_inv")
+        on = lambda i: (((i ^ (i >> 1)) >> bit) & 1) != inv
+        if axis == "col":
+            row = bytes(255 if on(c) else 0 for c in u)
+            png_gray8_rows(os.path.join(d, "pose_0", n + ".png"), w, h, lambda y: row)
+        else:
+            rows = {False: bytes(w), True: b"\xff" * w}
+            png_gray8_rows(os.path.join(d, "pose_0", n + ".png"), w, h, lambda y: rows[on(v[y])])
+    for k in range(1, poses):
+        if not os.path.exists(os.path.join(d, "pose_%d" % k)): os.symlink("pose_0", os.path.join(d, "pose_%d" % k))
+
+def structured():
+  structured_folder(P("sl_dark"), 3490, 3490, lit=False)
+  run("calibrate: structured light, 44 all-black 3490 x 3490 captures (2 MB of PNG)", ["calibrate", "--captures", P("sl_dark"), "--out", P("sl1.yaml")])
+  structured_folder(P("sl_dark39"), 3490, 3490, lit=False, poses=39)
+  run("calibrate: the same, 39 poses (38 links)", ["calibrate", "--captures", P("sl_dark39"), "--out", P("sl2.yaml")])
+  structured_folder(P("sl_lit"), 3740, 3740, lit=True)
+  run("calibrate: structured light, one pose of 44 lit 3740 x 3740 captures, every pixel decoded (at the byte limit)", ["calibrate", "--captures", P("sl_lit"), "--out", P("sl3.yaml")])
+  structured_folder(P("sl_lit1080"), 1920, 1080, lit=True, poses=14)
+  run("calibrate: 14 poses of 44 lit 1920 x 1080 captures (13 links), every pixel decoded (at the byte limit)", ["calibrate", "--captures", P("sl_lit1080"), "--out", P("sl4.yaml")])
+
+def walls_pcd(path, dist, width, walls, n):
+    # An unorganized binary PCD (under 1 MB): `walls` walls `width` m wide, `dist` m away, fanned
+    # over 120 deg, and a floor patch; random points, seed 1.
+    import math, random
+    random.seed(1)
+    pts = array.array("f")
+    for k in range(walls):
+        a = math.radians(-60 + 120 * k / max(1, walls - 1))
+        for _ in range(n // walls):
+            s = (random.random() - 0.5) * width
+            pts.extend((dist * math.sin(a) + s * math.cos(a), 1.0 - random.random() * width / 2, dist * math.cos(a) - s * math.sin(a)))
+    for _ in range(n // 10):
+        pts.extend(((random.random() - 0.5) * 10, 1.0, random.random() * 10))
+    count = len(pts) // 3
+    with open(path, "wb") as out:
+        out.write(("VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH %d\nHEIGHT 1\n"
+                   "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS %d\nDATA binary\n" % (count, count)).encode())
+        out.write(pts.tobytes())
+
+def plan():
+  walls_pcd(P("walls.pcd"), 40, 100, 10, 75000)
+  run("plan --cloud: ten 100 m walls 40 m away (82,500 points, 0.99 MB)", ["plan", "--calib", P("calib.yaml"), "--cloud", P("walls.pcd"), "--json", P("plan_walls.json")])
+  open(P("camera_vga.yaml"), "w").write("camera: {width: 640, height: 480, fx: 525, fy: 525, cx: 319.5, cy: 239.5, depth_scale: 1000}\n")
+  for raw in (10000, 20000, 65535):
+    png_gray16(P("far_%d.png" % raw), 640, 480, raw)
+    run("plan --depth: 640 x 480, a wall at %.3f m" % (raw / 1000), ["plan", "--calib", P("calib.yaml"), "--depth", P("far_%d.png" % raw), "--camera", P("camera_vga.yaml"), "--json", P("plan_%d.json" % raw)])
+  open(P("camera.yaml"), "w").write("camera: {width: 4096, height: 4096, fx: 3277, fy: 3277, cx: 2048, cy: 2048}\n")
+  png_gray16(P("far_4096.png"), 4096, 4096, 65535)
+  run("plan --depth: 4096 x 4096 (the limit), a wall at 65.535 m", ["plan", "--calib", P("calib.yaml"), "--depth", P("far_4096.png"), "--camera", P("camera.yaml"), "--json", P("plan_4096.json")])
+
+for g in groups:
+  {"readers": readers, "structured": structured, "plan": plan}[g]()

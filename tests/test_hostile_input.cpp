@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <algorithm>
@@ -15,11 +16,13 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/videoio.hpp>
 #include <random>
 #include <sstream>
 
 #include "bag_writer.hpp"
 #include "cli_run.hpp"
+#include "projsurf/calibration/gray_code.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/limits.hpp"
@@ -343,4 +346,221 @@ TEST_F(Hostile, DeepOrHugeYamlAndJsonAreRefused) {
     refused("correct --calib " + sim("calib.yaml") + " --detection " + at("deep.json") + " --image " + sim("rgb.png") +
                 " --out " + at("fb.png"),
             at("deep.json"), "JSON", {at("fb.png")});
+}
+
+// --- Structured light: one pose decoded at a time, its limit in bytes ---------------------
+
+namespace {
+
+/// DIR/patterns.yaml for a 1280 x 800 framebuffer (as projsurf patterns writes it).
+void writePatternList(const fs::path &dir) {
+    std::string yaml = "patterns:\n  resolution: [1280, 800]\n  coding: gray_code_inverse\n  order:\n";
+    for (const auto &p : grayPatterns(1280, 800)) yaml += "    - " + p.name + "\n";
+    writeBytes(dir / "patterns.yaml", yaml);
+}
+
+/// camera.yaml of w x h (a plausible focal length) beside patterns.yaml, and pose_0/ with an
+/// all-black capture of every pattern and a depth image without readings.
+void writeDarkPose(const fs::path &dir, int w, int h) {
+    fs::create_directories(dir / "pose_0");
+    writePatternList(dir);
+    CameraIntrinsics cam;
+    cam.width = w;
+    cam.height = h;
+    cam.fx = cam.fy = 0.8 * w;
+    cam.cx = 0.5 * (w - 1);
+    cam.cy = 0.5 * (h - 1);
+    writeCamera((dir / "camera.yaml").string(), cam);
+    ASSERT_TRUE(cv::imwrite((dir / "pose_0" / "depth.png").string(), cv::Mat(h, w, CV_16UC1, cv::Scalar(0))));
+    const fs::path first = dir / "pose_0" / "white.png";
+    ASSERT_TRUE(cv::imwrite(first.string(), cv::Mat(h, w, CV_8UC1, cv::Scalar(0))));
+    for (const auto &p : grayPatterns(1280, 800))
+        if (p.name != "white") fs::copy_file(first, dir / "pose_0" / (p.name + ".png"));
+}
+
+}  // namespace
+
+TEST_F(Hostile, StructuredLightDecodesOnePoseAtATime) {
+    // 44 all-black 3490 x 3490 captures (the 2 MB folder): decoded, nothing lit.
+    // TearDown checks the run stayed under 2 GiB (it took 2.8 GiB when every capture was
+    // converted to float at once).
+    writeDarkPose(dir_ / "sl", 3490, 3490);
+    refused("calibrate --captures " + at("sl") + " --out " + at("c.yaml"), at("sl"), "only 0 decoded",
+            {at("c.yaml")});
+    // 39 poses (38 links to the first): refused from the listing, before any image is read.
+    for (int k = 1; k < 39; ++k) fs::create_directory_symlink("pose_0", dir_ / "sl" / ("pose_" + std::to_string(k)));
+    refused("calibrate --captures " + at("sl") + " --out " + at("c.yaml"), at("sl"), "MiB to decode",
+            {at("c.yaml")});
+}
+
+TEST_F(Hostile, StructuredLightFolderProblemsSayWhatIsWrong) {
+    // patterns.yaml but no pose_0/: structured light's message, not the disc mode's.
+    const fs::path sl = dir_ / "sl";
+    fs::create_directories(sl);
+    writePatternList(sl);
+    fs::copy_file(sim_ / "camera.yaml", sl / "camera.yaml");
+    refused("calibrate --captures " + sl.string() + " --out " + at("c.yaml"), (sl / "pose_0").string(), "missing",
+            {at("c.yaml")});
+    // A depth image of another size than camera.yaml's: both sizes, not a size limit.
+    fs::create_directories(sl / "pose_0");
+    ASSERT_TRUE(cv::imwrite((sl / "pose_0" / "depth.png").string(), cv::Mat(240, 320, CV_16UC1, cv::Scalar(0))));
+    refused("calibrate --captures " + sl.string() + " --out " + at("c.yaml"), "depth.png",
+            "is 320x240, camera.yaml says 640x480", {at("c.yaml")});
+    // patterns.yaml a link to itself.
+    fs::remove(sl / "patterns.yaml");
+    fs::create_symlink("patterns.yaml", sl / "patterns.yaml");
+    refused("calibrate --captures " + sl.string() + " --out " + at("c.yaml"), "patterns.yaml", "loop",
+            {at("c.yaml")});
+    // A framebuffer no calibration could hold.
+    fs::remove(sl / "patterns.yaml");
+    writeBytes(sl / "patterns.yaml",
+               "patterns:\n  resolution: [16384, 16384]\n  coding: gray_code_inverse\n  order: [white]\n");
+    refused("calibrate --captures " + sl.string() + " --out " + at("c.yaml"), "patterns.yaml", "framebuffer limit",
+            {at("c.yaml")});
+}
+
+// --- Regular files only: a FIFO is refused, never waited on --------------------------------
+
+TEST_F(Hostile, FifosAreRefusedNotWaitedOn) {
+    for (const char *name : {"fifo.yaml", "fifo.pcd", "fifo.png"}) ASSERT_EQ(::mkfifo(at(name).c_str(), 0600), 0);
+    const std::string calib = sim("calib.yaml"), cam = sim("camera.yaml");
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"detect --calib " + at("fifo.yaml") + " --cloud " + sim("cloud.pcd"), at("fifo.yaml")},
+        {"detect --calib " + calib + " --cloud " + at("fifo.pcd"), at("fifo.pcd")},
+        {"detect --calib " + calib + " --depth " + at("fifo.png") + " --camera " + cam, at("fifo.png")},
+        {"detect --calib " + calib + " --depth " + sim("depth.png") + " --camera " + at("fifo.yaml"), at("fifo.yaml")},
+        {"plan --calib " + at("fifo.yaml") + " --cloud " + sim("cloud.pcd"), at("fifo.yaml")},
+    };
+    for (const auto &[args, file] : cases) refused(args, file, "FIFO");
+    fs::create_directories(dir_ / "sl");
+    fs::copy_file(sim_ / "camera.yaml", dir_ / "sl" / "camera.yaml");
+    fs::create_symlink(at("fifo.yaml"), dir_ / "sl" / "patterns.yaml");
+    refused("calibrate --captures " + at("sl") + " --out " + at("c.yaml"), "patterns.yaml", "FIFO", {at("c.yaml")});
+}
+
+// --- Degenerate lens models: refused by the one check every reader shares -----------------
+
+TEST_F(Hostile, DegenerateLensModelsAreRefusedByEveryCommand) {
+    const std::string calib = test::slurp(sim("calib.yaml"));
+    const std::string res = "  resolution: [1280, 800]\n";
+    ASSERT_NE(calib.find(res), std::string::npos);
+    auto withIntrinsics = [&](const std::string &name, const std::string &fx) {
+        std::string c = calib;
+        c.replace(c.find(res), res.size(), res + "  intrinsics:\n    fx: " + fx + "\n    fy: " + fx +
+                                                "\n    cx: 639.5\n    cy: 399.5\n");
+        writeBytes(at(name), c);
+        return at(name);
+    };
+    for (const char *fx : {"1e-300", "0.001"}) {
+        const std::string c = withIntrinsics("tiny.yaml", fx);
+        refused("detect --calib " + c + " --cloud " + sim("cloud.pcd"), c, "projector.intrinsics.fx");
+        refused("plan --calib " + c + " --cloud " + sim("cloud.pcd"), c, "projector.intrinsics.fx");
+    }
+    // fov_deg 39.3 x 24 but intrinsics of a 120 deg lens.
+    const std::string wide = withIntrinsics("wide.yaml", "369.5");
+    refused("detect --calib " + wide + " --cloud " + sim("cloud.pcd"), wide, "fov_deg");
+
+    // camera.yaml: a focal length, a depth scale, a principal point no camera has; in detect
+    // and in verify (which printed "0.0 mm: passed" and NaN corners in its JSON).
+    const CliRun det = cli(detectArgs(sim("cloud.pcd")) + " --json " + at("det.json"), dir_);
+    ASSERT_EQ(det.status, 0) << det.err;
+    const CliRun fb = cli("correct --calib " + sim("calib.yaml") + " --detection " + at("det.json") + " --image " +
+                              sim("rgb.png") + " --out " + at("fb.png"),
+                          dir_);
+    ASSERT_EQ(fb.status, 0) << fb.err;
+    fs::create_directories(dir_ / "caps");
+    fs::copy_file(sim_ / "rgb.png", dir_ / "caps" / "rgb.png");
+    fs::copy_file(sim_ / "depth.png", dir_ / "caps" / "depth.png");
+    const std::string camera = test::slurp(sim("camera.yaml"));
+    for (const auto &[key, value] : std::vector<std::pair<std::string, std::string>>{
+             {"fx", "1e-300"}, {"depth_scale", "1e-300"}, {"cx", "1e300"}}) {
+        std::string c = camera;
+        const std::size_t at_key = c.find("  " + key + ": ");
+        ASSERT_NE(at_key, std::string::npos) << key;
+        c.replace(at_key, c.find('\n', at_key) - at_key, "  " + key + ": " + value);
+        writeBytes(dir_ / "caps" / "camera.yaml", c);
+        const std::string cam = (dir_ / "caps" / "camera.yaml").string();
+        refused("detect --calib " + sim("calib.yaml") + " --depth " + sim("depth.png") + " --camera " + cam, cam,
+                "camera." + key);
+        refused("verify --calib " + sim("calib.yaml") + " --detection " + at("det.json") + " --framebuffer " +
+                    at("fb.png") + " --captures " + at("caps") + " --json " + at("v.json"),
+                cam, "camera." + key, {at("v.json")});
+    }
+}
+
+// --- Bounded searches: plan on walls far beyond the range ---------------------------------
+
+TEST_F(Hostile, PlanOnFarWallsEndsWithAnAnswer) {
+    // A wall at 10 m, 20 m and 65.535 m (all 65535: a wrong depth_scale is enough): plan
+    // answers (exit 0, valid JSON) within the CLI's guard; docs/limits.md gives the times.
+    for (const int raw : {10000, 20000, 65535}) {
+        const std::string depth = at("far_" + std::to_string(raw) + ".png");
+        ASSERT_TRUE(cv::imwrite(depth, cv::Mat(480, 640, CV_16UC1, cv::Scalar(raw))));
+        const CliRun r = cli("plan --calib " + sim("calib.yaml") + " --depth " + depth + " --camera " +
+                                 sim("camera.yaml") + " --json " + at("plan.json"),
+                             dir_, 60);
+        ASSERT_EQ(r.status, 0) << raw << ": " << r.err;
+        const auto j = nlohmann::json::parse(test::slurp(at("plan.json")));
+        EXPECT_TRUE(j.contains("found")) << j.dump();
+    }
+    // One point at x = -1e20 (a float-to-int overflow in the floor grid before it was clamped).
+    writeBytes(at("far.pcd"), pcdAscii({{-1e20f, 0.0f, 1.0f}, {0.0f, 0.0f, 1.0f}}));
+    const CliRun far = cli("plan --calib " + sim("calib.yaml") + " --cloud " + at("far.pcd"), dir_, 60);
+    EXPECT_EQ(far.status, 0) << far.err;
+    EXPECT_TRUE(nlohmann::json::accept(far.out)) << far.out;
+}
+
+// --- Framebuffers beyond what a calibration may hold ---------------------------------------
+
+TEST_F(Hostile, FramebuffersBeyondTheCalibrationLimitAreRefused) {
+    const std::string big = " --resolution 16384,16384";
+    refused("patterns --out " + at("p") + big, "--resolution", "framebuffer limit", {at("p")});
+    refused("verify --write-card " + at("card.png") + big, "--resolution", "framebuffer limit", {at("card.png")});
+    refused("calibrate --write-picture " + at("pic.png") + big, "--resolution", "framebuffer limit",
+            {at("pic.png")});
+    // patterns that cannot be written leave no patterns/ folder behind.
+    fs::create_directories(dir_ / "q" / "patterns.yaml");
+    const CliRun r = cli("patterns --out " + at("q") + " --resolution 64,32", dir_);
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "q" / "patterns"));
+}
+
+// --- Text that goes into JSON: a bag's frame_id -------------------------------------------
+
+TEST_F(Hostile, BagFrameIdThatIsNotUtf8IsNamed) {
+    const Cloud cloud = readCloud(sim("cloud.pcd"));
+    std::string bag = bagtest::bagWithClouds({cloud}, "/points");
+    const std::size_t id = bag.find("camera_optical");
+    ASSERT_NE(id, std::string::npos);
+    bag.replace(id, 2, "\xff\xfe");  // the same length: only the text is wrong
+    writeBytes(at("id.bag"), bag);
+    refused("detect --calib " + sim("calib.yaml") + " --bag " + at("id.bag") + " --topic /points --json " +
+                at("o.jsonl"),
+            at("id.bag"), "header.frame_id is not UTF-8", {at("o.jsonl")});
+}
+
+// --- A video that ends before its header says ----------------------------------------------
+
+TEST_F(Hostile, TruncatedVideoWarns) {
+    const CliRun det = cli(detectArgs(sim("cloud.pcd")) + " --json " + at("det.json"), dir_);
+    ASSERT_EQ(det.status, 0) << det.err;
+    {
+        cv::VideoWriter w(at("in.avi"), cv::CAP_FFMPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 25,
+                          cv::Size(160, 120));
+        ASSERT_TRUE(w.isOpened());
+        for (int k = 0; k < 20; ++k) w.write(cv::Mat(120, 160, CV_8UC3, cv::Scalar(10 * k, 100, 200 - 5 * k)));
+    }
+    const std::string whole = test::slurp(at("in.avi"));
+    writeBytes(at("cut.avi"), whole.substr(0, whole.size() / 3));
+    const CliRun r = cli("correct --calib " + sim("calib.yaml") + " --detection " + at("det.json") + " --image " +
+                             at("cut.avi") + " --out " + at("out.avi"),
+                         dir_);
+    if (r.status == 2) {  // refused (nothing readable) is an answer too: one line, no output
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_FALSE(fs::exists(at("out.avi")));
+        return;
+    }
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("projsurf: warning: " + at("cut.avi") + ": ended after"), std::string::npos) << r.err;
 }

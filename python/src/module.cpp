@@ -10,22 +10,24 @@
 #include <opencv2/imgcodecs.hpp>
 #include <optional>
 
+#include "argument_cast.hpp"
 #include "detection_dict.hpp"
 #include "detector_options.hpp"
 #include "image_array.hpp"
 #include "plan_function.hpp"
 #include "points_array.hpp"
-#include "projsurf/types/lens_model_check.hpp"
-#include "projsurf/types/camera.hpp"
 #include "projsurf/detection/colour/colour_registration.hpp"
-#include "projsurf/keystone/keystone.hpp"
+#include "projsurf/detection/detector.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/limits.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/keystone/keystone.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/types/lens_model_check.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -36,13 +38,20 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 /// The contract's projector, from keyword arguments with the example calibration's defaults.
-Projector makeProjector(std::pair<int, int> resolution, std::pair<double, double> fov_deg,
-                        const Eigen::Vector3d &origin, const Eigen::Vector3d &direction) {
+Projector makeProjector(const py::object &resolution_arg, const py::object &fov_arg, const py::object &origin_arg,
+                        const py::object &direction_arg) {
+    const auto resolution = argumentAs<std::pair<int, int>>(resolution_arg, "resolution", "(width, height) in px");
+    const auto fov_deg = argumentAs<std::pair<double, double>>(fov_arg, "fov_deg", "(horizontal, vertical) in deg");
+    const auto origin = argumentAs<Eigen::Vector3d>(origin_arg, "origin", "three numbers (m)");
+    const auto direction = argumentAs<Eigen::Vector3d>(direction_arg, "direction", "three numbers");
     Projector p;
     p.width = resolution.first;
     p.height = resolution.second;
-    if (p.width < 2 || p.height < 2 || p.width > 16384 || p.height > 16384)
+    if (p.width < 2 || p.height < 2 || p.width > limits::kMaxFramebufferSide || p.height > limits::kMaxFramebufferSide)
         throw InputError("resolution", "must be two whole numbers between 2 and 16384");
+    if (static_cast<std::uint64_t>(p.width) * p.height > limits::kMaxFramebufferPixels)
+        throw InputError("resolution", "exceeds the limit of " + std::to_string(limits::kMaxFramebufferPixels) +
+                                           " framebuffer pixels (as a calibration file)");
     if (!(fov_deg.first > 0 && fov_deg.first < 170 && fov_deg.second > 0 && fov_deg.second < 170))
         throw InputError("fov_deg", "angles must be between 0 and 170 degrees");
     p.fov_h = fov_deg.first * kDeg;
@@ -57,10 +66,12 @@ Projector makeProjector(std::pair<int, int> resolution, std::pair<double, double
 }
 
 /// One picture -> framebuffer with a detection: what `projsurf correct` does for an image.
-Keystone keystoneFor(const Projector &projector, const py::object &detection, cv::Size picture, double tolerance_px) {
+Keystone keystoneFor(const Projector &projector, const py::object &detection, cv::Size picture,
+                     const py::object &tolerance) {
+    const double tolerance_px = numberArgument(tolerance, "tolerance_px", "a number of px");
     const Rectangle rect = rectangleFromDetection(detection);
     frontend::FramebufferRender r = frontend::keystoneFor(projector, rect, picture, tolerance_px);
-    if (!r.keystone) throw InputError("detection", r.problem);
+    if (!r.keystone) throw InputError(r.tolerance_refused ? "tolerance_px" : "detection", r.problem);
     return *r.keystone;
 }
 
@@ -166,35 +177,45 @@ PYBIND11_MODULE(projsurf, m) {
 
     m.def(
         "depth_to_cloud",
-        [](const py::array &depth, double fx, double fy, double cx, double cy, double depth_scale) {
+        [](const py::object &depth, const py::object &fx, const py::object &fy, const py::object &cx,
+           const py::object &cy, const py::object &depth_scale) {
             py::object keep;
-            const cv::Mat d = matFromArray(depth, "depth", keep);
+            const cv::Mat d = matFromArray(argumentAs<py::array>(depth, "depth", "a numpy array"), "depth", keep);
             if (d.type() != CV_16UC1)
                 throw InputError("depth", "expected an (H, W) uint16 depth image (0 = no reading)");
-            const CameraIntrinsics camera =
-                frontend::pinholeCamera("camera", d.cols, d.rows, fx, fy, cx, cy, depth_scale);
+            const CameraIntrinsics camera = frontend::pinholeCamera(
+                "camera", d.cols, d.rows, numberArgument(fx, "fx", "a number of px"),
+                numberArgument(fy, "fy", "a number of px"), numberArgument(cx, "cx", "a number of px"),
+                numberArgument(cy, "cy", "a number of px"),
+                numberArgument(depth_scale, "depth_scale", "a number of units per metre"));
             return arrayFromCloud(frontend::depthImageToCloud("depth", d, camera));
         },
         "depth"_a, py::kw_only(), "fx"_a, "fy"_a, "cx"_a, "cy"_a, "depth_scale"_a = 1000.0,
         "An (H, W) uint16 depth image (depth_scale units per metre, 0 = no reading) and its pinhole\n"
         "(px) as an organized (H, W, 3) float32 cloud, NaN where there is no reading. Raises InputError.");
     m.def(
-        "read_image", [](const std::string &path) { return arrayFromMat(readImage(path, cv::IMREAD_UNCHANGED)); },
+        "read_image",
+        [](const py::object &path) {
+            return arrayFromMat(readImage(textArgument(path, "path"), cv::IMREAD_UNCHANGED));
+        },
         "path"_a, "Reads an image file as OpenCV does (channels in B, G, R order; 8 or 16 bits). Raises InputError.");
     m.def(
         "write_image",
-        [](const std::string &path, const py::array &image) {
+        [](const py::object &path, const py::object &image) {
             py::object keep;
-            writeImageAtomic(path, matFromArray(image, "image", keep));
+            writeImageAtomic(textArgument(path, "path"),
+                             matFromArray(argumentAs<py::array>(image, "image", "a numpy array"), "image", keep));
         },
         "path"_a, "image"_a,
         "Writes an image by the path's extension (channels taken as B, G, R), atomically. Raises InputError.");
 
     py::class_<Detector>(m, "Detector", "Detection over a stream of clouds (reuses its buffers from frame to frame).")
-        .def(py::init([](const Projector &projector, const py::object &aspect, const py::object &gravity,
-                         const std::string &method, const std::string &hull, unsigned seed, const py::object &min_width,
-                         const py::object &min_area) {
-                 return Detector(projector, detectorOptions(aspect, gravity, method, hull, seed, min_width, min_area));
+        .def(py::init([](const py::object &projector, const py::object &aspect, const py::object &gravity,
+                         const py::object &method, const py::object &hull, const py::object &seed,
+                         const py::object &min_width, const py::object &min_area) {
+                 return Detector(projectorArgument(projector),
+                                 detectorOptions(aspect, gravity, textArgument(method, "method"),
+                                                 textArgument(hull, "hull"), seedArgument(seed), min_width, min_area));
              }),
              "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(), "method"_a = "default",
              "hull"_a = "concave", "seed"_a = 42u, "min_width"_a = py::none(), "min_area"_a = py::none())
@@ -207,10 +228,12 @@ PYBIND11_MODULE(projsurf, m) {
 
     m.def(
         "detect",
-        [](const py::object &points, const Projector &projector, const py::object &aspect, const py::object &gravity,
-           const std::string &method, const std::string &hull, unsigned seed, const py::object &min_width,
+        [](const py::object &points, const py::object &projector, const py::object &aspect, const py::object &gravity,
+           const py::object &method, const py::object &hull, const py::object &seed, const py::object &min_width,
            const py::object &min_area, const py::object &colour) {
-            Detector detector(projector, detectorOptions(aspect, gravity, method, hull, seed, min_width, min_area));
+            Detector detector(projectorArgument(projector),
+                              detectorOptions(aspect, gravity, textArgument(method, "method"),
+                                              textArgument(hull, "hull"), seedArgument(seed), min_width, min_area));
             return detector.detect(points, colour);
         },
         "points"_a, "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(),
@@ -225,10 +248,11 @@ PYBIND11_MODULE(projsurf, m) {
 
     m.def(
         "keystone",
-        [](const Projector &projector, const py::object &detection, std::pair<int, int> picture_size,
-           double tolerance_px) {
-            const Keystone k =
-                keystoneFor(projector, detection, {picture_size.first, picture_size.second}, tolerance_px);
+        [](const py::object &projector, const py::object &detection, const py::object &size,
+           const py::object &tolerance_px) {
+            const auto picture_size = argumentAs<std::pair<int, int>>(size, "picture_size", "(width, height) in px");
+            const Keystone k = keystoneFor(projectorArgument(projector), detection,
+                                           {picture_size.first, picture_size.second}, tolerance_px);
             Eigen::Matrix3d h;
             for (int r = 0; r < 3; ++r)
                 for (int c = 0; c < 3; ++c) h(r, c) = k.homography(r, c);
@@ -243,10 +267,11 @@ PYBIND11_MODULE(projsurf, m) {
 
     m.def(
         "correct",
-        [](const py::array &image, const Projector &projector, const py::object &detection, double tolerance_px) {
+        [](const py::object &image, const py::object &projector, const py::object &detection,
+           const py::object &tolerance_px) {
             py::object keep;
-            const cv::Mat picture = matFromArray(image, "image", keep);
-            const Keystone k = keystoneFor(projector, detection, picture.size(), tolerance_px);
+            const cv::Mat picture = matFromArray(argumentAs<py::array>(image, "image", "a numpy array"), "image", keep);
+            const Keystone k = keystoneFor(projectorArgument(projector), detection, picture.size(), tolerance_px);
             cv::Mat framebuffer;
             {
                 py::gil_scoped_release unlocked;

@@ -2,6 +2,7 @@
 
 #include <pybind11/stl.h>
 
+#include "argument_cast.hpp"
 #include "detector_options.hpp"
 #include "points_array.hpp"
 #include "projsurf/frontend/detect_answer.hpp"
@@ -17,8 +18,12 @@ namespace projsurf::python {
 void addPlanFunction(py::module_ &m) {
     m.def(
         "plan",
-        [](const py::object &points, const Projector &projector, const py::object &aspect, const py::object &gravity,
-           double width, double max_move, const py::object &min_width, const py::object &min_area) {
+        [](const py::object &points, const py::object &projector_arg, const py::object &aspect,
+           const py::object &gravity, const py::object &width_arg, const py::object &max_move_arg,
+           const py::object &min_width, const py::object &min_area) {
+            const Projector projector = projectorArgument(projector_arg);
+            const double width = numberArgument(width_arg, "width", "a number of m");
+            const double max_move = numberArgument(max_move_arg, "max_move", "a number of m");
             if (!(width >= 0.0 && width <= 50.0)) throw InputError("width", "must be between 0 and 50 m");
             if (!(max_move >= 0.0 && max_move <= 10.0)) throw InputError("max_move", "must be between 0 and 10 m");
             const DetectorOptions options =

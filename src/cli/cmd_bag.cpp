@@ -61,12 +61,9 @@ void run(const BagOptions &o) {
     const double to_mm = 1000.0 / camera.depth_scale;  // the bag holds millimetres (16UC1, REP 118)
     for (std::size_t k = 0; k < frames.size(); ++k) {
         const std::string name = frames[k].string();
-        const std::uint64_t pixels = static_cast<std::uint64_t>(camera.width) * camera.height;
-        const cv::Mat raw = readImage(name, cv::IMREAD_UNCHANGED, pixels);
+        // Another size is named with both sizes from the header (not as a size limit).
+        const cv::Mat raw = readImageOfSize(name, cv::IMREAD_UNCHANGED, camera.width, camera.height, o.camera);
         if (raw.type() != CV_16UC1) throw InputError(name, "expected a 16-bit single-channel depth PNG");
-        if (raw.cols != camera.width || raw.rows != camera.height)
-            throw InputError(name, "is " + std::to_string(raw.cols) + "x" + std::to_string(raw.rows) + ", " + o.camera +
-                                       " says " + std::to_string(camera.width) + "x" + std::to_string(camera.height));
         cv::Mat mm;
         raw.convertTo(mm, CV_16UC1, to_mm);  // rounds, saturates at 65.535 m
         RosHeader h;

@@ -103,14 +103,18 @@ void runStructured(const CalibrateOptions &o, int res_w, int res_h) {
                                         " but --resolution says " + std::to_string(res_w) + "x" +
                                         std::to_string(res_h));
     const CameraIntrinsics camera = readCamera((dir / "camera.yaml").string());
-    const std::vector<PoseCaptures> poses = readPoseCaptures(o.captures, list, camera.width, camera.height);
+    // One pose in memory at a time (listPoseFolders checked what that takes); the lifted
+    // points of every pose are kept for the fit.
+    const std::vector<std::string> poses = listPoseFolders(o.captures, list, camera.width, camera.height);
     std::vector<ProjectorCorrespondence> pairs;
+    pairs.reserve(poses.size() * static_cast<std::size_t>(camera.width) * camera.height);
     std::vector<int> decoded;
-    for (const auto &pose : poses) {
+    for (const auto &pose_dir : poses) {
+        PoseCaptures pose = readPoseCaptures(pose_dir, list, camera.width, camera.height);
         const GrayDecoding d = decodeGray(pose.colour, list.width, list.height);
-        const auto lifted = liftDecoding(d, pose.depth, camera);
+        pose.colour.clear();
+        liftDecoding(d, pose.depth, camera, pairs);
         decoded.push_back(d.decoded);
-        pairs.insert(pairs.end(), lifted.begin(), lifted.end());
     }
     ProjectorFitConfig cfg;
     cfg.width = list.width;
@@ -124,7 +128,7 @@ void runStructured(const CalibrateOptions &o, int res_w, int res_h) {
     std::cout << "projsurf calibrate: structured light, " << poses.size() << " pose(s), " << pairs.size()
               << " decoded pixels with depth -> " << o.out << "\n";
     for (std::size_t k = 0; k < poses.size(); ++k)
-        std::cout << "  " << poses[k].dir << ": " << decoded[k] << " camera pixels decoded\n";
+        std::cout << "  " << poses[k] << ": " << decoded[k] << " camera pixels decoded\n";
     std::cout << fmt("  intrinsics fx %.1f fy %.1f cx %.1f cy %.1f px", p.fx(), p.fy(), p.cx(), p.cy())
               << fmt(", k1 %.4f k2 %.4f\n", p.distortion[0], p.distortion[1])
               << fmt("  origin [%.4f, %.4f, %.4f] m", p.origin.x(), p.origin.y(), p.origin.z())
@@ -181,7 +185,9 @@ void run(const CalibrateOptions &o) {
     if (!fs::is_directory(o.captures, ec)) throw InputError(o.captures, "not a directory");
     requireWritableLocation(o.out);
     const fs::path dir(o.captures);
-    if (fs::exists(dir / "patterns.yaml", ec) && fs::is_directory(dir / "pose_0", ec))
+    // patterns.yaml in any form (a broken link or a loop included) means structured light:
+    // its reader says what is wrong with it, or which pose folder is missing.
+    if (fs::symlink_status(dir / "patterns.yaml", ec).type() != fs::file_type::not_found)
         return runStructured(o, res_w, res_h);
     if (isProcamFolder(o.captures)) return runChessboard(o, res_w, res_h);
     if (!fs::exists(dir / "camera.yaml", ec))
@@ -224,15 +230,9 @@ void run(const CalibrateOptions &o) {
         const std::string rgb = (dir / ("capture_" + std::to_string(k) + "_rgb.png")).string();
         const std::string dep = (dir / ("capture_" + std::to_string(k) + "_depth.png")).string();
         CaptureImages c;
-        const std::uint64_t pixels = static_cast<std::uint64_t>(camera.width) * camera.height;  // as camera.yaml says
-        c.color = readImage(rgb, cv::IMREAD_COLOR, pixels);
-        c.depth = readImage(dep, cv::IMREAD_UNCHANGED, pixels);
+        c.color = readImageOfSize(rgb, cv::IMREAD_COLOR, camera.width, camera.height, "camera.yaml");
+        c.depth = readImageOfSize(dep, cv::IMREAD_UNCHANGED, camera.width, camera.height, "camera.yaml");
         if (c.depth.type() != CV_16UC1) throw InputError(dep, "expected a 16-bit single-channel depth PNG");
-        const std::string size = std::to_string(camera.width) + "x" + std::to_string(camera.height);
-        if (c.color.cols != camera.width || c.color.rows != camera.height)
-            throw InputError(rgb, "size differs from camera.yaml (" + size + ")");
-        if (c.depth.cols != camera.width || c.depth.rows != camera.height)
-            throw InputError(dep, "size differs from camera.yaml (" + size + ")");
         captures.push_back(c);
         rgb_paths.push_back(rgb);
         depth_paths.push_back(dep);

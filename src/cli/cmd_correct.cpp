@@ -148,6 +148,11 @@ void runVideo(const CorrectOptions &o, const std::string &input, const Projector
     outputs.commit();
     progress.finish(n);
     std::cout << "projsurf correct: " << n << " frames -> " << o.out << letterboxNote(render, det) << "\n";
+    // A video's header count can be an estimate (one frame off); more than that short is a
+    // file that ends early.
+    if (source.count() > 0 && n + 1 < source.count())
+        std::cerr << "projsurf: warning: " << input << ": ended after " << n << " of the " << source.count()
+                  << " frames its header announces (truncated?); the corrected video has " << n << "\n";
 }
 
 void run(const CorrectOptions &o) {

@@ -51,21 +51,14 @@ void run(const VerifyOptions &o) {
     if (!o.json.empty()) requireWritableFile(o.json);
     const Projector projector = readCalibration(o.calib);
     const DetectionFile det = readDetectionJson(o.detection);
-    const cv::Mat fb = readImage(o.framebuffer, cv::IMREAD_COLOR);
-    if (fb.cols != projector.width || fb.rows != projector.height)
-        throw InputError(o.framebuffer, "is " + std::to_string(fb.cols) + "x" + std::to_string(fb.rows) +
-                                            " but the calibration's framebuffer is " + std::to_string(projector.width) +
-                                            "x" + std::to_string(projector.height));
+    const cv::Mat fb =
+        readImageOfSize(o.framebuffer, cv::IMREAD_COLOR, projector.width, projector.height, "the calibration");
     const fs::path dir(o.captures);
     const CameraIntrinsics camera = readCamera((dir / "camera.yaml").string());
-    const std::uint64_t pixels = static_cast<std::uint64_t>(camera.width) * camera.height;
     const std::string rgb_path = (dir / "rgb.png").string(), depth_path = (dir / "depth.png").string();
-    const cv::Mat rgb = readImage(rgb_path, cv::IMREAD_COLOR, pixels);
-    const cv::Mat depth = readImage(depth_path, cv::IMREAD_UNCHANGED, pixels);
+    const cv::Mat rgb = readImageOfSize(rgb_path, cv::IMREAD_COLOR, camera.width, camera.height, "camera.yaml");
+    const cv::Mat depth = readImageOfSize(depth_path, cv::IMREAD_UNCHANGED, camera.width, camera.height, "camera.yaml");
     if (depth.type() != CV_16UC1) throw InputError(depth_path, "expected a 16-bit single-channel depth PNG");
-    if (rgb.cols != camera.width || rgb.rows != camera.height)
-        throw InputError(rgb_path, "size differs from camera.yaml");
-    if (depth.size() != rgb.size()) throw InputError(depth_path, "size differs from rgb.png");
     const auto lit = litFramebufferCorners(fb);
     if (!lit) throw InputError(o.framebuffer, "is all black: nothing was projected");
 
@@ -106,6 +99,16 @@ void run(const VerifyOptions &o) {
             errors += buf;
         }
         const ShapeErrors eq8 = shapeErrors(found.corners);
+        // Every number written is finite, or nothing is written (a degenerate camera.yaml or
+        // depth can leave the found corners at NaN or infinity, and NaN compares as passing).
+        bool finite = std::isfinite(eq8.horizontal_pct) && std::isfinite(eq8.vertical_pct) &&
+                      std::isfinite(eq8.diagonal_pct);
+        for (int i = 0; i < 4; ++i)
+            finite = finite && found.corners[i].allFinite() && meant.corners[i].allFinite() &&
+                     std::isfinite((found.corners[i] - meant.corners[i]).norm());
+        if (!finite)
+            throw InputError(o.captures, "the picture's corners measured in rgb.png and depth.png are not finite "
+                                         "numbers (check camera.yaml's intrinsics and depth_scale)");
         passed = worst <= o.tolerance;
         char buf[600];
         std::snprintf(

@@ -7,9 +7,15 @@ namespace projsurf {
 
 std::vector<ProjectorCorrespondence> liftDecoding(const GrayDecoding &d, const cv::Mat &depth,
                                                   const CameraIntrinsics &camera, double edge_m) {
+    std::vector<ProjectorCorrespondence> out;
+    liftDecoding(d, depth, camera, out, edge_m);
+    return out;
+}
+
+void liftDecoding(const GrayDecoding &d, const cv::Mat &depth, const CameraIntrinsics &camera,
+                  std::vector<ProjectorCorrespondence> &out, double edge_m) {
     if (depth.type() != CV_16UC1 || depth.size() != d.confidence.size())
         throw std::invalid_argument("structured light: the depth image must be 16-bit and of the colour images' size");
-    std::vector<ProjectorCorrespondence> out;
     const double scale = 1.0 / camera.depth_scale;
     for (int y = 1; y + 1 < depth.rows; ++y)
         for (int x = 1; x + 1 < depth.cols; ++x) {
@@ -31,7 +37,6 @@ std::vector<ProjectorCorrespondence> liftDecoding(const GrayDecoding &d, const c
             c.pixel = {d.column.at<double>(y, x), d.row.at<double>(y, x)};
             out.push_back(c);
         }
-    return out;
 }
 
 }  // namespace projsurf

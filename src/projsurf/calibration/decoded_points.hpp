@@ -16,5 +16,8 @@ namespace projsurf {
 /// than `edge_m` m) are left out: their depth mixes two surfaces.
 std::vector<ProjectorCorrespondence> liftDecoding(const GrayDecoding &decoding, const cv::Mat &depth,
                                                   const CameraIntrinsics &camera, double edge_m = 0.02);
+/// The same, appended to `out` (several poses into one list without a copy of each).
+void liftDecoding(const GrayDecoding &decoding, const cv::Mat &depth, const CameraIntrinsics &camera,
+                  std::vector<ProjectorCorrespondence> &out, double edge_m = 0.02);
 
 }  // namespace projsurf

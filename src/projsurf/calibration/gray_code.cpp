@@ -59,10 +59,15 @@ cv::Mat grayPatternImage(const GrayPattern &p, int width, int height) {
 
 namespace {
 
-cv::Mat toGrey(const cv::Mat &m) {
-    cv::Mat f;
-    greyscale(m).convertTo(f, CV_32F);
-    return f;
+/// A grey level: 8-bit captures are kept as they are (a float copy of each would quadruple a
+/// pose's memory), their neighbourhood sums as 16-bit (`scale` = 1 / the neighbourhood's size),
+/// anything else as float.
+double greyAt(const cv::Mat &g, int y, int x, double scale) {
+    switch (g.depth()) {
+        case CV_8U: return g.at<uchar>(y, x);
+        case CV_16U: return scale * g.at<ushort>(y, x);
+        default: return g.at<float>(y, x);
+    }
 }
 
 /// Gray code to binary, `bits` wide.
@@ -127,10 +132,11 @@ void decodePass(const std::vector<cv::Mat> &grey, int width, int height, const G
     const int pairs = col_bits + row_bits;
     std::vector<double> diff(pairs), sum(pairs);
     const cv::Size size = grey[0].size();
+    const double scale = 1.0 / ((2 * cfg.pool_px + 1) * (2 * cfg.pool_px + 1));
     for (int y = 0; y < size.height; ++y)
         for (int x = 0; x < size.width; ++x) {
             if (!std::isnan(d.column.at<double>(y, x))) continue;
-            const double white = grey[0].at<float>(y, x), black = grey[1].at<float>(y, x);
+            const double white = greyAt(grey[0], y, x, scale), black = greyAt(grey[1], y, x, scale);
             if (!(white - black >= cfg.min_contrast)) continue;
             // The pixel's direct light from the projector: the largest pattern - inverse
             // difference (a coarse stripe's; light scattered from the board's neighbourhood
@@ -139,7 +145,7 @@ void decodePass(const std::vector<cv::Mat> &grey, int width, int height, const G
             // (complementary patterns), so the spread of that sum over the pairs is noise.
             double direct = 0, mean_sum = 0;
             for (int i = 0; i < pairs; ++i) {
-                const double p = grey[2 + 2 * i].at<float>(y, x), q = grey[3 + 2 * i].at<float>(y, x);
+                const double p = greyAt(grey[2 + 2 * i], y, x, scale), q = greyAt(grey[3 + 2 * i], y, x, scale);
                 diff[i] = p - q;
                 sum[i] = p + q - white - black;
                 direct = std::max(direct, std::abs(diff[i]));
@@ -199,7 +205,13 @@ GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, const std::vector<
     std::vector<cv::Mat> grey;
     for (const auto &c : captures)
         if (c.size() != size || c.empty()) throw std::invalid_argument("gray decode: captures of different sizes");
-    for (const int i : slot) grey.push_back(toGrey(captures[i]));
+    bool eight_bit = true;
+    for (const int i : slot) {
+        grey.push_back(greyscale(captures[i]));
+        eight_bit = eight_bit && grey.back().depth() == CV_8U;
+    }
+    if (!eight_bit)
+        for (auto &g : grey) g.convertTo(g, CV_32F);
     GrayDecoding d;
     const double nan = std::numeric_limits<double>::quiet_NaN();
     d.column = cv::Mat(size, CV_64F, cv::Scalar(nan));
@@ -207,11 +219,29 @@ GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, const std::vector<
     d.confidence = cv::Mat(size, CV_8U, cv::Scalar(0));
     d.direct = cv::Mat(size, CV_32F, cv::Scalar(0));
     decodePass(grey, width, height, cfg, false, d);
-    if (cfg.pool_px > 0) {
+    // Pixels lit enough to try that are still undecoded.
+    int left = 0;
+    for (int y = 0; y < size.height && left == 0; ++y)
+        for (int x = 0; x < size.width; ++x)
+            if (std::isnan(d.column.at<double>(y, x)) &&
+                greyAt(grey[0], y, x, 1.0) - greyAt(grey[1], y, x, 1.0) >= cfg.min_contrast) {
+                ++left;
+                break;
+            }
+    if (cfg.pool_px > 0 && left > 0) {
         // Pixels too dark to decode alone (a board's black squares): the same rules on the
         // means of their neighbourhoods, whose noise is (2 pool_px + 1) times smaller.
         const cv::Size box(2 * cfg.pool_px + 1, 2 * cfg.pool_px + 1);
-        for (auto &g : grey) cv::blur(g, g, box, cv::Point(-1, -1), cv::BORDER_REPLICATE);
+        for (auto &g : grey) {
+            if (g.depth() == CV_8U && 255 * box.area() <= 65535) {  // exact sums in 16 bits, read back scaled
+                cv::Mat sums;
+                cv::boxFilter(g, sums, CV_16U, box, cv::Point(-1, -1), false, cv::BORDER_REPLICATE);
+                g = sums;
+            } else {
+                if (g.depth() != CV_32F) g.convertTo(g, CV_32F);
+                cv::blur(g, g, box, cv::Point(-1, -1), cv::BORDER_REPLICATE);
+            }
+        }
         decodePass(grey, width, height, cfg, true, d);
     }
     return d;

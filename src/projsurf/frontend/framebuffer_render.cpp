@@ -15,6 +15,7 @@ FramebufferRender keystoneFor(const Projector &projector, const Rectangle &rect,
     FramebufferRender out;
     if (!(tolerance_px >= 0.0 && tolerance_px <= 1e6)) {  // NaN too: the CLI and Python share this
         out.problem = "the keystone tolerance must be a finite number of pixels, 0 or more";
+        out.tolerance_refused = true;
         return out;
     }
     KeystoneResult k = computeKeystone(projector, rect, picture, tolerance_px);

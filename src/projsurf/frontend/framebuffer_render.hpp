@@ -13,8 +13,9 @@ namespace projsurf::frontend {
 
 struct FramebufferRender {
     std::optional<Keystone> keystone;  ///< nullopt when the picture cannot be shown in the rectangle
-    cv::Mat image;        ///< of the projector's resolution and the picture's type; empty without a keystone
-    std::string problem;  ///< why the picture cannot be shown (empty when it can)
+    cv::Mat image;                   ///< of the projector's resolution and the picture's type; empty without a keystone
+    std::string problem;             ///< why the picture cannot be shown (empty when it can)
+    bool tolerance_refused = false;  ///< the problem is the tolerance given, not the rectangle
     /// The picture's aspect ratio differs from the rectangle's, so bars of the rectangle stay
     /// dark (letterbox or pillarbox).
     bool letterboxed = false;

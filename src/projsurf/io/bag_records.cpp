@@ -14,6 +14,7 @@
 #endif
 
 #include "projsurf/io/errors.hpp"
+#include "projsurf/io/utf8_text.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"
 
@@ -343,6 +344,12 @@ std::string RosReader::string() {
     need(n);
     std::string s = bytes_.substr(pos_, n);
     pos_ += n;
+    return s;
+}
+
+std::string RosReader::text(const char *field) {
+    std::string s = string();
+    if (!isUtf8(s)) throw InputError(source_, std::string(field) + " is not UTF-8 text");
     return s;
 }
 

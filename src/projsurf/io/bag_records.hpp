@@ -57,6 +57,8 @@ public:
     std::uint8_t u8();
     std::uint32_t u32();
     std::string string();
+    /// A string that becomes text (JSON): not UTF-8 is an InputError naming `field`.
+    std::string text(const char *field);
     /// A uint8[] array: its length, and the position of its first byte in the message.
     std::size_t bytes(std::size_t &length);
     std::size_t remaining() const { return bytes_.size() - pos_; }

@@ -194,7 +194,12 @@ void requireImageWriter(const std::string &path) {
     if (!ok) throw InputError(path, "cannot write an image with this extension (use .png)");
 }
 
-cv::Mat readImage(const std::string &path, int flags, std::uint64_t max_pixels) {
+namespace {
+
+/// readImage's work; `width` > 0: the header must give exactly width x height (else the
+/// mismatch is named, with `whose` size it should have been).
+cv::Mat decodeImageFile(const std::string &path, int flags, std::uint64_t max_pixels, int width, int height,
+                        const std::string &whose) {
     requireReadable(path);
     std::error_code ec;
     const auto size = fs::file_size(path, ec);
@@ -213,6 +218,10 @@ cv::Mat readImage(const std::string &path, int flags, std::uint64_t max_pixels) 
     if (header.format.empty()) throw InputError(path, "not a readable image (expected PNG, JPEG, BMP or PNM)");
     if (header.width == 0 || header.height == 0)
         throw InputError(path, "not a readable image (" + header.format + " header gives a zero size)");
+    if (width > 0 && (header.width != static_cast<std::uint64_t>(width) ||
+                      header.height != static_cast<std::uint64_t>(height)))
+        throw InputError(path, "is " + std::to_string(header.width) + "x" + std::to_string(header.height) + ", " +
+                                   whose + " says " + std::to_string(width) + "x" + std::to_string(height));
     if (header.width * header.height > max_pixels)
         throw InputError(path, header.format + " image of " + std::to_string(header.width) + " x " +
                                    std::to_string(header.height) + " pixels exceeds the limit of " +
@@ -227,7 +236,20 @@ cv::Mat readImage(const std::string &path, int flags, std::uint64_t max_pixels) 
     if (image.empty()) throw InputError(path, "not a readable image (corrupt " + header.format + " data)");
     if (static_cast<std::uint64_t>(image.total()) > max_pixels)  // the header lied
         throw InputError(path, "image exceeds the limit of " + std::to_string(max_pixels) + " pixels");
+    if (width > 0 && (image.cols != width || image.rows != height))  // the header lied
+        throw InputError(path, "is " + std::to_string(image.cols) + "x" + std::to_string(image.rows) + ", " + whose +
+                                   " says " + std::to_string(width) + "x" + std::to_string(height));
     return image;
+}
+
+}  // namespace
+
+cv::Mat readImage(const std::string &path, int flags, std::uint64_t max_pixels) {
+    return decodeImageFile(path, flags, max_pixels, 0, 0, "");
+}
+
+cv::Mat readImageOfSize(const std::string &path, int flags, int width, int height, const std::string &whose) {
+    return decodeImageFile(path, flags, static_cast<std::uint64_t>(width) * height, width, height, whose);
 }
 
 }  // namespace projsurf

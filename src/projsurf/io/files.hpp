@@ -19,6 +19,9 @@ void writeImageAtomic(const std::string &path, const cv::Mat &image);
 /// before decoding. Decoder diagnostics are silenced. Throws InputError naming the path when
 /// missing, unreadable, of another format or over the limits.
 cv::Mat readImage(const std::string &path, int flags, std::uint64_t max_pixels = limits::kMaxImagePixels);
+/// readImage of an image that must be `width` x `height` (the camera's, as `whose` says: "camera.yaml");
+/// another size is an InputError saying both, before anything is decoded.
+cv::Mat readImageOfSize(const std::string &path, int flags, int width, int height, const std::string &whose);
 
 /// The outputs of one command as a group (never a partial output): each add writes a
 /// temporary file beside its target (same folder, so the rename cannot cross file systems);

@@ -35,6 +35,10 @@ constexpr std::uint64_t kMaxBagHeaderBytes = std::uint64_t{1} << 20;
 /// once decoded: 64 captures of 1280 x 720, 32 of 1920 x 1080).
 constexpr std::uint64_t kMaxCaptures = 100;
 constexpr std::uint64_t kMaxCapturePixels = std::uint64_t{1} << 26;
+/// Structured-light calibration: at most 100 poses, and the bytes the decoding allocates (one
+/// pose's captures and decoding at a time, every pose's lifted points; see
+/// structuredLightBytes in io/pattern_files.hpp) at most 1.5 GiB.
+constexpr std::uint64_t kMaxStructuredLightBytes = std::uint64_t{1536} << 20;
 /// Bytes of a YAML file (camera, calibration): 64 KiB; of a detection JSON file: 1 MiB;
 /// nesting depth of either: 64.
 constexpr std::uint64_t kMaxYamlBytes = std::uint64_t{64} << 10;

@@ -65,7 +65,7 @@ RosHeader header(RosReader &r) {
     h.seq = r.u32();
     h.sec = r.u32();
     h.nsec = r.u32();
-    h.frame_id = r.string();
+    h.frame_id = r.text("header.frame_id");
     return h;
 }
 

@@ -21,7 +21,7 @@ PointCloud2View parsePointCloud2(const std::string &bytes, const std::string &so
     RosReader r(bytes, source);
     r.u32();  // header.seq
     const std::uint32_t sec = r.u32(), nsec = r.u32();
-    info.frame_id = r.string();
+    info.frame_id = r.text("header.frame_id");
     if (sec != 0 || nsec != 0) info.stamp = sec + 1e-9 * nsec;
     PointCloud2View v;
     v.height = r.u32();

@@ -1,0 +1,101 @@
+"""Hostile arguments to the Python module: every one a short projsurf.InputError (one line,
+naming the argument), never a crash, a MemoryError or pybind11's TypeError listing every
+signature. Run by ctest (python_tests) with the other module tests."""
+import math
+
+import numpy as np
+import pytest
+
+import projsurf
+from test_projsurf import EXAMPLE_CALIB, wall_and_floor
+
+
+@pytest.fixture(scope="module")
+def projector():
+    return projsurf.read_calibration(EXAMPLE_CALIB)
+
+
+@pytest.fixture(scope="module")
+def detection(projector):
+    det = projsurf.detect(wall_and_floor(), projector)
+    assert det["found"], det["reason"]
+    return det
+
+
+def one_line(error):
+    text = str(error.value)
+    assert "\n" not in text, text
+    return text
+
+
+def test_huge_broadcast_images_are_refused_before_any_copy(projector, detection, tmp_path):
+    # 2^20 x 2^20 x 3 bytes (3 TiB) of one element: the contiguous copy used to fail into a null image.
+    huge = np.broadcast_to(np.uint8(1), (2 ** 20, 2 ** 20, 3))
+    with pytest.raises(projsurf.InputError) as info:
+        projsurf.correct(huge, projector, detection)
+    assert one_line(info).startswith("image: ")
+    with pytest.raises(projsurf.InputError) as info:
+        projsurf.write_image(str(tmp_path / "h.png"), huge)
+    assert one_line(info).startswith("image: ")
+    assert not (tmp_path / "h.png").exists()
+    with pytest.raises(projsurf.InputError) as info:
+        projsurf.depth_to_cloud(np.broadcast_to(np.uint16(1000), (2 ** 20, 2 ** 20)), fx=525, fy=525, cx=320, cy=240)
+    assert one_line(info).startswith("depth: ")
+
+
+def test_clouds_beyond_the_point_limit_are_refused(projector):
+    with pytest.raises(projsurf.InputError) as info:
+        projsurf.detect(np.broadcast_to(np.float32(1), (2 ** 40, 3)), projector)
+    assert one_line(info).startswith("points: ")
+    # One point over the limit of 2^24.
+    with pytest.raises(projsurf.InputError) as info:
+        projsurf.detect(np.broadcast_to(np.float32(1), (2 ** 24 + 1, 3)), projector)
+    assert "16777216" in one_line(info)
+
+
+@pytest.mark.parametrize("kwargs, start", [
+    (dict(resolution="1280x800"), "resolution: expected (width, height) in px"),
+    (dict(resolution=(1280.5, 800)), "resolution: expected (width, height) in px"),
+    (dict(fov_deg=None), "fov_deg: expected (horizontal, vertical) in deg"),
+    (dict(origin="here"), "origin: expected three numbers (m)"),
+    (dict(direction=[0, 1]), "direction: expected three numbers"),
+    # Values the calibration reader refuses in a file: the same rules here.
+    (dict(fov_deg=(0.6, 0.4)), "Projector: projector.fov_deg [0.6, 0.4] looks like radians"),
+    (dict(origin=[1e300, 0, 0]), "Projector: projector.axis.origin is more than 3 m"),
+    (dict(origin=[math.nan, 0, 0]), "origin: is not finite"),
+    (dict(resolution=(16384, 16384)), "resolution: exceeds the limit of 33554432 framebuffer pixels"),
+])
+def test_projector_arguments_are_checked_as_in_a_calibration_file(kwargs, start):
+    with pytest.raises(projsurf.InputError) as info:
+        projsurf.Projector(**kwargs)
+    assert one_line(info).startswith(start)
+
+
+def test_wrong_types_are_short_input_errors(projector, detection):
+    cloud = wall_and_floor(64, 48, f=52.5)
+    picture = np.zeros((10, 10, 3), np.uint8)
+    cases = [
+        (lambda: projsurf.detect(cloud, "projector"), "projector: expected a projsurf.Projector"),
+        (lambda: projsurf.detect(cloud, projector, seed=-1), "seed: expected a whole number"),
+        (lambda: projsurf.detect(cloud, projector, method=3), "method: expected a str"),
+        (lambda: projsurf.Detector("projector"), "projector: expected a projsurf.Projector"),
+        (lambda: projsurf.keystone(projector, detection, "640x480"), "picture_size: expected (width, height)"),
+        (lambda: projsurf.keystone(projector, detection, (640, 480), tolerance_px="2"), "tolerance_px: expected a number"),
+        (lambda: projsurf.correct("picture", projector, detection), "image: expected an image of dtype"),
+        (lambda: projsurf.correct(picture, 1280, detection), "projector: expected a projsurf.Projector"),
+        (lambda: projsurf.plan(cloud, projector, width="wide"), "width: expected a number of m"),
+        (lambda: projsurf.depth_to_cloud(np.zeros((4, 4), np.uint16), fx="525", fy=525, cx=2, cy=2), "fx: expected a number"),
+        (lambda: projsurf.read_image(3), "path: expected a str"),
+        (lambda: projsurf.write_image(None, picture), "path: expected a str"),
+    ]
+    for call, start in cases:
+        with pytest.raises(projsurf.InputError) as info:
+            call()
+        assert one_line(info).startswith(start), (start, str(info.value))
+
+
+def test_tolerance_that_is_not_a_number_is_refused(projector, detection):
+    for bad in (math.nan, -1.0, math.inf):
+        with pytest.raises(projsurf.InputError) as info:
+            projsurf.correct(np.zeros((48, 64, 3), np.uint8), projector, detection, tolerance_px=bad)
+        assert "tolerance_px" in one_line(info)
