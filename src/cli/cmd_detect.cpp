@@ -8,7 +8,6 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli/commands.hpp"
-#include "projsurf/detection/colour/colour_registration.hpp"
 #include "projsurf/detection/gravity.hpp"
 #include "projsurf/frontend/aspect.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
@@ -18,6 +17,7 @@
 #include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
+#include "projsurf/frontend/registered_colour.hpp"
 #include "projsurf/frontend/stamp_pairing.hpp"
 #include "projsurf/frontend/suitability_mode.hpp"
 #include "projsurf/io/cloud_io.hpp"
@@ -49,30 +49,6 @@ void warnIfTilted(const Cloud &cloud) {
                      "projsurf: warning: the floor says the camera is tilted %.0f deg from level; give --gravity auto "
                      "(or the robot's gravity) so that the picture stands upright\n",
                      *deg);
-}
-
-/// --rgb: the colour goes into the cloud only when its edges fit the depth's (issue 14), else
-/// it is not used at all (one warning line). False when it is not used.
-bool attachRegisteredColour(Cloud &cloud, const cv::Mat &color, const std::string &file) {
-    if (!cloud.organized()) {
-        std::fprintf(
-            stderr,
-            "projsurf: warning: %s: colour needs an organized cloud or a depth image to be registered to; not used\n",
-            file.c_str());
-        return false;
-    }
-    const RegistrationResult r = checkColourRegistration(cloud, color);
-    if (r.checked && !r.registered) {
-        std::fprintf(stderr, "projsurf: warning: %s: colour is not registered to the depth (%s); not used\n",
-                     file.c_str(), r.summary().c_str());
-        return false;
-    }
-    if (!r.checked)
-        std::fprintf(
-            stderr,
-            "projsurf: warning: %s: cannot check that the colour is registered to the depth (%s); used as given\n",
-            file.c_str(), r.summary().c_str());
-    return attachColour(cloud, color);
 }
 
 /// Options the chosen method does not use.
@@ -240,17 +216,9 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     cv::Mat color;
     if (!o.rgb.empty()) {
         color = readImage(o.rgb, cv::IMREAD_UNCHANGED);
-        if (color.depth() != CV_8U || color.channels() != 3)
-            throw InputError(o.rgb, std::string("expected 8-bit 3-channel colour (B, G, R), got ") +
-                                        (color.depth() == CV_8U ? "8" : color.depth() == CV_16U ? "16" : "non-8") +
-                                        "-bit with " + std::to_string(color.channels()) + " channel" +
-                                        (color.channels() == 1 ? "" : "s") +
-                                        (color.depth() == CV_16U && color.channels() == 1 ? " (a depth PNG?)" : ""));
-        if (cloud.organized() && (color.cols != cloud.width || color.rows != cloud.height))
-            throw InputError(o.rgb, "colour image is " + std::to_string(color.cols) + "x" + std::to_string(color.rows) +
-                                        ", the cloud is " + std::to_string(cloud.width) + "x" +
-                                        std::to_string(cloud.height));
-        if (!attachRegisteredColour(cloud, color, o.rgb)) color.release();
+        const frontend::ColourAttachment attached = frontend::attachRegisteredColour(cloud, color, o.rgb);
+        for (const std::string &w : attached.warnings) std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
+        if (!attached.used) color.release();
     }
     if (!o.suitability.empty() && o.suitability != "off" && !cloud.hasColour() && cfg.method == Method::Default)
         std::fprintf(stderr,
