@@ -199,6 +199,21 @@ TEST(CliWarnings, SwappedFilesRosCameraInfoUnknownKeysAndImagesAsJsonAreNamed) {
             dir);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find((dir / "e.png").string() + ": is a PNG image, not a JSON file"), std::string::npos) << r.err;
+    // The calibration given as the detection (the two swapped), and a text file that is no JSON.
+    r = cli("correct --calib " + kCalib + " --detection " + kCalib + " --image " + (kFrame / "rgb.png").string() +
+                " --out " + (dir / "fb.png").string(),
+            dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find(kCalib + ": is a YAML file"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--detection and --calib swapped?"), std::string::npos) << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    std::ofstream(dir / "notes.txt") << "found: yes\n";
+    r = cli("correct --calib " + kCalib + " --detection " + (dir / "notes.txt").string() + " --image " +
+                (kFrame / "rgb.png").string() + " --out " + (dir / "fb.png").string(),
+            dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("is not JSON (it does not begin with '{')"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "fb.png"));
     fs::remove_all(dir);
 }
 
@@ -211,6 +226,21 @@ TEST(CliWarnings, VersionAndUsageMistakesCarryTheErrorPrefix) {
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err.rfind("projsurf: error: ", 0), 0u) << r.err;
     EXPECT_EQ(lines(r.err), 1) << r.err;
+    // The unknown word is named, not the required option CLI11 checks first.
+    EXPECT_NE(r.err.find("unknown option '--no-such-option' for projsurf detect"), std::string::npos) << r.err;
+    r = cli("detcet --calib c.yaml", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("projsurf: error: unknown command 'detcet' (commands: detect,"), std::string::npos) << r.err;
+    r = cli("", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("projsurf: error: a command is required (commands: detect,"), std::string::npos) << r.err;
+    r = cli("detect", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "projsurf: error: --calib is required (see projsurf detect --help)\n");
+    r = cli("detect --calib " + kCalib + " --cloud x.pcd stray", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("projsurf: error: unexpected argument 'stray' for projsurf detect"), std::string::npos)
+        << r.err;
     fs::remove_all(dir);
 }
 
