@@ -82,7 +82,7 @@ TEST(CliWarnings, CalibrationInRadiansOrMillimetresIsRefused) {
     fs::remove_all(dir);
 }
 
-TEST(CliWarnings, DepthScaleFiveTimesTooSmallOrACloudInMillimetresIsNamed) {
+TEST(CliWarnings, DepthScaleFiveTimesOffEitherWayOrACloudInMillimetresIsNamed) {
     const fs::path dir = freshDir("warnings_range");
     // 5000 -> 1000: the median depth is 5 times too far (about 12 m).
     writeEdited(kFrame / "camera.yaml", dir / "camera.yaml", "depth_scale: *[0-9.]+", "depth_scale: 1000");
@@ -100,6 +100,17 @@ TEST(CliWarnings, DepthScaleFiveTimesTooSmallOrACloudInMillimetresIsNamed) {
             dir);
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("minimum range"), std::string::npos) << r.err;
+    // 5000 -> 25000: 5 times too near (median about 0.48 m), above the minimum range but a
+    // close-up no projector robot works at: warned too, and the file named.
+    writeEdited(kFrame / "camera.yaml", dir / "five.yaml", "depth_scale: *[0-9.]+", "depth_scale: 25000");
+    r = cli(depthArgs(dir / "five.yaml") + " --calib " + kCalib + " --gravity auto --json " + (dir / "f.json").string(),
+            dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("projsurf: warning: " + (dir / "five.yaml").string() + ": the median depth is 0.4"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("nearer than a projector robot works (under 0.75 m"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("check its depth_scale"), std::string::npos) << r.err;
     // The right scale: no range warning.
     r = cli(depthArgs() + " --calib " + kCalib + " --gravity auto --json " + (dir / "c.json").string(), dir);
     EXPECT_EQ(r.status, 0) << r.err;
