@@ -2,6 +2,7 @@
 
 #include <pybind11/numpy.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -9,6 +10,7 @@
 #include "projsurf/frontend/aspect.hpp"
 #include "projsurf/frontend/depth_range_check.hpp"
 #include "projsurf/frontend/gravity_sanity.hpp"
+#include "projsurf/frontend/method_settings.hpp"
 #include "projsurf/frontend/suitability_mode.hpp"
 #include "projsurf/io/errors.hpp"
 
@@ -68,6 +70,61 @@ frontend::GravityChoice gravityFrom(const py::object &gravity) {
     return frontend::gravityChoiceFrom("gravity", g.data(), 3);
 }
 
+/// A pipeline setting by its CLI option's name and range (cmd_detect.cpp's CLI::Range checks).
+struct Setting {
+    const char *name;
+    double lo, hi;  ///< allowed range, the option's unit
+    bool whole;     ///< a count
+};
+constexpr Setting kSettings[] = {
+    {"max_tilt", 0.0, 1.5, false},        {"voxel_leaf", 0.001, 1.0, false}, {"ransac_distance", 0.001, 1.0, false},
+    {"max_outliers", 0.0, 1e9, true},     {"cell", 0.002, 0.5, false},       {"max_planes", 1.0, 20.0, true},
+    {"max_outlier_fraction", 0.0, 1.0, false},
+};
+
+double &settingIn(DetectorConfig &c, const std::string &name) {
+    static double unused = 0;
+    if (name == "max_tilt") return c.max_tilt;
+    if (name == "voxel_leaf") return c.paper.voxel_leaf;
+    if (name == "ransac_distance") return c.paper.ransac_distance;
+    if (name == "cell") return c.free_space.cell;
+    if (name == "max_outlier_fraction") return c.check.max_outlier_fraction;
+    return unused;
+}
+
+const char *const kNamedArguments =
+    "points, projector, aspect, gravity, method, hull, seed, min_width, min_area, suitability, colour";
+
+/// Puts the keyword settings into `o`; returns the names given.
+std::vector<std::string> applySettings(const py::dict &settings, DetectorOptions &o) {
+    std::vector<std::string> given;
+    for (const auto &item : settings) {
+        const std::string name = py::str(item.first).cast<std::string>();
+        const Setting *s = nullptr;
+        for (const Setting &k : kSettings)
+            if (name == k.name) s = &k;
+        if (!s) {
+            std::string known = kNamedArguments;
+            for (const Setting &k : kSettings) known += std::string(", ") + k.name;
+            throw InputError(name, "unknown keyword argument (known: " + known + ")");
+        }
+        char range[80];
+        std::snprintf(range, sizeof range, "between %g and %g", s->lo, s->hi);
+        if (s->whole) {
+            const long long v = wholeArgument(item.second, s->name, static_cast<long long>(s->lo),
+                                              static_cast<long long>(s->hi));
+            (name == "max_planes" ? o.config.planes.max_planes : o.config.paper.max_outliers) = static_cast<int>(v);
+        } else {
+            const double v = numberArgument(item.second, s->name);
+            if (!(v >= s->lo && v <= s->hi))
+                throw InputError(name, std::string("must be ") + range + ", got " + describe(item.second));
+            settingIn(o.config, name) = v;
+        }
+        given.push_back(name);
+    }
+    return given;
+}
+
 }  // namespace
 
 DetectorOptions detectorOptions(const DetectorArguments &a) {
@@ -80,7 +137,7 @@ DetectorOptions detectorOptions(const DetectorArguments &a) {
         o.config.method = Method::Default;
     else
         throw InputError("method", "expected 'default' or 'paper', got '" + method + "'");
-    const std::string hull = wordArgument(a.hull, "hull");
+    const std::string hull = a.hull.is_none() ? "concave" : wordArgument(a.hull, "hull");
     if (hull == "concave")
         o.config.paper.hull = HullKind::Concave;
     else if (hull == "convex")
@@ -98,6 +155,14 @@ DetectorOptions detectorOptions(const DetectorArguments &a) {
     o.minimum.area = minimumFrom("min_area", a.min_area, defaults.area);
     o.gravity = gravityFrom(a.gravity);
     o.gravity_given = !a.gravity.is_none() && !o.gravity.from_floor;
+    std::vector<std::string> given = a.settings ? applySettings(a.settings, o) : std::vector<std::string>{};
+    if (!a.hull.is_none()) given.push_back("hull");
+    if (!a.suitability.is_none()) given.push_back("suitability");
+    std::vector<std::string> warnings;
+    for (const std::string &ignored : frontend::settingsIgnoredBy(o.config.method))
+        if (std::find(given.begin(), given.end(), ignored) != given.end())
+            warnings.push_back(ignored + " is ignored by the " + method + " method");
+    warnAll(warnings);
     return o;
 }
 

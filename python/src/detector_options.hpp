@@ -26,13 +26,19 @@ struct DetectorOptions {
 /// The keyword arguments as given (any Python object; a wrong type is an InputError).
 struct DetectorArguments {
     pybind11::object aspect, gravity, method, hull, seed, min_width, min_area, suitability;
+    /// The other keyword arguments: the pipeline settings `projsurf detect` has as options,
+    /// under the same names (max_tilt, voxel_leaf, ransac_distance, max_outliers, cell,
+    /// max_planes, max_outlier_fraction), in the same units and ranges; any other name is an
+    /// InputError that lists the known ones.
+    pybind11::dict settings;
 };
 
 /// aspect: None (the framebuffer's), a number (width / height), "W:H" or a pair (16, 9);
 /// gravity: None (level camera), 3 numbers (camera frame, pointing down; any length but zero),
 /// "gx,gy,gz" or "auto"; method: "default" | "paper"; hull: "concave" | "convex" (paper
 /// method); seed: RANSAC seed; min_width (m), min_area (m^2): None (the method's default) or a
-/// number >= 0; suitability: None, "off", "avoid" or "prefer" (detect --suitability).
+/// number >= 0; suitability: None, "off", "avoid" or "prefer" (detect --suitability). A
+/// setting the method ignores is a UserWarning, as the CLI's warning line.
 DetectorOptions detectorOptions(const DetectorArguments &arguments);
 
 /// The gravity to detect `cloud` with (the options' own, or with "auto" the floor's, else the

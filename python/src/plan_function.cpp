@@ -26,7 +26,7 @@ void addPlanFunction(py::module_ &m) {
             if (!(width >= 0.0 && width <= 50.0)) throw InputError("width", "must be between 0 and 50 m");
             if (!(max_move >= 0.0 && max_move <= 10.0)) throw InputError("max_move", "must be between 0 and 10 m");
             const DetectorOptions options = detectorOptions(
-                {aspect, gravity, py::str("default"), py::str("concave"), py::int_(42), min_width, min_area, py::none()});
+                {aspect, gravity, py::str("default"), py::none(), py::int_(42), min_width, min_area, py::none(), py::dict()});
             const Cloud cloud = cloudFromPoints(points);
             PlanOptions plan;
             plan.width = width;

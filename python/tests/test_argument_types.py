@@ -65,7 +65,7 @@ def test_paths_may_be_pathlib_paths_and_nothing_else(projector, tmp_path):
     (lambda p: projsurf.Projector(direction="forward"), "direction: expected three numbers"),
     (lambda p: p.to_pixel("here"), "point: expected three numbers"),
     (lambda p: projsurf.detect(wall_and_floor(), p, method=1), "method: expected a str, got an int 1"),
-    (lambda p: projsurf.detect(wall_and_floor(), p, hull=None), "hull: expected a str, got None"),
+    (lambda p: projsurf.detect(wall_and_floor(), p, hull=3), "hull: expected a str, got an int 3"),
     (lambda p: projsurf.detect(wall_and_floor(), p, seed=-1), "seed: expected a whole number between 0 and 4294967295, got an int -1"),
     (lambda p: projsurf.detect(wall_and_floor(), p, seed=1.5), "seed: expected a whole number"),
     (lambda p: projsurf.detect(wall_and_floor(), p, min_width="wide"), "min_width: expected a number >= 0 or None, got a str 'wide'"),

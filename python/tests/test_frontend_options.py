@@ -129,3 +129,38 @@ def test_the_clis_input_warnings_are_user_warnings(projector):
     # A cloud in millimetres.
     with pytest.warns(UserWarning, match="millimetres"):
         projsurf.detect(cloud * 1000.0, projector)
+
+
+def test_the_clis_pipeline_settings_under_the_same_names(projector):
+    points, _ = frame()
+    depth, camera = os.path.join(FRAME, "depth.png"), os.path.join(FRAME, "camera.yaml")
+    settings = {"cell": 0.02, "max_planes": 2, "max_tilt": 0.15, "max_outlier_fraction": 0.05}
+    det = projsurf.detect(points, projector, gravity="auto", **settings)
+    cli = json.loads(run_cli("detect", "--depth", depth, "--camera", camera, "--calib", EXAMPLE_CALIB, "--gravity",
+                             "auto", "--cell", "0.02", "--max-planes", "2", "--max-tilt", "0.15",
+                             "--max-outlier-fraction", "0.05").stdout)
+    default = projsurf.detect(points, projector, gravity="auto")
+    assert det["found"] == cli["found"]
+    np.testing.assert_allclose(det["rectangle"]["corners"], cli["rectangle"]["corners"], atol=1e-6)
+    # The 2 cm raster really is used: the rectangle differs from the 1 cm default's.
+    assert not np.allclose(det["rectangle"]["corners"], default["rectangle"]["corners"], atol=1e-4)
+    paper = dict(voxel_leaf=0.04, ransac_distance=0.04, max_outliers=8000)
+    a = projsurf.detect(points, projector, method="paper", **paper)
+    b = json.loads(run_cli("detect", "--depth", depth, "--camera", camera, "--calib", EXAMPLE_CALIB, "--method",
+                           "paper", "--voxel-leaf", "0.04", "--ransac-distance", "0.04", "--max-outliers",
+                           "8000").stdout)
+    assert a["found"] == b["found"] and a["surface_check"] == b["surface_check"]
+    # A setting the method ignores: the CLI's warning, as a UserWarning.
+    with pytest.warns(UserWarning, match="^cell is ignored by the paper method$"):
+        projsurf.Detector(projector, method="paper", cell=0.02)
+    with pytest.warns(UserWarning, match="^hull is ignored by the default method$"):
+        projsurf.detect(points, projector, hull="convex")
+    cli = run_cli("detect", "--depth", depth, "--camera", camera, "--calib", EXAMPLE_CALIB, "--hull", "convex")
+    assert "projsurf: warning: --hull is ignored by the default method" in cli.stderr
+    # Out of range, of the wrong type, or a name that is none of them: one line naming it.
+    with pytest.raises(projsurf.InputError, match=r"^cell: must be between 0.002 and 0.5, got a float 0.9$"):
+        projsurf.detect(points, projector, cell=0.9)
+    with pytest.raises(projsurf.InputError, match=r"^max_planes: expected a whole number between 1 and 20"):
+        projsurf.detect(points, projector, max_planes=2.5)
+    with pytest.raises(projsurf.InputError, match=r"^aspcet: unknown keyword argument \(known: points, projector, aspect,"):
+        projsurf.detect(points, projector, aspcet="16:9")

@@ -16,6 +16,7 @@
 #include "projsurf/frontend/detect_answer.hpp"
 #include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
+#include "projsurf/frontend/method_settings.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
 #include "projsurf/frontend/registered_colour.hpp"
 #include "projsurf/frontend/stamp_pairing.hpp"
@@ -51,14 +52,14 @@ void warnIfTilted(const Cloud &cloud) {
                      *deg);
 }
 
-/// Options the chosen method does not use.
+/// Options the chosen method does not use (frontend/method_settings.hpp).
 void warnIfIgnored(const CLI::App &sub, Method method) {
-    const std::vector<const char *> paper_only{"--hull", "--voxel-leaf", "--ransac-distance", "--max-outliers"};
-    const std::vector<const char *> default_only{"--cell", "--max-planes", "--max-outlier-fraction", "--suitability"};
-    for (const char *name : method == Method::Paper ? default_only : paper_only)
+    for (const std::string &setting : frontend::settingsIgnoredBy(method)) {
+        const std::string name = frontend::optionName(setting);
         if (sub.get_option(name)->count() > 0)
-            std::fprintf(stderr, "projsurf: warning: %s is ignored by the %s method\n", name,
+            std::fprintf(stderr, "projsurf: warning: %s is ignored by the %s method\n", name.c_str(),
                          method == Method::Paper ? "paper" : "default");
+    }
 }
 
 /// The topic --bag reads: --topic, else the bag's one usable topic (a PointCloud2, or a
