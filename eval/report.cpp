@@ -390,6 +390,77 @@ std::vector<std::pair<std::string, cv::Mat>> evalPlots(const sim::EvalResults &r
     return out;
 }
 
+std::vector<HeadlineRow> evalHeadline(const sim::EvalResults &res) {
+    const auto &T = res.trials;
+    std::vector<HeadlineRow> rows;
+    for (double a : anglesOf(T, "wall")) {
+        const auto *row = sim::findPaperRow("1", "concave", a);
+        rows.push_back({"Table 1, plain wall, " + angleLabel(a) + ", concave hull: success (%)",
+                        row ? pct(row->average_success_pct) : "–",
+                        pct(sumFor(T, "wall", "paper-concave", a, kNaN).paperRatePct()),
+                        pct(sumFor(T, "wall", "paper-concave", a, kNaN).truthRatePct()),
+                        pct(sumFor(T, "wall", "paper-concave", a, kNaN).slackRatePct()),
+                        pct(sumFor(T, "wall", "default", a, kNaN).truthRatePct())});
+    }
+    for (double a : anglesOf(T, "closet")) {
+        const auto *row = sim::findPaperRow("2", "cluttered", a);
+        rows.push_back({"Table 2, cluttered (closet), " + angleLabel(a) + ": success (%)",
+                        row ? pct(row->average_success_pct) : "–",
+                        pct(sumFor(T, "closet", "paper-concave", a, kNaN).paperRatePct()),
+                        pct(sumFor(T, "closet", "paper-concave", a, kNaN).truthRatePct()),
+                        pct(sumFor(T, "closet", "paper-concave", a, kNaN).slackRatePct()),
+                        pct(sumFor(T, "closet", "default", a, kNaN).truthRatePct())});
+    }
+    {
+        // Fig 15: the surface check's decisions, judged by ground truth.
+        int pn = 0, pc = 0, dn = 0, dc = 0;
+        for (const auto &[scenario, tag] : kCheckScenarios) {
+            const Summary p = sumFor(T, scenario, "paper-concave", kNaN, kNaN),
+                          d = sumFor(T, scenario, "default", kNaN, kNaN);
+            pn += p.checked;
+            pc += p.decisions_correct;
+            dn += d.checked;
+            dc += d.decisions_correct;
+        }
+        if (pn + dn > 0)
+            rows.push_back({"Fig 15, NO/SO/BO: surface-check decisions that were right (%)", "–",
+                            pct(pn ? 100.0 * pc / pn : kNaN), "", "", pct(dn ? 100.0 * dc / dn : kNaN)});
+    }
+    if (!res.keystone.empty()) {
+        double worst_p = kNaN, worst_d = kNaN;
+        for (const auto &[a, d] : keystonePoses(res.keystone)) {
+            const KeyStats kp = keyStats(res.keystone, a, d, "paper-concave"),
+                           kd = keyStats(res.keystone, a, d, "default");
+            for (double v : {kp.h, kp.v, kp.g})
+                if (!std::isnan(v)) worst_p = std::isnan(worst_p) ? v : std::max(worst_p, v);
+            for (double v : {kd.h, kd.v, kd.g})
+                if (!std::isnan(v)) worst_d = std::isnan(worst_d) ? v : std::max(worst_d, v);
+        }
+        rows.push_back({"Table 3: worst mean eq. 8 error of the corrected picture (%)", "3.46", num(worst_p, 2), "", "",
+                        num(worst_d, 2)});
+    }
+    {
+        const auto all = [&](const std::string &m) {
+            return sim::summarize(sim::select(T, [&](const Trial &t) { return t.method == m; }));
+        };
+        rows.push_back({"Time per detection, median (ms)", "~1500", num(all("paper-concave").time_median_ms, 1), "", "",
+                        num(all("default").time_median_ms, 1)});
+    }
+    return rows;
+}
+
+std::string evalHeadlineText(const sim::EvalResults &res) {
+    std::string out =
+        "Tables 1-3 (published | ours, paper method: paper's criterion, ground truth, + 40 px slack | ours, default "
+        "method: ground truth; report.md's Headline):";
+    for (const HeadlineRow &r : evalHeadline(res)) {
+        out += "\n  " + r.experiment + ": " + r.published + " | " + r.paper_criterion;
+        if (!r.paper_truth.empty()) out += ", " + r.paper_truth + ", " + r.paper_slack;
+        out += " | " + r.default_truth;
+    }
+    return out;
+}
+
 std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<GalleryEntry> &gallery,
                                const ReportInfo &info) {
     const auto &T = res.trials;
@@ -418,59 +489,10 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
     md << "| Experiment | published | ours, paper method, paper's criterion | ours, paper method, ground truth | "
           "ours, paper method, ground truth + 40 px slack | ours, default method, ground truth |\n"
           "|---|---:|---:|---:|---:|---:|\n";
-    for (double a : anglesOf(T, "wall")) {
-        const auto *row = sim::findPaperRow("1", "concave", a);
-        md << "| Table 1, plain wall, " << angleLabel(a) << ", concave hull: success (%) | "
-           << (row ? pct(row->average_success_pct) : "–") << " | "
-           << pct(sumFor(T, "wall", "paper-concave", a, kNaN).paperRatePct()) << " | "
-           << pct(sumFor(T, "wall", "paper-concave", a, kNaN).truthRatePct()) << " | "
-           << pct(sumFor(T, "wall", "paper-concave", a, kNaN).slackRatePct()) << " | "
-           << pct(sumFor(T, "wall", "default", a, kNaN).truthRatePct()) << " |\n";
-    }
-    for (double a : anglesOf(T, "closet")) {
-        const auto *row = sim::findPaperRow("2", "cluttered", a);
-        md << "| Table 2, cluttered (closet), " << angleLabel(a) << ": success (%) | "
-           << (row ? pct(row->average_success_pct) : "–") << " | "
-           << pct(sumFor(T, "closet", "paper-concave", a, kNaN).paperRatePct()) << " | "
-           << pct(sumFor(T, "closet", "paper-concave", a, kNaN).truthRatePct()) << " | "
-           << pct(sumFor(T, "closet", "paper-concave", a, kNaN).slackRatePct()) << " | "
-           << pct(sumFor(T, "closet", "default", a, kNaN).truthRatePct()) << " |\n";
-    }
-    {
-        // Fig 15: the surface check's decisions, judged by ground truth.
-        int pn = 0, pc = 0, dn = 0, dc = 0;
-        for (const auto &[scenario, tag] : kCheckScenarios) {
-            const Summary p = sumFor(T, scenario, "paper-concave", kNaN, kNaN),
-                          d = sumFor(T, scenario, "default", kNaN, kNaN);
-            pn += p.checked;
-            pc += p.decisions_correct;
-            dn += d.checked;
-            dc += d.decisions_correct;
-        }
-        if (pn + dn > 0)
-            md << "| Fig 15, NO/SO/BO: surface-check decisions that were right (%) | – | "
-               << pct(pn ? 100.0 * pc / pn : kNaN) << " | | | " << pct(dn ? 100.0 * dc / dn : kNaN) << " |\n";
-    }
-    if (!res.keystone.empty()) {
-        double worst_p = kNaN, worst_d = kNaN;
-        for (const auto &[a, d] : keystonePoses(res.keystone)) {
-            const KeyStats kp = keyStats(res.keystone, a, d, "paper-concave"),
-                           kd = keyStats(res.keystone, a, d, "default");
-            for (double v : {kp.h, kp.v, kp.g})
-                if (!std::isnan(v)) worst_p = std::isnan(worst_p) ? v : std::max(worst_p, v);
-            for (double v : {kd.h, kd.v, kd.g})
-                if (!std::isnan(v)) worst_d = std::isnan(worst_d) ? v : std::max(worst_d, v);
-        }
-        md << "| Table 3: worst mean eq. 8 error of the corrected picture (%) | 3.46 | " << num(worst_p, 2) << " | | | "
-           << num(worst_d, 2) << " |\n";
-    }
-    {
-        const auto all = [&](const std::string &m) {
-            return sim::summarize(sim::select(T, [&](const Trial &t) { return t.method == m; }));
-        };
-        md << "| Time per detection, median (ms) | ~1500 | " << num(all("paper-concave").time_median_ms, 1) << " | | | "
-           << num(all("default").time_median_ms, 1) << " |\n\n";
-    }
+    for (const HeadlineRow &r : evalHeadline(res))
+        md << "| " << r.experiment << " | " << r.published << " | " << r.paper_criterion << " | " << r.paper_truth
+           << " | " << r.paper_slack << " | " << r.default_truth << " |\n";
+    md << "\n";
     md << "Published timings are the paper's (its robot's CPU, PCL); ours are this machine, one core.\n\n";
     md << "![Table 1](success_uncluttered.png)\n\n";
 

@@ -25,6 +25,15 @@ struct ReportInfo {
     std::string labels_dir;                                ///< where its label files came from
 };
 
+/// One row of the report's headline: the paper's Tables 1-3 (and Fig 15, timing), published
+/// beside ours, as printed (an empty cell where a column does not apply).
+struct HeadlineRow {
+    std::string experiment, published, paper_criterion, paper_truth, paper_slack, default_truth;
+};
+std::vector<HeadlineRow> evalHeadline(const sim::EvalResults &results);
+/// The same as lines for stdout (eval prints it after its run).
+std::string evalHeadlineText(const sim::EvalResults &results);
+
 /// The report's Markdown (links plots and gallery pictures by relative path).
 std::string evalReportMarkdown(const sim::EvalResults &results, const std::vector<GalleryEntry> &gallery,
                                const ReportInfo &info);

@@ -161,5 +161,21 @@ TEST(CliFirstHour, EvalSaysWhenTheDefaultRealFramesAreMissing) {
     EXPECT_NE(r.err.find("projsurf: note: ../shared/data/real: no such folder (from "), std::string::npos) << r.err;
     EXPECT_EQ(lines(r.err), 1) << r.err;
     EXPECT_TRUE(fs::exists(dir / "out" / "report.md"));
+    // The headline of Tables 1-3 on stdout, with the report's own numbers.
+    EXPECT_NE(r.out.find("Tables 1-3 (published | ours, paper method"), std::string::npos) << r.out;
+    const std::string report = slurp(dir / "out" / "report.md");
+    for (const char *row : {"Table 1, plain wall, 27.5°, concave hull: success (%)",
+                            "Table 2, cluttered (closet), -26.01°: success (%)",
+                            "Table 3: worst mean eq. 8 error of the corrected picture (%)"}) {
+        const std::size_t at = r.out.find(std::string("  ") + row + ": ");
+        ASSERT_NE(at, std::string::npos) << row << "\n" << r.out;
+        // The published value and the default method's (the last) agree with the report's row.
+        const std::string line = r.out.substr(at, r.out.find('\n', at) - at);
+        const std::string last = line.substr(line.rfind("| ") + 2);
+        const std::size_t md = report.find(std::string("| ") + row + " | ");
+        ASSERT_NE(md, std::string::npos) << row;
+        const std::string md_line = report.substr(md, report.find('\n', md) - md);
+        EXPECT_NE(md_line.find("| " + last + " |"), std::string::npos) << line << "\n" << md_line;
+    }
     fs::remove_all(dir);
 }

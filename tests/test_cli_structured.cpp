@@ -111,3 +111,30 @@ TEST(CliStructured, DemoCorrectsALensOffsetProjectorCalibratedByStructuredLight)
     EXPECT_LE(structured, 0.2);  // issue 12's end-to-end target
     fs::remove_all(dir);
 }
+
+TEST(CliStructured, SimulatedCapturesCalibrateBackToTheSimulatedProjector) {
+    // The path a user without hardware takes: simulate --structured-light, then calibrate
+    // --captures on what it wrote, against the calibration it simulated (a 100 % lens offset,
+    // so the principal point is far from the framebuffer centre).
+    const fs::path dir = test::freshDir("simulate_sl");
+    const Projector truth = sim::projectorRig({1.0, 0.0, 1.0, 0.0});
+    writeCalibration((dir / "rig.yaml").string(), truth);
+    const auto sim =
+        test::cli("simulate --structured-light --calib " + (dir / "rig.yaml").string() + " --out " + (dir / "s").string(), dir);
+    ASSERT_EQ(sim.status, 0) << sim.err;
+    EXPECT_NE(sim.out.find("calibrate --captures"), std::string::npos) << sim.out;
+    ASSERT_TRUE(fs::exists(dir / "s" / "structured" / "patterns.yaml"));
+    ASSERT_TRUE(fs::exists(dir / "s" / "calib.yaml"));
+    const auto r = test::cli(
+        "calibrate --captures " + (dir / "s" / "structured").string() + " --out " + (dir / "fit.yaml").string(), dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Projector simulated = readCalibration((dir / "s" / "calib.yaml").string());
+    const Projector fit = readCalibration((dir / "fit.yaml").string());
+    EXPECT_NEAR(simulated.cy(), truth.cy(), 1e-6);  // simulate wrote the projector it was given
+    EXPECT_NEAR(fit.cy(), simulated.cy(), 4.0);
+    EXPECT_NEAR(fit.cx(), simulated.cx(), 4.0);
+    EXPECT_NEAR(fit.fx() / simulated.fx(), 1.0, 0.01);
+    EXPECT_LT((fit.origin - simulated.origin).norm(), 0.005);
+    EXPECT_LT(std::acos(std::min(1.0, fit.axis().dot(simulated.axis()))) * 180 / M_PI, 0.2);
+    fs::remove_all(dir);
+}

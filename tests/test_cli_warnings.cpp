@@ -82,7 +82,7 @@ TEST(CliWarnings, CalibrationInRadiansOrMillimetresIsRefused) {
     fs::remove_all(dir);
 }
 
-TEST(CliWarnings, DepthScaleFiveTimesTooSmallOrACloudInMillimetresIsNamed) {
+TEST(CliWarnings, DepthScaleFiveTimesOffEitherWayOrACloudInMillimetresIsNamed) {
     const fs::path dir = freshDir("warnings_range");
     // 5000 -> 1000: the median depth is 5 times too far (about 12 m).
     writeEdited(kFrame / "camera.yaml", dir / "camera.yaml", "depth_scale: *[0-9.]+", "depth_scale: 1000");
@@ -100,6 +100,17 @@ TEST(CliWarnings, DepthScaleFiveTimesTooSmallOrACloudInMillimetresIsNamed) {
             dir);
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("minimum range"), std::string::npos) << r.err;
+    // 5000 -> 25000: 5 times too near (median about 0.48 m), above the minimum range but a
+    // close-up no projector robot works at: warned too, and the file named.
+    writeEdited(kFrame / "camera.yaml", dir / "five.yaml", "depth_scale: *[0-9.]+", "depth_scale: 25000");
+    r = cli(depthArgs(dir / "five.yaml") + " --calib " + kCalib + " --gravity auto --json " + (dir / "f.json").string(),
+            dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("projsurf: warning: " + (dir / "five.yaml").string() + ": the median depth is 0.4"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("nearer than a projector robot works (under 0.75 m"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("check its depth_scale"), std::string::npos) << r.err;
     // The right scale: no range warning.
     r = cli(depthArgs() + " --calib " + kCalib + " --gravity auto --json " + (dir / "c.json").string(), dir);
     EXPECT_EQ(r.status, 0) << r.err;
@@ -199,6 +210,21 @@ TEST(CliWarnings, SwappedFilesRosCameraInfoUnknownKeysAndImagesAsJsonAreNamed) {
             dir);
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find((dir / "e.png").string() + ": is a PNG image, not a JSON file"), std::string::npos) << r.err;
+    // The calibration given as the detection (the two swapped), and a text file that is no JSON.
+    r = cli("correct --calib " + kCalib + " --detection " + kCalib + " --image " + (kFrame / "rgb.png").string() +
+                " --out " + (dir / "fb.png").string(),
+            dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find(kCalib + ": is a YAML file"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--detection and --calib swapped?"), std::string::npos) << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    std::ofstream(dir / "notes.txt") << "found: yes\n";
+    r = cli("correct --calib " + kCalib + " --detection " + (dir / "notes.txt").string() + " --image " +
+                (kFrame / "rgb.png").string() + " --out " + (dir / "fb.png").string(),
+            dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("is not JSON (it does not begin with '{')"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "fb.png"));
     fs::remove_all(dir);
 }
 
@@ -211,6 +237,21 @@ TEST(CliWarnings, VersionAndUsageMistakesCarryTheErrorPrefix) {
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.err.rfind("projsurf: error: ", 0), 0u) << r.err;
     EXPECT_EQ(lines(r.err), 1) << r.err;
+    // The unknown word is named, not the required option CLI11 checks first.
+    EXPECT_NE(r.err.find("unknown option '--no-such-option' for projsurf detect"), std::string::npos) << r.err;
+    r = cli("detcet --calib c.yaml", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("projsurf: error: unknown command 'detcet' (commands: detect,"), std::string::npos) << r.err;
+    r = cli("", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("projsurf: error: a command is required (commands: detect,"), std::string::npos) << r.err;
+    r = cli("detect", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err, "projsurf: error: --calib is required (see projsurf detect --help)\n");
+    r = cli("detect --calib " + kCalib + " --cloud x.pcd stray", dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("projsurf: error: unexpected argument 'stray' for projsurf detect"), std::string::npos)
+        << r.err;
     fs::remove_all(dir);
 }
 

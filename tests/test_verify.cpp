@@ -76,6 +76,35 @@ TEST(Verify, FindsWhereThePictureLandedWithARightAndAWrongCalibration) {
     }
 }
 
+TEST(Verify, NothingProjectedOnTheRepositorysRealFramesIsNotFound) {
+    // A capture of a room with nothing projected: its brightest region is no test card (on the
+    // TUM frame it once made a "card" whose corners lay 2.1 m from the detection's).
+    for (const char *frame : {"tum_o3d_fr3_office_partition", "ufsec_livingroom_sofa_1"}) {
+        const std::string dir = std::string(PROJSURF_SOURCE_DIR) + "/data/" + frame;
+        const CameraIntrinsics camera = readCamera(dir + "/camera.yaml");
+        const cv::Mat rgb = cv::imread(dir + "/rgb.png", cv::IMREAD_COLOR);
+        const cv::Mat depth = cv::imread(dir + "/depth.png", cv::IMREAD_UNCHANGED);
+        ASSERT_FALSE(rgb.empty() || depth.empty()) << dir;
+        const FoundPicture f = findProjectedPicture(rgb, depth, camera);
+        EXPECT_FALSE(f.found) << frame;
+        EXPECT_FALSE(f.reason.empty()) << frame;
+    }
+    // The card wholly in view is found; moved until the image's left edge cuts it, it is not.
+    const sim::SensorModel sensor;
+    const Projector truth = sim::exampleProjector();
+    const sim::Scenario sc = sim::makeScenario("wall", 2.0, 10.0);
+    const Loop l = closeLoop(truth, truth, sc, 7);
+    ASSERT_TRUE(findProjectedPicture(l.seen.rgb, l.seen.depth, sensor.camera).found);
+    const std::array<Eigen::Vector2d, 4> px = findProjectedPicture(l.seen.rgb, l.seen.depth, sensor.camera).image_px;
+    const int left = static_cast<int>(std::min(px[0].x(), px[3].x()));
+    cv::Mat shifted;
+    const cv::Mat m = (cv::Mat_<double>(2, 3) << 1, 0, -(left + 20), 0, 1, 0);
+    cv::warpAffine(l.seen.rgb, shifted, m, l.seen.rgb.size(), cv::INTER_NEAREST, cv::BORDER_REPLICATE);
+    const FoundPicture partial = findProjectedPicture(shifted, l.seen.depth, sensor.camera);
+    EXPECT_FALSE(partial.found);
+    EXPECT_NE(partial.reason.find("edge of the colour image"), std::string::npos) << partial.reason;
+}
+
 TEST(Verify, CliReportsPassedForTheRightCalibrationAndNotFoundForADarkImage) {
     const fs::path dir = test::freshDir("projector_verify");
     const Projector truth = sim::projectorRig({1.33, 0.0, 1.0, 0.0});

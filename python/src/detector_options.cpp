@@ -2,10 +2,16 @@
 
 #include <pybind11/numpy.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "argument_types.hpp"
 #include "projsurf/frontend/aspect.hpp"
+#include "projsurf/frontend/depth_range_check.hpp"
+#include "projsurf/frontend/gravity_sanity.hpp"
+#include "projsurf/frontend/method_settings.hpp"
+#include "projsurf/frontend/suitability_mode.hpp"
 #include "projsurf/io/errors.hpp"
 
 namespace py = pybind11;
@@ -13,18 +19,27 @@ namespace py = pybind11;
 namespace projsurf::python {
 namespace {
 
-double aspectFrom(const py::object &aspect) {
-    if (aspect.is_none()) return 0.0;
-    if (py::isinstance<py::str>(aspect)) return frontend::parseAspect("aspect", aspect.cast<std::string>());
-    double a = std::nan("");
-    try {
-        a = aspect.cast<double>();
-    } catch (const py::cast_error &) {
-        return frontend::parseAspect("aspect", py::str(aspect));
-    }
+std::string exactText(double a) {
     char text[64];
     std::snprintf(text, sizeof text, "%.17g", a);  // exact: the same double read back
-    return frontend::parseAspect("aspect", text);
+    return text;
+}
+
+/// "16:9", 16 / 9 or (16, 9), read as --aspect reads its words.
+double aspectFrom(const py::object &aspect) {
+    if (aspect.is_none()) return 0.0;
+    if (PyUnicode_Check(aspect.ptr())) return frontend::parseAspect("aspect", aspect.cast<std::string>());
+    if (PyTuple_Check(aspect.ptr()) || PyList_Check(aspect.ptr())) {
+        const std::pair<double, double> wh = pairArgument(aspect, "aspect");
+        return frontend::parseAspect("aspect", exactText(wh.first) + ":" + exactText(wh.second));
+    }
+    double a = std::nan("");
+    try {
+        a = numberArgument(aspect, "aspect");
+    } catch (const InputError &) {
+        throw InputError("aspect", "expected None, a number, 'W:H' or a pair (W, H), got " + describe(aspect));
+    }
+    return frontend::parseAspect("aspect", exactText(a));
 }
 
 /// None -> `fallback`; else a finite number >= 0.
@@ -32,55 +47,144 @@ double minimumFrom(const char *name, const py::object &value, double fallback) {
     if (value.is_none()) return fallback;
     double v = std::nan("");
     try {
-        v = value.cast<double>();
-    } catch (const py::cast_error &) {
+        v = numberArgument(value, name);
+    } catch (const InputError &) {
     }
     if (!(v >= 0.0 && std::isfinite(v)))
-        throw InputError(name, "expected a number >= 0 or None, got '" + std::string(py::str(value)) + "'");
+        throw InputError(name, "expected a number >= 0 or None, got " +
+                                   (PyLong_Check(value.ptr()) || PyFloat_Check(value.ptr())
+                                        ? "'" + py::str(value).cast<std::string>() + "'"
+                                        : describe(value)));
     return v;
+}
+
+frontend::GravityChoice gravityFrom(const py::object &gravity) {
+    if (gravity.is_none()) return {};
+    if (PyUnicode_Check(gravity.ptr())) return frontend::parseGravityChoice("gravity", gravity.cast<std::string>());
+    Eigen::Vector3d g;
+    try {
+        g = vectorArgument(gravity, "gravity");
+    } catch (const InputError &) {
+        throw InputError("gravity", "expected three numbers gx, gy, gz, 'gx,gy,gz' or 'auto', got " + describe(gravity));
+    }
+    return frontend::gravityChoiceFrom("gravity", g.data(), 3);
+}
+
+/// A pipeline setting by its CLI option's name and range (cmd_detect.cpp's CLI::Range checks).
+struct Setting {
+    const char *name;
+    double lo, hi;  ///< allowed range, the option's unit
+    bool whole;     ///< a count
+};
+constexpr Setting kSettings[] = {
+    {"max_tilt", 0.0, 1.5, false},        {"voxel_leaf", 0.001, 1.0, false}, {"ransac_distance", 0.001, 1.0, false},
+    {"max_outliers", 0.0, 1e9, true},     {"cell", 0.002, 0.5, false},       {"max_planes", 1.0, 20.0, true},
+    {"max_outlier_fraction", 0.0, 1.0, false},
+};
+
+double &settingIn(DetectorConfig &c, const std::string &name) {
+    static double unused = 0;
+    if (name == "max_tilt") return c.max_tilt;
+    if (name == "voxel_leaf") return c.paper.voxel_leaf;
+    if (name == "ransac_distance") return c.paper.ransac_distance;
+    if (name == "cell") return c.free_space.cell;
+    if (name == "max_outlier_fraction") return c.check.max_outlier_fraction;
+    return unused;
+}
+
+const char *const kNamedArguments =
+    "points, projector, aspect, gravity, method, hull, seed, min_width, min_area, suitability, colour";
+
+/// Puts the keyword settings into `o`; returns the names given.
+std::vector<std::string> applySettings(const py::dict &settings, DetectorOptions &o) {
+    std::vector<std::string> given;
+    for (const auto &item : settings) {
+        const std::string name = py::str(item.first).cast<std::string>();
+        const Setting *s = nullptr;
+        for (const Setting &k : kSettings)
+            if (name == k.name) s = &k;
+        if (!s) {
+            std::string known = kNamedArguments;
+            for (const Setting &k : kSettings) known += std::string(", ") + k.name;
+            throw InputError(name, "unknown keyword argument (known: " + known + ")");
+        }
+        char range[80];
+        std::snprintf(range, sizeof range, "between %g and %g", s->lo, s->hi);
+        if (s->whole) {
+            const long long v = wholeArgument(item.second, s->name, static_cast<long long>(s->lo),
+                                              static_cast<long long>(s->hi));
+            (name == "max_planes" ? o.config.planes.max_planes : o.config.paper.max_outliers) = static_cast<int>(v);
+        } else {
+            const double v = numberArgument(item.second, s->name);
+            if (!(v >= s->lo && v <= s->hi))
+                throw InputError(name, std::string("must be ") + range + ", got " + describe(item.second));
+            settingIn(o.config, name) = v;
+        }
+        given.push_back(name);
+    }
+    return given;
 }
 
 }  // namespace
 
-DetectorOptions detectorOptions(const py::object &aspect, const py::object &gravity, const std::string &method,
-                                const std::string &hull, unsigned seed, const py::object &min_width,
-                                const py::object &min_area) {
+DetectorOptions detectorOptions(const DetectorArguments &a) {
     DetectorOptions o;
-    o.config.aspect = aspectFrom(aspect);
+    o.config.aspect = aspectFrom(a.aspect);
+    const std::string method = wordArgument(a.method, "method");
     if (method == "paper")
         o.config.method = Method::Paper;
     else if (method == "default")
         o.config.method = Method::Default;
     else
         throw InputError("method", "expected 'default' or 'paper', got '" + method + "'");
+    const std::string hull = a.hull.is_none() ? "concave" : wordArgument(a.hull, "hull");
     if (hull == "concave")
         o.config.paper.hull = HullKind::Concave;
     else if (hull == "convex")
         o.config.paper.hull = HullKind::Convex;
     else
         throw InputError("hull", "expected 'concave' or 'convex', got '" + hull + "'");
-    o.config.seed = seed;
-    const frontend::MinimumSize defaults = frontend::defaultMinimumSize(o.config.method);
-    o.minimum.width = minimumFrom("min_width", min_width, defaults.width);
-    o.minimum.area = minimumFrom("min_area", min_area, defaults.area);
-    if (py::isinstance<py::str>(gravity)) {
-        o.gravity = frontend::parseGravityChoice("gravity", gravity.cast<std::string>());
-    } else if (!gravity.is_none()) {
-        py::array_t<double, py::array::forcecast> g;
-        try {
-            g = py::array_t<double, py::array::forcecast>::ensure(gravity);
-        } catch (const py::error_already_set &) {
-        }
-        if (!g || g.size() != 3)
-            throw InputError("gravity",
-                             "expected three numbers gx,gy,gz or 'auto', got '" + std::string(py::str(gravity)) + "'");
-        o.gravity = frontend::gravityChoiceFrom("gravity", g.data(), 3);
+    o.config.seed = static_cast<unsigned>(wholeArgument(a.seed, "seed", 0, 4294967295LL));
+    if (!a.suitability.is_none()) {
+        o.config.suitability.mode =
+            frontend::parseSuitabilityMode("suitability", wordArgument(a.suitability, "suitability"));
+        o.suitability_given = true;
     }
+    const frontend::MinimumSize defaults = frontend::defaultMinimumSize(o.config.method);
+    o.minimum.width = minimumFrom("min_width", a.min_width, defaults.width);
+    o.minimum.area = minimumFrom("min_area", a.min_area, defaults.area);
+    o.gravity = gravityFrom(a.gravity);
+    o.gravity_given = !a.gravity.is_none() && !o.gravity.from_floor;
+    std::vector<std::string> given = a.settings ? applySettings(a.settings, o) : std::vector<std::string>{};
+    if (!a.hull.is_none()) given.push_back("hull");
+    if (!a.suitability.is_none()) given.push_back("suitability");
+    std::vector<std::string> warnings;
+    for (const std::string &ignored : frontend::settingsIgnoredBy(o.config.method))
+        if (std::find(given.begin(), given.end(), ignored) != given.end())
+            warnings.push_back(ignored + " is ignored by the " + method + " method");
+    warnAll(warnings);
     return o;
 }
 
-Eigen::Vector3d gravityFor(const DetectorOptions &options, const Cloud &cloud) {
-    return frontend::resolveGravity(options.gravity, cloud).gravity;
+ResolvedInput resolveInput(const DetectorOptions &options, const Cloud &cloud) {
+    ResolvedInput out;
+    const frontend::ResolvedGravity resolved = frontend::resolveGravity(options.gravity, cloud);
+    out.gravity = resolved.gravity;
+    if (options.gravity.from_floor && !resolved.floor_found)
+        out.warnings.push_back("gravity='auto' found no floor; assuming a level camera");
+    if (options.gravity_given)
+        for (const std::string &w : frontend::gravityWarnings("gravity", options.gravity.gravity, cloud))
+            out.warnings.push_back(w);
+    if (const auto w = frontend::depthRangeWarning(cloud, "points", false)) out.warnings.push_back(*w);
+    if (options.suitability_given && options.config.suitability.mode != SuitabilityMode::Off && !cloud.hasColour() &&
+        options.config.method == Method::Default)
+        out.warnings.push_back("suitability needs registered colour (colour=); the surface is judged by depth only");
+    return out;
+}
+
+void warnAll(const std::vector<std::string> &warnings) {
+    for (const std::string &w : warnings)
+        if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) < 0) throw py::error_already_set();
 }
 
 }  // namespace projsurf::python

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <pybind11/pybind11.h>
 
@@ -16,20 +17,40 @@ namespace projsurf::python {
 
 struct DetectorOptions {
     DetectorConfig config;
+    bool gravity_given = false;  ///< gravity= was a vector: checked against the cloud's floor (frontend/gravity_sanity)
+    bool suitability_given = false;  ///< suitability= was given: warned about without registered colour
     frontend::GravityChoice gravity;  ///< the given one, the level camera's, or "auto" (from the floor of each cloud)
     frontend::MinimumSize minimum;    ///< smaller rectangles are "not found" (frontend/minimum_size.hpp)
 };
 
-/// aspect: None (the framebuffer's), a number (width / height) or "W:H"; gravity: None (level
-/// camera), 3 numbers (camera frame, pointing down; any length but zero) or "auto"; method:
-/// "default" | "paper"; hull: "concave" | "convex" (paper method); seed: RANSAC seed;
-/// min_width (m), min_area (m^2): None (the method's default) or a number >= 0.
-DetectorOptions detectorOptions(const pybind11::object &aspect, const pybind11::object &gravity,
-                                const std::string &method, const std::string &hull, unsigned seed,
-                                const pybind11::object &min_width, const pybind11::object &min_area);
+/// The keyword arguments as given (any Python object; a wrong type is an InputError).
+struct DetectorArguments {
+    pybind11::object aspect, gravity, method, hull, seed, min_width, min_area, suitability;
+    /// The other keyword arguments: the pipeline settings `projsurf detect` has as options,
+    /// under the same names (max_tilt, voxel_leaf, ransac_distance, max_outliers, cell,
+    /// max_planes, max_outlier_fraction), in the same units and ranges; any other name is an
+    /// InputError that lists the known ones.
+    pybind11::dict settings;
+};
 
-/// The gravity to detect `cloud` with: the options' own, or with "auto" the floor's (prior:
-/// the options' gravity), else that prior.
-Eigen::Vector3d gravityFor(const DetectorOptions &options, const Cloud &cloud);
+/// aspect: None (the framebuffer's), a number (width / height), "W:H" or a pair (16, 9);
+/// gravity: None (level camera), 3 numbers (camera frame, pointing down; any length but zero),
+/// "gx,gy,gz" or "auto"; method: "default" | "paper"; hull: "concave" | "convex" (paper
+/// method); seed: RANSAC seed; min_width (m), min_area (m^2): None (the method's default) or a
+/// number >= 0; suitability: None, "off", "avoid" or "prefer" (detect --suitability). A
+/// setting the method ignores is a UserWarning, as the CLI's warning line.
+DetectorOptions detectorOptions(const DetectorArguments &arguments);
+
+/// The gravity to detect `cloud` with (the options' own, or with "auto" the floor's, else the
+/// options' vector) and the warnings the CLI gives about it and the cloud (frontend's texts).
+/// Needs no GIL: the warnings are issued by warnAll.
+struct ResolvedInput {
+    Eigen::Vector3d gravity;
+    std::vector<std::string> warnings;
+};
+ResolvedInput resolveInput(const DetectorOptions &options, const Cloud &cloud);
+
+/// Each line as a Python UserWarning (the CLI's "projsurf: warning: " lines).
+void warnAll(const std::vector<std::string> &warnings);
 
 }  // namespace projsurf::python

@@ -10,24 +10,23 @@
 #include <opencv2/imgcodecs.hpp>
 #include <optional>
 
-#include "argument_cast.hpp"
 #include "detection_dict.hpp"
+#include "argument_types.hpp"
 #include "detector_options.hpp"
 #include "image_array.hpp"
 #include "plan_function.hpp"
 #include "points_array.hpp"
-#include "projsurf/detection/colour/colour_registration.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/types/lens_model_check.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/keystone/keystone.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
+#include "projsurf/frontend/registered_colour.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
-#include "projsurf/io/limits.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/keystone/keystone.hpp"
-#include "projsurf/types/camera.hpp"
-#include "projsurf/types/lens_model_check.hpp"
+#include "projsurf/detection/detector.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -38,27 +37,24 @@ namespace {
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 /// The contract's projector, from keyword arguments with the example calibration's defaults.
-Projector makeProjector(const py::object &resolution_arg, const py::object &fov_arg, const py::object &origin_arg,
-                        const py::object &direction_arg) {
-    const auto resolution = argumentAs<std::pair<int, int>>(resolution_arg, "resolution", "(width, height) in px");
-    const auto fov_deg = argumentAs<std::pair<double, double>>(fov_arg, "fov_deg", "(horizontal, vertical) in deg");
-    const auto origin = argumentAs<Eigen::Vector3d>(origin_arg, "origin", "three numbers (m)");
-    const auto direction = argumentAs<Eigen::Vector3d>(direction_arg, "direction", "three numbers");
+Projector makeProjector(const py::object &resolution, const py::object &fov_deg, const py::object &origin,
+                        const py::object &direction) {
+    const std::pair<double, double> size = pairArgument(resolution, "resolution");
+    const std::pair<double, double> fov = pairArgument(fov_deg, "fov_deg");
     Projector p;
-    p.width = resolution.first;
-    p.height = resolution.second;
-    if (p.width < 2 || p.height < 2 || p.width > limits::kMaxFramebufferSide || p.height > limits::kMaxFramebufferSide)
+    if (!(size.first >= 2 && size.second >= 2 && size.first <= 16384 && size.second <= 16384 &&
+          size.first == std::floor(size.first) && size.second == std::floor(size.second)))
         throw InputError("resolution", "must be two whole numbers between 2 and 16384");
-    if (static_cast<std::uint64_t>(p.width) * p.height > limits::kMaxFramebufferPixels)
-        throw InputError("resolution", "exceeds the limit of " + std::to_string(limits::kMaxFramebufferPixels) +
-                                           " framebuffer pixels (as a calibration file)");
-    if (!(fov_deg.first > 0 && fov_deg.first < 170 && fov_deg.second > 0 && fov_deg.second < 170))
+    p.width = static_cast<int>(size.first);
+    p.height = static_cast<int>(size.second);
+    if (!(fov.first > 0 && fov.first < 170 && fov.second > 0 && fov.second < 170))
         throw InputError("fov_deg", "angles must be between 0 and 170 degrees");
-    p.fov_h = fov_deg.first * kDeg;
-    p.fov_v = fov_deg.second * kDeg;
-    if (!origin.allFinite()) throw InputError("origin", "is not finite");
-    p.origin = origin;
-    p.direction = direction.norm() > 0 ? direction.normalized() : direction;
+    p.fov_h = fov.first * kDeg;
+    p.fov_v = fov.second * kDeg;
+    p.origin = vectorArgument(origin, "origin");
+    if (!p.origin.allFinite()) throw InputError("origin", "is not finite");
+    const Eigen::Vector3d axis = vectorArgument(direction, "direction");
+    p.direction = axis.norm() > 0 ? axis.normalized() : axis;
     if (const std::string problem = lensModelProblem(p); !problem.empty()) throw InputError("Projector", problem);
     if (!isValidProjector(p))
         throw InputError("direction", "the axis must be finite, non-zero and not parallel to the camera's y axis");
@@ -68,10 +64,10 @@ Projector makeProjector(const py::object &resolution_arg, const py::object &fov_
 /// One picture -> framebuffer with a detection: what `projsurf correct` does for an image.
 Keystone keystoneFor(const Projector &projector, const py::object &detection, cv::Size picture,
                      const py::object &tolerance) {
-    const double tolerance_px = numberArgument(tolerance, "tolerance_px", "a number of px");
+    const double tolerance_px = numberArgument(tolerance, "tolerance_px");
     const Rectangle rect = rectangleFromDetection(detection);
     frontend::FramebufferRender r = frontend::keystoneFor(projector, rect, picture, tolerance_px);
-    if (!r.keystone) throw InputError(r.tolerance_refused ? "tolerance_px" : "detection", r.problem);
+    if (!r.keystone) throw InputError("detection", r.problem);
     return *r.keystone;
 }
 
@@ -82,20 +78,12 @@ py::array corners2(const Corners2 &c) {
     return a;
 }
 
-/// Registered colour into the cloud (surface suitability, issue 15); colour that the edge check
-/// finds not registered is not used, with a UserWarning (the CLI's warning line).
-void attachChecked(Cloud &cloud, const py::object &colour) {
+/// Colour into the cloud by the CLI's policy (frontend/registered_colour.hpp); its warnings
+/// come back for the caller to issue as UserWarnings.
+std::vector<std::string> attachChecked(Cloud &cloud, const py::object &colour) {
     py::object keep;
-    const cv::Mat bgr = matFromArray(colour.cast<py::array>(), "colour", keep);
-    if (bgr.type() != CV_8UC3 || !cloud.organized() || bgr.cols != cloud.width || bgr.rows != cloud.height)
-        throw InputError("colour", "must be an (H, W, 3) uint8 array (B, G, R) of the points' (H, W)");
-    const RegistrationResult r = checkColourRegistration(cloud, bgr);
-    if (r.checked && !r.registered) {
-        const std::string message = "colour is not registered to the depth (" + r.summary() + "); not used";
-        if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 1) < 0) throw py::error_already_set();
-        return;
-    }
-    attachColour(cloud, bgr);
+    const cv::Mat bgr = matFromArray(arrayArgument(colour, "colour"), "colour", keep);
+    return frontend::attachRegisteredColour(cloud, bgr, "colour").warnings;
 }
 
 /// A detector for a stream of clouds: keeps the C++ SurfaceDetector (and its buffers).
@@ -106,12 +94,16 @@ public:
 
     py::dict detect(const py::object &points, const py::object &colour) {
         Cloud cloud = cloudFromPoints(points);
-        if (!colour.is_none()) attachChecked(cloud, colour);
+        std::vector<std::string> warnings;
+        if (!colour.is_none()) warnings = attachChecked(cloud, colour);
         Detection det;
         {
             py::gil_scoped_release unlocked;
-            det = detector_.detect(cloud, gravityFor(options_, cloud));
+            const ResolvedInput input = resolveInput(options_, cloud);
+            warnings.insert(warnings.end(), input.warnings.begin(), input.warnings.end());
+            det = detector_.detect(cloud, input.gravity);
         }
+        warnAll(warnings);
         frontend::enforceMinimumSize(det, options_.minimum, "min_width", "min_area");
         return detectionToDict(det, options_.config);
     }
@@ -125,69 +117,133 @@ private:
 }  // namespace
 }  // namespace projsurf::python
 
+/// numpy for this interpreter, else an ImportError that says which interpreter and what to do
+/// (without it pybind11 says only "initialization failed").
+void requireNumpy() {
+    try {
+        py::module_::import("numpy");
+    } catch (const py::error_already_set &e) {
+        const py::module_ sys = py::module_::import("sys");
+        const std::string interpreter = py::str(sys.attr("executable")).cast<std::string>();
+        const std::string version = py::str(sys.attr("version")).cast<std::string>().substr(0, 6);
+        throw std::runtime_error("projsurf needs numpy, which " + interpreter + " (Python " + version +
+                                 ") cannot import: " + std::string(e.what()).substr(0, 80) +
+                                 ". Install numpy for that interpreter (Debian: apt-get install python3-numpy) or "
+                                 "run the one the module was built for, " PROJSURF_PYTHON_EXECUTABLE);
+    }
+}
+
 PYBIND11_MODULE(projsurf, m) {
     using namespace projsurf;
     using namespace projsurf::python;
+    requireNumpy();
     m.doc() =
         "projsurf: where a robot's projector can show a picture on a wall, and its keystone correction.\n"
-        "Camera optical frame (x right, y down, z forward), metres; degrees only where a name says _deg.";
+        "Camera optical frame (x right, y down, z forward), metres; degrees only where a name says _deg.\n"
+        "Every bad argument (a wrong type, value or file) raises projsurf.InputError with one line.";
 
     // Same one-line messages as the CLI's "projsurf: error: <file>: <problem>" (without the prefix).
     py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
 
-    py::class_<Projector>(m, "Projector",
-                          "The contract's projector: a pinhole, principal point at the framebuffer centre, zero roll.")
-        .def(py::init(&makeProjector), "resolution"_a = std::make_pair(1280, 800),
-             "fov_deg"_a = std::make_pair(39.3, 24.0), "origin"_a = Eigen::Vector3d(0.0, 0.12, 0.0),
-             "direction"_a = Eigen::Vector3d(0.0, -0.05, 1.0),
-             "Defaults: the example calibration (examples/calib/example_calib.yaml).")
+    py::class_<Projector>(
+        m, "Projector",
+        "The projector's lens model (docs/interface.md). Projector(...) builds the contract's plain model:\n"
+        "a pinhole whose principal point is the framebuffer centre, focal lengths from fov_deg, zero roll.\n"
+        "read_calibration() may give the full model: intrinsics (fx, fy, cx, cy in framebuffer px; the\n"
+        "principal point is then anywhere, on or beyond the framebuffer's edge for a lens offset), OpenCV\n"
+        "distortion (k1, k2, p1, p2, k3) and a rotation of any roll; every function uses all of it.")
+        .def(py::init(&makeProjector), "resolution"_a = py::make_tuple(1280, 800),
+             "fov_deg"_a = py::make_tuple(39.3, 24.0), "origin"_a = py::make_tuple(0.0, 0.12, 0.0),
+             "direction"_a = py::make_tuple(0.0, -0.05, 1.0),
+             "resolution: (width, height) px; fov_deg: full (horizontal, vertical) field of view, deg; origin:\n"
+             "lens centre, camera frame, m; direction: central axis (any length). Defaults: the example\n"
+             "calibration (examples/calib/example_calib.yaml). Raises InputError.")
         .def_readonly("width", &Projector::width, "framebuffer width, px")
         .def_readonly("height", &Projector::height, "framebuffer height, px")
         .def_property_readonly(
             "fov_deg", [](const Projector &p) { return std::make_pair(p.fov_h / kDeg, p.fov_v / kDeg); },
-            "full horizontal, vertical field of view, deg")
+            "full horizontal, vertical field of view, deg (the calibration's; informative when intrinsics are set)")
         .def_property_readonly(
             "origin", [](const Projector &p) { return p.origin; }, "lens centre, camera frame, m")
         .def_property_readonly(
-            "direction", [](const Projector &p) { return p.direction; }, "central axis, unit")
+            "direction", [](const Projector &p) { return p.direction; }, "central (optical) axis, unit")
+        .def_property_readonly(
+            "intrinsics",
+            [](const Projector &p) {
+                return py::make_tuple(p.fx(), p.fy(), p.cx(), p.cy());
+            },
+            "(fx, fy, cx, cy), framebuffer px, pixel centres at integers: the calibration's intrinsics, or\n"
+            "those of the plain model (principal point at the centre, focal lengths from fov_deg)")
+        .def_property_readonly(
+            "distortion",
+            [](const Projector &p) {
+                return py::make_tuple(p.distortion[0], p.distortion[1], p.distortion[2], p.distortion[3],
+                                      p.distortion[4]);
+            },
+            "OpenCV k1, k2, p1, p2, k3 on normalised projector coordinates (all zero: none)")
+        .def_property_readonly(
+            "rotation",
+            [](const Projector &p) -> Eigen::Matrix3d {
+                Eigen::Matrix3d r;
+                r << p.right(), p.down(), p.axis();
+                return r;
+            },
+            "3x3, columns = image right, image down, optical axis in the camera frame (zero roll without a\n"
+            "calibrated rotation)")
+        .def_property_readonly("full_model", &Projector::fullModel,
+                               "True when the calibration set intrinsics, distortion or a rotation")
         .def(
-            "to_pixel", [](const Projector &p, const Eigen::Vector3d &point) { return p.toPixel(point); }, "point"_a,
-            "framebuffer pixel (u, v) that lights a camera-frame point; None behind the lens")
+            "to_pixel",
+            [](const Projector &p, const py::object &point) { return p.toPixel(vectorArgument(point, "point")); },
+            "point"_a,
+            "framebuffer pixel (u, v) that lights a camera-frame point (full model, distortion included);\n"
+            "None behind the lens")
         .def("__repr__", [](const Projector &p) {
-            return py::str("Projector(resolution=({}, {}), fov_deg=({:.3f}, {:.3f}), origin={}, direction={})")
+            return py::str("Projector(resolution=({}, {}), fov_deg=({:.3f}, {:.3f}), origin={}, direction={}{})")
                 .format(p.width, p.height, p.fov_h / kDeg, p.fov_v / kDeg,
                         py::str(py::cast(std::vector<double>{p.origin.x(), p.origin.y(), p.origin.z()})),
-                        py::str(py::cast(std::vector<double>{p.direction.x(), p.direction.y(), p.direction.z()})));
+                        py::str(py::cast(std::vector<double>{p.direction.x(), p.direction.y(), p.direction.z()})),
+                        p.fullModel() ? ", full model" : "");
         });
 
-    m.def("read_calibration", &readCalibration, "path"_a,
-          "Reads a calibration YAML (the contract's keys; others are ignored). Raises InputError.");
-    m.def("write_calibration", &writeCalibration, "path"_a, "projector"_a,
-          "Writes a calibration YAML with the contract's keys (atomically). Raises InputError.");
     m.def(
-        "read_cloud", [](const std::string &path) { return arrayFromCloud(readCloud(path)); }, "path"_a,
-        "Reads a PCD or PLY file: float32 (H, W, 3) when organized, else (N, 3). Raises InputError.");
+        "read_calibration", [](const py::object &path) { return readCalibration(pathArgument(path, "path")); },
+        "path"_a,
+        "Reads a calibration YAML (docs/interface.md): projector.resolution, fov_deg and axis (origin,\n"
+        "direction), and the full model's optional intrinsics, distortion and rotation when present.\n"
+        "Other keys (calibrate's fit report) are not read. Raises InputError.");
+    m.def(
+        "write_calibration",
+        [](const py::object &path, const py::object &projector) {
+            writeCalibration(pathArgument(path, "path"), projectorArgument(projector, "projector"));
+        },
+        "path"_a, "projector"_a,
+        "Writes a calibration YAML with the contract's keys, the full model's too when set (atomically).\n"
+        "Raises InputError.");
+    m.def(
+        "read_cloud", [](const py::object &path) { return arrayFromCloud(readCloud(pathArgument(path, "path"))); },
+        "path"_a, "Reads a PCD or PLY file: float32 (H, W, 3) when organized, else (N, 3). Raises InputError.");
     m.def(
         "read_depth_cloud",
-        [](const std::string &depth_png, const std::string &camera_yaml) {
-            return arrayFromCloud(readDepthCloud(depth_png, camera_yaml));
+        [](const py::object &depth_png, const py::object &camera_yaml) {
+            return arrayFromCloud(
+                readDepthCloud(pathArgument(depth_png, "depth_png"), pathArgument(camera_yaml, "camera_yaml")));
         },
         "depth_png"_a, "camera_yaml"_a,
-        "A 16-bit depth PNG and the camera YAML as an organized (H, W, 3) float32 cloud. Raises InputError.");
+        "A 16-bit depth PNG and the camera YAML (projsurf's camera: block or a ROS camera_info YAML) as an\n"
+        "organized (H, W, 3) float32 cloud. Raises InputError.");
 
     m.def(
         "depth_to_cloud",
         [](const py::object &depth, const py::object &fx, const py::object &fy, const py::object &cx,
            const py::object &cy, const py::object &depth_scale) {
             py::object keep;
-            const cv::Mat d = matFromArray(argumentAs<py::array>(depth, "depth", "a numpy array"), "depth", keep);
+            const cv::Mat d = matFromArray(arrayArgument(depth, "depth"), "depth", keep);
             if (d.type() != CV_16UC1)
                 throw InputError("depth", "expected an (H, W) uint16 depth image (0 = no reading)");
             const CameraIntrinsics camera = frontend::pinholeCamera(
-                "camera", d.cols, d.rows, numberArgument(fx, "fx", "a number of px"),
-                numberArgument(fy, "fy", "a number of px"), numberArgument(cx, "cx", "a number of px"),
-                numberArgument(cy, "cy", "a number of px"),
-                numberArgument(depth_scale, "depth_scale", "a number of units per metre"));
+                "camera", d.cols, d.rows, numberArgument(fx, "fx"), numberArgument(fy, "fy"), numberArgument(cx, "cx"),
+                numberArgument(cy, "cy"), numberArgument(depth_scale, "depth_scale"));
             return arrayFromCloud(frontend::depthImageToCloud("depth", d, camera));
         },
         "depth"_a, py::kw_only(), "fx"_a, "fy"_a, "cx"_a, "cy"_a, "depth_scale"_a = 1000.0,
@@ -196,63 +252,83 @@ PYBIND11_MODULE(projsurf, m) {
     m.def(
         "read_image",
         [](const py::object &path) {
-            return arrayFromMat(readImage(textArgument(path, "path"), cv::IMREAD_UNCHANGED));
+            return arrayFromMat(readImage(pathArgument(path, "path"), cv::IMREAD_UNCHANGED));
         },
         "path"_a, "Reads an image file as OpenCV does (channels in B, G, R order; 8 or 16 bits). Raises InputError.");
     m.def(
         "write_image",
         [](const py::object &path, const py::object &image) {
             py::object keep;
-            writeImageAtomic(textArgument(path, "path"),
-                             matFromArray(argumentAs<py::array>(image, "image", "a numpy array"), "image", keep));
+            const std::string file = pathArgument(path, "path");
+            writeImageAtomic(file, matFromArray(arrayArgument(image, "image"), "image", keep));
         },
         "path"_a, "image"_a,
         "Writes an image by the path's extension (channels taken as B, G, R), atomically. Raises InputError.");
 
-    py::class_<Detector>(m, "Detector", "Detection over a stream of clouds (reuses its buffers from frame to frame).")
+    const char *options_doc =
+        "aspect: None (the framebuffer's), a number, 'W:H' or (W, H); gravity: camera frame, pointing down\n"
+        "(None: a level camera [0, 1, 0]; 'auto': from the floor; three numbers or 'gx,gy,gz'); method:\n"
+        "'default' | 'paper'; hull: 'concave' | 'convex' (paper); seed: RANSAC seed; min_width (m), min_area\n"
+        "(m^2): smaller rectangles are not found (None: 0.15 m and 0.012 m^2, as `projsurf detect`; 0 with\n"
+        "method='paper'); suitability: None (avoid), 'off', 'avoid' or 'prefer' with colour (as\n"
+        "--suitability). The pipeline settings of `projsurf detect` under the same names and units: max_tilt\n"
+        "(rad), voxel_leaf, ransac_distance (m), max_outliers (paper); cell (m), max_planes,\n"
+        "max_outlier_fraction (default). hull=None is 'concave'. The CLI's warnings (a gravity the floor contradicts, depths outside what RGB-D\n"
+        "cameras read, colour not registered) come as UserWarnings.";
+    py::class_<Detector>(m, "Detector",
+                         (std::string("Detection over a stream of clouds (reuses its buffers from frame to frame).\n") +
+                          options_doc)
+                             .c_str())
         .def(py::init([](const py::object &projector, const py::object &aspect, const py::object &gravity,
                          const py::object &method, const py::object &hull, const py::object &seed,
-                         const py::object &min_width, const py::object &min_area) {
-                 return Detector(projectorArgument(projector),
-                                 detectorOptions(aspect, gravity, textArgument(method, "method"),
-                                                 textArgument(hull, "hull"), seedArgument(seed), min_width, min_area));
+                         const py::object &min_width, const py::object &min_area, const py::object &suitability,
+                         const py::kwargs &settings) {
+                 return Detector(projectorArgument(projector, "projector"),
+                                 detectorOptions({aspect, gravity, method, hull, seed, min_width, min_area, suitability,
+                                                  settings}));
              }),
              "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(), "method"_a = "default",
-             "hull"_a = "concave", "seed"_a = 42u, "min_width"_a = py::none(), "min_area"_a = py::none())
+             "hull"_a = py::none(), "seed"_a = 42u, "min_width"_a = py::none(), "min_area"_a = py::none(),
+             "suitability"_a = py::none())
         .def("detect", &Detector::detect, "points"_a, py::kw_only(), "colour"_a = py::none(),
              "points: (H, W, 3) or (N, 3) array (camera frame, m; NaN = no reading) or an object with .points.\n"
              "colour: optional (H, W, 3) uint8 B, G, R image registered to (H, W) points: the surface's suitability\n"
-             "(docs/suitability.md); not used, with a UserWarning, when its edges do not fit the depth's.\n"
-             "Returns the detection as a dict with the keys of the detection JSON.")
+             "(docs/suitability.md); checked as `detect --rgb` checks it: another type or size is an InputError,\n"
+             "colour whose edges do not fit the depth's (or with unorganized points) is not used, with a\n"
+             "UserWarning. Returns the detection as a dict with the keys of the detection JSON.")
         .def_property_readonly("projector", &Detector::projector);
 
     m.def(
         "detect",
         [](const py::object &points, const py::object &projector, const py::object &aspect, const py::object &gravity,
            const py::object &method, const py::object &hull, const py::object &seed, const py::object &min_width,
-           const py::object &min_area, const py::object &colour) {
-            Detector detector(projectorArgument(projector),
-                              detectorOptions(aspect, gravity, textArgument(method, "method"),
-                                              textArgument(hull, "hull"), seedArgument(seed), min_width, min_area));
+           const py::object &min_area, const py::object &colour, const py::object &suitability,
+           const py::kwargs &settings) {
+            Detector detector(projectorArgument(projector, "projector"),
+                              detectorOptions({aspect, gravity, method, hull, seed, min_width, min_area, suitability,
+                                               settings}));
             return detector.detect(points, colour);
         },
         "points"_a, "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(),
-        "method"_a = "default", "hull"_a = "concave", "seed"_a = 42u, "min_width"_a = py::none(),
-        "min_area"_a = py::none(), "colour"_a = py::none(),
-        "The biggest upright rectangle of the aspect ratio (None: the framebuffer's, a number, or 'W:H') that the\n"
-        "projector can light on a vertical surface. gravity: camera frame, pointing down (None: a level camera\n"
-        "[0, 1, 0]; 'auto': from the floor). min_width (m), min_area (m^2): smaller rectangles are not found\n"
-        "(None: 0.15 m and 0.012 m^2, as `projsurf detect`; 0 with method='paper'). Returns a dict: found, reason, "
-        "method, plane, rectangle,\n"
-        "surface_check, timing_ms, gravity (numpy arrays for vectors). Raises InputError for bad points or options.");
+        "method"_a = "default", "hull"_a = py::none(), "seed"_a = 42u, "min_width"_a = py::none(),
+        "min_area"_a = py::none(), "colour"_a = py::none(), "suitability"_a = py::none(),
+        (std::string("The biggest upright rectangle of the aspect ratio that the projector can light on a vertical\n"
+                     "surface: `projsurf detect`. points and colour as for Detector.detect.\n") +
+         options_doc +
+         "\nReturns a dict: found, reason, method, plane, rectangle, surface_check, suitability (with colour),\n"
+         "timing_ms, gravity (numpy arrays for vectors). Raises InputError for bad points or options.")
+            .c_str());
 
     m.def(
         "keystone",
-        [](const py::object &projector, const py::object &detection, const py::object &size,
+        [](const py::object &projector, const py::object &detection, const py::object &picture_size,
            const py::object &tolerance_px) {
-            const auto picture_size = argumentAs<std::pair<int, int>>(size, "picture_size", "(width, height) in px");
-            const Keystone k = keystoneFor(projectorArgument(projector), detection,
-                                           {picture_size.first, picture_size.second}, tolerance_px);
+            const std::pair<double, double> size = pairArgument(picture_size, "picture_size");
+            if (!(size.first >= 1 && size.second >= 1 && size.first <= 65536 && size.second <= 65536 &&
+                  size.first == std::floor(size.first) && size.second == std::floor(size.second)))
+                throw InputError("picture_size", "must be two whole numbers (width, height) between 1 and 65536");
+            const Keystone k = keystoneFor(projectorArgument(projector, "projector"), detection,
+                                           {static_cast<int>(size.first), static_cast<int>(size.second)}, tolerance_px);
             Eigen::Matrix3d h;
             for (int r = 0; r < 3; ++r)
                 for (int c = 0; c < 3; ++c) h(r, c) = k.homography(r, c);
@@ -270,8 +346,9 @@ PYBIND11_MODULE(projsurf, m) {
         [](const py::object &image, const py::object &projector, const py::object &detection,
            const py::object &tolerance_px) {
             py::object keep;
-            const cv::Mat picture = matFromArray(argumentAs<py::array>(image, "image", "a numpy array"), "image", keep);
-            const Keystone k = keystoneFor(projectorArgument(projector), detection, picture.size(), tolerance_px);
+            const cv::Mat picture = matFromArray(arrayArgument(image, "image"), "image", keep);
+            const Keystone k =
+                keystoneFor(projectorArgument(projector, "projector"), detection, picture.size(), tolerance_px);
             cv::Mat framebuffer;
             {
                 py::gil_scoped_release unlocked;
@@ -282,8 +359,8 @@ PYBIND11_MODULE(projsurf, m) {
         "image"_a, "projector"_a, "detection"_a, "tolerance_px"_a = kKeystoneTolerancePx,
         "Keystone correction: the projector framebuffer (the calibration's resolution, black around) showing\n"
         "`image` ((H, W) or (H, W, C), uint8, uint16 or float32; channels kept in their order) whole and\n"
-        "undistorted in the detected rectangle (letterboxed, never stretched). The image is read in place.\n"
-        "detection: the dict of detect(), or (4, 3) corners. Raises InputError.");
+        "undistorted in the detected rectangle (letterboxed, never stretched; full lens model). The image is\n"
+        "read in place. detection: the dict of detect(), or (4, 3) corners. Raises InputError.");
 
     addPlanFunction(m);
 

@@ -2,7 +2,7 @@
 
 #include <pybind11/stl.h>
 
-#include "argument_cast.hpp"
+#include "argument_types.hpp"
 #include "detector_options.hpp"
 #include "points_array.hpp"
 #include "projsurf/frontend/detect_answer.hpp"
@@ -21,27 +21,30 @@ void addPlanFunction(py::module_ &m) {
         [](const py::object &points, const py::object &projector_arg, const py::object &aspect,
            const py::object &gravity, const py::object &width_arg, const py::object &max_move_arg,
            const py::object &min_width, const py::object &min_area) {
-            const Projector projector = projectorArgument(projector_arg);
-            const double width = numberArgument(width_arg, "width", "a number of m");
-            const double max_move = numberArgument(max_move_arg, "max_move", "a number of m");
+            const Projector &projector = projectorArgument(projector_arg, "projector");
+            const double width = numberArgument(width_arg, "width"), max_move = numberArgument(max_move_arg, "max_move");
             if (!(width >= 0.0 && width <= 50.0)) throw InputError("width", "must be between 0 and 50 m");
             if (!(max_move >= 0.0 && max_move <= 10.0)) throw InputError("max_move", "must be between 0 and 10 m");
-            const DetectorOptions options =
-                detectorOptions(aspect, gravity, "default", "concave", 42u, min_width, min_area);
+            const DetectorOptions options = detectorOptions(
+                {aspect, gravity, py::str("default"), py::none(), py::int_(42), min_width, min_area, py::none(), py::dict()});
             const Cloud cloud = cloudFromPoints(points);
             PlanOptions plan;
             plan.width = width;
             plan.max_move = max_move;
             std::string text;
+            std::vector<std::string> warnings;
             {
                 py::gil_scoped_release unlocked;
-                const Eigen::Vector3d down = gravityFor(options, cloud);
+                const ResolvedInput input = resolveInput(options, cloud);
+                warnings = input.warnings;
+                const Eigen::Vector3d down = input.gravity;
                 // Today's answer is detect()'s, by the same call.
                 SurfaceDetector detector(projector, options.config);
                 const Detection today =
                     frontend::detectAnswer(detector, cloud, down, options.minimum, "points", "min_width", "min_area");
                 text = frontend::planToJson(planStand(cloud, projector, options.config, down, plan, today)).dump();
             }
+            warnAll(warnings);
             return py::module_::import("json").attr("loads")(text);
         },
         "points"_a, "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(), "width"_a = 0.0,

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <string>
 
+#include "argument_types.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/limits.hpp"
 
@@ -46,6 +47,9 @@ void copyPoints(const py::array &a, py::ssize_t rows, py::ssize_t cols, py::ssiz
 
 Cloud cloudFromPoints(const py::handle &points) {
     py::object source = py::reinterpret_borrow<py::object>(points);
+    if (PyUnicode_Check(source.ptr()) || py::hasattr(source, "__fspath__"))
+        throw InputError("points", "expected an (N, 3) or (H, W, 3) array, got " + describe(source) +
+                                       " (projsurf.read_cloud or read_depth_cloud reads a file)");
     if (!py::isinstance<py::array>(source) && py::hasattr(source, "points")) source = source.attr("points");
     py::array a = py::array::ensure(source);
     if (!a) throw InputError("points", "expected an (N, 3) or (H, W, 3) array, or an object with .points");

@@ -87,7 +87,7 @@ def test_errors_are_input_errors_with_the_clis_line(tmp_path):
     (np.zeros((0, 3)), "points: the cloud has no points"),
     (np.full((4, 3), np.nan), "points: all points are NaN (no finite point in the cloud)"),
     (np.array([["a", "b", "c"]]), "points: expected numbers"),
-    ("not a cloud", "points: expected numbers"),
+    ("not a cloud", "points: expected an (N, 3) or (H, W, 3) array, got a str 'not a cloud' (projsurf.read_cloud"),
     (np.zeros((2, 3, 4)), "points: expected an (N, 3) or (H, W, 3) array, got shape (2, 3, 4)"),
 ])
 def test_bad_points_raise_input_error(projector, points, message):

@@ -8,7 +8,6 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli/commands.hpp"
-#include "projsurf/detection/colour/colour_registration.hpp"
 #include "projsurf/detection/gravity.hpp"
 #include "projsurf/frontend/aspect.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
@@ -17,7 +16,9 @@
 #include "projsurf/frontend/detect_answer.hpp"
 #include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
+#include "projsurf/frontend/method_settings.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
+#include "projsurf/frontend/registered_colour.hpp"
 #include "projsurf/frontend/stamp_pairing.hpp"
 #include "projsurf/frontend/suitability_mode.hpp"
 #include "projsurf/io/cloud_io.hpp"
@@ -51,38 +52,14 @@ void warnIfTilted(const Cloud &cloud) {
                      *deg);
 }
 
-/// --rgb: the colour goes into the cloud only when its edges fit the depth's (issue 14), else
-/// it is not used at all (one warning line). False when it is not used.
-bool attachRegisteredColour(Cloud &cloud, const cv::Mat &color, const std::string &file) {
-    if (!cloud.organized()) {
-        std::fprintf(
-            stderr,
-            "projsurf: warning: %s: colour needs an organized cloud or a depth image to be registered to; not used\n",
-            file.c_str());
-        return false;
-    }
-    const RegistrationResult r = checkColourRegistration(cloud, color);
-    if (r.checked && !r.registered) {
-        std::fprintf(stderr, "projsurf: warning: %s: colour is not registered to the depth (%s); not used\n",
-                     file.c_str(), r.summary().c_str());
-        return false;
-    }
-    if (!r.checked)
-        std::fprintf(
-            stderr,
-            "projsurf: warning: %s: cannot check that the colour is registered to the depth (%s); used as given\n",
-            file.c_str(), r.summary().c_str());
-    return attachColour(cloud, color);
-}
-
-/// Options the chosen method does not use.
+/// Options the chosen method does not use (frontend/method_settings.hpp).
 void warnIfIgnored(const CLI::App &sub, Method method) {
-    const std::vector<const char *> paper_only{"--hull", "--voxel-leaf", "--ransac-distance", "--max-outliers"};
-    const std::vector<const char *> default_only{"--cell", "--max-planes", "--max-outlier-fraction", "--suitability"};
-    for (const char *name : method == Method::Paper ? default_only : paper_only)
+    for (const std::string &setting : frontend::settingsIgnoredBy(method)) {
+        const std::string name = frontend::optionName(setting);
         if (sub.get_option(name)->count() > 0)
-            std::fprintf(stderr, "projsurf: warning: %s is ignored by the %s method\n", name,
+            std::fprintf(stderr, "projsurf: warning: %s is ignored by the %s method\n", name.c_str(),
                          method == Method::Paper ? "paper" : "default");
+    }
 }
 
 /// The topic --bag reads: --topic, else the bag's one usable topic (a PointCloud2, or a
@@ -240,17 +217,9 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     cv::Mat color;
     if (!o.rgb.empty()) {
         color = readImage(o.rgb, cv::IMREAD_UNCHANGED);
-        if (color.depth() != CV_8U || color.channels() != 3)
-            throw InputError(o.rgb, std::string("expected 8-bit 3-channel colour (B, G, R), got ") +
-                                        (color.depth() == CV_8U ? "8" : color.depth() == CV_16U ? "16" : "non-8") +
-                                        "-bit with " + std::to_string(color.channels()) + " channel" +
-                                        (color.channels() == 1 ? "" : "s") +
-                                        (color.depth() == CV_16U && color.channels() == 1 ? " (a depth PNG?)" : ""));
-        if (cloud.organized() && (color.cols != cloud.width || color.rows != cloud.height))
-            throw InputError(o.rgb, "colour image is " + std::to_string(color.cols) + "x" + std::to_string(color.rows) +
-                                        ", the cloud is " + std::to_string(cloud.width) + "x" +
-                                        std::to_string(cloud.height));
-        if (!attachRegisteredColour(cloud, color, o.rgb)) color.release();
+        const frontend::ColourAttachment attached = frontend::attachRegisteredColour(cloud, color, o.rgb);
+        for (const std::string &w : attached.warnings) std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
+        if (!attached.used) color.release();
     }
     if (!o.suitability.empty() && o.suitability != "off" && !cloud.hasColour() && cfg.method == Method::Default)
         std::fprintf(stderr,

@@ -318,6 +318,7 @@ void run(const EvalOptions &o, const std::string &command) {
     std::printf("eval: %zu detections in %.1f s (%d rounds%s), %zu real frames; wrote %s/report.md\n",
                 results.trials.size() + results.keystone.size(), results.seconds, rounds, o.quick ? ", quick" : "",
                 gallery.size(), o.out.c_str());
+    std::printf("%s\n", evalHeadlineText(results).c_str());
     std::printf("%s\n", sim::realisticSuiteSummary(realistic).c_str());
     std::printf("%s\n", sim::colourSuiteSummary(colour).c_str());
     printLabelledLines(labelled);

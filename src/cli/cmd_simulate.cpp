@@ -2,7 +2,8 @@
 // scenes, more) through a realistic sensor model (--sensor kinect1 | tof | d435, --unit N) or
 // the paper experiments' independent-noise Kinect (--sensor kinect1-independent), optionally
 // with a picture projected on it, and write the contract's files plus the ground truth; or the
-// calibration captures of the white disc (paper 3.1.1).
+// calibration captures of the white disc (paper 3.1.1); or the structured-light captures that
+// `projsurf patterns` asks a user to take (calibrate --captures reads them).
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -17,10 +18,12 @@
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/pattern_files.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/calibration_captures.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/ground_truth.hpp"
+#include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 #include "projsurf/sim/scenarios_realistic.hpp"
@@ -43,6 +46,7 @@ struct SimulateOptions {
     std::string picture;
     bool noise_free = false;
     int captures = 0;
+    bool structured_light = false;
     std::string sensor = "kinect1";  // kinect1 | tof | d435 | kinect1-independent
     int unit = 0;                    // sensor unit: its fixed systematic errors
     std::string out;
@@ -79,7 +83,8 @@ void run(const SimulateOptions &o) {
     }
     // Arguments and inputs first; nothing is written until everything is rendered.
     if (o.out.empty()) throw InputError("--out", "an output directory is required");
-    if (o.scenario.empty() && o.captures == 0) throw InputError("--scenario", "required (see --list)");
+    if (o.scenario.empty() && o.captures == 0 && !o.structured_light)
+        throw InputError("--scenario", "required (see --list)");
     if (o.captures != 0 && (o.captures < 3 || o.captures > 50))
         throw InputError("--captures", "must be between 3 and 50 (the contract needs N >= 3)");
     if (!(o.distance >= 0.5 && o.distance <= 10.0)) throw InputError("--distance", "must be between 0.5 and 10 m");
@@ -147,6 +152,11 @@ void run(const SimulateOptions &o) {
     if (o.captures > 0)
         captures = sim::renderCalibrationCaptures(projector, sensor, o.captures, o.seed, o.roll_deg, o.pitch_deg);
 
+    // Structured-light captures: the flat wall from three positions (sim/projector_rigs.hpp),
+    // each pattern of `projsurf patterns` as the colour camera sees it, and the depth.
+    std::vector<sim::PatternCapture> patterns;
+    if (o.structured_light) patterns = sim::renderPatternCaptures(projector, sensor, sim::flatWallPoses(), o.seed);
+
     // Write.
     fs::create_directories(out, ec);
     if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
@@ -164,8 +174,22 @@ void run(const SimulateOptions &o) {
         writeCamera((dir / "camera.yaml").string(), sensor.camera);
         for (std::size_t k = 0; k < captures.size(); ++k)
             writeFrame(dir, "capture_" + std::to_string(k) + "_", captures[k], false);
-        if (!scenario) writeCalibration((out / "calib.yaml").string(), projector);  // the truth to compare with
     }
+    if (!patterns.empty()) {
+        const fs::path dir = out / "structured";
+        const PatternList list = writePatternSet(dir.string(), projector.width, projector.height);
+        writeCamera((dir / "camera.yaml").string(), sensor.camera);
+        for (std::size_t k = 0; k < patterns.size(); ++k) {
+            const fs::path pose = dir / ("pose_" + std::to_string(k));
+            fs::create_directories(pose, ec);
+            if (ec) throw InputError(pose.string(), "cannot create the directory: " + ec.message());
+            writeImageAtomic((pose / "depth.png").string(), patterns[k].depth);
+            for (std::size_t i = 0; i < list.names.size() && i < patterns[k].colour.size(); ++i)
+                writeImageAtomic((pose / (list.names[i] + ".png")).string(), patterns[k].colour[i]);
+        }
+    }
+    if (!scenario && (!captures.empty() || !patterns.empty()))
+        writeCalibration((out / "calib.yaml").string(), projector);  // the truth to compare with
     if (scenario) {
         std::cout << "sensor " << (independent ? std::string(kIndependent) : o.sensor)
                   << (realistic ? " unit " + std::to_string(o.unit) : std::string()) << " (" << sensor.camera.width
@@ -180,6 +204,10 @@ void run(const SimulateOptions &o) {
     }
     if (!captures.empty())
         std::cout << captures.size() << " calibration captures in " << (out / "captures").string() << "\n";
+    if (!patterns.empty())
+        std::cout << patterns.size() << " positions of structured-light captures in " << (out / "structured").string()
+                  << "; projsurf calibrate --captures " << (out / "structured").string()
+                  << " --out calib.yaml fits the projector, to compare with " << (out / "calib.yaml").string() << "\n";
 }
 
 }  // namespace
@@ -205,6 +233,9 @@ void addSimulateCommand(CLI::App &app) {
                     "kinect1-independent (the paper experiments' independent-noise Kinect)");
     sub->add_option("--unit", opts->unit, "Sensor unit: its fixed distortions (default 0)");
     sub->add_option("--captures", opts->captures, "Also write N calibration captures to OUT/captures");
+    sub->add_flag("--structured-light", opts->structured_light,
+                  "Also write the structured-light captures of --calib's projector (three positions at a plain wall) "
+                  "to OUT/structured, for calibrate --captures");
     sub->add_option("--out", opts->out, "Output directory (created if missing)");
     sub->callback([opts] { run(*opts); });
 }

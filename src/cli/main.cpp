@@ -38,6 +38,28 @@ std::string oneLine(std::string s) {
     return s;
 }
 
+/// CLI11 checks required options before it complains about unknown words, so `detect --bogus`
+/// would say "--calib is required". An unknown word, when there is one, is the mistake to name.
+std::string unknownWord(const CLI::App &app) {
+    auto what = [](const std::string &word) {
+        return (word.rfind("-", 0) == 0 ? "unknown option '" : "unexpected argument '") + word + "'";
+    };
+    for (const CLI::App *sub : app.get_subcommands()) {
+        const std::vector<std::string> left = sub->remaining();
+        if (!left.empty())
+            return what(left.front()) + " for projsurf " + sub->get_name() + " (see projsurf " + sub->get_name() +
+                   " --help)";
+    }
+    std::string names;
+    for (const CLI::App *sub : app.get_subcommands(static_cast<bool (*)(const CLI::App *)>(nullptr)))
+        names += (names.empty() ? "" : ", ") + sub->get_name();
+    const std::vector<std::string> left = app.remaining();
+    if (left.empty())
+        return app.get_subcommands().empty() ? "a command is required (commands: " + names + ")" : "";
+    if (left.front().rfind("-", 0) == 0) return what(left.front()) + " (see projsurf --help)";
+    return "unknown command '" + left.front() + "' (commands: " + names + ")";
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -71,7 +93,13 @@ int main(int argc, char **argv) {
         return app.exit(e);
     } catch (const CLI::ParseError &e) {
         // Usage mistakes too carry the one error prefix (an InputError's line form).
-        std::cerr << "projsurf: error: " << oneLine(e.what()) << " (see projsurf --help)\n";
+        const std::string unknown = unknownWord(app);
+        if (!unknown.empty())
+            std::cerr << "projsurf: error: " << unknown << "\n";
+        else
+            std::cerr << "projsurf: error: " << oneLine(e.what()) << " (see projsurf "
+                      << (app.get_subcommands().empty() ? "" : app.get_subcommands().front()->get_name() + " ")
+                      << "--help)\n";
         return 2;
     } catch (const projsurf::InputError &e) {
         std::cerr << "projsurf: error: " << e.what() << "\n";

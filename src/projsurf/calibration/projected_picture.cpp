@@ -16,6 +16,10 @@ namespace {
 /// The card's disc (grey 160 on white 255, 0.63) must read at least this much darker than the
 /// rest of the lit picture in the camera, allowing for exposure and blur.
 constexpr double kCardDiscDarker = 0.85;
+/// The card is a filled quadrilateral: its outline fills at least this share of the
+/// quadrilateral fitted to it (blur and the rounded corners of a defocused projection cost a
+/// few per cent; a lit scene's bright pixels are ragged and fill much less).
+constexpr double kCardMinFill = 0.9;
 
 cv::Mat grey8(const cv::Mat &m) {
     cv::Mat g = greyscale(m);
@@ -103,6 +107,19 @@ FoundPicture findProjectedPicture(const cv::Mat &colour, const cv::Mat &depth, c
         cv::approxPolyDP(hull, approx, eps * perimeter, true);
     if (approx.size() != 4) {
         f.reason = "the bright region is not a quadrilateral";
+        return f;
+    }
+    // Wholly in view and filled: a bright region cut by the image's edge, or whose outline fills
+    // its quadrilateral poorly (a lit scene with nothing projected), is not the card.
+    const cv::Rect bounds = cv::boundingRect(contour);
+    if (bounds.x <= 0 || bounds.y <= 0 || bounds.br().x >= mask.cols || bounds.br().y >= mask.rows) {
+        f.reason = "the bright region reaches the edge of the colour image (the whole test card must be in view)";
+        return f;
+    }
+    const double fill = cv::contourArea(contour) / std::max(1.0, cv::contourArea(approx));
+    if (!(fill >= kCardMinFill)) {
+        f.reason = "the bright region fills only " + std::to_string(static_cast<int>(100 * fill)) +
+                   " % of its quadrilateral: not a projected test card";
         return f;
     }
     // Order the rough corners TL, TR, BR, BL.

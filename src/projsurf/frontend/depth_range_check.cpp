@@ -18,9 +18,13 @@ std::optional<double> medianDepth(const Cloud &cloud) {
 
 std::optional<std::string> depthRangeWarning(const Cloud &cloud, const std::string &source, bool from_depth_image) {
     const auto median = medianDepth(cloud);
-    if (!median || (*median >= kMinSensorRange && *median <= kMaxSensorRange)) return std::nullopt;
+    if (!median || (*median >= kCloseUpDepth && *median <= kMaxSensorRange)) return std::nullopt;
     char buf[400];
+    char close_up[120];
+    std::snprintf(close_up, sizeof close_up,
+                  "nearer than a projector robot works (under %.2f m: right only for a real close-up)", kCloseUpDepth);
     const char *side = *median < kMinSensorRange ? "nearer than an RGB-D camera's minimum range (about 0.4 m)"
+                       : *median < kCloseUpDepth ? close_up
                                                  : "farther than an RGB-D camera reads (about 8 m)";
     if (from_depth_image) {
         std::snprintf(buf, sizeof buf, "%s: the median depth is %.2f m, %s; check its depth_scale (depth PNG units "

@@ -69,8 +69,28 @@ nlohmann::json detectionToJson(const Detection &det, const DetectorConfig &confi
     return j;
 }
 
+namespace {
+
+/// A detection file that is not JSON at all: what it looks like instead, so a swapped or wrong
+/// file is named as such rather than by the parser's complaint.
+void requireJsonText(const std::string &path, const std::string &text) {
+    const std::size_t first = text.find_first_not_of(" \t\r\n");
+    if (first != std::string::npos && text[first] == '{') return;
+    const bool yaml = text.find("projector:") != std::string::npos || text.find("camera:") != std::string::npos ||
+                      text.find("image_width:") != std::string::npos;
+    if (yaml)
+        throw InputError(path, "is a YAML file (a calibration or camera file), not the detection JSON that "
+                               "`projsurf detect --json` writes; --detection and --calib swapped?");
+    if (first != std::string::npos && text[first] != '[')
+        throw InputError(path, "is not JSON (it does not begin with '{'): give the detection JSON that "
+                               "`projsurf detect --json` writes");
+}
+
+}  // namespace
+
 DetectionFile readDetectionJson(const std::string &path) {
     const std::string text = readSmallTextFile(path, limits::kMaxJsonBytes, "JSON");
+    requireJsonText(path, text);
     nlohmann::json j;
     try {
         j = nlohmann::json::parse(text);

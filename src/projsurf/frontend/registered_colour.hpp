@@ -1,0 +1,23 @@
+#pragma once
+// Colour given with a cloud (`detect --rgb`, Python's colour=): checked as one policy for every
+// front end. Not 8-bit, 3-channel or not the cloud's size is an error; colour that cannot be
+// registered (an unorganized cloud) or whose edges do not fit the depth's is not used, with a
+// warning; colour whose registration cannot be checked is used, with a warning.
+#include <opencv2/core/mat.hpp>
+#include <string>
+#include <vector>
+
+#include "projsurf/types/cloud.hpp"
+
+namespace projsurf::frontend {
+
+struct ColourAttachment {
+    bool used = false;                  ///< the colour went into cloud.colours
+    std::vector<std::string> warnings;  ///< lines without "projsurf: warning: ", each naming `source`
+};
+
+/// Puts `bgr` into `cloud` when the policy above allows it. Throws InputError(source, problem)
+/// for colour of the wrong type or size; `source` names the colour (a file, "colour").
+ColourAttachment attachRegisteredColour(Cloud &cloud, const cv::Mat &bgr, const std::string &source);
+
+}  // namespace projsurf::frontend
