@@ -24,6 +24,7 @@
 #include "projsurf/frontend/registered_colour.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
+#include "projsurf/io/limits.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/detection/detector.hpp"
@@ -47,6 +48,9 @@ Projector makeProjector(const py::object &resolution, const py::object &fov_deg,
         throw InputError("resolution", "must be two whole numbers between 2 and 16384");
     p.width = static_cast<int>(size.first);
     p.height = static_cast<int>(size.second);
+    if (static_cast<std::uint64_t>(p.width) * p.height > limits::kMaxFramebufferPixels)
+        throw InputError("resolution", "exceeds the limit of " + std::to_string(limits::kMaxFramebufferPixels) +
+                                           " framebuffer pixels (as a calibration file)");
     if (!(fov.first > 0 && fov.first < 170 && fov.second > 0 && fov.second < 170))
         throw InputError("fov_deg", "angles must be between 0 and 170 degrees");
     p.fov_h = fov.first * kDeg;
@@ -67,7 +71,7 @@ Keystone keystoneFor(const Projector &projector, const py::object &detection, cv
     const double tolerance_px = numberArgument(tolerance, "tolerance_px");
     const Rectangle rect = rectangleFromDetection(detection);
     frontend::FramebufferRender r = frontend::keystoneFor(projector, rect, picture, tolerance_px);
-    if (!r.keystone) throw InputError("detection", r.problem);
+    if (!r.keystone) throw InputError(r.tolerance_refused ? "tolerance_px" : "detection", r.problem);
     return *r.keystone;
 }
 
