@@ -113,3 +113,16 @@ TEST(FaceSurround, NothingToSayWithoutAnImage) {
     EXPECT_EQ(s.top.positions() + s.left.positions() + s.right.positions(), 0);
     EXPECT_FALSE(standsFree(s));
 }
+
+TEST(FaceSurround, AFarStrayPointIsBinnedWithoutOverflow) {
+    // A wall image with one reading 10^12 m to the side among the face's points (a fuzzer's
+    // input): the face is binned without converting that distance to an int (UBSan checks it).
+    const CameraIntrinsics camera;
+    const sim::Scenario sc = sim::makeScenario("wall", 2.0, 0.0);
+    Face f = renderFace(sc, camera, "wall", sc.wall);
+    ASSERT_GT(f.points.size(), 1000u);
+    f.cloud.points[f.points[0]] = Point(1e12f, 0.0f, 2.0f);
+    const FaceSurround s = surroundOf(f, camera);
+    EXPECT_GT(s.top.positions(), 0);
+    EXPECT_FALSE(standsFree(s));
+}

@@ -120,6 +120,16 @@ double decodeAxis(const double *diff, int bits, int n, double margin, int min_bi
     return v;
 }
 
+/// Whether a pixel lit enough to decode (white - black >= min_contrast) is still undecoded.
+bool anyLitUndecoded(const std::vector<cv::Mat> &grey, const GrayDecoding &d, double min_contrast) {
+    for (int y = 0; y < d.column.rows; ++y)
+        for (int x = 0; x < d.column.cols; ++x)
+            if (std::isnan(d.column.at<double>(y, x)) &&
+                greyAt(grey[0], y, x, 1.0) - greyAt(grey[1], y, x, 1.0) >= min_contrast)
+                return true;
+    return false;
+}
+
 /// 8-bit rounding alone puts 1/sqrt(12) grey levels of noise on each capture; a pattern -
 /// inverse difference carries sqrt(2) of that.
 constexpr double kQuantisationNoise = 0.40824829046386301;  // 1/sqrt(6), grey levels
@@ -219,16 +229,7 @@ GrayDecoding decodeGray(const std::vector<cv::Mat> &captures, const std::vector<
     d.confidence = cv::Mat(size, CV_8U, cv::Scalar(0));
     d.direct = cv::Mat(size, CV_32F, cv::Scalar(0));
     decodePass(grey, width, height, cfg, false, d);
-    // Pixels lit enough to try that are still undecoded.
-    int left = 0;
-    for (int y = 0; y < size.height && left == 0; ++y)
-        for (int x = 0; x < size.width; ++x)
-            if (std::isnan(d.column.at<double>(y, x)) &&
-                greyAt(grey[0], y, x, 1.0) - greyAt(grey[1], y, x, 1.0) >= cfg.min_contrast) {
-                ++left;
-                break;
-            }
-    if (cfg.pool_px > 0 && left > 0) {
+    if (cfg.pool_px > 0 && anyLitUndecoded(grey, d, cfg.min_contrast)) {
         // Pixels too dark to decode alone (a board's black squares): the same rules on the
         // means of their neighbourhoods, whose noise is (2 pool_px + 1) times smaller.
         const cv::Size box(2 * cfg.pool_px + 1, 2 * cfg.pool_px + 1);

@@ -110,10 +110,10 @@ FaceSurround faceSurround(const Cloud &cloud, const CameraIntrinsics &camera, co
     const int n = opt.bins;
     std::vector<std::vector<double>> column(n), row(n);
     for (const Eigen::Vector2d &w : uv) {
-        const int c = static_cast<int>((w.x() - u0) / (u1 - u0) * n);
-        const int r = static_cast<int>((w.y() - v0) / (v1 - v0) * n);
-        if (c >= 0 && c < n) column[c].push_back(w.y());
-        if (r >= 0 && r < n) row[r].push_back(w.x());
+        // Compared as doubles first: a far stray point must not overflow the conversion.
+        const double c = std::floor((w.x() - u0) / (u1 - u0) * n), r = std::floor((w.y() - v0) / (v1 - v0) * n);
+        if (c >= 0 && c < n) column[static_cast<int>(c)].push_back(w.y());
+        if (r >= 0 && r < n) row[static_cast<int>(r)].push_back(w.x());
     }
     // The face's size: the median over columns (rows) of its longest unbroken stretch.
     std::vector<double> heights, widths;
