@@ -21,6 +21,7 @@
 #include "projsurf/calibration/calibration_picture.hpp"
 #include "projsurf/types/plane.hpp"
 #include "projsurf/sim/ground_truth.hpp"
+#include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/ray_cast.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
@@ -280,6 +281,29 @@ TEST(SimProjector, ObstacleCastsAProjectorShadow) {
     EXPECT_GT(shadowed, 800);  // a band about 3.5 cm x 0.6 m on the wall: about 9 x 157 px
     EXPECT_GT(lit, 50000);
     EXPECT_LT(wrong, 0.1 * shadowed);  // only at the shadow's edges (shadow-map texels)
+}
+
+TEST(SimProjector, LightTransportSeesWhatTheRenderSees) {
+    // A structured-light sequence is rendered through the light transport, cast once: on the
+    // box scene (a projector shadow, the floor) its colour must be renderFrame's, for the
+    // paper's pinhole projector and for one with a lens offset, roll and distortion.
+    const Scenario s = makeScenario("big_obstacle", 2.0, 15.0);
+    for (const Projector &projector : {exampleProjector(), projectorRig({1.0, 1.0, 1.005, -0.05})}) {
+        cv::Mat fb(projector.height, projector.width, CV_8UC3);
+        cv::randu(fb, cv::Scalar::all(0), cv::Scalar::all(256));
+        cv::GaussianBlur(fb, fb, cv::Size(0, 0), 3.0);  // smooth, like a picture, so bilinear is well posed
+        const RgbdFrame f = renderFrame(s.scene, SensorModel::ideal(), 1, Projection{projector, fb});
+        const LightTransport t = lightTransport(s.scene, cameraView(SensorModel::ideal().camera), projector);
+        cv::Mat lit;
+        litBy(t, fb).convertTo(lit, CV_8UC3, 255.0);
+        cv::Mat diff;
+        cv::absdiff(lit, f.rgb, diff);
+        const int lit_pixels = cv::countNonZero(t.fb_x >= 0);
+        EXPECT_GT(lit_pixels, 50000);  // the projector lights about a quarter of the view
+        // Equal up to remap's 1/32-pixel interpolation, except at the shadow map's texels.
+        EXPECT_LT(cv::countNonZero(diff.reshape(1) > 2), 0.002 * lit_pixels);
+        EXPECT_LT(cv::mean(diff)[0], 0.2);
+    }
 }
 
 TEST(SimTruth, PlainWallRectangleIsLimitedByTheProjectorFootprint) {

@@ -40,19 +40,26 @@ std::vector<PatternCapture> renderPatternCaptures(const Projector &projector, co
         Scenario sc = makeScenario(pose.scenario, pose.distance, pose.angle_deg);
         if (pose.pitch_deg != 0.0) pitchCamera(sc, pose.pitch_deg);
         if (pose.roll_deg != 0.0) rollCamera(sc, pose.roll_deg);
+        // The depth once per position; the patterns through the light transport, which is what
+        // renderFrame's colour is without its noise, cast once for all of them.
+        const unsigned pose_seed = seed + 100u * static_cast<unsigned>(k);
         PatternCapture cap;
-        cv::RNG rng(seed + 100u * static_cast<unsigned>(k) + 7u);
-        for (std::size_t i = 0; i < patterns.size(); ++i) {
+        cap.depth = renderFrame(sc.scene, sensor, pose_seed).depth;
+        const LightTransport transport = lightTransport(sc.scene, cameraView(sensor.camera), projector, light);
+        const double sensor_sigma = sensor.noise ? sensor.rgb_noise : 0.0;  // grey levels
+        cv::RNG rng(pose_seed + 7u);
+        for (const auto &pattern : patterns) {
             cv::Mat fb;
-            cv::cvtColor(grayPatternImage(patterns[i], projector.width, projector.height), fb, cv::COLOR_GRAY2BGR);
-            RgbdFrame f =
-                renderFrame(sc.scene, sensor, seed + 100u * static_cast<unsigned>(k) + static_cast<unsigned>(i),
-                            Projection{projector, fb}, light);
-            if (i == 0) cap.depth = f.depth;
-            cv::Mat img;
-            f.rgb.convertTo(img, CV_32FC3);
-            if (model.blur_sigma_px > 0) cv::GaussianBlur(img, img, cv::Size(0, 0), model.blur_sigma_px);
+            cv::cvtColor(grayPatternImage(pattern, projector.width, projector.height), fb, cv::COLOR_GRAY2BGR);
+            cv::Mat img = litBy(transport, fb) * 255.0;
             cv::Mat noise(img.size(), CV_32FC3);
+            if (sensor_sigma > 0) {
+                rng.fill(noise, cv::RNG::NORMAL, 0.0, sensor_sigma);
+                img += noise;
+            }
+            img.convertTo(img, CV_8UC3);  // the sensor's own 8-bit image
+            img.convertTo(img, CV_32FC3);
+            if (model.blur_sigma_px > 0) cv::GaussianBlur(img, img, cv::Size(0, 0), model.blur_sigma_px);
             rng.fill(noise, cv::RNG::NORMAL, 0.0, model.noise_sigma);
             img += noise;
             img.convertTo(img, CV_8UC3);

@@ -63,21 +63,30 @@ cv::Vec3f albedoAt(const Quad &quad, const Eigen::Vector3d &p) {
     return quad.texture.at<cv::Vec3f>(row, col);
 }
 
+/// The framebuffer pixel whose light reaches surface point p of quad qi, if any: p inside the
+/// projector's frustum (through its lens model) and not in its shadow.
+std::optional<Eigen::Vector2d> framebufferPixel(const ProjectorLight &light, const Eigen::Vector3d &p, int qi) {
+    if (!light.map.reaches(p, qi)) return std::nullopt;
+    if (!light.projector.distorted()) {
+        const Eigen::Vector2d px = light.view.pixelOf(light.view.toView(p));
+        if (!light.view.inside(px)) return std::nullopt;
+        return px;
+    }
+    const auto px = light.projector.toPixel(p);
+    if (!px || px->x() < -0.5 || px->x() >= light.projector.width - 0.5 || px->y() < -0.5 ||
+        px->y() >= light.projector.height - 0.5)
+        return std::nullopt;
+    return px;
+}
+
 cv::Vec3f shade(const Quad &quad, const Eigen::Vector3d &p, int qi, const std::optional<ProjectorLight> &light,
                 const Lighting &lighting) {
     const cv::Vec3f albedo = albedoAt(quad, p);
     cv::Vec3f c = albedo * static_cast<float>(lighting.ambient) + cv::Vec3f::all(quad.emission);
-    if (light && light->map.reaches(p, qi)) {
-        const bool lens = light->projector.distorted();
-        const auto fb_px = lens ? light->projector.toPixel(p) : std::optional<Eigen::Vector2d>();
-        const Eigen::Vector2d px =
-            lens ? (fb_px ? *fb_px : Eigen::Vector2d(-1e9, -1e9)) : light->view.pixelOf(light->view.toView(p));
-        const bool inside = px.x() >= -0.5 && px.x() < light->framebuffer.cols - 0.5 && px.y() >= -0.5 &&
-                            px.y() < light->framebuffer.rows - 0.5;
-        if (lens ? inside : light->view.inside(px)) {
-            const cv::Vec3f fbc = sampleBilinear(light->framebuffer, px.x(), px.y());
-            c += albedo.mul(fbc) * static_cast<float>(lighting.projector_gain);
-        }
+    if (!light) return c;
+    if (const auto px = framebufferPixel(*light, p, qi)) {
+        const cv::Vec3f fbc = sampleBilinear(light->framebuffer, px->x(), px->y());
+        c += albedo.mul(fbc) * static_cast<float>(lighting.projector_gain);
     }
     return c;
 }
@@ -207,6 +216,41 @@ RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned se
         }
     }
     return f;
+}
+
+LightTransport lightTransport(const Scene &scene, const PinholeView &viewer, const Projector &projector,
+                              const Lighting &lighting) {
+    const DepthBuffer buf = castView(scene, viewer, 0.05);
+    const cv::Mat black(projector.height, projector.width, CV_8UC3, cv::Scalar(0, 0, 0));
+    const std::optional<ProjectorLight> light = makeLight(scene, Projection{projector, black}, viewer.width);
+    LightTransport t;
+    t.ambient = cv::Mat(viewer.height, viewer.width, CV_32FC3, cv::Scalar::all(0));
+    t.reflectance = cv::Mat(viewer.height, viewer.width, CV_32FC3, cv::Scalar::all(0));
+    t.fb_x = cv::Mat(viewer.height, viewer.width, CV_32F, cv::Scalar(-1));
+    t.fb_y = cv::Mat(viewer.height, viewer.width, CV_32F, cv::Scalar(-1));
+    for (int v = 0; v < viewer.height; ++v)
+        for (int u = 0; u < viewer.width; ++u) {
+            const int qi = buf.quad.at<int>(v, u);
+            if (qi < 0) continue;
+            const Quad &quad = scene.quads[qi];
+            const Eigen::Vector3d p = viewer.origin + buf.z.at<double>(v, u) * viewer.rayDirection(u, v);
+            const cv::Vec3f albedo = albedoAt(quad, p);
+            t.ambient.at<cv::Vec3f>(v, u) = albedo * static_cast<float>(lighting.ambient) + cv::Vec3f::all(quad.emission);
+            const auto px = framebufferPixel(*light, p, qi);
+            if (!px) continue;
+            t.reflectance.at<cv::Vec3f>(v, u) = albedo * static_cast<float>(lighting.projector_gain);
+            // Clamped like sampleBilinear: the outer half pixel takes the edge pixel's colour.
+            t.fb_x.at<float>(v, u) = static_cast<float>(std::clamp(px->x(), 0.0, projector.width - 1.0));
+            t.fb_y.at<float>(v, u) = static_cast<float>(std::clamp(px->y(), 0.0, projector.height - 1.0));
+        }
+    return t;
+}
+
+cv::Mat litBy(const LightTransport &transport, const cv::Mat &framebuffer) {
+    cv::Mat seen;
+    cv::remap(framebuffer, seen, transport.fb_x, transport.fb_y, cv::INTER_LINEAR, cv::BORDER_CONSTANT);
+    seen.convertTo(seen, CV_32FC3, 1.0 / 255.0);
+    return transport.ambient + transport.reflectance.mul(seen);
 }
 
 }  // namespace projsurf::sim

@@ -44,4 +44,19 @@ RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned se
 cv::Mat renderView(const Scene &scene, const PinholeView &viewer, const std::optional<Projection> &projection,
                    const Lighting &lighting = {});
 
+/// How a projector's light reaches the camera, cast once for a fixed scene and viewpoint so that
+/// many framebuffers (a structured-light sequence) cost an image remap each instead of a
+/// render: per camera pixel, the light without the projector, the reflectance to the
+/// projector's light, and the framebuffer position lighting it.
+struct LightTransport {
+    cv::Mat ambient;      ///< CV_32FC3, ambient light and emission leaving the surface, fraction of white
+    cv::Mat reflectance;  ///< CV_32FC3, albedo times projector gain; 0 where the projector does not reach
+    cv::Mat fb_x, fb_y;   ///< CV_32F, framebuffer pixel lighting each camera pixel; -1 where none
+};
+LightTransport lightTransport(const Scene &scene, const PinholeView &viewer, const Projector &projector,
+                              const Lighting &lighting = {});
+/// The noise-free colour the viewer sees with `framebuffer` (BGR 8-bit, the projector's size)
+/// projected: CV_32FC3, fraction of white per channel, as renderFrame's colour before noise.
+cv::Mat litBy(const LightTransport &transport, const cv::Mat &framebuffer);
+
 }  // namespace projsurf::sim
