@@ -1,6 +1,7 @@
 // The default method's stages, one by one, on inputs whose answer is known.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -13,6 +14,7 @@
 #include "projsurf/detection/projector_footprint.hpp"
 #include "projsurf/detection/rectangle_growth.hpp"
 #include "projsurf/detection/vertical_planes.hpp"
+#include "projsurf/detection/virtual_depth_image.hpp"
 #include "projsurf/detection/default/wall_shape.hpp"
 
 using namespace projsurf;
@@ -299,4 +301,76 @@ TEST(PlanarRegions, FindsEachWallOfACornerOnceAndNeverTheFloorWhateverTheOrder) 
     EXPECT_EQ(back, 1);
     EXPECT_EQ(side, 1);
     EXPECT_GT(regions[0].points, regions[1].points);  // biggest first
+}
+
+TEST(VirtualDepthImage, AShuffledFrameComesBackAsTheImageItWas) {
+    // A 640x480 pinhole image of a wall at 2 m with a box in front, as a shuffled point list:
+    // the virtual image has about the camera's focal length, every pixel holds a point of the
+    // input (the nearest of those that fall on it) and says which.
+    const double f = 525.0, cx = 319.5, cy = 239.5;
+    Cloud loose;
+    for (int v = 0; v < 480; ++v)
+        for (int u = 0; u < 640; ++u) {
+            const double x = (u - cx) / f, y = (v - cy) / f;
+            const bool box = u > 250 && u < 350 && v > 300 && v < 420;
+            if ((u * 7 + v * 3) % 10 == 0) continue;  // 10 % holes, spread out
+            const double z = box ? 1.5 : 2.0;
+            loose.points.emplace_back(static_cast<float>(x * z), static_cast<float>(y * z), static_cast<float>(z));
+        }
+    std::mt19937 rng(5);
+    std::shuffle(loose.points.begin(), loose.points.end(), rng);
+    loose.width = static_cast<int>(loose.points.size());
+    const auto image = virtualDepthImage(loose, VirtualImageConfig{});
+    ASSERT_TRUE(image);
+    EXPECT_TRUE(image->cloud.organized());
+    // Spread-out holes thin the points: the focal length follows the density (sqrt(0.9) here).
+    EXPECT_NEAR(image->cloud.width, 640 * std::sqrt(0.9), 12);
+    EXPECT_NEAR(image->cloud.height, 480 * std::sqrt(0.9), 9);
+    int filled = 0;
+    for (std::size_t i = 0; i < image->cloud.points.size(); ++i) {
+        const Point &p = image->cloud.points[i];
+        if (!isFinite(p)) {
+            EXPECT_EQ(image->source[i], -1);
+            continue;
+        }
+        ++filled;
+        ASSERT_GE(image->source[i], 0);
+        EXPECT_EQ(p, loose.points[static_cast<std::size_t>(image->source[i])]);
+    }
+    EXPECT_GT(filled, 0.8 * loose.points.size());
+    // Neighbouring pixels are neighbouring rays: along a row, x/z grows by about 1/f per pixel.
+    const int row = image->cloud.height / 2;
+    std::vector<double> steps;
+    for (int c = 1; c < image->cloud.width; ++c) {
+        const Point &a = image->cloud.points[static_cast<std::size_t>(row) * image->cloud.width + c - 1];
+        const Point &b = image->cloud.points[static_cast<std::size_t>(row) * image->cloud.width + c];
+        if (isFinite(a) && isFinite(b)) steps.push_back(b.x() / b.z() - a.x() / a.z());
+    }
+    ASSERT_GT(steps.size(), 300u);
+    std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
+    EXPECT_NEAR(steps[steps.size() / 2] * f, 1.0 / std::sqrt(0.9), 0.1);
+}
+
+TEST(VirtualDepthImage, NotForOrganizedSparseOrStrayClouds) {
+    Cloud organized;
+    organized.width = 2;
+    organized.height = 2;
+    organized.points.assign(4, Point(0, 0, 1));
+    EXPECT_FALSE(virtualDepthImage(organized, VirtualImageConfig{}));
+    Cloud few;
+    for (int i = 0; i < 100; ++i) few.points.emplace_back(0.01f * i, 0.0f, 2.0f);
+    few.width = 100;
+    EXPECT_FALSE(virtualDepthImage(few, VirtualImageConfig{}));  // below min_points
+    VirtualImageConfig off;
+    off.enabled = false;
+    Cloud wall;
+    for (int i = 0; i < 4000; ++i) wall.points.emplace_back(0.001f * (i % 100), 0.001f * (i / 100), 2.0f);
+    wall.points.emplace_back(1e20f, 0.0f, 1.0f);                            // far off the axis: dropped
+    wall.points.emplace_back(0.0f, 0.0f, -2.0f);                            // behind the camera: dropped
+    wall.points.emplace_back(std::numeric_limits<float>::quiet_NaN(), 0.0f, 1.0f);
+    wall.width = static_cast<int>(wall.points.size());
+    EXPECT_FALSE(virtualDepthImage(wall, off));
+    const auto image = virtualDepthImage(wall, VirtualImageConfig{});
+    ASSERT_TRUE(image);
+    EXPECT_LE(static_cast<long>(image->cloud.points.size()), 2L * 4000);  // the stray point does not spread it
 }

@@ -6,6 +6,7 @@
 #include "projsurf/detection/colour/surface_suitability.hpp"
 #include "projsurf/detection/default/wall_shape.hpp"
 #include "projsurf/detection/default/face_surround.hpp"
+#include "projsurf/detection/virtual_depth_image.hpp"
 
 namespace projsurf {
 
@@ -120,6 +121,7 @@ struct DetectorConfig {
     unsigned seed = 42;     ///< RANSAC random seed (runs are deterministic)
 
     DepthTolerance tolerance;  ///< how far off a plane a reading may be (default method)
+    VirtualImageConfig unorganized;  ///< default method: unorganized clouds as a pinhole's depth image
     PlaneSearchConfig planes;
     WallConfig wall;
     ObjectFaceConfig objects;
