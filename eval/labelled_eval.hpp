@@ -11,6 +11,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "eval/cloud_variants.hpp"
 #include "eval/real_gallery.hpp"
 #include "eval/real_labels.hpp"
 #include "eval/real_scoring.hpp"
@@ -66,6 +67,8 @@ struct LabelledFrame {
     cv::Mat overlay;      ///< BGR: label polygons, label best (blue), detector (magenta)
     ColourRun colour;
     ExampleRun example;
+    VariantRun unorganized;             ///< the frame's points as an unorganized cloud
+    std::vector<VariantRun> shifted;    ///< the depth image cropped by a pixel or three
 };
 
 struct LabelledSummary {
@@ -74,6 +77,8 @@ struct LabelledSummary {
     int with_best = 0;                             ///< frames whose label has a best rectangle
     double median_ratio = 0.0, worst_ratio = 0.0;  ///< over frames with a best (invalid = 0)
     int seed_stable = 0;                           ///< spread <= 2 % and the same validity on every seed
+    int unorganized_agree = 0;                     ///< the unorganized cloud's answer agrees (VariantRun)
+    int shift_stable = 0;                          ///< every cropped image's answer agrees
 };
 
 /// Over every frame, the example-calibration runs.
@@ -134,6 +139,8 @@ std::string labelledReportMarkdown(const std::vector<LabelledFrame> &frames, con
 /// One line per frame: frame, label best, detector area, ratio, right, free share, seed areas,
 /// spread (CSV with a header line).
 std::string labelledCsv(const std::vector<LabelledFrame> &frames);
+/// Markdown: the unorganized and shifted-grid variants per frame (part of labelledReportMarkdown).
+std::string variantReportMarkdown(const std::vector<LabelledFrame> &frames);
 /// The frames judged on colour: frame, colour used, colour best, per answer (depth only, with
 /// colour): area, ratio, right, share over unsuitable polygons (CSV with a header line).
 std::string colourCsv(const std::vector<LabelledFrame> &frames);
