@@ -230,6 +230,26 @@ TEST(WallShape, FollowsASmoothBendButNotWhatStandsProudOfTheWall) {
         fitWallShape({pts.begin(), pts.begin() + 10}, {band.begin(), band.begin() + 10}, wall, frame).has_value());
 }
 
+TEST(WallShape, AFarWallMayBendAsMuchAsTheSensorsDisparityErrorGrows) {
+    // A wall at 4 m bent by 11 cm at the image corners (a Kinect v1's +-3-5 cm at 3 m, grown
+    // with z^2): more than the 8 cm allowed at any depth, less than 0.0089 z^2 = 13.5 cm there.
+    CameraIntrinsics cam;
+    auto bend = [](double x, double y) { return 0.0118 * (x * x + y * y); };
+    const Cloud cloud = bentWall(cam, 4.0, bend, 0.010, 5);
+    const std::vector<int> sample = samplePoints(cloud, 12000);
+    const auto [pts, band] = sampledWithBands(cloud, sample);
+    const Plane wall = makePlane({0, 0, -1}, 4.0);
+    const PlaneFrame frame = makePlaneFrame(wall, Eigen::Vector3d::UnitY(), {0, 0, 4.0});
+    const auto shape = fitWallShape(pts, band, wall, frame);
+    ASSERT_TRUE(shape.has_value());
+    for (const Eigen::Vector2d uv : {Eigen::Vector2d(0, 0), Eigen::Vector2d(2.0, 1.4), Eigen::Vector2d(-2.0, -1.4)})
+        EXPECT_NEAR(shape->height(uv), bend(uv.x(), -uv.y()), 0.01) << uv.transpose();
+    // With the bend held to 8 cm at every depth, the same wall gets no shape.
+    WallShapeOptions flat_limit;
+    flat_limit.bend_per_z2 = 0.0;
+    EXPECT_FALSE(fitWallShape(pts, band, wall, frame, flat_limit).has_value());
+}
+
 TEST(WallShape, ItsReliefFollowsADistortionWaveAQuadraticCannotButNotABoxProudOfTheWall) {
     // A Kinect-v1-like distortion (features of about 100 px: waves of 1 m, 210 px, at 2.5 m) of
     // 2 cm amplitude, and a box 8 cm proud.

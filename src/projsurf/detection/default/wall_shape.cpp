@@ -55,9 +55,13 @@ std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const st
         shape.c = ldlt.solve(b);
         if (!shape.c.allFinite()) return std::nullopt;
     }
-    // A bend larger than any sensor gives means the fit followed something else.
-    for (const Eigen::Vector2d &corner : {lo, hi, Eigen::Vector2d(lo.x(), hi.y()), Eigen::Vector2d(hi.x(), lo.y())})
-        if (!(std::abs(shape.height(corner)) <= options.max_bend)) return std::nullopt;
+    // A bend larger than any sensor gives means the fit followed something else. The sensor's
+    // bend is a disparity error, so what it may reach grows with depth squared.
+    for (const Eigen::Vector2d &corner : {lo, hi, Eigen::Vector2d(lo.x(), hi.y()), Eigen::Vector2d(hi.x(), lo.y())}) {
+        const double z = frame.toCamera(corner).z();
+        if (!(std::abs(shape.height(corner)) <= std::max(options.max_bend, options.bend_per_z2 * z * z)))
+            return std::nullopt;
+    }
     if (options.relief.enabled) {
         // The relief on every point near the quadratic (the distortion may carry a point
         // further from the plane than the capture above).

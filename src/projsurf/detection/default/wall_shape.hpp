@@ -45,7 +45,9 @@ struct WallShapeOptions {
     int min_points = 60;         ///< fewer points: the wall stays flat
     int max_points =
         2000;  ///< more are thinned evenly (six coefficients; same areas on the real frames as 12000, measured)
-    double max_bend = 0.08;  ///< m, a fitted bend larger than this anywhere in the points' extent is refused
+    double max_bend = 0.08;  ///< m, a fitted bend larger than this anywhere in the points' extent is refused,
+    double bend_per_z2 = 0.0089;  ///< 1/m, or than this times the depth squared there (max_bend at 3 m; Kinect v1's
+                                  ///< +-3-5 cm at 3 m grows with z^2 as its disparity error does)
     WallReliefOptions relief;
 };
 
