@@ -257,3 +257,10 @@ TEST(DetectorConfigFile, TheShippedExampleIsTheDefaultsAsPrinted) {
     EXPECT_EQ(slurp(example), detectorConfigYaml(DetectorConfig{}))
         << "regenerate it: projsurf detect --print-config > config/detector.yaml";
 }
+
+TEST(DetectorConfigFile, TheInterfaceDocumentListsEveryKey) {
+    const std::string doc = slurp(fs::path(PROJSURF_SOURCE_DIR) / "docs/interface.md");
+    for (const ConfigKey &k : detectorConfigKeys())
+        EXPECT_NE(doc.find("| `" + k.key + "` | " + keyTypeName(k.type) + ": "), std::string::npos)
+            << k.key << " is not in docs/interface.md's key table";
+}
