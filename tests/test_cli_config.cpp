@@ -41,7 +41,8 @@ TEST(CliConfig, PrintConfigNeedsNoInputAndWritesTheDefaults) {
     EXPECT_EQ(r.out, slurp(fs::path(PROJSURF_SOURCE_DIR) / "config/detector.yaml"));
     EXPECT_EQ(r.out, projsurf::frontend::detectorConfigYaml(projsurf::DetectorConfig{}));
     // Without --print-config, --calib stays required, as before.
-    const CliRun missing = cli("detect --config " + (fs::path(PROJSURF_SOURCE_DIR) / "config/detector.yaml").string(), dir);
+    const CliRun missing =
+        cli("detect --config " + (fs::path(PROJSURF_SOURCE_DIR) / "config/detector.yaml").string(), dir);
     EXPECT_EQ(missing.status, 2);
     EXPECT_EQ(missing.err, "projsurf: error: --calib is required (see projsurf detect --help)\n");
     fs::remove_all(dir);
@@ -56,11 +57,11 @@ TEST(CliConfig, FlagsOverrideTheFileWhichOverridesTheDefaults) {
                          dir);
     ASSERT_EQ(r.status, 0) << r.err;
     const projsurf::DetectorConfig c = readPrinted(dir, r.out);
-    EXPECT_EQ(c.planes.max_planes, 7);              // flag over file
-    EXPECT_EQ(c.method, projsurf::Method::Paper);   // flag over file
-    EXPECT_DOUBLE_EQ(c.aspect, 4.0 / 3.0);          // flag over default
-    EXPECT_EQ(c.seed, 5u);                          // file over default
-    EXPECT_EQ(c.free_space.cell, 0.02);             // file over default
+    EXPECT_EQ(c.planes.max_planes, 7);             // flag over file
+    EXPECT_EQ(c.method, projsurf::Method::Paper);  // flag over file
+    EXPECT_DOUBLE_EQ(c.aspect, 4.0 / 3.0);         // flag over default
+    EXPECT_EQ(c.seed, 5u);                         // file over default
+    EXPECT_EQ(c.free_space.cell, 0.02);            // file over default
     EXPECT_EQ(c.paper.hull, projsurf::HullKind::Convex);
     EXPECT_EQ(c.check.max_outlier_fraction, projsurf::DetectorConfig{}.check.max_outlier_fraction);
     fs::remove_all(dir);
@@ -84,13 +85,15 @@ TEST(CliConfig, ABadFileIsOneLineExitTwoAndNoOutput) {
     std::ofstream(file) << "planes:\n  max_plane: 6\n";
     CliRun r = cli(depthArgs() + " --config " + file + " --json " + (dir / "out.json").string(), dir);
     EXPECT_EQ(r.status, 2);
-    EXPECT_EQ(r.err, "projsurf: error: " + file + ": unknown key 'planes.max_plane' (did you mean 'planes.max_planes'?)\n");
+    EXPECT_EQ(r.err,
+              "projsurf: error: " + file + ": unknown key 'planes.max_plane' (did you mean 'planes.max_planes'?)\n");
     EXPECT_FALSE(fs::exists(dir / "out.json"));
     std::ofstream(file) << "free_space:\n  cell: 5\n";
     r = cli("detect --print-config --config " + file, dir);
     EXPECT_EQ(r.status, 2);
     EXPECT_EQ(r.out, "");
-    EXPECT_EQ(r.err, "projsurf: error: " + file + ": key 'free_space.cell': must be a number from 0.002 to 0.5, got '5'\n");
+    EXPECT_EQ(r.err,
+              "projsurf: error: " + file + ": key 'free_space.cell': must be a number from 0.002 to 0.5, got '5'\n");
     std::ofstream(file) << "seed: [1\n";
     r = cli("detect --print-config --config " + file, dir);
     EXPECT_EQ(r.status, 2);

@@ -105,13 +105,14 @@ TEST(DetectorConfigKeys, EveryKeyIsUniqueDocumentedAndReachesItsOwnField) {
         setConfigValue(c, k, other, k.key);
         EXPECT_NE(valueOf(c, k.key), valueOf(DetectorConfig{}, k.key)) << k.key;
         for (const ConfigKey &o : keys)
-            if (o.key != k.key) EXPECT_EQ(valueOf(c, o.key), valueOf(DetectorConfig{}, o.key)) << k.key << " moved " << o.key;
+            if (o.key != k.key)
+                EXPECT_EQ(valueOf(c, o.key), valueOf(DetectorConfig{}, o.key)) << k.key << " moved " << o.key;
     }
-    for (const char *key : {"method", "aspect", "max_tilt", "seed", "planes.max_planes", "planes.regions.min_fill",
-                            "wall.shape.relief.max_nodes", "objects.avoid", "objects.surround.offsets",
-                            "objects.rule.wall_width", "free_space.cell", "check.max_outlier_fraction",
-                            "suitability.mode", "suitability.cells.max_hole", "paper.voxel_leaf", "paper.hull",
-                            "unorganized.enabled", "tolerance.noise_k"})
+    for (const char *key :
+         {"method", "aspect", "max_tilt", "seed", "planes.max_planes", "planes.regions.min_fill",
+          "wall.shape.relief.max_nodes", "objects.avoid", "objects.surround.offsets", "objects.rule.wall_width",
+          "free_space.cell", "check.max_outlier_fraction", "suitability.mode", "suitability.cells.max_hole",
+          "paper.voxel_leaf", "paper.hull", "unorganized.enabled", "tolerance.noise_k"})
         EXPECT_NE(findConfigKey(key), nullptr) << key;
 }
 
@@ -183,19 +184,24 @@ TEST(DetectorConfigFile, UnknownKeysAreNamedWithTheKeyMeant) {
 TEST(DetectorConfigFile, ValuesOutOfRangeOrOfTheWrongTypeNameTheKey) {
     const fs::path dir = freshDir("config_values");
     const std::string at = (dir / "detector.yaml").string() + ": key ";
-    EXPECT_EQ(refusal(dir, "planes.max_planes: 0\n"), at + "'planes.max_planes': must be a whole number from 1 to 20, got '0'");
-    EXPECT_EQ(refusal(dir, "planes.max_planes: 21\n"), at + "'planes.max_planes': must be a whole number from 1 to 20, got '21'");
+    EXPECT_EQ(refusal(dir, "planes.max_planes: 0\n"),
+              at + "'planes.max_planes': must be a whole number from 1 to 20, got '0'");
+    EXPECT_EQ(refusal(dir, "planes.max_planes: 21\n"),
+              at + "'planes.max_planes': must be a whole number from 1 to 20, got '21'");
     EXPECT_EQ(refusal(dir, "tolerance.min_band: 0\n"), at + "'tolerance.min_band': must be a number > 0, got '0'");
     EXPECT_EQ(refusal(dir, "max_tilt: .nan\n"), at + "'max_tilt': must be a number from 0 to 1.5, got '.nan'");
     EXPECT_EQ(refusal(dir, "max_tilt: .inf\n"), at + "'max_tilt': must be a number from 0 to 1.5, got '.inf'");
     EXPECT_EQ(refusal(dir, "wall.noise_max: 1e999\n"), at + "'wall.noise_max': must be a number > 0, got '1e999'");
     EXPECT_EQ(refusal(dir, "seed: -1\n"), at + "'seed': must be a whole number from 0 to 4294967295, got '-1'");
     // The wrong type.
-    EXPECT_EQ(refusal(dir, "planes.max_planes: six\n"), at + "'planes.max_planes': must be a whole number from 1 to 20, got 'six'");
-    EXPECT_EQ(refusal(dir, "planes.max_planes: 2.5\n"), at + "'planes.max_planes': must be a whole number from 1 to 20, got '2.5'");
+    EXPECT_EQ(refusal(dir, "planes.max_planes: six\n"),
+              at + "'planes.max_planes': must be a whole number from 1 to 20, got 'six'");
+    EXPECT_EQ(refusal(dir, "planes.max_planes: 2.5\n"),
+              at + "'planes.max_planes': must be a whole number from 1 to 20, got '2.5'");
     EXPECT_EQ(refusal(dir, "planes.max_planes: \"6\"\n"),
               at + "'planes.max_planes': must be a whole number from 1 to 20, got the quoted word '6'");
-    EXPECT_EQ(refusal(dir, "planes.max_planes: [6]\n"), at + "'planes.max_planes': must be a whole number from 1 to 20, got '[...]'");
+    EXPECT_EQ(refusal(dir, "planes.max_planes: [6]\n"),
+              at + "'planes.max_planes': must be a whole number from 1 to 20, got '[...]'");
     EXPECT_EQ(refusal(dir, "objects.avoid: yes\n"), at + "'objects.avoid': must be true or false, got 'yes'");
     EXPECT_EQ(refusal(dir, "objects.surround.offsets: [0.1, -0.2]\n"),
               at + "'objects.surround.offsets': must be a list of 1 to 16 numbers, each > 0, got '-0.2'");
@@ -204,7 +210,8 @@ TEST(DetectorConfigFile, ValuesOutOfRangeOrOfTheWrongTypeNameTheKey) {
     EXPECT_EQ(refusal(dir, "paper.hull: round\n"), at + "'paper.hull': expected 'concave' or 'convex', got 'round'");
     EXPECT_EQ(refusal(dir, "suitability.mode: always\n"),
               at + "'suitability.mode': expected 'off', 'avoid' or 'prefer', got 'always'");
-    EXPECT_NE(refusal(dir, "aspect: 16x9\n").find(at + "'aspect': expected a positive aspect ratio W:H"), std::string::npos);
+    EXPECT_NE(refusal(dir, "aspect: 16x9\n").find(at + "'aspect': expected a positive aspect ratio W:H"),
+              std::string::npos);
     // Each value in range, but not together.
     EXPECT_EQ(refusal(dir, "tolerance: {min_band: 0.1}\n"),
               (dir / "detector.yaml").string() + ": 'tolerance.min_band' must not exceed 'tolerance.max_band'");

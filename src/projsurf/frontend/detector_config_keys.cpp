@@ -39,12 +39,15 @@ constexpr KeyType typeOf() {
     return KeyType::Word;
 }
 
+template <typename T>
+ConfigKey makeKey(const char *name, ConfigField<T> field, KeyRange range, const char *doc) {
+    return ConfigKey{name, typeOf<T>(), range, doc, ConfigAccess{field}};
+}
+
 // The key is the field's path itself (#path), so that it cannot drift from the struct.
-#define PROJSURF_KEY(T, path, range, doc)                                                          \
-    ConfigKey {                                                                                    \
-        #path, typeOf<T>(), range, doc,                                                            \
-            ConfigAccess{static_cast<ConfigField<T>>([](DetectorConfig &c) -> T & { return c.path; })} \
-    }
+#define PROJSURF_KEY(T, path, range, doc) \
+    makeKey<T>(                           \
+        #path, [](DetectorConfig &c) -> T & { return c.path; }, range, doc)
 
 std::vector<ConfigKey> topKeys() {
     return {
@@ -63,7 +66,8 @@ std::vector<ConfigKey> toleranceKeys() {
         PROJSURF_KEY(double, tolerance.sigmas, kPositive, "inlier band in sigmas of the depth noise"),
         PROJSURF_KEY(double, tolerance.min_band, kPositive, "m, band floor (flat posters, 3 mm proud, stay inliers)"),
         PROJSURF_KEY(double, tolerance.max_band, kPositive, "m, band ceiling (beyond 4 m the Kinect is out of range)"),
-        PROJSURF_KEY(double, tolerance.obstacle_bands, kPositive, "beyond this many bands a point is an obstacle or hole"),
+        PROJSURF_KEY(double, tolerance.obstacle_bands, kPositive,
+                     "beyond this many bands a point is an obstacle or hole"),
         PROJSURF_KEY(double, tolerance.min_obstacle, kNonNegative, "m, and at least this far (paper 3.2.3 uses 0.05)"),
     };
 }
@@ -85,7 +89,8 @@ std::vector<ConfigKey> planeKeys() {
     return {
         PROJSURF_KEY(bool, planes.image_regions, kAny, "organized clouds: planar regions instead of RANSAC"),
         PROJSURF_KEY(int, planes.regions.cell, from(1, 256), "grid elements per cell side (8 at the 2-px grid: 16 px)"),
-        PROJSURF_KEY(double, planes.regions.min_fill, above(0.0, 1.0), "share of a cell's points that must be readings"),
+        PROJSURF_KEY(double, planes.regions.min_fill, above(0.0, 1.0),
+                     "share of a cell's points that must be readings"),
         PROJSURF_KEY(double, planes.regions.thickness_bands, kPositive,
                      "a flat cell is thinner (RMS off its plane) than this many inlier bands"),
         PROJSURF_KEY(double, planes.regions.seed_tilt, kAngle,
@@ -99,7 +104,8 @@ std::vector<ConfigKey> planeKeys() {
         PROJSURF_KEY(int, planes.target_samples, from(3, kMaxCount), "points kept for the RANSAC search, measured"),
         PROJSURF_KEY(int, planes.max_planes, from(1, 20), "vertical planes tried, biggest first"),
         PROJSURF_KEY(int, planes.min_plane_points, from(3, kMaxCount), "sampled inliers for a plane to count"),
-        PROJSURF_KEY(int, planes.ransac_iterations, from(1, 1e6), "hypotheses per plane (adaptive stop usually earlier)"),
+        PROJSURF_KEY(int, planes.ransac_iterations, from(1, 1e6),
+                     "hypotheses per plane (adaptive stop usually earlier)"),
         PROJSURF_KEY(int, planes.score_subset, from(3, kMaxCount), "points a hypothesis is scored on, measured"),
         PROJSURF_KEY(double, planes.max_sample_span, kPositive,
                      "m, the 2nd and 3rd point of a hypothesis within this of the 1st"),
@@ -125,11 +131,14 @@ std::vector<ConfigKey> wallKeys() {
         PROJSURF_KEY(int, wall.shape.relief.rounds, from(1, 100), "reweighting rounds"),
         PROJSURF_KEY(double, wall.shape.relief.min_weight_share, kShare,
                      "nodes below this share of the median node weight shrink towards 0"),
-        PROJSURF_KEY(int, wall.shape.relief.max_nodes, from(1, 1024), "nodes per side; a larger wall spaces them wider"),
-        PROJSURF_KEY(double, wall.noise_min, kPositive, "the wall's measured noise kept above this multiple of the model's"),
+        PROJSURF_KEY(int, wall.shape.relief.max_nodes, from(1, 1024),
+                     "nodes per side; a larger wall spaces them wider"),
+        PROJSURF_KEY(double, wall.noise_min, kPositive,
+                     "the wall's measured noise kept above this multiple of the model's"),
         PROJSURF_KEY(double, wall.noise_max, kPositive, "... and below this multiple (ToF is better, stereo worse)"),
         PROJSURF_KEY(double, wall.local_cap, kPositive, "the wall's noise is at most this many times the local noise"),
-        PROJSURF_KEY(int, wall.noise_offset_px, from(1, 256), "px between the readings whose differences measure noise"),
+        PROJSURF_KEY(int, wall.noise_offset_px, from(1, 256),
+                     "px between the readings whose differences measure noise"),
         PROJSURF_KEY(int, wall.plane_refits, from(0, 100), "least-squares refits of the plane to the wall's shape"),
         PROJSURF_KEY(double, wall.refit_min_turn, kNonNegative, "rad, a refit turning the plane less ends the refits"),
         PROJSURF_KEY(double, wall.refit_min_shift, kNonNegative, "m, ... and moving it less (docs/wall_model.md)"),
@@ -145,7 +154,8 @@ std::vector<ConfigKey> objectKeys() {
         PROJSURF_KEY(std::vector<double>, objects.surround.offsets, kPositive,
                      "m beyond the edge, looked at nearest first (1 to 16 numbers)"),
         PROJSURF_KEY(double, objects.surround.min_step, kPositive, "m, a reading this far off the plane is off it"),
-        PROJSURF_KEY(int, objects.surround.search_px, from(0, 64), "px, a missing reading is looked for this far around"),
+        PROJSURF_KEY(int, objects.surround.search_px, from(0, 64),
+                     "px, a missing reading is looked for this far around"),
         PROJSURF_KEY(double, objects.surround.max_gap, kPositive, "m, a gap this wide between a face's points ends it"),
         PROJSURF_KEY(double, objects.rule.min_seen, kShare, "share of an edge's positions seen past or in front"),
         PROJSURF_KEY(double, objects.rule.min_past, kShare, "share of those open behind for the edge to be open"),
@@ -161,7 +171,8 @@ std::vector<ConfigKey> freeSpaceKeys() {
         PROJSURF_KEY(bool, free_space.exclude_other_surfaces, kAny,
                      "points clearly nearer another region's plane are no support"),
         PROJSURF_KEY(int, free_space.max_gap_cells, from(0, 1024), "largest gap between wall samples closed, cells"),
-        PROJSURF_KEY(int, free_space.min_blocked_neighbours, from(0, 8), "blocked cells a blocked cell needs in its 3x3"),
+        PROJSURF_KEY(int, free_space.min_blocked_neighbours, from(0, 8),
+                     "blocked cells a blocked cell needs in its 3x3"),
         PROJSURF_KEY(double, free_space.image_margin, from(0.0, 0.5),
                      "of the image width: margin around where a plane is seen"),
         PROJSURF_KEY(double, free_space.inlier_box_margin, from(0.0, 0.5),
@@ -172,31 +183,44 @@ std::vector<ConfigKey> freeSpaceKeys() {
 
 std::vector<ConfigKey> suitabilityKeys() {
     return {
-        PROJSURF_KEY(SuitabilityMode, suitability.mode, kAny,
-                     "with registered colour: ignore it, avoid unfit cells, or prefer a cleaner wall (docs/suitability.md)"),
-        PROJSURF_KEY(double, suitability.cells.context, kNonNegative, "m, the wall judged beyond the raster on each side"),
+        PROJSURF_KEY(
+            SuitabilityMode, suitability.mode, kAny,
+            "with registered colour: ignore it, avoid unfit cells, or prefer a cleaner wall (docs/suitability.md)"),
+        PROJSURF_KEY(double, suitability.cells.context, kNonNegative,
+                     "m, the wall judged beyond the raster on each side"),
         PROJSURF_KEY(double, suitability.cells.weak_contrast, kNonNegative,
                      "window contrast above which cells near wide texture are textured too"),
-        PROJSURF_KEY(double, suitability.cells.weak_over_wall, kNonNegative, "... and above this many times the wall's"),
-        PROJSURF_KEY(double, suitability.cells.texture_growth, kNonNegative, "m, how far from wide texture weak cells join"),
-        PROJSURF_KEY(double, suitability.cells.window, kPositive, "m, side of the square texture and glare are judged on"),
-        PROJSURF_KEY(double, suitability.cells.tone_window, kPositive, "m, the square darkness and saturation are judged on"),
-        PROJSURF_KEY(double, suitability.cells.dark_relative, kShare, "darker than this share of the wall's median: dark"),
+        PROJSURF_KEY(double, suitability.cells.weak_over_wall, kNonNegative,
+                     "... and above this many times the wall's"),
+        PROJSURF_KEY(double, suitability.cells.texture_growth, kNonNegative,
+                     "m, how far from wide texture weak cells join"),
+        PROJSURF_KEY(double, suitability.cells.window, kPositive,
+                     "m, side of the square texture and glare are judged on"),
+        PROJSURF_KEY(double, suitability.cells.tone_window, kPositive,
+                     "m, the square darkness and saturation are judged on"),
+        PROJSURF_KEY(double, suitability.cells.dark_relative, kShare,
+                     "darker than this share of the wall's median: dark"),
         PROJSURF_KEY(double, suitability.cells.dark_min, kShare, "luminance share below which a surface is too dark"),
-        PROJSURF_KEY(double, suitability.cells.max_chroma, kShare, "mean (max - min channel) / 255 above this: saturated"),
+        PROJSURF_KEY(double, suitability.cells.max_chroma, kShare,
+                     "mean (max - min channel) / 255 above this: saturated"),
         PROJSURF_KEY(double, suitability.cells.max_contrast, kNonNegative, "luminance std / mean above this: textured"),
-        PROJSURF_KEY(double, suitability.cells.glare_level, above(0.0, 1.0), "a channel at this share of 255 is blown out"),
+        PROJSURF_KEY(double, suitability.cells.glare_level, above(0.0, 1.0),
+                     "a channel at this share of 255 is blown out"),
         PROJSURF_KEY(double, suitability.cells.max_glare_share, kShare, "more blown-out samples in the window: glare"),
         PROJSURF_KEY(double, suitability.cells.glare_wall_share, kShare,
                      "no glare on a wall whose median luminance reaches this share of glare_level"),
-        PROJSURF_KEY(int, suitability.cells.row_step, from(1, 64), "every this many rows of the point grid are sampled"),
+        PROJSURF_KEY(int, suitability.cells.row_step, from(1, 64),
+                     "every this many rows of the point grid are sampled"),
         PROJSURF_KEY(int, suitability.cells.min_tone_samples, from(1, kMaxCount), "fewer: tone judged over the window"),
-        PROJSURF_KEY(int, suitability.cells.min_samples, from(1, kMaxCount), "fewer wall samples: colour decides nothing"),
+        PROJSURF_KEY(int, suitability.cells.min_samples, from(1, kMaxCount),
+                     "fewer wall samples: colour decides nothing"),
         PROJSURF_KEY(int, suitability.cells.trim_cells, from(0, 64), "textured and glare cells given back on a rim"),
-        PROJSURF_KEY(double, suitability.cells.max_hole, kNonNegative, "m^2, fit areas enclosed by unfit ones up to this"),
+        PROJSURF_KEY(double, suitability.cells.max_hole, kNonNegative,
+                     "m^2, fit areas enclosed by unfit ones up to this"),
         PROJSURF_KEY(double, suitability.cells.min_unfit_area, kNonNegative, "m^2, smaller unfit areas are fit"),
         PROJSURF_KEY(double, suitability.cells.min_texture_width, kNonNegative, "m, narrower textured areas are fit"),
-        PROJSURF_KEY(double, suitability.prefer_exponent, kNonNegative, "k of prefer's rule: area x (1 - unfit share)^k"),
+        PROJSURF_KEY(double, suitability.prefer_exponent, kNonNegative,
+                     "k of prefer's rule: area x (1 - unfit share)^k"),
     };
 }
 
@@ -208,7 +232,8 @@ std::vector<ConfigKey> paperKeys() {
         PROJSURF_KEY(int, paper.ransac_iterations, from(1, 1e6), "RANSAC iterations (PCL SACSegmentation's default)"),
         PROJSURF_KEY(double, paper.concave_alpha, kPositive, "m, alpha of the concave hull (2 voxels)"),
         PROJSURF_KEY(double, paper.cell, from(0.002, 0.5), "m, raster cell of the free-space matrices (paper 3.2.2)"),
-        PROJSURF_KEY(double, paper.outlier_distance, kPositive, "m, |z - mean z| above this is an outlier (paper 3.2.3)"),
+        PROJSURF_KEY(double, paper.outlier_distance, kPositive,
+                     "m, |z - mean z| above this is an outlier (paper 3.2.3)"),
         PROJSURF_KEY(int, paper.max_outliers, from(0, INT_MAX), "more outliers reject the surface (paper 4.3)"),
         PROJSURF_KEY(int, paper.max_voxels, from(1, kMaxCount), "more voxels are not searched (memory, time)"),
     };
@@ -338,14 +363,18 @@ std::string expectation(const ConfigKey &key) {
     switch (key.type) {
     case KeyType::Bool: return "true or false";
     case KeyType::Int:
-    case KeyType::Unsigned: return "a whole number " + std::string(key.range.hi >= kInf || key.range.lo_open ? "" : "from ") + numericRange(key.range);
+    case KeyType::Unsigned:
+        return "a whole number " + std::string(key.range.hi >= kInf || key.range.lo_open ? "" : "from ") +
+               numericRange(key.range);
     case KeyType::DoubleList:
         return "a list of 1 to " + std::to_string(kMaxListItems) + " numbers, each " + numericRange(key.range);
     case KeyType::Word: return "one word, " + keyRangeText(key);
     case KeyType::Double: break;
     }
-    if (std::holds_alternative<AspectField>(key.access)) return "0 (the framebuffer's), or a ratio or \"W:H\" within 0.01 to 100";
-    return "a number " + std::string(key.range.hi >= kInf || key.range.lo_open ? "" : "from ") + numericRange(key.range);
+    if (std::holds_alternative<AspectField>(key.access))
+        return "0 (the framebuffer's), or a ratio or \"W:H\" within 0.01 to 100";
+    return "a number " + std::string(key.range.hi >= kInf || key.range.lo_open ? "" : "from ") +
+           numericRange(key.range);
 }
 
 std::optional<double> parseNumber(const std::string &text) {
@@ -369,7 +398,8 @@ std::optional<long long> parseWhole(const std::string &text) {
 bool inRange(double v, const KeyRange &r) { return (r.lo_open ? v > r.lo : v >= r.lo) && v <= r.hi; }
 
 [[noreturn]] void refuse(const ConfigKey &key, const std::string &got, bool quoted, const std::string &what) {
-    throw InputError(what, "must be " + expectation(key) + ", got " + (quoted ? "the quoted word " : "") + "'" + got + "'");
+    throw InputError(what,
+                     "must be " + expectation(key) + ", got " + (quoted ? "the quoted word " : "") + "'" + got + "'");
 }
 
 /// The one item of a scalar value.
@@ -461,9 +491,7 @@ void setConfigValue(DetectorConfig &c, const ConfigKey &key, const SettingText &
                    [&](ConfigField<std::vector<double>> f) { f(c) = numbers(key, value, what); },
                    [&](ConfigField<Method> f) { f(c) = parseMethod(what, scalar(key, value, what)); },
                    [&](ConfigField<HullKind> f) { f(c) = parseHull(what, scalar(key, value, what)); },
-                   [&](ConfigField<SuitabilityMode> f) {
-                       f(c) = parseSuitabilityMode(what, scalar(key, value, what));
-                   },
+                   [&](ConfigField<SuitabilityMode> f) { f(c) = parseSuitabilityMode(what, scalar(key, value, what)); },
                },
                key.access);
 }

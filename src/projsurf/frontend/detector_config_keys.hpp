@@ -22,10 +22,9 @@ using ConfigField = T &(*)(DetectorConfig &);
 struct AspectField {
     ConfigField<double> field;
 };
-using ConfigAccess =
-    std::variant<ConfigField<bool>, ConfigField<int>, ConfigField<unsigned>, ConfigField<double>,
-                 ConfigField<std::vector<double>>, ConfigField<Method>, ConfigField<HullKind>,
-                 ConfigField<SuitabilityMode>, AspectField>;
+using ConfigAccess = std::variant<ConfigField<bool>, ConfigField<int>, ConfigField<unsigned>, ConfigField<double>,
+                                  ConfigField<std::vector<double>>, ConfigField<Method>, ConfigField<HullKind>,
+                                  ConfigField<SuitabilityMode>, AspectField>;
 
 /// Numbers (each item of a list) within [lo, hi]; (lo, hi] when `lo_open`. Never NaN or inf.
 struct KeyRange {
