@@ -43,6 +43,10 @@ struct PlaneSearchConfig {
     double max_sample_span = 1.5;  ///< m, the 2nd and 3rd point of a hypothesis within this of the 1st
     int refine_rounds = 2;         ///< least-squares refits of each plane on its inliers
     double merge_angle = 0.05;     ///< rad, a plane this parallel to a found one, within its margin, is a slice of it
+    /// Depth images: when the vertical regions hold less than this share of the readings (cells
+    /// too rough to grow), the RANSAC search runs as well. Measured: 1-2 % on a D435 wall whose
+    /// per-pixel noise is 3x the model's, 8-57 % on the labelled real frames.
+    double min_region_share = 0.05;
 };
 
 /// Default method, stage 2: how each wall departs from its plane (detection/default/wall_shape.hpp).

@@ -118,6 +118,26 @@ std::vector<PlaneCandidate> findCandidates(const CloudSample &s, const DetectorC
     return out;
 }
 
+/// Share of the grid's readings that lie in the vertical regions.
+double regionShare(const std::vector<PlanarRegion> &regions, const PointGrid &grid) {
+    std::size_t readings = 0;
+    for (float z : grid.z) readings += z == z;
+    std::size_t in_regions = 0;
+    for (const PlanarRegion &r : regions) in_regions += static_cast<std::size_t>(r.points);
+    return readings ? static_cast<double>(in_regions) / static_cast<double>(readings) : 0.0;
+}
+
+/// A plane parallel to a candidate's (within merge_angle) and within its obstacle margin.
+bool foundAlready(const Plane &plane, const std::vector<PlaneCandidate> &candidates, const DetectorConfig &cfg) {
+    for (const PlaneCandidate &c : candidates) {
+        const double z = std::abs(c.plane.d);
+        if (std::abs(c.plane.normal.dot(plane.normal)) > std::cos(cfg.planes.merge_angle) &&
+            std::abs(std::abs(c.plane.d) - std::abs(plane.d)) < cfg.tolerance.margin(static_cast<float>(z)))
+            return true;
+    }
+    return false;
+}
+
 /// 3.2.1: the point grid of the free-space passes, and every vertical plane in view: a depth
 /// image's planar regions, else (or when no region grows) sequential RANSAC.
 std::vector<PlaneCandidate> findPlanes(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cfg,
@@ -125,15 +145,17 @@ std::vector<PlaneCandidate> findPlanes(const Cloud &cloud, const CloudSample &s,
     fillPointGrid(cloud, cfg.free_space.stride, scratch.grid);
     scratch.region_labels.clear();
     const bool regions = cfg.planes.image_regions && scratch.grid.organized;
+    if (!regions) return findCandidates(s, cfg, gravity);
     std::vector<PlaneCandidate> out =
-        regions ? findRegionCandidates(s, scratch.grid, cfg, gravity, scratch.region_labels, scratch.regions)
-                : findCandidates(s, cfg, gravity);
-    // A depth image whose cells are all too rough to grow regions (a poor stereo unit's
-    // correlated noise) may still hold a plain wall: the robust plane search runs then.
-    if (out.empty() && regions) {
-        scratch.region_labels.clear();
-        out = findCandidates(s, cfg, gravity);
-    }
+        findRegionCandidates(s, scratch.grid, cfg, gravity, scratch.region_labels, scratch.regions);
+    // A depth image whose cells are too rough to grow regions (a poor stereo unit's correlated
+    // noise, more per-pixel noise than the sensor model's) may still hold a plain wall: when
+    // the regions hold little of what the camera read, the robust plane search runs as well,
+    // and the planes no region found join the candidates.
+    if (regionShare(scratch.regions, scratch.grid) >= cfg.planes.min_region_share) return out;
+    if (out.empty()) scratch.region_labels.clear();
+    for (PlaneCandidate &c : findCandidates(s, cfg, gravity))
+        if (!foundAlready(c.plane, out, cfg)) out.push_back(std::move(c));
     return out;
 }
 
