@@ -112,6 +112,8 @@ std::vector<ConfigKey> planeKeys() {
         PROJSURF_KEY(int, planes.refine_rounds, from(0, 100), "least-squares refits of each plane on its inliers"),
         PROJSURF_KEY(double, planes.merge_angle, kAngle,
                      "rad, a plane this parallel to a found one, within its margin, is a slice of it"),
+        PROJSURF_KEY(double, planes.min_region_share, kShare,
+                     "share of readings: depth images whose regions hold less also run the RANSAC search"),
     };
 }
 
