@@ -9,8 +9,10 @@
 #include "argument_types.hpp"
 #include "projsurf/frontend/aspect.hpp"
 #include "projsurf/frontend/depth_range_check.hpp"
+#include "projsurf/frontend/detector_config_file.hpp"
 #include "projsurf/frontend/gravity_sanity.hpp"
 #include "projsurf/frontend/method_settings.hpp"
+#include "projsurf/frontend/method_words.hpp"
 #include "projsurf/frontend/suitability_mode.hpp"
 #include "projsurf/io/errors.hpp"
 
@@ -93,7 +95,7 @@ double &settingIn(DetectorConfig &c, const std::string &name) {
 }
 
 const char *const kNamedArguments =
-    "points, projector, aspect, gravity, method, hull, seed, min_width, min_area, suitability, colour";
+    "points, projector, aspect, gravity, method, hull, seed, min_width, min_area, suitability, colour, config";
 
 /// Puts the keyword settings into `o`; returns the names given.
 std::vector<std::string> applySettings(const py::dict &settings, DetectorOptions &o) {
@@ -129,22 +131,12 @@ std::vector<std::string> applySettings(const py::dict &settings, DetectorOptions
 
 DetectorOptions detectorOptions(const DetectorArguments &a) {
     DetectorOptions o;
-    o.config.aspect = aspectFrom(a.aspect);
-    const std::string method = wordArgument(a.method, "method");
-    if (method == "paper")
-        o.config.method = Method::Paper;
-    else if (method == "default")
-        o.config.method = Method::Default;
-    else
-        throw InputError("method", "expected 'default' or 'paper', got '" + method + "'");
-    const std::string hull = a.hull.is_none() ? "concave" : wordArgument(a.hull, "hull");
-    if (hull == "concave")
-        o.config.paper.hull = HullKind::Concave;
-    else if (hull == "convex")
-        o.config.paper.hull = HullKind::Convex;
-    else
-        throw InputError("hull", "expected 'concave' or 'convex', got '" + hull + "'");
-    o.config.seed = static_cast<unsigned>(wholeArgument(a.seed, "seed", 0, 4294967295LL));
+    if (a.config && !a.config.is_none()) frontend::readDetectorConfig(pathArgument(a.config, "config"), o.config);
+    if (!a.aspect.is_none()) o.config.aspect = aspectFrom(a.aspect);
+    if (!a.method.is_none()) o.config.method = frontend::parseMethod("method", wordArgument(a.method, "method"));
+    if (!a.hull.is_none()) o.config.paper.hull = frontend::parseHull("hull", wordArgument(a.hull, "hull"));
+    if (!a.seed.is_none()) o.config.seed = static_cast<unsigned>(wholeArgument(a.seed, "seed", 0, 4294967295LL));
+    const std::string method = frontend::methodName(o.config.method);
     if (!a.suitability.is_none()) {
         o.config.suitability.mode =
             frontend::parseSuitabilityMode("suitability", wordArgument(a.suitability, "suitability"));

@@ -26,6 +26,7 @@ struct DetectorOptions {
 /// The keyword arguments as given (any Python object; a wrong type is an InputError).
 struct DetectorArguments {
     pybind11::object aspect, gravity, method, hull, seed, min_width, min_area, suitability;
+    pybind11::object config;  ///< None or the path of a detector settings YAML (`detect --config`)
     /// The other keyword arguments: the pipeline settings `projsurf detect` has as options,
     /// under the same names (max_tilt, voxel_leaf, ransac_distance, max_outliers, cell,
     /// max_planes, max_outlier_fraction), in the same units and ranges; any other name is an
@@ -33,10 +34,11 @@ struct DetectorArguments {
     pybind11::dict settings;
 };
 
-/// aspect: None (the framebuffer's), a number (width / height), "W:H" or a pair (16, 9);
+/// config: None or a settings YAML read first (frontend/detector_config_file.hpp); every other
+/// argument that is not None overrides its value. aspect: None (the framebuffer's), a number (width / height), "W:H" or a pair (16, 9);
 /// gravity: None (level camera), 3 numbers (camera frame, pointing down; any length but zero),
-/// "gx,gy,gz" or "auto"; method: "default" | "paper"; hull: "concave" | "convex" (paper
-/// method); seed: RANSAC seed; min_width (m), min_area (m^2): None (the method's default) or a
+/// "gx,gy,gz" or "auto"; method: None ("default"), "default" | "paper"; hull: "concave" |
+/// "convex" (paper method); seed: None (42) or a RANSAC seed; min_width (m), min_area (m^2): None (the method's default) or a
 /// number >= 0; suitability: None, "off", "avoid" or "prefer" (detect --suitability). A
 /// setting the method ignores is a UserWarning, as the CLI's warning line.
 DetectorOptions detectorOptions(const DetectorArguments &arguments);

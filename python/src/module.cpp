@@ -277,7 +277,9 @@ PYBIND11_MODULE(projsurf, m) {
         "method='paper'); suitability: None (avoid), 'off', 'avoid' or 'prefer' with colour (as\n"
         "--suitability). The pipeline settings of `projsurf detect` under the same names and units: max_tilt\n"
         "(rad), voxel_leaf, ransac_distance (m), max_outliers (paper); cell (m), max_planes,\n"
-        "max_outlier_fraction (default). hull=None is 'concave'. The CLI's warnings (a gravity the floor contradicts, depths outside what RGB-D\n"
+        "max_outlier_fraction (default). hull=None is 'concave'. config: None or the path of a detector settings\n"
+        "YAML (`projsurf detect --config`, every key: `projsurf detect --print-config`), read first; any other\n"
+        "argument given (not None) overrides it. The CLI's warnings (a gravity the floor contradicts, depths outside what RGB-D\n"
         "cameras read, colour not registered) come as UserWarnings.";
     py::class_<Detector>(m, "Detector",
                          (std::string("Detection over a stream of clouds (reuses its buffers from frame to frame).\n") +
@@ -286,14 +288,14 @@ PYBIND11_MODULE(projsurf, m) {
         .def(py::init([](const py::object &projector, const py::object &aspect, const py::object &gravity,
                          const py::object &method, const py::object &hull, const py::object &seed,
                          const py::object &min_width, const py::object &min_area, const py::object &suitability,
-                         const py::kwargs &settings) {
+                         const py::object &config, const py::kwargs &settings) {
                  return Detector(projectorArgument(projector, "projector"),
                                  detectorOptions({aspect, gravity, method, hull, seed, min_width, min_area, suitability,
-                                                  settings}));
+                                                  config, settings}));
              }),
-             "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(), "method"_a = "default",
-             "hull"_a = py::none(), "seed"_a = 42u, "min_width"_a = py::none(), "min_area"_a = py::none(),
-             "suitability"_a = py::none())
+             "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(), "method"_a = py::none(),
+             "hull"_a = py::none(), "seed"_a = py::none(), "min_width"_a = py::none(), "min_area"_a = py::none(),
+             "suitability"_a = py::none(), "config"_a = py::none())
         .def("detect", &Detector::detect, "points"_a, py::kw_only(), "colour"_a = py::none(),
              "points: (H, W, 3) or (N, 3) array (camera frame, m; NaN = no reading) or an object with .points.\n"
              "colour: optional (H, W, 3) uint8 B, G, R image registered to (H, W) points: the surface's suitability\n"
@@ -307,15 +309,15 @@ PYBIND11_MODULE(projsurf, m) {
         [](const py::object &points, const py::object &projector, const py::object &aspect, const py::object &gravity,
            const py::object &method, const py::object &hull, const py::object &seed, const py::object &min_width,
            const py::object &min_area, const py::object &colour, const py::object &suitability,
-           const py::kwargs &settings) {
+           const py::object &config, const py::kwargs &settings) {
             Detector detector(projectorArgument(projector, "projector"),
                               detectorOptions({aspect, gravity, method, hull, seed, min_width, min_area, suitability,
-                                               settings}));
+                                               config, settings}));
             return detector.detect(points, colour);
         },
         "points"_a, "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(),
-        "method"_a = "default", "hull"_a = py::none(), "seed"_a = 42u, "min_width"_a = py::none(),
-        "min_area"_a = py::none(), "colour"_a = py::none(), "suitability"_a = py::none(),
+        "method"_a = py::none(), "hull"_a = py::none(), "seed"_a = py::none(), "min_width"_a = py::none(),
+        "min_area"_a = py::none(), "colour"_a = py::none(), "suitability"_a = py::none(), "config"_a = py::none(),
         (std::string("The biggest upright rectangle of the aspect ratio that the projector can light on a vertical\n"
                      "surface: `projsurf detect`. points and colour as for Detector.detect.\n") +
          options_doc +

@@ -20,13 +20,13 @@ void addPlanFunction(py::module_ &m) {
         "plan",
         [](const py::object &points, const py::object &projector_arg, const py::object &aspect,
            const py::object &gravity, const py::object &width_arg, const py::object &max_move_arg,
-           const py::object &min_width, const py::object &min_area) {
+           const py::object &min_width, const py::object &min_area, const py::object &config) {
             const Projector &projector = projectorArgument(projector_arg, "projector");
             const double width = numberArgument(width_arg, "width"), max_move = numberArgument(max_move_arg, "max_move");
             if (!(width >= 0.0 && width <= 50.0)) throw InputError("width", "must be between 0 and 50 m");
             if (!(max_move >= 0.0 && max_move <= 10.0)) throw InputError("max_move", "must be between 0 and 10 m");
             const DetectorOptions options = detectorOptions(
-                {aspect, gravity, py::str("default"), py::none(), py::int_(42), min_width, min_area, py::none(), py::dict()});
+                {aspect, gravity, py::none(), py::none(), py::none(), min_width, min_area, py::none(), config, py::dict()});
             const Cloud cloud = cloudFromPoints(points);
             PlanOptions plan;
             plan.width = width;
@@ -48,10 +48,10 @@ void addPlanFunction(py::module_ &m) {
             return py::module_::import("json").attr("loads")(text);
         },
         "points"_a, "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(), "width"_a = 0.0,
-        "max_move"_a = 2.0, "min_width"_a = py::none(), "min_area"_a = py::none(),
+        "max_move"_a = 2.0, "min_width"_a = py::none(), "min_area"_a = py::none(), "config"_a = py::none(),
         "Where the robot should stand for the largest picture (width > 0: the shortest move showing at least\n"
         "that width, m), moving at most max_move m on the floor. points, projector, aspect, gravity, min_width,\n"
-        "min_area as for detect(). Returns the dict of `projsurf plan --json`: found, reason, camera_pose\n"
+        "min_area, config as for detect(). Returns the dict of `projsurf plan --json`: found, reason, camera_pose\n"
         "(rotation, translation: P_today = R P_moved + t), predicted, move (forward_m, left_m, turn_left_deg,\n"
         "words: the gravity-levelled robot frame), today (detect()'s rectangle where the robot stands, or None),\n"
         "today_reason, limit, search. Raises InputError for bad points or options.");

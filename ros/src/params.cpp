@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "projsurf/frontend/aspect.hpp"
+#include "projsurf/frontend/detector_config_file.hpp"
+#include "projsurf/frontend/method_words.hpp"
 #include "projsurf/frontend/suitability_mode.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/yaml_files.hpp"
@@ -72,6 +74,10 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
         throw InputError(name(pnh, "plan_max_move"), "must be between 0 and 10 m");
 
     DetectorConfig &c = p.detector;
+    // ~config first: every parameter given below overrides the file's value.
+    std::string config_file;
+    get(pnh, "config", config_file);
+    if (!config_file.empty()) frontend::readDetectorConfig(config_file, c);
     if (pnh.hasParam("aspect")) {
         std::string text;
         double number;
@@ -84,27 +90,17 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
         }
     }
     if (pnh.hasParam("gravity")) p.gravity = parseGravity(pnh);
-    std::string method = "default", hull = "concave";
+    std::string method, hull;  // "" (the launch file's default): the config's
     get(pnh, "method", method);
     get(pnh, "hull", hull);
-    if (method == "default")
-        c.method = Method::Default;
-    else if (method == "paper")
-        c.method = Method::Paper;
-    else
-        throw InputError(name(pnh, "method"), "expected 'default' or 'paper', got '" + method + "'");
-    if (hull == "concave")
-        c.paper.hull = HullKind::Concave;
-    else if (hull == "convex")
-        c.paper.hull = HullKind::Convex;
-    else
-        throw InputError(name(pnh, "hull"), "expected 'concave' or 'convex', got '" + hull + "'");
+    if (!method.empty()) c.method = frontend::parseMethod(name(pnh, "method"), method);
+    if (!hull.empty()) c.paper.hull = frontend::parseHull(name(pnh, "hull"), hull);
     get(pnh, "use_colour", p.use_colour);
     if (pnh.hasParam("suitability")) {
         std::string mode;
         get(pnh, "suitability", mode);
-        p.suitability_given = !mode.empty();  // "" (the launch file's default): avoid
-        c.suitability.mode = frontend::parseSuitabilityMode(name(pnh, "suitability"), mode);
+        p.suitability_given = !mode.empty();  // "" (the launch file's default): the config's, avoid by default
+        if (p.suitability_given) c.suitability.mode = frontend::parseSuitabilityMode(name(pnh, "suitability"), mode);
     }
     getPositive(pnh, "max_tilt", c.max_tilt);
     int seed = static_cast<int>(c.seed);

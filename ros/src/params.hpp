@@ -28,9 +28,10 @@ struct NodeParams {
     bool blank = true;        ///< ~blank: continuous mode blacks out what stands in the beam (contract "Blanking")
     PlanOptions plan;         ///< ~plan_width, ~plan_max_move: the ~plan service (contract "Where to stand")
     Projector projector;      ///< read from ~calib
-    /// ~aspect, ~gravity, ~method, ~hull and the CLI's pipeline options: ~max_tilt, ~seed,
-    /// ~voxel_leaf, ~ransac_distance, ~max_outliers, ~cell, ~max_planes, ~max_outlier_fraction
-    /// (defaults: DetectorConfig's).
+    /// ~config (a detector settings YAML, as `detect --config`), then over it ~aspect,
+    /// ~gravity, ~method, ~hull and the CLI's pipeline options: ~max_tilt, ~seed, ~voxel_leaf,
+    /// ~ransac_distance, ~max_outliers, ~cell, ~max_planes, ~max_outlier_fraction (defaults:
+    /// DetectorConfig's).
     DetectorConfig detector;
     /// ~min_width (m), ~min_area (m^2): smaller rectangles are "not found", as `detect
     /// --min-width/--min-area` (defaults: frontend/minimum_size.hpp's for ~method).

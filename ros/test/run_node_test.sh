@@ -71,6 +71,32 @@ echo "run_node_test: rosmaster at $ROS_MASTER_URI"
 
 "$client" --write-calibration "$tmp/calib.yaml"
 
+# ~config: a bad settings file stops the node at start with one line naming the file and the
+# key (exit 2); a good one (projsurf detect --print-config's keys) starts it.
+printf 'planes:\n  max_plane: 6\n' >"$tmp/bad_config.yaml"
+set +e
+timeout 30 "$build/projsurf_node" __ns:=/badconfig __name:=projsurf _calib:="$tmp/calib.yaml" \
+    _config:="$tmp/bad_config.yaml" >"$tmp/bad_config_node.log" 2>&1
+rc=$?
+set -e
+[ $rc = 2 ] || { echo "run_node_test: ~config with an unknown key exited $rc, expected 2"; exit 1; }
+grep -qF "$tmp/bad_config.yaml: unknown key 'planes.max_plane' (did you mean 'planes.max_planes'?)" \
+    "$tmp/bad_config_node.log" || { echo "run_node_test: ~config's error does not name the key"; exit 1; }
+printf 'method: paper\nplanes: {max_planes: 3}\n' >"$tmp/good_config.yaml"
+stdbuf -oL "$build/projsurf_node" __ns:=/goodconfig __name:=projsurf _calib:="$tmp/calib.yaml" \
+    _config:="$tmp/good_config.yaml" >"$tmp/good_config_node.log" 2>&1 &  # line-buffered: read while it runs
+good=$!
+pids+=("$good")
+for _ in $(seq 200); do
+    grep -q "projsurf_node: projector" "$tmp/good_config_node.log" && break
+    kill -0 "$good" 2>/dev/null || break
+    sleep 0.1
+done
+grep -q "projsurf_node: projector" "$tmp/good_config_node.log" ||
+    { echo "run_node_test: the node did not start with a good ~config"; exit 1; }
+kill -INT "$good" 2>/dev/null || true
+echo "run_node_test: ~config read (bad file refused naming the key, good file accepted)"
+
 # On demand, through the launch file (as a user starts it).
 ROS_NAMESPACE=/oneshot roslaunch projsurf projsurf.launch calib:="$tmp/calib.yaml" \
     >"$tmp/roslaunch.log" 2>&1 &

@@ -14,9 +14,12 @@
 #include "projsurf/frontend/depth_range_check.hpp"
 #include "projsurf/frontend/gravity_sanity.hpp"
 #include "projsurf/frontend/detect_answer.hpp"
+#include "projsurf/frontend/detector_config_file.hpp"
+#include "projsurf/frontend/detector_config_keys.hpp"
 #include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/method_settings.hpp"
+#include "projsurf/frontend/method_words.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
 #include "projsurf/frontend/registered_colour.hpp"
 #include "projsurf/frontend/stamp_pairing.hpp"
@@ -37,8 +40,10 @@ constexpr double kTiltWarningDeg = 5.0;  ///< deg, a floor this far from level m
 
 struct DetectOptions {
     std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity, method = "default", hull = "concave",
-                                                                                  bag, topic, info_topic, suitability;
-    DetectorConfig config;
+                                                                                  bag, topic, info_topic, suitability,
+        config_file;
+    bool print_config = false;
+    DetectorConfig config;  ///< the pipeline flags' values (used where a flag was given)
     double min_width = -1.0, min_area = -1.0;  ///< m, m^2; < 0: the method's default (frontend/minimum_size.hpp)
 };
 
@@ -60,6 +65,25 @@ void warnIfIgnored(const CLI::App &sub, Method method) {
             std::fprintf(stderr, "projsurf: warning: %s is ignored by the %s method\n", name.c_str(),
                          method == Method::Paper ? "paper" : "default");
     }
+}
+
+/// The pipeline flags bound to o.config, by the settings' shared names (frontend/method_settings.hpp).
+constexpr const char *kConfigFlags[] = {"max_tilt", "seed",       "voxel_leaf",          "ransac_distance",
+                                        "max_outliers", "cell",   "max_planes",          "max_outlier_fraction"};
+
+/// The detector's settings: the defaults, then --config's file, then the flags given.
+DetectorConfig detectorConfig(const DetectOptions &o, const CLI::App &sub) {
+    DetectorConfig cfg;
+    if (!o.config_file.empty()) frontend::readDetectorConfig(o.config_file, cfg);
+    auto given = [&](const std::string &setting) { return sub.get_option(frontend::optionName(setting))->count() > 0; };
+    if (given("method")) cfg.method = frontend::parseMethod("--method", o.method);
+    if (given("hull")) cfg.paper.hull = frontend::parseHull("--hull", o.hull);
+    if (given("suitability")) cfg.suitability.mode = frontend::parseSuitabilityMode("--suitability", o.suitability);
+    if (!o.aspect.empty()) cfg.aspect = frontend::parseAspect("--aspect", o.aspect);
+    for (const char *setting : kConfigFlags)
+        if (given(setting))
+            frontend::copyConfigValue(o.config, cfg, *frontend::findConfigKey(frontend::configKeyOfSetting(setting)));
+    return cfg;
 }
 
 /// The topic --bag reads: --topic, else the bag's one usable topic (a PointCloud2, or a
@@ -161,6 +185,11 @@ void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &
 }
 
 void run(const DetectOptions &o, const CLI::App &sub) {
+    if (o.print_config) {  // the settings only: no input is needed or read
+        std::cout << frontend::detectorConfigYaml(detectorConfig(o, sub));
+        return;
+    }
+    if (o.calib.empty()) throw InputError("--calib is required (see projsurf detect --help)");
     // Validate every input before any work, and before any output is written.
     if (!o.bag.empty()) {
         if (!o.cloud.empty() || !o.depth.empty())
@@ -173,23 +202,9 @@ void run(const DetectOptions &o, const CLI::App &sub) {
         throw InputError("arguments", "give exactly one of --cloud FILE, --depth FILE or --bag FILE");
     }
     if (!o.depth.empty() && o.camera.empty()) throw InputError("arguments", "--depth needs --camera camera.yaml");
-    DetectorConfig cfg = o.config;
-    if (o.method == "paper")
-        cfg.method = Method::Paper;
-    else if (o.method == "default")
-        cfg.method = Method::Default;
-    else
-        throw InputError("--method", "expected 'default' or 'paper', got '" + o.method + "'");
-    if (o.hull == "concave")
-        cfg.paper.hull = HullKind::Concave;
-    else if (o.hull == "convex")
-        cfg.paper.hull = HullKind::Convex;
-    else
-        throw InputError("--hull", "expected 'concave' or 'convex', got '" + o.hull + "'");
-    cfg.suitability.mode = frontend::parseSuitabilityMode("--suitability", o.suitability);
+    const DetectorConfig cfg = detectorConfig(o, sub);
     warnIfIgnored(sub, cfg.method);
     const frontend::GravityChoice gravity_choice = frontend::parseGravityChoice("--gravity", o.gravity);
-    if (!o.aspect.empty()) cfg.aspect = frontend::parseAspect("--aspect", o.aspect);
     for (const auto &out : {o.json, o.overlay})
         if (!out.empty()) requireWritableFile(out);
     if (!o.overlay.empty()) requireImageWriter(o.overlay);
@@ -274,7 +289,7 @@ void addDetectCommand(CLI::App &app) {
         "--suitability", o->suitability,
         "With registered colour: off | avoid (default: no picture over dark, glaring, textured or saturated wall) | "
         "prefer (trade a little area for a cleaner wall; docs/suitability.md)");
-    sub->add_option("--calib", o->calib, "Projector calibration YAML")->required();
+    sub->add_option("--calib", o->calib, "Projector calibration YAML (required)");
     sub->add_option("--aspect", o->aspect, "Picture aspect ratio W:H (default: the framebuffer's)");
     sub->add_option("--json", o->json, "Write the detection JSON here (else it goes to stdout)");
     sub->add_option("--overlay", o->overlay, "Write a picture of what was detected here (PNG)");
@@ -289,6 +304,12 @@ void addDetectCommand(CLI::App &app) {
     sub->add_option("--min-area", o->min_area,
                     "Smallest picture worth showing, m^2 (default 0.012; 0 with --method paper)")
         ->check(CLI::Range(0.0, 10000.0));
+    sub->add_option("--config", o->config_file,
+                    "Detector settings YAML: any key --print-config writes (docs/interface.md); the flags below "
+                    "override it");
+    sub->add_flag("--print-config", o->print_config,
+                  "Write the detector settings in effect (defaults, then --config, then the flags) as YAML to "
+                  "stdout and exit; nothing else is needed or read");
     auto &c = o->config;
     sub->add_option("--max-tilt", c.max_tilt, "Vertical tolerance, rad (paper 3.2.1)")->check(CLI::Range(0.0, 1.5));
     sub->add_option("--seed", c.seed, "RANSAC random seed");

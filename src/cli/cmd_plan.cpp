@@ -8,6 +8,7 @@
 #include "cli/commands.hpp"
 #include "projsurf/frontend/aspect.hpp"
 #include "projsurf/frontend/detect_answer.hpp"
+#include "projsurf/frontend/detector_config_file.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/plan_json.hpp"
 #include "projsurf/io/cloud_io.hpp"
@@ -21,7 +22,7 @@ namespace projsurf::cli {
 namespace {
 
 struct PlanCliOptions {
-    std::string cloud, depth, camera, calib, aspect, gravity, json, overlay;
+    std::string cloud, depth, camera, calib, aspect, gravity, json, overlay, config_file;
     PlanOptions plan;
 };
 
@@ -40,6 +41,7 @@ void validate(const PlanCliOptions &o) {
 void run(const PlanCliOptions &o) {
     validate(o);
     DetectorConfig cfg;
+    if (!o.config_file.empty()) frontend::readDetectorConfig(o.config_file, cfg);
     if (!o.aspect.empty()) cfg.aspect = frontend::parseAspect("--aspect", o.aspect);
     const frontend::GravityChoice choice = frontend::parseGravityChoice("--gravity", o.gravity);
     const Projector projector = readCalibration(o.calib);
@@ -79,6 +81,8 @@ void addPlanCommand(CLI::App &app) {
     sub->add_option("--aspect", o->aspect, "Picture aspect ratio W:H (default: the framebuffer's)");
     sub->add_option("--gravity", o->gravity,
                     "Gravity in the camera frame gx,gy,gz (default 0,1,0), or 'auto' (from the floor)");
+    sub->add_option("--config", o->config_file,
+                    "Detector settings YAML, as detect --config (--aspect overrides its aspect)");
     sub->add_option("--width", o->plan.width, "The shortest move that shows at least this width, m");
     sub->add_option("--max-move", o->plan.max_move, "Longest translation on the floor, m (default 2)");
     sub->add_option("--json", o->json, "Write the plan JSON here (else it goes to stdout)");

@@ -44,5 +44,7 @@ constexpr std::uint64_t kMaxStructuredLightBytes = std::uint64_t{1536} << 20;
 constexpr std::uint64_t kMaxYamlBytes = std::uint64_t{64} << 10;
 constexpr std::uint64_t kMaxJsonBytes = std::uint64_t{1} << 20;
 constexpr int kMaxNesting = 64;
+/// Bytes of a settings YAML file (detect --config): 1 MiB (every key with its comment is 10 KiB).
+constexpr std::uint64_t kMaxSettingsYamlBytes = std::uint64_t{1} << 20;
 
 }  // namespace projsurf::limits

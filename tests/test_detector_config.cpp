@@ -1,0 +1,295 @@
+// The detector's settings as a YAML file: every DetectorConfig field under one key, read and
+// written back to the same config; every refusal names the file and the key.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "cli_run.hpp"
+#include "projsurf/frontend/detector_config_file.hpp"
+#include "projsurf/frontend/detector_config_keys.hpp"
+#include "projsurf/frontend/method_settings.hpp"
+#include "projsurf/io/errors.hpp"
+
+namespace fs = std::filesystem;
+using namespace projsurf;
+using namespace projsurf::frontend;
+using projsurf::test::freshDir;
+using projsurf::test::slurp;
+
+namespace {
+
+std::string valueOf(const DetectorConfig &c, const std::string &key) {
+    const ConfigKey *k = findConfigKey(key);
+    EXPECT_NE(k, nullptr) << key;
+    if (!k) return "";
+    std::string text;
+    for (const std::string &item : configValue(c, *k).items) text += item + ";";
+    return text;
+}
+
+/// Every key's value as text: two configs are equal when these are.
+std::vector<std::string> allValues(const DetectorConfig &c) {
+    std::vector<std::string> out;
+    for (const ConfigKey &k : detectorConfigKeys()) out.push_back(k.key + "=" + valueOf(c, k.key));
+    return out;
+}
+
+bool inRange(double v, const KeyRange &r) { return (r.lo_open ? v > r.lo : v >= r.lo) && v <= r.hi; }
+
+/// A valid value of `key` other than its value in `c` (the settings checked together stay ordered).
+SettingText otherValue(const DetectorConfig &c, const ConfigKey &key) {
+    SettingText v = configValue(c, key);
+    const std::string now = v.items.front();
+    auto number = [&](double d) {
+        double x = d * 1.25 + 0.001;
+        if (!inRange(x, key.range) || x == d) x = key.range.lo_open ? (key.range.lo + key.range.hi) / 2 : key.range.lo;
+        return x;
+    };
+    switch (key.type) {
+    case KeyType::Bool: v.items = {now == "true" ? "false" : "true"}; break;
+    case KeyType::Int:
+    case KeyType::Unsigned: {
+        const long long n = std::stoll(now);
+        v.items = {std::to_string(n + 1 <= key.range.hi ? n + 1 : static_cast<long long>(key.range.lo))};
+        break;
+    }
+    case KeyType::Double: v.items = {key.key == "aspect" ? "1.6" : std::to_string(number(std::stod(now)))}; break;
+    case KeyType::DoubleList: v.items = {"0.05", "0.3"}; break;
+    case KeyType::Word: {
+        const std::string words = keyRangeText(key);  // "a | b | c"
+        for (std::size_t at = 0; at < words.size();) {
+            const std::size_t bar = words.find(" | ", at);
+            const std::string word = words.substr(at, bar - at);
+            if (word != now) {
+                v.items = {word};
+                break;
+            }
+            at = bar == std::string::npos ? words.size() : bar + 3;
+        }
+        break;
+    }
+    }
+    return v;
+}
+
+void write(const fs::path &path, const std::string &text) { std::ofstream(path, std::ios::binary) << text; }
+
+/// The one-line message readDetectorConfig throws for a file holding `text`.
+std::string refusal(const fs::path &dir, const std::string &text) {
+    const fs::path path = dir / "detector.yaml";
+    write(path, text);
+    DetectorConfig c;
+    try {
+        readDetectorConfig(path.string(), c);
+    } catch (const InputError &e) {
+        EXPECT_EQ(allValues(c), allValues(DetectorConfig{})) << "a refused file changed the config";
+        return e.what();
+    }
+    return "(accepted)";
+}
+
+}  // namespace
+
+TEST(DetectorConfigKeys, EveryKeyIsUniqueDocumentedAndReachesItsOwnField) {
+    const std::vector<ConfigKey> &keys = detectorConfigKeys();
+    EXPECT_EQ(keys.size(), 105u);  // every field of DetectorConfig and the structs it nests
+    std::set<std::string> names;
+    for (const ConfigKey &k : keys) {
+        EXPECT_TRUE(names.insert(k.key).second) << k.key << " twice";
+        EXPECT_FALSE(k.doc.empty()) << k.key;
+        // Changing this key changes it alone: no two keys share a field, each reads what it set.
+        DetectorConfig c;
+        const SettingText other = otherValue(c, k);
+        setConfigValue(c, k, other, k.key);
+        EXPECT_NE(valueOf(c, k.key), valueOf(DetectorConfig{}, k.key)) << k.key;
+        for (const ConfigKey &o : keys)
+            if (o.key != k.key)
+                EXPECT_EQ(valueOf(c, o.key), valueOf(DetectorConfig{}, o.key)) << k.key << " moved " << o.key;
+    }
+    for (const char *key :
+         {"method", "aspect", "max_tilt", "seed", "planes.max_planes", "planes.regions.min_fill",
+          "wall.shape.relief.max_nodes", "objects.avoid", "objects.surround.offsets", "objects.rule.wall_width",
+          "free_space.cell", "check.max_outlier_fraction", "suitability.mode", "suitability.cells.max_hole",
+          "paper.voxel_leaf", "paper.hull", "unorganized.enabled", "tolerance.noise_k"})
+        EXPECT_NE(findConfigKey(key), nullptr) << key;
+}
+
+TEST(DetectorConfigKeys, TheFrontEndsSharedSettingNamesHaveKeys) {
+    for (const Method m : {Method::Default, Method::Paper})
+        for (const std::string &setting : settingsIgnoredBy(m))
+            EXPECT_NE(findConfigKey(configKeyOfSetting(setting)), nullptr) << setting;
+    EXPECT_EQ(configKeyOfSetting("max_planes"), "planes.max_planes");
+    EXPECT_EQ(configKeyOfSetting("voxel_leaf"), "paper.voxel_leaf");
+    EXPECT_EQ(configKeyOfSetting("no_such_setting"), "");
+}
+
+TEST(DetectorConfigFile, PrintedConfigReadsBackToTheSameConfig) {
+    const fs::path dir = freshDir("config_round_trip");
+    DetectorConfig changed;
+    for (const ConfigKey &k : detectorConfigKeys()) setConfigValue(changed, k, otherValue(changed, k), k.key);
+    changed.paper.voxel_leaf = 0.1 / 3.0;  // a double with no short decimal form
+    changed.objects.surround.offsets = {0.1 / 7.0, 0.2, 1e-5};
+    ASSERT_NE(allValues(changed), allValues(DetectorConfig{}));
+    write(dir / "all.yaml", detectorConfigYaml(changed));
+    DetectorConfig read;
+    readDetectorConfig((dir / "all.yaml").string(), read);
+    EXPECT_EQ(allValues(read), allValues(changed));
+    EXPECT_EQ(read.paper.voxel_leaf, 0.1 / 3.0);
+    EXPECT_EQ(read.objects.surround.offsets, changed.objects.surround.offsets);
+    EXPECT_EQ(detectorConfigYaml(read), detectorConfigYaml(changed));
+    fs::remove_all(dir);
+}
+
+TEST(DetectorConfigFile, NestedAndDottedKeysAreTheSameAndOthersKeepTheirValues) {
+    const fs::path dir = freshDir("config_nested");
+    write(dir / "nested.yaml", "planes:\n  max_planes: 6\n  regions: {min_cells: 9}\nmethod: paper\n");
+    write(dir / "dotted.yaml", "planes.max_planes: 6\nplanes.regions.min_cells: 9\nmethod: \"paper\"\n");
+    DetectorConfig nested, dotted;
+    readDetectorConfig((dir / "nested.yaml").string(), nested);
+    readDetectorConfig((dir / "dotted.yaml").string(), dotted);
+    EXPECT_EQ(nested.planes.max_planes, 6);
+    EXPECT_EQ(nested.planes.regions.min_cells, 9);
+    EXPECT_EQ(nested.method, Method::Paper);
+    EXPECT_EQ(allValues(nested), allValues(dotted));
+    EXPECT_EQ(nested.free_space.cell, DetectorConfig{}.free_space.cell);
+    // Over a config that is not the default: what the file does not give stays as it was.
+    DetectorConfig over;
+    over.seed = 7;
+    readDetectorConfig((dir / "nested.yaml").string(), over);
+    EXPECT_EQ(over.seed, 7u);
+    EXPECT_EQ(over.planes.max_planes, 6);
+    write(dir / "empty.yaml", "# nothing but a comment\n");
+    DetectorConfig empty;
+    readDetectorConfig((dir / "empty.yaml").string(), empty);
+    EXPECT_EQ(allValues(empty), allValues(DetectorConfig{}));
+    fs::remove_all(dir);
+}
+
+TEST(DetectorConfigFile, UnknownKeysAreNamedWithTheKeyMeant) {
+    const fs::path dir = freshDir("config_unknown");
+    const std::string file = (dir / "detector.yaml").string();
+    EXPECT_EQ(refusal(dir, "planes:\n  max_plane: 6\n"),
+              file + ": unknown key 'planes.max_plane' (did you mean 'planes.max_planes'?)");
+    EXPECT_EQ(refusal(dir, "max_planes: 6\n"), file + ": unknown key 'max_planes' (did you mean 'planes.max_planes'?)");
+    EXPECT_EQ(refusal(dir, "zzz: 1\n"), file + ": unknown key 'zzz'");
+    EXPECT_NE(refusal(dir, "planes: 5\n").find(": key 'planes' holds settings (planes."), std::string::npos);
+    EXPECT_NE(refusal(dir, "projector:\n  resolution: [1280, 800]\n")
+                  .find("unknown key 'projector.resolution' (a calibration or camera file"),
+              std::string::npos);
+    fs::remove_all(dir);
+}
+
+TEST(DetectorConfigFile, ValuesOutOfRangeOrOfTheWrongTypeNameTheKey) {
+    const fs::path dir = freshDir("config_values");
+    const std::string at = (dir / "detector.yaml").string() + ": key ";
+    EXPECT_EQ(refusal(dir, "planes.max_planes: 0\n"),
+              at + "'planes.max_planes': must be a whole number from 1 to 20, got '0'");
+    EXPECT_EQ(refusal(dir, "planes.max_planes: 21\n"),
+              at + "'planes.max_planes': must be a whole number from 1 to 20, got '21'");
+    EXPECT_EQ(refusal(dir, "tolerance.min_band: 0\n"), at + "'tolerance.min_band': must be a number > 0, got '0'");
+    EXPECT_EQ(refusal(dir, "max_tilt: .nan\n"), at + "'max_tilt': must be a number from 0 to 1.5, got '.nan'");
+    EXPECT_EQ(refusal(dir, "max_tilt: .inf\n"), at + "'max_tilt': must be a number from 0 to 1.5, got '.inf'");
+    EXPECT_EQ(refusal(dir, "wall.noise_max: 1e999\n"), at + "'wall.noise_max': must be a number > 0, got '1e999'");
+    EXPECT_EQ(refusal(dir, "seed: -1\n"), at + "'seed': must be a whole number from 0 to 4294967295, got '-1'");
+    // The wrong type.
+    EXPECT_EQ(refusal(dir, "planes.max_planes: six\n"),
+              at + "'planes.max_planes': must be a whole number from 1 to 20, got 'six'");
+    EXPECT_EQ(refusal(dir, "planes.max_planes: 2.5\n"),
+              at + "'planes.max_planes': must be a whole number from 1 to 20, got '2.5'");
+    EXPECT_EQ(refusal(dir, "planes.max_planes: \"6\"\n"),
+              at + "'planes.max_planes': must be a whole number from 1 to 20, got the quoted word '6'");
+    EXPECT_EQ(refusal(dir, "planes.max_planes: [6]\n"),
+              at + "'planes.max_planes': must be a whole number from 1 to 20, got '[...]'");
+    EXPECT_EQ(refusal(dir, "objects.avoid: yes\n"), at + "'objects.avoid': must be true or false, got 'yes'");
+    EXPECT_EQ(refusal(dir, "objects.surround.offsets: [0.1, -0.2]\n"),
+              at + "'objects.surround.offsets': must be a list of 1 to 16 numbers, each > 0, got '-0.2'");
+    // Words go through the front ends' one parser of each.
+    EXPECT_EQ(refusal(dir, "method: fast\n"), at + "'method': expected 'default' or 'paper', got 'fast'");
+    EXPECT_EQ(refusal(dir, "paper.hull: round\n"), at + "'paper.hull': expected 'concave' or 'convex', got 'round'");
+    EXPECT_EQ(refusal(dir, "suitability.mode: always\n"),
+              at + "'suitability.mode': expected 'off', 'avoid' or 'prefer', got 'always'");
+    EXPECT_NE(refusal(dir, "aspect: 16x9\n").find(at + "'aspect': expected a positive aspect ratio W:H"),
+              std::string::npos);
+    // Each value in range, but not together.
+    EXPECT_EQ(refusal(dir, "tolerance: {min_band: 0.1}\n"),
+              (dir / "detector.yaml").string() + ": 'tolerance.min_band' must not exceed 'tolerance.max_band'");
+    fs::remove_all(dir);
+}
+
+TEST(DetectorConfigFile, AspectReadsAsTheAspectFlag) {
+    const fs::path dir = freshDir("config_aspect");
+    write(dir / "a.yaml", "aspect: \"16:9\"\n");
+    DetectorConfig c;
+    readDetectorConfig((dir / "a.yaml").string(), c);
+    EXPECT_DOUBLE_EQ(c.aspect, 16.0 / 9.0);
+    write(dir / "a.yaml", "aspect: 0\n");
+    readDetectorConfig((dir / "a.yaml").string(), c);
+    EXPECT_EQ(c.aspect, 0.0);
+    fs::remove_all(dir);
+}
+
+TEST(DetectorConfigFile, HostileFilesAreOneLineNamingTheFile) {
+    const fs::path dir = freshDir("config_hostile");
+    const std::string file = (dir / "detector.yaml").string();
+    EXPECT_EQ(refusal(dir, "planes: {max_planes: 6\n").rfind(file + ": malformed YAML: ", 0), 0u);
+    EXPECT_EQ(refusal(dir, "- 1\n- 2\n"), file + ": expected a YAML mapping of settings at the top level");
+    EXPECT_EQ(refusal(dir, "seed: 1\nseed: 2\n"), file + ": key 'seed' is given twice");
+    EXPECT_EQ(refusal(dir, "seed: 1\nplanes: {max_planes: 2}\nplanes.max_planes: 3\n"),
+              file + ": key 'planes.max_planes' is given twice");
+    EXPECT_EQ(refusal(dir, "seed:\n"), file + ": key 'seed' has no value");
+    EXPECT_EQ(refusal(dir, "? [a, b]\n: 1\n"), file + ": a key under the top level is not a plain word");
+    EXPECT_EQ(refusal(dir, std::string("seed: 1\0\n", 9)), file + ": binary data, not a YAML file");
+    EXPECT_NE(refusal(dir, "seed: 1\n" + std::string(1100000, '#') + "\n").find("exceeds the limit of 1048576 bytes"),
+              std::string::npos);
+    // Aliases that repeat a mapping exponentially often.
+    std::string bomb = "a0: &a0 {x: 1}\n";
+    for (int i = 1; i < 30; ++i)
+        bomb += "a" + std::to_string(i) + ": &a" + std::to_string(i) + " {p: *a" + std::to_string(i - 1) + ", q: *a" +
+                std::to_string(i - 1) + "}\n";
+    EXPECT_EQ(refusal(dir, bomb), file + ": too many keys (aliases repeating a mapping?)");
+    DetectorConfig c;
+    EXPECT_THROW(readDetectorConfig(dir.string(), c), InputError);  // a directory
+    EXPECT_THROW(readDetectorConfig((dir / "missing.yaml").string(), c), InputError);
+    fs::remove_all(dir);
+}
+
+TEST(DetectorConfigFile, TheShippedExampleIsTheDefaultsAsPrinted) {
+    const fs::path example = fs::path(PROJSURF_SOURCE_DIR) / "config/detector.yaml";
+    DetectorConfig c;
+    c.seed = 1;  // the file sets every key
+    readDetectorConfig(example.string(), c);
+    EXPECT_EQ(allValues(c), allValues(DetectorConfig{}));
+    EXPECT_EQ(slurp(example), detectorConfigYaml(DetectorConfig{}))
+        << "regenerate it: projsurf detect --print-config > config/detector.yaml";
+}
+
+TEST(DetectorConfigFile, TheInterfaceDocumentListsEveryKey) {
+    const std::string doc = slurp(fs::path(PROJSURF_SOURCE_DIR) / "docs/interface.md");
+    for (const ConfigKey &k : detectorConfigKeys())
+        EXPECT_NE(doc.find("| `" + k.key + "` | " + keyTypeName(k.type) + ": "), std::string::npos)
+            << k.key << " is not in docs/interface.md's key table";
+}
+
+TEST(DetectorConfigKeys, AFieldAddedToTheConfigIsNoticed) {
+    // The sizes of the structs the table covers, as it was written (64-bit, libstdc++). A new
+    // field changes one: give it a key in frontend/detector_config_keys.cpp (the docs' table
+    // and config/detector.yaml follow from --print-config), then its new size here.
+    if (sizeof(void *) != 8 || sizeof(std::vector<double>) != 24) GTEST_SKIP() << "sizes recorded for 64-bit only";
+    const std::vector<std::pair<std::size_t, std::size_t>> sizes = {
+        {sizeof(DetectorConfig), 768},     {sizeof(DepthTolerance), 48},      {sizeof(VirtualImageConfig), 32},
+        {sizeof(PlaneSearchConfig), 128},  {sizeof(PlanarRegionOptions), 64}, {sizeof(WallConfig), 152},
+        {sizeof(WallShapeOptions), 96},    {sizeof(WallReliefOptions), 56},   {sizeof(ObjectFaceConfig), 104},
+        {sizeof(FaceSurroundOptions), 64}, {sizeof(FreeStandingRule), 32},    {sizeof(FreeSpaceConfig), 40},
+        {sizeof(SurfaceCheckConfig), 8},   {sizeof(SuitabilityConfig), 160},  {sizeof(SuitabilityOptions), 144},
+        {sizeof(PaperConfig), 64},
+    };
+    const char *names[] = {"DetectorConfig",      "DepthTolerance",      "VirtualImageConfig", "PlaneSearchConfig",
+                           "PlanarRegionOptions", "WallConfig",          "WallShapeOptions",   "WallReliefOptions",
+                           "ObjectFaceConfig",    "FaceSurroundOptions", "FreeStandingRule",   "FreeSpaceConfig",
+                           "SurfaceCheckConfig",  "SuitabilityConfig",   "SuitabilityOptions", "PaperConfig"};
+    for (std::size_t i = 0; i < sizes.size(); ++i)
+        EXPECT_EQ(sizes[i].first, sizes[i].second)
+            << names[i] << " changed size: a field added or removed needs its key in the table";
+}
