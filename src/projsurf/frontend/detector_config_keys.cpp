@@ -126,6 +126,7 @@ std::vector<ConfigKey> wallKeys() {
         PROJSURF_KEY(int, wall.shape.min_points, from(6, kMaxCount), "fewer points: the wall stays flat"),
         PROJSURF_KEY(int, wall.shape.max_points, from(6, kMaxCount), "more are thinned evenly, measured"),
         PROJSURF_KEY(double, wall.shape.max_bend, kPositive, "m, a larger fitted bend anywhere is refused"),
+        PROJSURF_KEY(double, wall.shape.bend_per_z2, kNonNegative, "1/m, or more than this times depth^2 there"),
         PROJSURF_KEY(bool, wall.shape.relief.enabled, kAny, "fit the relief (features of a few tens of px) too"),
         PROJSURF_KEY(double, wall.shape.relief.node_px, kPositive, "px at the wall's depth between relief nodes"),
         PROJSURF_KEY(double, wall.shape.relief.sigma_px, kPositive, "px, the relief's Gaussian sigma"),
