@@ -217,6 +217,25 @@ TEST(SensorModels, APlainWallThroughARoughStereoUnitIsStillFound) {
     }
 }
 
+// The living room's window: a Kinect v1 reads through the glass, and the world outside (1.5 m
+// behind the wall) is a larger vertical face than the wall beside the TV. Seen through an
+// opening, it is no projection surface: the answer is the wall.
+TEST(SensorModels, NothingSeenThroughAWindowIsTakenForAWall) {
+    const Scenario sc = makeRealisticScenario("living_room", 3.0, 10.0);
+    const DepthSensor sensor = makeDepthSensor(SensorKind::Kinect1, 1);
+    const RgbdFrame f = renderSensorFrame(sc.scene, sensor, 20002, std::nullopt, false);
+    DetectorConfig cfg;
+    cfg.seed = 20002;
+    const Detection d = detectSurface(f.cloud, exampleProjector(), cfg, sc.gravity);
+    ASSERT_TRUE(d.found) << d.reason;
+    EXPECT_NEAR(d.rectangle.center().dot(sc.wall.normal) + sc.wall.d, 0.0, 0.05);
+    // Without the rule the same frame's answer lies outside, beyond the window.
+    cfg.objects.opening_depth = 1e9;
+    const Detection beyond = detectSurface(f.cloud, exampleProjector(), cfg, sc.gravity);
+    ASSERT_TRUE(beyond.found);
+    EXPECT_LT(beyond.rectangle.center().dot(sc.wall.normal) + sc.wall.d, -1.0);
+}
+
 TEST(SensorModels, ResolutionPerSensor) {
     const Scenario sc = makeRealisticScenario("plain_bowed", 2.0, 0.0);
     const std::vector<std::pair<SensorKind, cv::Size>> sizes{

@@ -73,6 +73,10 @@ struct ObjectFaceConfig {
     bool avoid = true;  ///< skip faces that stand free; false takes any vertical face (the paper's behaviour)
     FaceSurroundOptions surround;
     FreeStandingRule rule;
+    /// m: a face enclosed in front on every side and this far behind a parallel wall is seen
+    /// through an opening in it (a window, a door), not a surface; a kitchen niche between
+    /// cabinets is 0.3-0.6 m deep.
+    double opening_depth = 0.8;
 };
 
 /// Default method, stage 3: where on a plane the camera saw free wall (paper 3.2.2).

@@ -42,6 +42,7 @@ struct PlaneCandidate : Candidate {
     WallShape shape;                       ///< how the seen wall departs from the plane
     DepthTolerance tolerance;              ///< the band about the shape (the noise measured on it)
     CellSuitability *colour = nullptr;     ///< the cells' fitness by their colour (null without colour)
+    bool beyond_opening = false;           ///< seen through an opening of a nearer wall (a window, a door)
 };
 
 CloudSample sampleCloud(const Cloud &cloud, const DetectorConfig &cfg) {
@@ -396,12 +397,30 @@ std::vector<std::vector<Eigen::Vector3d>> freeOutlines(const PlaneCandidate &c) 
 }
 
 /// Stage 3: the candidates the projector reaches, the largest rectangle they could hold first.
+/// A face seen through an opening of a nearer wall (the world outside a window, a room beyond a
+/// door): bounded in front on every side, behind a parallel candidate by more than
+/// objects.opening_depth. The projector's light would fall on the glass or through the door.
+bool beyondOpening(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cfg, const PlaneCandidate &c,
+                   const std::vector<PlaneCandidate> &candidates) {
+    if (!cfg.objects.avoid || !s.camera) return false;
+    bool nearer_wall = false;
+    for (const PlaneCandidate &o : candidates)
+        nearer_wall |= &o != &c && std::abs(o.plane.normal.dot(c.plane.normal)) > std::cos(cfg.planes.regions.merge_angle) &&
+                       std::abs(c.plane.d) - std::abs(o.plane.d) > cfg.objects.opening_depth;
+    if (!nearer_wall) return false;
+    const FaceSurround f = faceSurround(cloud, *s.camera, c.frame, c.inlier_indices, cfg.tolerance, cfg.objects.surround);
+    return enclosedInFront(f, cfg.objects.rule);
+}
+
 std::vector<int> frameCandidates(const Cloud &cloud, const CloudSample &s, const Projector &projector,
                                  const DetectorConfig &cfg, double aspect, std::vector<PlaneCandidate> &candidates,
                                  DefaultScratch &scratch) {
     std::vector<int> usable;
-    for (int k = 0; k < static_cast<int>(candidates.size()); ++k)
-        if (frameCandidate(cloud, s, projector, cfg, aspect, candidates[k])) usable.push_back(k);
+    for (int k = 0; k < static_cast<int>(candidates.size()); ++k) {
+        candidates[k].beyond_opening = beyondOpening(cloud, s, cfg, candidates[k], candidates);
+        if (!candidates[k].beyond_opening && frameCandidate(cloud, s, projector, cfg, aspect, candidates[k]))
+            usable.push_back(k);
+    }
     std::sort(usable.begin(), usable.end(), [&](int a, int b) { return candidates[a].bound > candidates[b].bound; });
     if (scratch.observations.size() < candidates.size()) scratch.observations.resize(candidates.size());
     for (std::size_t k = 0; k < candidates.size(); ++k) candidates[k].observed = &scratch.observations[k];

@@ -148,4 +148,12 @@ bool standsFree(const FaceSurround &s, const FreeStandingRule &rule) {
     return open(s.top) && (open(s.left) || open(s.right));
 }
 
+bool enclosedInFront(const FaceSurround &s, const FreeStandingRule &rule) {
+    const auto bounded = [&](const EdgeView &e) {
+        return e.positions() > 0 && e.past + e.front >= rule.min_seen * e.positions() &&
+               e.pastShare() <= 1.0 - rule.min_past;
+    };
+    return bounded(s.top) && bounded(s.left) && bounded(s.right);
+}
+
 }  // namespace projsurf

@@ -63,4 +63,9 @@ struct FreeStandingRule {
 /// nor does a face of a wall's size (FreeStandingRule::wall_height, wall_width).
 bool standsFree(const FaceSurround &surround, const FreeStandingRule &rule = {});
 
+/// The face is bounded in front of its plane above it and on both sides (a recess, or what is
+/// seen through a window or a door): each edge seen as FreeStandingRule::min_seen asks, and
+/// open behind on at most 1 - min_past of it.
+bool enclosedInFront(const FaceSurround &surround, const FreeStandingRule &rule = {});
+
 }  // namespace projsurf
