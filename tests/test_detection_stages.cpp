@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <random>
+#include <tuple>
 
 #include "projsurf/detection/image_boxes.hpp"
 #include "projsurf/detection/default/observed_free_space.hpp"
@@ -207,16 +208,34 @@ std::pair<std::vector<Point>, std::vector<float>> sampledWithBands(const Cloud &
     return out;
 }
 
+/// A frontal bent wall at depth z (bentWall), its 12000-point sample with their bands, and the
+/// plane and upright frame the shape is fitted about.
+struct WallSample {
+    Cloud cloud;
+    std::vector<int> sample;
+    std::vector<Point> pts;
+    std::vector<float> band;
+    Plane wall;
+    PlaneFrame frame;
+};
+
+WallSample frontalWallSample(double z, const std::function<double(double, double)> &bend, double sigma, unsigned seed,
+                             const cv::Rect &box = {}, double box_height = 0.0) {
+    WallSample w;
+    w.cloud = bentWall(CameraIntrinsics{}, z, bend, sigma, seed, box, box_height);
+    w.sample = samplePoints(w.cloud, 12000);
+    std::tie(w.pts, w.band) = sampledWithBands(w.cloud, w.sample);
+    w.wall = makePlane({0, 0, -1}, z);
+    w.frame = makePlaneFrame(w.wall, Eigen::Vector3d::UnitY(), {0, 0, z});
+    return w;
+}
+
 }  // namespace
 
 TEST(WallShape, FollowsASmoothBendButNotWhatStandsProudOfTheWall) {
-    CameraIntrinsics cam;
     auto bend = [](double x, double y) { return 0.012 * (x * x + y * y) - 0.01 * x; };  // 4 cm at the image corners
-    const Cloud cloud = bentWall(cam, 2.5, bend, 0.004, 3, cv::Rect(400, 100, 120, 120), 0.10);
-    const std::vector<int> sample = samplePoints(cloud, 12000);
-    const auto [pts, band] = sampledWithBands(cloud, sample);
-    const Plane wall = makePlane({0, 0, -1}, 2.5);
-    const PlaneFrame frame = makePlaneFrame(wall, Eigen::Vector3d::UnitY(), {0, 0, 2.5});
+    const WallSample w = frontalWallSample(2.5, bend, 0.004, 3, cv::Rect(400, 100, 120, 120), 0.10);
+    const auto &[cloud, sample, pts, band, wall, frame] = w;
     const auto shape = fitWallShape(pts, band, wall, frame);
     ASSERT_TRUE(shape.has_value());
     // Plane coordinates: u = x (right), v = -y (up).
@@ -233,13 +252,9 @@ TEST(WallShape, FollowsASmoothBendButNotWhatStandsProudOfTheWall) {
 TEST(WallShape, AFarWallMayBendAsMuchAsTheSensorsDisparityErrorGrows) {
     // A wall at 4 m bent by 11 cm at the image corners (a Kinect v1's +-3-5 cm at 3 m, grown
     // with z^2): more than the 8 cm allowed at any depth, less than 0.0089 z^2 = 13.5 cm there.
-    CameraIntrinsics cam;
     auto bend = [](double x, double y) { return 0.0118 * (x * x + y * y); };
-    const Cloud cloud = bentWall(cam, 4.0, bend, 0.010, 5);
-    const std::vector<int> sample = samplePoints(cloud, 12000);
-    const auto [pts, band] = sampledWithBands(cloud, sample);
-    const Plane wall = makePlane({0, 0, -1}, 4.0);
-    const PlaneFrame frame = makePlaneFrame(wall, Eigen::Vector3d::UnitY(), {0, 0, 4.0});
+    const WallSample w = frontalWallSample(4.0, bend, 0.010, 5);
+    const auto &[cloud, sample, pts, band, wall, frame] = w;
     const auto shape = fitWallShape(pts, band, wall, frame);
     ASSERT_TRUE(shape.has_value());
     for (const Eigen::Vector2d uv : {Eigen::Vector2d(0, 0), Eigen::Vector2d(2.0, 1.4), Eigen::Vector2d(-2.0, -1.4)})
