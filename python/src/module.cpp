@@ -296,7 +296,17 @@ PYBIND11_MODULE(projsurf, m) {
              "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(), "method"_a = py::none(),
              "hull"_a = py::none(), "seed"_a = py::none(), "min_width"_a = py::none(), "min_area"_a = py::none(),
              "suitability"_a = py::none(), "config"_a = py::none())
-        .def("detect", &Detector::detect, "points"_a, py::kw_only(), "colour"_a = py::none(),
+        .def(
+            "detect",
+            [](Detector &d, const py::object &points, const py::object &colour, const py::kwargs &extra) {
+                // Settings belong to the Detector; a keyword here is a mistake, said in one line.
+                for (const auto &item : extra)
+                    throw InputError(py::str(item.first).cast<std::string>(),
+                                     "unknown keyword argument (Detector.detect takes points and colour=; the "
+                                     "settings go to Detector(...))");
+                return d.detect(points, colour);
+            },
+            "points"_a, py::kw_only(), "colour"_a = py::none(),
              "points: (H, W, 3) or (N, 3) array (camera frame, m; NaN = no reading) or an object with .points.\n"
              "colour: optional (H, W, 3) uint8 B, G, R image registered to (H, W) points: the surface's suitability\n"
              "(docs/suitability.md); checked as `detect --rgb` checks it: another type or size is an InputError,\n"

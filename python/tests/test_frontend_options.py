@@ -164,3 +164,5 @@ def test_the_clis_pipeline_settings_under_the_same_names(projector):
         projsurf.detect(points, projector, max_planes=2.5)
     with pytest.raises(projsurf.InputError, match=r"^aspcet: unknown keyword argument \(known: points, projector, aspect,"):
         projsurf.detect(points, projector, aspcet="16:9")
+    with pytest.raises(projsurf.InputError, match=r"^max_planes: unknown keyword argument \(Detector.detect takes points"):
+        projsurf.Detector(projector).detect(points, max_planes=3)
