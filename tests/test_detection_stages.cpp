@@ -409,3 +409,23 @@ TEST(VirtualDepthImage, NotForOrganizedSparseOrStrayClouds) {
     ASSERT_TRUE(image);
     EXPECT_LE(static_cast<long>(image->cloud.points.size()), 2L * 4000);  // the stray point does not spread it
 }
+
+TEST(VirtualDepthImage, StrayPointsBeyondTheExtentAreLeftOutOfTheImageAndItsCoverage) {
+    // A wall 2 m away and 0.5 % of its points far to the upper left, more than the 0.1 % the
+    // extent leaves out: they lie beyond the extent on both axes. Before they were skipped, the
+    // coverage grid indexed them before its start (caught by UBSan on a real frame's cloud).
+    Cloud cloud;
+    for (int i = 0; i < 4000; ++i) cloud.points.emplace_back(0.001f * (i % 100), 0.001f * (i / 100), 2.0f);
+    for (int i = 0; i < 20; ++i) cloud.points.emplace_back(-3.0f - 0.01f * i, -3.0f, 2.0f);
+    cloud.width = static_cast<int>(cloud.points.size());
+    const auto image = virtualDepthImage(cloud, VirtualImageConfig{});
+    ASSERT_TRUE(image);
+    int filled = 0;
+    for (std::size_t i = 0; i < image->cloud.points.size(); ++i) {
+        if (image->source[i] < 0) continue;
+        ++filled;
+        EXPECT_LT(image->source[i], 4000) << "a stray point was imaged";
+    }
+    EXPECT_GT(filled, 3000);
+    EXPECT_LE(static_cast<long>(image->cloud.points.size()), 2L * 4000);  // the strays do not spread it
+}

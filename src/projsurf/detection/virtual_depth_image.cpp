@@ -40,6 +40,9 @@ std::optional<VirtualDepthImage> virtualDepthImage(const Cloud &cloud, const Vir
     const double u_lo = quantile(su, 0.001), u_hi = quantile(su, 0.999);
     const double v_lo = quantile(sv, 0.001), v_hi = quantile(sv, 0.999);
     const double span_u = std::max(u_hi - u_lo, 1e-3), span_v = std::max(v_hi - v_lo, 1e-3);
+    const auto insideExtent = [&](std::size_t k) {
+        return us[k] >= u_lo && us[k] <= u_hi && vs[k] >= v_lo && vs[k] <= v_hi;
+    };
 
     // The covered share of that extent, on a coarse grid (about 16 points per cell).
     const double n = static_cast<double>(kept.size());
@@ -48,6 +51,7 @@ std::optional<VirtualDepthImage> virtualDepthImage(const Cloud &cloud, const Vir
     const int ch = std::clamp(static_cast<int>(std::ceil(span_v * coarse)), 1, 4096);
     std::vector<char> occupied(static_cast<std::size_t>(cw) * ch, 0);
     for (std::size_t k = 0; k < kept.size(); ++k) {
+        if (!insideExtent(k)) continue;  // a stray point beyond the extent would index before the grid
         const int cu = std::min(cw - 1, static_cast<int>((us[k] - u_lo) / span_u * cw));
         const int cv = std::min(ch - 1, static_cast<int>((vs[k] - v_lo) / span_v * ch));
         occupied[static_cast<std::size_t>(cv) * cw + cu] = 1;
@@ -70,7 +74,7 @@ std::optional<VirtualDepthImage> virtualDepthImage(const Cloud &cloud, const Vir
     image.points.assign(static_cast<std::size_t>(width) * height, Point(nan, nan, nan));
     out.source.assign(image.points.size(), -1);
     for (std::size_t k = 0; k < kept.size(); ++k) {
-        if (us[k] < u_lo || us[k] > u_hi || vs[k] < v_lo || vs[k] > v_hi) continue;
+        if (!insideExtent(k)) continue;
         const int c = std::clamp(static_cast<int>(std::lround((us[k] - u_lo) * f)), 0, width - 1);
         const int r = std::clamp(static_cast<int>(std::lround((vs[k] - v_lo) * f)), 0, height - 1);
         const std::size_t at = static_cast<std::size_t>(r) * width + c;
