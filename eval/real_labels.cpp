@@ -86,8 +86,7 @@ LabelBest readBest(const Reader &r, const YAML::Node &b, const std::string &key,
         r.fail("'" + key + ".surface' names no surface: '" + best.surface + "'");
     best.width = r.number(r.need(b, "width", key + "."), key + ".width");
     best.height = r.number(r.need(b, "height", key + "."), key + ".height");
-    if (!(best.width > 0 && best.height > 0))
-        r.fail("'" + key + ".width' and '" + key + ".height' must be positive");
+    if (!(best.width > 0 && best.height > 0)) r.fail("'" + key + ".width' and '" + key + ".height' must be positive");
     const YAML::Node c = r.need(b, "corners", key + ".");
     if (!c.IsSequence() || c.size() != 4) r.fail("'" + key + ".corners' must be a list of 4 [x, y, z] points");
     for (int k = 0; k < 4; ++k) best.corners[k] = r.vector3(c[k], key + ".corners");
@@ -133,6 +132,15 @@ RealLabel readRealLabel(const std::string &path) {
     l.gravity = r.vector3(r.need(g, "vector", "gravity."), "gravity.vector");
     if (l.gravity.norm() < 1e-6) r.fail("'gravity.vector' is the zero vector");
     l.gravity.normalize();
+    if (g["reference"]) {
+        const YAML::Node ref = g["reference"];
+        l.reference_gravity_source = r.text(r.need(ref, "source", "gravity.reference."), "gravity.reference.source");
+        if (l.reference_gravity_source != "floor_fit" && l.reference_gravity_source != "walls")
+            r.fail("'gravity.reference.source' must be 'floor_fit' or 'walls'");
+        l.reference_gravity = r.vector3(r.need(ref, "vector", "gravity.reference."), "gravity.reference.vector");
+        if (l.reference_gravity.norm() < 1e-6) r.fail("'gravity.reference.vector' is the zero vector");
+        l.reference_gravity.normalize();
+    }
 
     l.projector = readCalibration(path);  // the `projector:` block, as in a calibration file
 
@@ -194,6 +202,11 @@ void writeRealLabel(const std::string &path, const RealLabel &l) {
     if (!l.note.empty()) root["note"] = l.note;
     root["gravity"]["source"] = l.gravity_source.empty() ? std::string("stated") : l.gravity_source;
     root["gravity"]["vector"] = flow({l.gravity.x(), l.gravity.y(), l.gravity.z()});
+    if (!l.reference_gravity_source.empty()) {
+        root["gravity"]["reference"]["source"] = l.reference_gravity_source;
+        const Eigen::Vector3d &g = l.reference_gravity;
+        root["gravity"]["reference"]["vector"] = flow({g.x(), g.y(), g.z()});
+    }
     const Projector &p = l.projector;
     root["projector"]["resolution"] = flow({static_cast<double>(p.width), static_cast<double>(p.height)});
     root["projector"]["fov_deg"] = flow({p.fov_h * 180.0 / M_PI, p.fov_v * 180.0 / M_PI});

@@ -1,0 +1,50 @@
+// `--gravity auto` (the floor's gravity) against the labels' reference gravity, which comes from a
+// separate fit (labels/floor_gravity.py), on every labelled real frame that has one. Prints the
+// table; asserts what holds today so that it does not get worse.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "eval/real_labels.hpp"
+#include "projsurf/detection/gravity.hpp"
+#include "projsurf/io/cloud_io.hpp"
+
+using namespace projsurf;
+namespace fs = std::filesystem;
+
+namespace {
+
+double angleDeg(const Eigen::Vector3d &a, const Eigen::Vector3d &b) {
+    return std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) * 180.0 / M_PI;
+}
+
+}  // namespace
+
+TEST(FloorGravity, AutoAgreesWithTheLabelsReferenceWhereTheFloorIsSeen) {
+    const std::string real = std::string(PROJSURF_SHARED_DIR) + "/data/real";
+    if (!fs::is_directory(real)) GTEST_SKIP() << real << " is not here (the real frames stay in ../shared)";
+    std::printf("| frame | reference | auto vs reference, deg | floor points |\n|---|---|---:|---:|\n");
+    int frames = 0, within_1deg = 0;
+    double worst = 0.0;
+    for (const std::string &file : listLabelFiles(std::string(PROJSURF_SOURCE_DIR) + "/labels/real")) {
+        const RealLabel label = readRealLabel(file);
+        if (label.reference_gravity_source != "floor_fit") continue;
+        const std::string dir = real + "/" + label.frame;
+        const Cloud cloud = readDepthCloud(dir + "/depth.png", dir + "/camera.yaml");
+        const auto g = estimateGravityFromFloor(cloud, Eigen::Vector3d::UnitY());
+        const double off = g ? angleDeg(g->gravity, label.reference_gravity) : 180.0;
+        std::printf("| %s | %s | %s | %d |\n", label.frame.c_str(), label.reference_gravity_source.c_str(),
+                    g ? std::to_string(off).substr(0, 5).c_str() : "no floor", g ? g->floor_points : 0);
+        ++frames;
+        within_1deg += off <= 1.0;
+        worst = std::max(worst, off);
+        // Every frame where the separate fit sees the floor: auto sees it too, within 3 deg.
+        EXPECT_LE(off, 3.0) << label.frame;
+    }
+    std::printf("%d of %d frames within 1 deg; worst %.2f deg\n", within_1deg, frames, worst);
+    EXPECT_GE(frames, 15) << "the labels' reference gravity went missing";
+}
