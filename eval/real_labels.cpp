@@ -103,6 +103,18 @@ void writeBest(YAML::Node node, const LabelBest &b) {
     for (const auto &c : b.corners) node["corners"].push_back(flow({c.x(), c.y(), c.z()}));
 }
 
+/// A gravity block `key` {source, vector}: the source one of `sources`, the vector non-zero
+/// (returned unit).
+void readGravity(const Reader &r, const YAML::Node &node, const std::string &key,
+                 const std::vector<std::string> &sources, std::string &source, Eigen::Vector3d &vector) {
+    source = r.text(r.need(node, "source", key + "."), key + ".source");
+    if (std::find(sources.begin(), sources.end(), source) == sources.end())
+        r.fail("'" + key + ".source' must be '" + sources[0] + "' or '" + sources[1] + "'");
+    vector = r.vector3(r.need(node, "vector", key + "."), key + ".vector");
+    if (vector.norm() < 1e-6) r.fail("'" + key + ".vector' is the zero vector");
+    vector.normalize();
+}
+
 }  // namespace
 
 const std::vector<std::string> &unsuitableReasons() {
@@ -126,21 +138,10 @@ RealLabel readRealLabel(const std::string &path) {
     if (root["note"]) l.note = r.text(root["note"], "note");
 
     const YAML::Node g = r.need(root, "gravity", "");
-    l.gravity_source = r.text(r.need(g, "source", "gravity."), "gravity.source");
-    if (l.gravity_source != "auto" && l.gravity_source != "stated")
-        r.fail("'gravity.source' must be 'auto' or 'stated'");
-    l.gravity = r.vector3(r.need(g, "vector", "gravity."), "gravity.vector");
-    if (l.gravity.norm() < 1e-6) r.fail("'gravity.vector' is the zero vector");
-    l.gravity.normalize();
-    if (g["reference"]) {
-        const YAML::Node ref = g["reference"];
-        l.reference_gravity_source = r.text(r.need(ref, "source", "gravity.reference."), "gravity.reference.source");
-        if (l.reference_gravity_source != "floor_fit" && l.reference_gravity_source != "walls")
-            r.fail("'gravity.reference.source' must be 'floor_fit' or 'walls'");
-        l.reference_gravity = r.vector3(r.need(ref, "vector", "gravity.reference."), "gravity.reference.vector");
-        if (l.reference_gravity.norm() < 1e-6) r.fail("'gravity.reference.vector' is the zero vector");
-        l.reference_gravity.normalize();
-    }
+    readGravity(r, g, "gravity", {"auto", "stated"}, l.gravity_source, l.gravity);
+    if (g["reference"])
+        readGravity(r, g["reference"], "gravity.reference", {"floor_fit", "walls"}, l.reference_gravity_source,
+                    l.reference_gravity);
 
     l.projector = readCalibration(path);  // the `projector:` block, as in a calibration file
 
