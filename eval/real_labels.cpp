@@ -86,8 +86,7 @@ LabelBest readBest(const Reader &r, const YAML::Node &b, const std::string &key,
         r.fail("'" + key + ".surface' names no surface: '" + best.surface + "'");
     best.width = r.number(r.need(b, "width", key + "."), key + ".width");
     best.height = r.number(r.need(b, "height", key + "."), key + ".height");
-    if (!(best.width > 0 && best.height > 0))
-        r.fail("'" + key + ".width' and '" + key + ".height' must be positive");
+    if (!(best.width > 0 && best.height > 0)) r.fail("'" + key + ".width' and '" + key + ".height' must be positive");
     const YAML::Node c = r.need(b, "corners", key + ".");
     if (!c.IsSequence() || c.size() != 4) r.fail("'" + key + ".corners' must be a list of 4 [x, y, z] points");
     for (int k = 0; k < 4; ++k) best.corners[k] = r.vector3(c[k], key + ".corners");
@@ -102,6 +101,18 @@ void writeBest(YAML::Node node, const LabelBest &b) {
     node["height"] = num(b.height);
     node["area"] = num(b.area());  // for the reader's eye; not read back
     for (const auto &c : b.corners) node["corners"].push_back(flow({c.x(), c.y(), c.z()}));
+}
+
+/// A gravity block `key` {source, vector}: the source one of `sources`, the vector non-zero
+/// (returned unit).
+void readGravity(const Reader &r, const YAML::Node &node, const std::string &key,
+                 const std::vector<std::string> &sources, std::string &source, Eigen::Vector3d &vector) {
+    source = r.text(r.need(node, "source", key + "."), key + ".source");
+    if (std::find(sources.begin(), sources.end(), source) == sources.end())
+        r.fail("'" + key + ".source' must be '" + sources[0] + "' or '" + sources[1] + "'");
+    vector = r.vector3(r.need(node, "vector", key + "."), key + ".vector");
+    if (vector.norm() < 1e-6) r.fail("'" + key + ".vector' is the zero vector");
+    vector.normalize();
 }
 
 }  // namespace
@@ -127,12 +138,10 @@ RealLabel readRealLabel(const std::string &path) {
     if (root["note"]) l.note = r.text(root["note"], "note");
 
     const YAML::Node g = r.need(root, "gravity", "");
-    l.gravity_source = r.text(r.need(g, "source", "gravity."), "gravity.source");
-    if (l.gravity_source != "auto" && l.gravity_source != "stated")
-        r.fail("'gravity.source' must be 'auto' or 'stated'");
-    l.gravity = r.vector3(r.need(g, "vector", "gravity."), "gravity.vector");
-    if (l.gravity.norm() < 1e-6) r.fail("'gravity.vector' is the zero vector");
-    l.gravity.normalize();
+    readGravity(r, g, "gravity", {"auto", "stated"}, l.gravity_source, l.gravity);
+    if (g["reference"])
+        readGravity(r, g["reference"], "gravity.reference", {"floor_fit", "walls"}, l.reference_gravity_source,
+                    l.reference_gravity);
 
     l.projector = readCalibration(path);  // the `projector:` block, as in a calibration file
 
@@ -194,6 +203,11 @@ void writeRealLabel(const std::string &path, const RealLabel &l) {
     if (!l.note.empty()) root["note"] = l.note;
     root["gravity"]["source"] = l.gravity_source.empty() ? std::string("stated") : l.gravity_source;
     root["gravity"]["vector"] = flow({l.gravity.x(), l.gravity.y(), l.gravity.z()});
+    if (!l.reference_gravity_source.empty()) {
+        root["gravity"]["reference"]["source"] = l.reference_gravity_source;
+        const Eigen::Vector3d &g = l.reference_gravity;
+        root["gravity"]["reference"]["vector"] = flow({g.x(), g.y(), g.z()});
+    }
     const Projector &p = l.projector;
     root["projector"]["resolution"] = flow({static_cast<double>(p.width), static_cast<double>(p.height)});
     root["projector"]["fov_deg"] = flow({p.fov_h * 180.0 / M_PI, p.fov_v * 180.0 / M_PI});

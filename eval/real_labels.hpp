@@ -40,7 +40,7 @@ struct LabelBest {
 /// colour (issue 15): a framed print, a poster, a screen, a window, a dark panel, a glare spot.
 struct LabelUnsuitable {
     LabelPolygon polygon;  ///< depth-image pixels, as the obstacles
-    std::string why;       ///< "textured", "dark", "saturated" or "glare" (detection/colour/surface_suitability's Unfit)
+    std::string why;  ///< "textured", "dark", "saturated" or "glare" (detection/colour/surface_suitability's Unfit)
 };
 
 /// The optional `colour:` section (frames with a registered rgb.png): judged = the section is
@@ -53,15 +53,19 @@ struct LabelColour {
 };
 
 struct RealLabel {
-    std::string frame;                    ///< folder name under the real-frame directory
-    std::string note;                     ///< what was judged and why
-    std::string gravity_source;           ///< "auto" (the floor, as --gravity auto) or "stated"
-    Eigen::Vector3d gravity{0, 1, 0};     ///< unit, camera frame, down
-    Projector projector;                  ///< `projector:` block in the calibration file's format
-    std::vector<LabelSurface> surfaces;   ///< empty: no usable wall in this frame
-    std::vector<LabelPolygon> obstacles;  ///< in front of / proud of the surfaces, or no reading
+    std::string frame;                 ///< folder name under the real-frame directory
+    std::string note;                  ///< what was judged and why
+    std::string gravity_source;        ///< "auto" (the floor, as --gravity auto) or "stated"
+    Eigen::Vector3d gravity{0, 1, 0};  ///< unit, camera frame, down
+    /// Gravity from a source independent of the detector (labels/floor_gravity.py): "floor_fit"
+    /// (the floor fitted by that script), "walls" (two labelled walls' normals), empty: none.
+    std::string reference_gravity_source;
+    Eigen::Vector3d reference_gravity{0, 1, 0};  ///< unit, camera frame, down
+    Projector projector;                         ///< `projector:` block in the calibration file's format
+    std::vector<LabelSurface> surfaces;          ///< empty: no usable wall in this frame
+    std::vector<LabelPolygon> obstacles;         ///< in front of / proud of the surfaces, or no reading
     LabelBest best;
-    LabelColour colour;                   ///< not judged when the file has no `colour:` section
+    LabelColour colour;  ///< not judged when the file has no `colour:` section
 };
 
 /// The reasons a `colour.unsuitable[].why` may give.

@@ -14,12 +14,12 @@
 #include <sstream>
 #include <string>
 
-#include "fresh_dir.hpp"
-#include "label_fixtures.hpp"
 #include "eval/label_reference.hpp"
 #include "eval/labelled_eval.hpp"
 #include "eval/real_labels.hpp"
 #include "eval/real_scoring.hpp"
+#include "fresh_dir.hpp"
+#include "label_fixtures.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/yaml_files.hpp"
@@ -60,6 +60,7 @@ TEST(RealLabels, ReadsAndWritesBackUnchanged) {
     RealLabel l = syntheticLabel(dir);
     EXPECT_EQ(l.frame, "synthetic");
     EXPECT_EQ(l.gravity_source, "stated");
+    EXPECT_EQ(l.reference_gravity_source, "");
     ASSERT_EQ(l.surfaces.size(), 1u);
     ASSERT_EQ(l.surfaces[0].regions.size(), 1u);
     EXPECT_EQ(l.surfaces[0].regions[0].pixels.size(), 4u);
@@ -74,10 +75,14 @@ TEST(RealLabels, ReadsAndWritesBackUnchanged) {
     l.best.height = 0.75;
     l.best.corners = {Eigen::Vector3d(-0.6, -0.4, 2.0), Eigen::Vector3d(0.6, -0.4, 2.0),
                       Eigen::Vector3d(0.6, 0.35, 2.0), Eigen::Vector3d(-0.6, 0.35, 2.0)};
+    l.reference_gravity_source = "floor_fit";
+    l.reference_gravity = Eigen::Vector3d(0.0, 0.8, 0.6);
     const std::string again = (dir / "again.yaml").string();
     writeRealLabel(again, l);
     const RealLabel r = readRealLabel(again);
     EXPECT_EQ(r.note, l.note);
+    EXPECT_EQ(r.reference_gravity_source, "floor_fit");
+    EXPECT_NEAR((r.reference_gravity - l.reference_gravity).norm(), 0.0, 1e-9);
     EXPECT_EQ(r.obstacles[0].pixels, l.obstacles[0].pixels);
     ASSERT_TRUE(r.surfaces[0].has_plane);
     EXPECT_NEAR(r.surfaces[0].plane.normal.dot(l.surfaces[0].plane.normal), 1.0, 1e-9);
@@ -103,6 +108,10 @@ TEST(RealLabels, MalformedFilesGiveAClearError) {
         {replaced(good, "source: stated", "source: guessed"), "'gravity.source' must be 'auto' or 'stated'"},
         {replaced(good, "vector: [0, 1, 0]", "vector: [0, 0, 0]"), "'gravity.vector' is the zero vector"},
         {replaced(good, "vector: [0, 1, 0]", "vector: [0, one, 0]"), "'gravity.vector' is not a number"},
+        {replaced(good, "vector: [0, 1, 0]}", "vector: [0, 1, 0], reference: {source: imu, vector: [0, 1, 0]}}"),
+         "'gravity.reference.source' must be 'floor_fit' or 'walls'"},
+        {replaced(good, "vector: [0, 1, 0]}", "vector: [0, 1, 0], reference: {source: walls}}"),
+         "missing key 'gravity.reference.vector'"},
         {replaced(good, "polygon: [[-0.5, -0.5], [639.5, -0.5], [639.5, 479.5], [-0.5, 479.5]]",
                   "polygon: [[-0.5, -0.5], [639.5, -0.5]]"),
          "'surfaces[0].regions[0].polygon' must be a list of at least 3 [x, y] pixels"},

@@ -1,5 +1,6 @@
 #include "projsurf/detection/gravity.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -24,6 +25,53 @@ std::vector<int> inliersOf(const std::vector<Point> &pts, const Eigen::Vector3f 
     return in;
 }
 
+/// The floor plane (n, d) refitted by least squares reweighted `rounds` times over the points
+/// within `band` of it and nearer than `max_depth`: Tukey weights on the residual (scale: the
+/// median absolute residual), each point also weighted by 1/z^2: far readings are noisier and
+/// bent most by a structured-light sensor (their variance's 1/z^4 leaned on the few nearest
+/// floor readings and did worse on the labelled frames).
+void reweightedFloorFit(const std::vector<Point> &pts, float band, float max_depth, int rounds, Eigen::Vector3f &n,
+                        float &d) {
+    std::vector<float> residual;
+    std::vector<int> near;
+    for (int round = 0; round < rounds; ++round) {
+        near.clear();
+        residual.clear();
+        for (int i = 0; i < static_cast<int>(pts.size()); ++i) {
+            const float r = n.dot(pts[i]) + d;
+            if (std::abs(r) <= band && pts[i].z() < max_depth) {
+                near.push_back(i);
+                residual.push_back(std::abs(r));
+            }
+        }
+        if (near.size() < 50) return;
+        std::vector<float> sorted = residual;
+        std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+        const double width = 4.685 * std::max(1.4826 * sorted[sorted.size() / 2], 0.003);
+        double sw = 0.0;
+        Eigen::Vector3d s = Eigen::Vector3d::Zero();
+        Eigen::Matrix3d ss = Eigen::Matrix3d::Zero();
+        for (std::size_t k = 0; k < near.size(); ++k) {
+            const double t = residual[k] / width;
+            if (t >= 1.0) continue;
+            const Eigen::Vector3d p = pts[near[k]].cast<double>();
+            const double z2 = std::max(0.25, p.z() * p.z());
+            const double w = (1.0 - t * t) * (1.0 - t * t) / z2;
+            sw += w;
+            s += w * p;
+            ss += w * p * p.transpose();
+        }
+        if (!(sw > 0.0)) return;
+        const Eigen::Vector3d mean = s / sw;
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+        solver.computeDirect(ss / sw - mean * mean.transpose());
+        Eigen::Vector3f next = solver.eigenvectors().col(0).cast<float>();
+        if (next.dot(n) < 0) next = -next;
+        n = next.normalized();
+        d = -n.dot(mean.cast<float>());
+    }
+}
+
 }  // namespace
 
 std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, const Eigen::Vector3d &prior,
@@ -35,7 +83,7 @@ std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, cons
     if (pts.size() < 50) return std::nullopt;
     const Eigen::Vector3f g = prior.normalized().cast<float>();
     const float cos_max = static_cast<float>(std::cos(max_angle));
-    const float band = 0.03f;         // m: floors are flat; Kinect noise at 1-3 m is below this
+    const float band = 0.03f;  // m: floors are flat; Kinect noise at 1-3 m is below this
     const int min_score = static_cast<int>(std::ceil(min_share * pts.size()));
     std::mt19937 rng(seed);
     std::uniform_int_distribution<std::size_t> pick(0, pts.size() - 1);
@@ -55,13 +103,15 @@ std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, cons
         if (score >= min_score) large.push_back({n, d, score});
     }
     if (large.empty()) return std::nullopt;
-    const int biggest = std::max_element(large.begin(), large.end(), [](auto &x, auto &y) {
-                            return x.score < y.score;
-                        })->score;
+    const int biggest =
+        std::max_element(large.begin(), large.end(), [](auto &x, auto &y) { return x.score < y.score; })->score;
     // The biggest of them (choosing the lowest instead picks planes tilted through the far floor).
     const Candidate *floor = nullptr;
     for (const auto &c : large)
-        if (c.score == biggest) { floor = &c; break; }
+        if (c.score == biggest) {
+            floor = &c;
+            break;
+        }
     // Least squares on the floor's inliers, twice: the RANSAC normal from three points is only
     // a seed (a few degrees off on noisy depth); each refit re-selects the inliers within the band.
     Eigen::Vector3f n = floor->n;
@@ -86,6 +136,9 @@ std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, cons
         d = rd;
         inliers = std::move(next);
     }
+    // The least-squares fit gives every reading the same say, the far ones too (noisier, bent).
+    reweightedFloorFit(pts, band, 5.0f, 5, n, d);
+    inliers = inliersOf(pts, n, d, band);
     GravityEstimate out;
     out.gravity = n.cast<double>().normalized();
     out.floor_points = static_cast<int>(inliers.size());

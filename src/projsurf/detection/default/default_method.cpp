@@ -160,6 +160,27 @@ std::vector<PlaneCandidate> findPlanes(const Cloud &cloud, const CloudSample &s,
     return out;
 }
 
+/// Cloud indices of the sampled points within the band of the candidate's shape (the plane's
+/// band misses where the camera bends the wall). The relief is bilinear between its nodes, so it
+/// reaches no further than its largest node: a point that far beyond the band about the
+/// quadratic, or that far inside it, is decided without looking the relief up.
+std::vector<int> onShape(const CloudSample &s, const PlaneCandidate &c) {
+    float relief_max = 0.0f;
+    for (float h : c.shape.relief.h) relief_max = std::max(relief_max, std::abs(h));
+    const double reach = relief_max + 1e-9;  // m; the margin covers rounding
+    std::vector<int> out;
+    for (std::size_t i = 0; i < s.points.size(); ++i) {
+        const Eigen::Vector3d p = s.points[i].cast<double>();
+        const double sd = c.plane.signedDistance(p);
+        const Eigen::Vector2d uv = c.frame.toPlane(p);
+        const double off_quadratic = std::abs(sd - c.shape.quadratic(uv));
+        const float band = c.tolerance.band(s.points[i].z());
+        if (off_quadratic > band + reach) continue;
+        if (off_quadratic + reach < band || std::abs(sd - c.shape.height(uv)) <= band) out.push_back(s.indices[i]);
+    }
+    return out;
+}
+
 /// The wall's bend and noise about the candidate's plane as the camera saw them, and its
 /// sampled points on that shape; false when no shape could be fitted.
 bool fitShape(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cfg, PlaneCandidate &c) {
@@ -175,15 +196,7 @@ bool fitShape(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cf
     if (local > 0.0)
         c.shape.noise_k = std::min(c.shape.noise_k, cfg.wall.local_cap * std::max(local, cfg.tolerance.noise_k));
     c.tolerance = toleranceFor(c.shape, cfg.tolerance, cfg.wall.noise_min, cfg.wall.noise_max);
-    // The wall's points are those on its shape (the plane's band misses where the camera bends it).
-    c.inlier_indices.clear();
-    for (std::size_t i = 0; i < s.points.size(); ++i) {
-        const Eigen::Vector3d p = s.points[i].cast<double>();
-        const int k = s.indices[i];
-        if (std::abs(c.plane.signedDistance(p) - c.shape.height(c.frame.toPlane(p))) <=
-            c.tolerance.band(s.points[i].z()))
-            c.inlier_indices.push_back(k);
-    }
+    c.inlier_indices = onShape(s, c);
     c.inliers = static_cast<int>(c.inlier_indices.size());
     return true;
 }
