@@ -9,37 +9,30 @@
 namespace projsurf {
 namespace {
 
-/// What a blocking cell state says of the wall's cells, after "N % of the beam's cells on it are ".
-const char *blockerWords(int state) {
-    switch (static_cast<CellState>(state)) {
-    case CellState::NoReading: return "without a wall reading";
-    case CellState::SeenThrough: return "seen through (a hole, a door, glass)";
-    case CellState::InFront: return "shadowed by something in front of it";
-    case CellState::Glare: return "unfit by their colour: glare (specular or emissive)";
-    case CellState::Dark: return "too dark (low albedo)";
-    case CellState::Textured: return "unfit by their colour: textured (a picture, a pattern)";
-    case CellState::Saturated: return "unfit by their colour: too saturated";
-    default: return "not free";
-    }
-}
+/// Each cell state's JSON word and what it says of the wall's cells, after "N % of the beam's
+/// cells on it are " (CellState order).
+struct StateWords {
+    const char *name, *words;
+};
+constexpr StateWords kStates[kCellStates] = {
+    {"no_free_area", "not free"},
+    {"no_reading", "without a wall reading"},
+    {"seen_through", "seen through (a hole, a door, glass)"},
+    {"shadowed", "shadowed by something in front of it"},
+    {"no_free_area", "not free"},
+    {"glare", "unfit by their colour: glare (specular or emissive)"},
+    {"too_dark", "too dark (low albedo)"},
+    {"textured", "unfit by their colour: textured (a picture, a pattern)"},
+    {"saturated", "unfit by their colour: too saturated"},
+};
+
+const char *blockerWords(int state) { return kStates[state >= 0 && state < kCellStates ? state : 0].words; }
+
+const char *blockerName(int state) { return kStates[state >= 0 && state < kCellStates ? state : 0].name; }
 
 /// "62 % of the beam's cells on it are shadowed by something in front of it".
 std::string blockedShare(int state, double share) {
     return formatted("%.0f %% of the beam's cells on it are ", 100.0 * share) + blockerWords(state);
-}
-
-/// The JSON word of a blocking cell state.
-const char *blockerName(int state) {
-    switch (static_cast<CellState>(state)) {
-    case CellState::NoReading: return "no_reading";
-    case CellState::SeenThrough: return "seen_through";
-    case CellState::InFront: return "shadowed";
-    case CellState::Glare: return "glare";
-    case CellState::Dark: return "too_dark";
-    case CellState::Textured: return "textured";
-    case CellState::Saturated: return "saturated";
-    default: return "no_free_area";
-    }
 }
 
 /// Share of a plane's points left out of its seen extent at each end of each axis.

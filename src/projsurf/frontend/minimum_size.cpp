@@ -9,15 +9,23 @@ MinimumSize defaultMinimumSize(Method method) {
     return MinimumSize{};
 }
 
+namespace {
+
+/// m: a rectangle this much under the minimum is the minimum, rounded (a width of 15 raster
+/// cells computes as 0.15 - 1e-10 m).
+constexpr double kRounding = 1e-6;
+
+}  // namespace
+
 std::string belowMinimum(const Rectangle &r, const MinimumSize &minimum, const std::string &subject,
                          const std::string &width_option, const std::string &area_option) {
-    if (r.width < minimum.width) {
-        const auto [width, limit] = comparedPair(r.width, minimum.width);
+    if (r.width < minimum.width - kRounding) {
+        const auto [width, limit] = limitPair(r.width, minimum.width);
         return subject + ", " + width + " x " + formatted("%.3f", r.height) + " m, is narrower than " + width_option +
                " " + limit + " m";
     }
-    if (r.area() < minimum.area) {
-        const auto [area, limit] = comparedPair(r.area(), minimum.area, 4);
+    if (r.area() < minimum.area - kRounding * kRounding) {
+        const auto [area, limit] = limitPair(r.area(), minimum.area, 4);
         return subject + ", " + formatted("%.3f", r.width) + " x " + formatted("%.3f", r.height) + " m (" + area +
                " m^2), is smaller than " + area_option + " " + limit + " m^2";
     }

@@ -1,5 +1,6 @@
 #pragma once
 // One number printed by a printf format, as a string (report tables, reason sentences).
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -22,6 +23,14 @@ inline std::pair<std::string, std::string> comparedPair(double a, double b, int 
         std::snprintf(y, sizeof y, "%.*f", d, b);
         if (a == b || std::string(x) != y || d >= 9) return {x, y};
     }
+}
+
+/// As comparedPair, `limit` a number a user gave: with at least the decimals it was given with
+/// (up to 6), so that 0.6225 is not shown as 0.623.
+inline std::pair<std::string, std::string> limitPair(double value, double limit, int digits = 3) {
+    while (digits < 6 && std::abs(std::round(limit * std::pow(10.0, digits)) - limit * std::pow(10.0, digits)) > 1e-6)
+        ++digits;
+    return comparedPair(value, limit, digits);
 }
 
 }  // namespace projsurf
