@@ -90,8 +90,8 @@ void wrapLine(const std::string &text, int cols, std::vector<std::string> &lines
     if (!line.empty()) lines.push_back(line);
 }
 
-/// --explain: each candidate's seen extent outlined (the losers) and numbered, its outcome in
-/// words as status lines.
+/// --explain: each candidate's seen extent outlined (the losers) and numbered at its centre,
+/// its outcome in words as status lines.
 void drawCandidates(cv::Mat &img, const View &view, const Detection &det, std::vector<std::string> &lines) {
     const Rectangle winner = winningRectangle(det.candidates, det.rectangle);
     for (std::size_t k = 0; k < det.candidates.size(); ++k) {
@@ -99,9 +99,9 @@ void drawCandidates(cv::Mat &img, const View &view, const Detection &det, std::v
         const bool chosen = o.verdict == CandidateVerdict::Chosen;
         const std::string tag = "#" + std::to_string(k + 1);
         if (!chosen) polyline(img, view, {o.seen.begin(), o.seen.end()}, true, kCandidate, 2);
-        const cv::Point2f at = view(o.seen[0]);
-        const cv::Point label(std::clamp(cvRound(at.x) + 6, 4, std::max(4, img.cols - 40)),
-                              std::clamp(cvRound(at.y) + 24, 24, std::max(24, img.rows - 6)));
+        const cv::Point2f at = view(0.25 * (o.seen[0] + o.seen[1] + o.seen[2] + o.seen[3]));  // its centre
+        const cv::Point label(std::clamp(cvRound(at.x) - 12, 4, std::max(4, img.cols - 40)),
+                              std::clamp(cvRound(at.y) + 10, 24, std::max(24, img.rows - 6)));
         cv::putText(img, tag, label, cv::FONT_HERSHEY_SIMPLEX, 0.8, chosen ? kRect : kCandidate, 2, cv::LINE_AA);
         wrapLine(tag + " " + formatted("%.2f m away", std::abs(o.plane.d)) + ": " + outcomeWords(o, winner), img.cols,
                  lines);
