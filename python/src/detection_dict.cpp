@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "projsurf/frontend/candidates_json.hpp"
 #include "projsurf/io/errors.hpp"
 
 namespace py = pybind11;
@@ -14,7 +15,7 @@ using namespace pybind11::literals;
 
 namespace projsurf::python {
 
-py::dict detectionToDict(const Detection &det, const DetectorConfig &config) {
+py::dict detectionToDict(const Detection &det, const DetectorConfig &config, bool explain) {
     py::dict d;
     d["found"] = det.found;
     d["reason"] = det.found ? py::object(py::none()) : py::object(py::str(det.reason));
@@ -46,6 +47,8 @@ py::dict detectionToDict(const Detection &det, const DetectorConfig &config) {
     d["timing_ms"] = py::cast(det.timing_ms);
     const Eigen::Vector3d g = det.gravity;
     d["gravity"] = py::array_t<double>(3, g.data());
+    if (explain)  // the JSON's own list, by its one serialiser
+        d["candidates"] = py::module_::import("json").attr("loads")(frontend::candidatesToJson(det).dump());
     return d;
 }
 

@@ -10,24 +10,25 @@
 #include <opencv2/imgcodecs.hpp>
 #include <optional>
 
-#include "detection_dict.hpp"
 #include "argument_types.hpp"
+#include "detection_dict.hpp"
 #include "detector_options.hpp"
 #include "image_array.hpp"
 #include "plan_function.hpp"
 #include "points_array.hpp"
-#include "projsurf/types/lens_model_check.hpp"
-#include "projsurf/types/camera.hpp"
-#include "projsurf/keystone/keystone.hpp"
+#include "projsurf/detection/detector.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/frontend/registered_colour.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
-#include "projsurf/io/limits.hpp"
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/limits.hpp"
+#include "projsurf/io/overlay.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/keystone/keystone.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/types/lens_model_check.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -96,7 +97,10 @@ public:
     Detector(const Projector &projector, DetectorOptions options)
         : options_(std::move(options)), detector_(projector, options_.config) {}
 
-    py::dict detect(const py::object &points, const py::object &colour) {
+    py::dict detect(const py::object &points, const py::object &colour, const py::object &explain,
+                    const py::object &overlay) {
+        if (!py::isinstance<py::bool_>(explain)) throw InputError("explain", "must be True or False");
+        if (!py::isinstance<py::bool_>(overlay)) throw InputError("overlay", "must be True or False");
         Cloud cloud = cloudFromPoints(points);
         std::vector<std::string> warnings;
         if (!colour.is_none()) warnings = attachChecked(cloud, colour);
@@ -109,7 +113,14 @@ public:
         }
         warnAll(warnings);
         frontend::enforceMinimumSize(det, options_.minimum, "min_width", "min_area");
-        return detectionToDict(det, options_.config);
+        py::dict d = detectionToDict(det, options_.config, explain.cast<bool>());
+        if (overlay.cast<bool>()) {  // `detect --overlay`'s picture, colour as its background when it was used
+            py::object keep;
+            const cv::Mat bgr =
+                cloud.hasColour() ? matFromArray(arrayArgument(colour, "colour"), "colour", keep) : cv::Mat();
+            d["overlay"] = arrayFromMat(renderOverlay(cloud, det, options_.config, nullptr, bgr, explain.cast<bool>()));
+        }
+        return d;
     }
     const Projector &projector() const { return detector_.projector(); }
 
@@ -281,10 +292,10 @@ PYBIND11_MODULE(projsurf, m) {
         "YAML (`projsurf detect --config`, every key: `projsurf detect --print-config`), read first; any other\n"
         "argument given (not None) overrides it. The CLI's warnings (a gravity the floor contradicts, depths outside what RGB-D\n"
         "cameras read, colour not registered) come as UserWarnings.";
-    py::class_<Detector>(m, "Detector",
-                         (std::string("Detection over a stream of clouds (reuses its buffers from frame to frame).\n") +
-                          options_doc)
-                             .c_str())
+    py::class_<Detector>(
+        m, "Detector",
+        (std::string("Detection over a stream of clouds (reuses its buffers from frame to frame).\n") + options_doc)
+            .c_str())
         .def(py::init([](const py::object &projector, const py::object &aspect, const py::object &gravity,
                          const py::object &method, const py::object &hull, const py::object &seed,
                          const py::object &min_width, const py::object &min_area, const py::object &suitability,
@@ -298,20 +309,25 @@ PYBIND11_MODULE(projsurf, m) {
              "suitability"_a = py::none(), "config"_a = py::none())
         .def(
             "detect",
-            [](Detector &d, const py::object &points, const py::object &colour, const py::kwargs &extra) {
+            [](Detector &d, const py::object &points, const py::object &colour, const py::object &explain,
+               const py::object &overlay, const py::kwargs &extra) {
                 // Settings belong to the Detector; a keyword here is a mistake, said in one line.
                 for (const auto &item : extra)
-                    throw InputError(py::str(item.first).cast<std::string>(),
-                                     "unknown keyword argument (Detector.detect takes points and colour=; the "
-                                     "settings go to Detector(...))");
-                return d.detect(points, colour);
+                    throw InputError(
+                        py::str(item.first).cast<std::string>(),
+                        "unknown keyword argument (Detector.detect takes points, colour=, explain= and overlay=; the "
+                        "settings go to Detector(...))");
+                return d.detect(points, colour, explain, overlay);
             },
-            "points"_a, py::kw_only(), "colour"_a = py::none(),
-             "points: (H, W, 3) or (N, 3) array (camera frame, m; NaN = no reading) or an object with .points.\n"
-             "colour: optional (H, W, 3) uint8 B, G, R image registered to (H, W) points: the surface's suitability\n"
-             "(docs/suitability.md); checked as `detect --rgb` checks it: another type or size is an InputError,\n"
-             "colour whose edges do not fit the depth's (or with unorganized points) is not used, with a\n"
-             "UserWarning. Returns the detection as a dict with the keys of the detection JSON.")
+            "points"_a, py::kw_only(), "colour"_a = py::none(), "explain"_a = false, "overlay"_a = false,
+            "points: (H, W, 3) or (N, 3) array (camera frame, m; NaN = no reading) or an object with .points.\n"
+            "colour: optional (H, W, 3) uint8 B, G, R image registered to (H, W) points: the surface's suitability\n"
+            "(docs/suitability.md); checked as `detect --rgb` checks it: another type or size is an InputError,\n"
+            "colour whose edges do not fit the depth's (or with unorganized points) is not used, with a\n"
+            "UserWarning. explain: True adds the key candidates, every vertical plane considered with its\n"
+            "distance, size and why it lost (`detect --explain`, docs/interface.md); overlay: True adds the key\n"
+            "overlay, `detect --overlay`'s picture as an (H, W, 3) uint8 B, G, R array (with explain, the\n"
+            "candidates outlined). Returns the detection as a dict with the keys of the detection JSON.")
         .def_property_readonly("projector", &Detector::projector);
 
     m.def(
@@ -319,20 +335,22 @@ PYBIND11_MODULE(projsurf, m) {
         [](const py::object &points, const py::object &projector, const py::object &aspect, const py::object &gravity,
            const py::object &method, const py::object &hull, const py::object &seed, const py::object &min_width,
            const py::object &min_area, const py::object &colour, const py::object &suitability,
-           const py::object &config, const py::kwargs &settings) {
+           const py::object &config, const py::object &explain, const py::object &overlay, const py::kwargs &settings) {
             Detector detector(projectorArgument(projector, "projector"),
                               detectorOptions({aspect, gravity, method, hull, seed, min_width, min_area, suitability,
                                                config, settings}));
-            return detector.detect(points, colour);
+            return detector.detect(points, colour, explain, overlay);
         },
         "points"_a, "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(),
         "method"_a = py::none(), "hull"_a = py::none(), "seed"_a = py::none(), "min_width"_a = py::none(),
         "min_area"_a = py::none(), "colour"_a = py::none(), "suitability"_a = py::none(), "config"_a = py::none(),
+        "explain"_a = false, "overlay"_a = false,
         (std::string("The biggest upright rectangle of the aspect ratio that the projector can light on a vertical\n"
                      "surface: `projsurf detect`. points and colour as for Detector.detect.\n") +
          options_doc +
-         "\nReturns a dict: found, reason, method, plane, rectangle, surface_check, suitability (with colour),\n"
-         "timing_ms, gravity (numpy arrays for vectors). Raises InputError for bad points or options.")
+         "\nexplain, overlay: as for Detector.detect. Returns a dict: found, reason, method, plane, rectangle,\n"
+         "surface_check, suitability (with colour), timing_ms, gravity (numpy arrays for vectors), candidates\n"
+         "(with explain), overlay (with overlay). Raises InputError for bad points or options.")
             .c_str());
 
     m.def(

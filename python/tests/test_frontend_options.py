@@ -166,3 +166,39 @@ def test_the_clis_pipeline_settings_under_the_same_names(projector):
         projsurf.detect(points, projector, aspcet="16:9")
     with pytest.raises(projsurf.InputError, match=r"^max_planes: unknown keyword argument \(Detector.detect takes points"):
         projsurf.Detector(projector).detect(points, max_planes=3)
+
+
+def test_explain_as_the_cli_gives_it(projector):
+    points, rgb = frame()
+    calib = os.path.join(FRAME, "calib.yaml")
+    det = projsurf.detect(points, projsurf.read_calibration(calib), colour=rgb, gravity="auto", aspect=(16, 9),
+                          explain=True)
+    cli = json.loads(run_cli("detect", "--depth", os.path.join(FRAME, "depth.png"), "--camera",
+                             os.path.join(FRAME, "camera.yaml"), "--rgb", os.path.join(FRAME, "rgb.png"), "--calib",
+                             calib, "--gravity", "auto", "--aspect", "16:9", "--explain").stdout)
+    assert det["found"] and cli["found"]
+    # The same list, by the same serialiser: every plane, its verdict and its reason in words.
+    assert det["candidates"] == cli["candidates"]
+    assert [c["verdict"] for c in det["candidates"]].count("chosen") == 1
+    assert "candidates" not in projsurf.detect(points, projector, gravity="auto")
+    # Too small, in Python's spelling of the option, with digits that show the difference.
+    small = projsurf.detect(points, projector, colour=rgb, gravity="auto", aspect="16:9", min_width=0.2,
+                            explain=True)
+    assert not small["found"]
+    reasons = [c["reason"] for c in small["candidates"] if c["verdict"] == "too_small"]
+    assert reasons and reasons[0].endswith("is narrower than min_width 0.200 m"), small["candidates"]
+    with pytest.raises(projsurf.InputError, match=r"^explain: must be True or False$"):
+        projsurf.detect(points, projector, explain="yes")
+
+
+def test_overlay_as_the_cli_draws_it(projector, tmp_path):
+    points, rgb = frame()
+    png = str(tmp_path / "overlay.png")
+    run_cli("detect", "--depth", os.path.join(FRAME, "depth.png"), "--camera", os.path.join(FRAME, "camera.yaml"),
+            "--rgb", os.path.join(FRAME, "rgb.png"), "--calib", EXAMPLE_CALIB, "--explain", "--overlay", png)
+    cli = projsurf.read_image(png)
+    det = projsurf.detect(points, projector, colour=rgb, explain=True, overlay=True)
+    assert det["overlay"].dtype == np.uint8 and det["overlay"].shape == cli.shape
+    plain = projsurf.Detector(projector).detect(points, colour=rgb, overlay=True)["overlay"]
+    assert plain.shape[1] == cli.shape[1] and plain.shape[0] < cli.shape[0]  # no reasons below the picture
+    assert "overlay" not in projsurf.detect(points, projector)

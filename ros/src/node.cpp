@@ -9,6 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "conversions.hpp"
+#include "projsurf/frontend/candidates_json.hpp"
 #include "projsurf/frontend/detect_answer.hpp"
 #include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
@@ -304,8 +305,10 @@ ProjsurfNode::Outcome ProjsurfNode::detectOnValidCloud() {
     if (!tf_problem.empty()) ROS_WARN("projsurf_node: %s", tf_problem.c_str());
     Detection det = detector_.detect(cloud_, gravity);
     frontend::enforceMinimumSize(det, params_.minimum, "~min_width", "~min_area");
+    nlohmann::json result = detectionToJson(det, detector_.config(), &params_.projector);
+    if (params_.explain) result["candidates"] = frontend::candidatesToJson(det);
     std_msgs::String json;
-    json.data = detectionToJson(det, detector_.config(), &params_.projector).dump();
+    json.data = result.dump();
     result_pub_.publish(json);
     markers_pub_.publish(toMarkers(det, nullptr, cloud_header_, params_.marker_ns));
     if (!det.found) {
@@ -399,6 +402,7 @@ void ProjsurfNode::runContinuous() {
     const double frame_ms = (ros::WallTime::now() - start).toSec() * 1e3 + colour_ms_;
 
     nlohmann::json j = detectionToJson(det, detector_.config(), &params_.projector);
+    if (params_.explain) j["candidates"] = frontend::candidatesToJson(det);
     j["continuous"] = {{"event", toString(o.event)},
                        {"showing", o.has_target && fb.problem.empty()},
                        {"stamp", header.stamp.toSec()},

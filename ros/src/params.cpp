@@ -96,6 +96,7 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
     if (!method.empty()) c.method = frontend::parseMethod(name(pnh, "method"), method);
     if (!hull.empty()) c.paper.hull = frontend::parseHull(name(pnh, "hull"), hull);
     get(pnh, "use_colour", p.use_colour);
+    get(pnh, "explain", p.explain);
     if (pnh.hasParam("suitability")) {
         std::string mode;
         get(pnh, "suitability", mode);

@@ -22,6 +22,7 @@ struct NodeParams {
     /// ~use_colour: pair each cloud with the registered colour image of its stamp (topic
     /// `rgb/image_rect_color`) for the surface suitability (issue 15); false = depth only.
     bool use_colour = false;
+    bool explain = false;  ///< ~explain: ~result carries `candidates`, every plane considered and why it lost
     /// ~suitability was given (off | avoid | prefer, the CLI's --suitability; stored in
     /// detector.suitability.mode, default avoid).
     bool suitability_given = false;

@@ -10,14 +10,15 @@
 #include "cli/commands.hpp"
 #include "projsurf/detection/gravity.hpp"
 #include "projsurf/frontend/aspect.hpp"
+#include "projsurf/frontend/candidates_json.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/depth_range_check.hpp"
-#include "projsurf/frontend/gravity_sanity.hpp"
 #include "projsurf/frontend/detect_answer.hpp"
+#include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/detector_config_file.hpp"
 #include "projsurf/frontend/detector_config_keys.hpp"
-#include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
+#include "projsurf/frontend/gravity_sanity.hpp"
 #include "projsurf/frontend/method_settings.hpp"
 #include "projsurf/frontend/method_words.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
@@ -42,7 +43,7 @@ struct DetectOptions {
     std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity, method = "default", hull = "concave",
                                                                                   bag, topic, info_topic, suitability,
         config_file;
-    bool print_config = false;
+    bool print_config = false, explain = false;
     DetectorConfig config;  ///< the pipeline flags' values (used where a flag was given)
     double min_width = -1.0, min_area = -1.0;  ///< m, m^2; < 0: the method's default (frontend/minimum_size.hpp)
 };
@@ -138,6 +139,7 @@ void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &
         const Detection det = frontend::detectAnswer(detector, cloud, down, minimum,
                                                      o.bag + ":" + topic.topic + "#" + std::to_string(info.index));
         nlohmann::json j = detectionToJson(det, cfg, &projector);
+        if (o.explain) j["candidates"] = frontend::candidatesToJson(det);
         j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", topic.topic}};
         found += det.found ? 1 : 0;
         if (o.json.empty())
@@ -255,16 +257,19 @@ void run(const DetectOptions &o, const CLI::App &sub) {
         std::fprintf(stderr, "projsurf: warning: %s\n", w->c_str());
     SurfaceDetector detector(projector, cfg);
     const Detection det = frontend::detectAnswer(detector, cloud, gravity, minimum, o.cloud.empty() ? o.depth : o.cloud);
-    const nlohmann::json j = detectionToJson(det, cfg, &projector);
+    nlohmann::json j = detectionToJson(det, cfg, &projector);
+    if (o.explain) j["candidates"] = frontend::candidatesToJson(det);
     // Both outputs, or neither: written beside their targets, renamed once both are there.
     OutputGroup outputs;
     if (!o.json.empty()) outputs.addFile(o.json, j.dump(2) + "\n");
-    if (!o.overlay.empty()) outputs.addImage(o.overlay, renderOverlay(cloud, det, cfg, camera.get(), color));
+    if (!o.overlay.empty()) outputs.addImage(o.overlay, renderOverlay(cloud, det, cfg, camera.get(), color, o.explain));
     outputs.commit();
     if (o.json.empty()) {
         std::cout << j.dump(2) << "\n";
     } else {
         std::printf("%s\n", frontend::detectionSummary(det).c_str());
+        if (o.explain)
+            for (const std::string &line : frontend::candidateLines(det)) std::printf("%s\n", line.c_str());
     }
 }
 
@@ -293,6 +298,9 @@ void addDetectCommand(CLI::App &app) {
     sub->add_option("--aspect", o->aspect, "Picture aspect ratio W:H (default: the framebuffer's)");
     sub->add_option("--json", o->json, "Write the detection JSON here (else it goes to stdout)");
     sub->add_option("--overlay", o->overlay, "Write a picture of what was detected here (PNG)");
+    sub->add_flag("--explain", o->explain,
+                  "Say why the picture is where it is: every vertical plane considered, its distance and size, and "
+                  "why it lost (JSON key candidates, one line each after the summary, outlined on the overlay)");
     sub->add_option("--gravity", o->gravity,
                     "Gravity in the camera frame gx,gy,gz (default 0,1,0), or 'auto' (from the floor)");
     sub->add_option("--method", o->method, "default | paper (the paper's steps, for reproduction)");

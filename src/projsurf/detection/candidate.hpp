@@ -23,6 +23,8 @@ struct Candidate {
     cv::Mat cell_state;  ///< CV_8U CellState (default method)
     Rectangle rectangle;
     std::vector<std::vector<Eigen::Vector3d>> outlines;
+    CandidateVerdict verdict = CandidateVerdict::NotExamined;  ///< what became of it (set where it is dropped)
+    SurfaceCheckResult check;                                  ///< CheckRejected: its check
 };
 
 /// The candidate's intermediate results, as a detection reports them.
@@ -37,5 +39,10 @@ inline void describeCandidate(const Candidate &c, DetectionDebug &debug) {
     debug.grid_cell = c.raster.cell;
     debug.inliers = c.inlier_indices;
 }
+
+/// What became of the candidate, as a detection reports it (`chosen`: it is the answer's).
+/// `points`: what its inlier indices index (the cloud's points, or the paper's voxels);
+/// `bound`: m^2, the largest rectangle its extent in the beam could hold (0: not known).
+CandidateOutcome outcomeOf(const Candidate &c, const std::vector<Point> &points, bool chosen, double bound = 0.0);
 
 }  // namespace projsurf

@@ -7,10 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "projsurf/detection/candidate_outcome.hpp"
+#include "projsurf/detection/default/wall_shape.hpp"
+#include "projsurf/detection/surface_check.hpp"
 #include "projsurf/types/plane.hpp"
 #include "projsurf/types/plane_frame.hpp"
-#include "projsurf/detection/surface_check.hpp"
-#include "projsurf/detection/default/wall_shape.hpp"
 
 namespace projsurf {
 
@@ -52,6 +53,7 @@ struct Detection {
     SuitabilityReport suitability;
     Eigen::Vector3d gravity = Eigen::Vector3d::UnitY();  ///< the down direction used (camera frame, unit)
     std::map<std::string, double> timing_ms;             ///< "total" and per stage
+    std::vector<CandidateOutcome> candidates;            ///< every plane considered and what became of it
     DetectionDebug debug;
 };
 

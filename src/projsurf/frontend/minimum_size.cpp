@@ -1,6 +1,6 @@
 #include "projsurf/frontend/minimum_size.hpp"
 
-#include <cstdio>
+#include "projsurf/types/formatted.hpp"
 
 namespace projsurf::frontend {
 
@@ -9,21 +9,43 @@ MinimumSize defaultMinimumSize(Method method) {
     return MinimumSize{};
 }
 
+namespace {
+
+/// m: a rectangle this much under the minimum is the minimum, rounded (a width of 15 raster
+/// cells computes as 0.15 - 1e-10 m).
+constexpr double kRounding = 1e-6;
+
+}  // namespace
+
+std::string belowMinimum(const Rectangle &r, const MinimumSize &minimum, const std::string &subject,
+                         const std::string &width_option, const std::string &area_option) {
+    if (r.width < minimum.width - kRounding) {
+        const auto [width, limit] = limitPair(r.width, minimum.width);
+        return subject + ", " + width + " x " + formatted("%.3f", r.height) + " m, is narrower than " + width_option +
+               " " + limit + " m";
+    }
+    if (r.area() < minimum.area - kRounding * kRounding) {
+        const auto [area, limit] = limitPair(r.area(), minimum.area, 4);
+        return subject + ", " + formatted("%.3f", r.width) + " x " + formatted("%.3f", r.height) + " m (" + area +
+               " m^2), is smaller than " + area_option + " " + limit + " m^2";
+    }
+    return "";
+}
+
 bool enforceMinimumSize(Detection &det, const MinimumSize &minimum, const std::string &width_option,
                         const std::string &area_option) {
+    for (CandidateOutcome &o : det.candidates) {
+        if (o.verdict != CandidateVerdict::Chosen && o.verdict != CandidateVerdict::SmallerRectangle) continue;
+        const std::string why = belowMinimum(o.rectangle, minimum, "its rectangle", width_option, area_option);
+        if (why.empty()) continue;
+        o.verdict = CandidateVerdict::TooSmall;
+        o.detail = "too small: " + why;
+    }
     if (!det.found) return false;
-    const Rectangle &r = det.rectangle;
-    char buf[320];
-    if (r.width < minimum.width)
-        std::snprintf(buf, sizeof buf, "the largest area, %.3f x %.3f m, is narrower than %s %.3f m", r.width, r.height,
-                      width_option.c_str(), minimum.width);
-    else if (r.area() < minimum.area)
-        std::snprintf(buf, sizeof buf, "the largest area, %.3f x %.3f m (%.4f m^2), is smaller than %s %.4f m^2",
-                      r.width, r.height, r.area(), area_option.c_str(), minimum.area);
-    else
-        return false;
+    const std::string why = belowMinimum(det.rectangle, minimum, "the largest area", width_option, area_option);
+    if (why.empty()) return false;
     det.found = false;
-    det.reason = buf;
+    det.reason = why;
     return true;
 }
 

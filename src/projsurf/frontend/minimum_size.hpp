@@ -25,9 +25,15 @@ struct MinimumSize {
 /// steps, which reproduce the paper (section 3.2 has no minimum).
 MinimumSize defaultMinimumSize(Method method);
 
+/// Why `r` is below `minimum`, as "<subject>, 0.148 x 0.083 m, is narrower than --min-width
+/// 0.150 m" (sizes with digits enough to differ from the limit); empty when it is not.
+std::string belowMinimum(const Rectangle &r, const MinimumSize &minimum, const std::string &subject,
+                         const std::string &width_option, const std::string &area_option);
+
 /// A found detection below `minimum` becomes found = false with a reason that names the size
 /// and the option (`width_option`, `area_option`: how this front end spells them). Returns
-/// true when it did.
+/// true when it did. Every candidate whose rectangle is below it becomes TooSmall, with the
+/// sentence, whether or not the detection was found.
 bool enforceMinimumSize(Detection &det, const MinimumSize &minimum, const std::string &width_option,
                         const std::string &area_option);
 

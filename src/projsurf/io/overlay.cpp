@@ -11,13 +11,15 @@
 #include "projsurf/detection/default/observed_free_space.hpp"
 
 #include "projsurf/io/limits.hpp"
+#include "projsurf/types/formatted.hpp"
 
 namespace projsurf {
 namespace {
 
 const cv::Scalar kInlier(80, 200, 80), kFree(0, 220, 255), kWorkspace(255, 160, 40), kRect(255, 0, 255),
     kOutlier(40, 40, 255), kText(255, 255, 255), kInFront(0, 130, 255), kSeenThrough(220, 80, 200),
-    kNoReading(150, 150, 150), kGlare(255, 255, 160), kDark(90, 40, 20), kTextured(0, 60, 160), kSaturated(160, 0, 90);
+    kNoReading(150, 150, 150), kGlare(255, 255, 160), kDark(90, 40, 20), kTextured(0, 60, 160), kSaturated(160, 0, 90),
+    kCandidate(255, 255, 0);
 
 /// Where camera-frame points land in the picture.
 struct View {
@@ -62,10 +64,54 @@ void paintCells(cv::Mat &img, const View &view, const DetectionDebug &debug, Cel
     cv::addWeighted(layer, 0.45, img, 0.55, 0.0, img);
 }
 
+/// The legend's text size for a picture `cols` wide.
+double legendScale(int cols) { return std::max(0.45, cols / 1700.0); }
+
+/// `text` broken at spaces into lines that fit `cols` pixels in the legend's font.
+void wrapLine(const std::string &text, int cols, std::vector<std::string> &lines) {
+    const double fs = legendScale(cols);
+    std::string line, word;
+    auto fits = [&](const std::string &s) {
+        int base = 0;
+        return cv::getTextSize(s, cv::FONT_HERSHEY_SIMPLEX, fs, 1, &base).width <= cols - 20;
+    };
+    std::size_t at = 0;
+    while (at <= text.size()) {
+        const std::size_t end = std::min(text.find(' ', at), text.size());
+        word = text.substr(at, end - at);
+        if (!line.empty() && !fits(line + " " + word)) {
+            lines.push_back(line);
+            line = "    " + word;
+        } else {
+            line += (line.empty() ? "" : " ") + word;
+        }
+        at = end + 1;
+    }
+    if (!line.empty()) lines.push_back(line);
+}
+
+/// --explain: each candidate's seen extent outlined (the losers) and numbered at its centre,
+/// its outcome in words as status lines.
+void drawCandidates(cv::Mat &img, const View &view, const Detection &det, std::vector<std::string> &lines) {
+    const Rectangle winner = winningRectangle(det.candidates, det.rectangle);
+    for (std::size_t k = 0; k < det.candidates.size(); ++k) {
+        const CandidateOutcome &o = det.candidates[k];
+        const bool chosen = o.verdict == CandidateVerdict::Chosen;
+        const std::string tag = "#" + std::to_string(k + 1);
+        if (!chosen) polyline(img, view, {o.seen.begin(), o.seen.end()}, true, kCandidate, 2);
+        const cv::Point2f at = view(0.25 * (o.seen[0] + o.seen[1] + o.seen[2] + o.seen[3]));  // its centre
+        const cv::Point label(std::clamp(cvRound(at.x) - 12, 4, std::max(4, img.cols - 40)),
+                              std::clamp(cvRound(at.y) + 10, 24, std::max(24, img.rows - 6)));
+        cv::putText(img, tag, label, cv::FONT_HERSHEY_SIMPLEX, 0.8, chosen ? kRect : kCandidate, 2, cv::LINE_AA);
+        wrapLine(tag + " " + formatted("%.2f m away", std::abs(o.plane.d)) + ": " + outcomeWords(o, winner), img.cols,
+                 lines);
+    }
+}
+
 /// Appends a panel below the picture: status lines, then the colour key in two columns.
 cv::Mat withLegend(const cv::Mat &img, const std::vector<std::pair<cv::Scalar, std::string>> &items,
                    const std::vector<std::string> &lines) {
-    const double fs = std::max(0.45, img.cols / 1700.0);
+    const double fs = legendScale(img.cols);
     const int lh = static_cast<int>(std::round(26 * fs / 0.5));
     const int key_rows = static_cast<int>((items.size() + 1) / 2);
     cv::Mat out(img.rows + lh * static_cast<int>(lines.size() + key_rows) + lh / 2, img.cols, CV_8UC3,
@@ -104,7 +150,7 @@ CameraIntrinsics estimateIntrinsics(const Cloud &cloud) {
 }
 
 cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorConfig &config,
-                      const CameraIntrinsics *camera, const cv::Mat &color) {
+                      const CameraIntrinsics *camera, const cv::Mat &color, bool explain) {
     View view;
     if (camera)
         view.cam = *camera;
@@ -205,6 +251,7 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
                   config.method == Method::Paper ? "paper" : "default",
                   det.timing_ms.count("total") ? det.timing_ms.at("total") : 0.0);
     lines.emplace_back(line);
+    if (explain) drawCandidates(img, view, det, lines);
     std::vector<std::pair<cv::Scalar, std::string>> key{
         {kInlier, "wall points (on the wall as fitted)"},
         {kFree, config.method == Method::Paper ? "plane hull" : "free space on the wall"},
@@ -218,6 +265,7 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
         for (const auto &[state, colour, text] : unfit)
             if (cv::countNonZero(det.debug.cell_state == static_cast<int>(state)) > 0) key.push_back({colour, text});
     }
+    if (explain) key.push_back({kCandidate, "candidate planes as seen (#: see above)"});
     return withLegend(img, key, lines);
 }
 

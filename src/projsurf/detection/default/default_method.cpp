@@ -433,6 +433,9 @@ std::vector<int> frameCandidates(const Cloud &cloud, const CloudSample &s, const
         candidates[k].beyond_opening = beyondOpening(cloud, s, cfg, candidates[k], candidates);
         if (!candidates[k].beyond_opening && frameCandidate(cloud, s, projector, cfg, aspect, candidates[k]))
             usable.push_back(k);
+        else
+            candidates[k].verdict =
+                candidates[k].beyond_opening ? CandidateVerdict::BeyondOpening : CandidateVerdict::NotReached;
     }
     std::sort(usable.begin(), usable.end(), [&](int a, int b) { return candidates[a].bound > candidates[b].bound; });
     if (scratch.observations.size() < candidates.size()) scratch.observations.resize(candidates.size());
@@ -468,6 +471,7 @@ Choice chooseCandidate(const Cloud &cloud, const CloudSample &s, const Projector
         const bool framed = !object && frameCandidate(cloud, s, projector, cfg, aspect, c);
         time.lap("wall_shape");
         if (object) r.objects.push_back(k);
+        c.verdict = object ? CandidateVerdict::Object : CandidateVerdict::NotReached;
         if (!framed) continue;
         observeFreeSpace(cloud, scratch, projector, cfg, c);
         time.lap("free_space");
@@ -475,6 +479,8 @@ Choice chooseCandidate(const Cloud &cloud, const CloudSample &s, const Projector
             // Colour only takes cells away: a wall whose rectangle without it is no bigger than
             // the one accepted is not judged.
             if (r.chosen && !(placeRectangle(aspect, c) && c.rectangle.area() > r.chosen->rectangle.area())) {
+                c.verdict =
+                    c.rectangle.area() > 0.0 ? CandidateVerdict::SmallerRectangle : CandidateVerdict::NoFreeArea;
                 time.lap("rectangle");
                 continue;
             }
@@ -483,6 +489,7 @@ Choice chooseCandidate(const Cloud &cloud, const CloudSample &s, const Projector
         }
         const bool ok = placeSuitableRectangle(cfg, aspect, c);
         time.lap("rectangle");
+        c.verdict = ok ? CandidateVerdict::SmallerRectangle : CandidateVerdict::NoFreeArea;
         if (!ok) continue;
         r.placed.push_back(k);
         if (r.chosen && c.rectangle.area() <= r.chosen->rectangle.area()) continue;
@@ -492,6 +499,10 @@ Choice chooseCandidate(const Cloud &cloud, const CloudSample &s, const Projector
             r.checked = &c;
         }
         if (result.accepted) r.chosen = &c;
+        if (!result.accepted) {
+            c.verdict = CandidateVerdict::CheckRejected;
+            c.check = result;
+        }
         time.lap("surface_check");
     }
     if (r.checked) r.check.outlier_indices = checkOutliers(s, scratch.grid, *r.checked);
@@ -562,7 +573,9 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
     // 4. Shape, free space, colour, rectangle and check of each, until none could beat the best.
     Choice choice = chooseCandidate(cloud, sample, projector, cfg, gravity, aspect, usable, candidates, scratch, time);
 
-    // 5. The answer, and the plane shown with it.
+    // 5. The answer, the plane shown with it, and what became of every candidate.
+    for (const PlaneCandidate &c : candidates)
+        det.candidates.push_back(outcomeOf(c, cloud.points, &c == choice.chosen, c.bound));
     describeAnswer(cfg, candidates, usable, std::move(choice), det);
     return time.finish();
 }

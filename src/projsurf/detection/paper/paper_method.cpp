@@ -87,6 +87,11 @@ Detection detectPaper(const Cloud &cloud, const Projector &projector, const Dete
     det.plane = c.plane;
     det.inliers = c.inliers;
     det.orientation_deg = orientationDeg(c.plane);
+    auto outcome = [&](CandidateVerdict v) {  // what became of the one plane
+        c.verdict = v;
+        det.candidates = {outcomeOf(c, voxels, v == CandidateVerdict::Chosen)};
+        setSeenExtent(voxels, found->inliers, c.frame, det.candidates.front());
+    };
 
     std::vector<Eigen::Vector2d> uv;
     for (int i : found->inliers) uv.push_back(c.frame.toPlane(voxels[i].cast<double>()));
@@ -96,7 +101,10 @@ Detection detectPaper(const Cloud &cloud, const Projector &projector, const Dete
     // The workspace from the Euler-Rodrigues corner rays (eqs. 5-6).
     const auto rays = paperCornerRays(projector.direction, projector.fov_h, projector.fov_v);
     const auto footprint = footprintOnPlane(c.plane, c.frame, projector.origin, rays);
-    if (!footprint) return time.fail("the projector workspace does not reach the plane");
+    if (!footprint) {
+        outcome(CandidateVerdict::NotReached);
+        return time.fail("the projector workspace does not reach the plane");
+    }
     c.footprint = *footprint;
     rasteriseFreeSpace(uv, hull_edges, cfg.paper, c);
     time.lap("free_space");
@@ -108,7 +116,10 @@ Detection detectPaper(const Cloud &cloud, const Projector &projector, const Dete
     if (rect) c.rectangle = *rect;
     describeCandidate(c, det.debug);
     det.debug.candidates = {c.plane};
-    if (!rect) return time.fail("no free area on the plane for the picture");
+    if (!rect) {
+        outcome(CandidateVerdict::NoFreeArea);
+        return time.fail("no free area on the plane for the picture");
+    }
     det.rectangle = c.rectangle;
 
     // 3.2.3: the surface checker on the original cloud.
@@ -117,6 +128,8 @@ Detection detectPaper(const Cloud &cloud, const Projector &projector, const Dete
     time.lap("surface_check");
     det.debug.outliers = det.surface_check.outlier_indices;
     det.found = det.surface_check.accepted;
+    c.check = det.surface_check;
+    outcome(det.found ? CandidateVerdict::Chosen : CandidateVerdict::CheckRejected);
     if (!det.found)
         det.reason = "surface check rejected the area: " + std::to_string(det.surface_check.outliers) + " outliers > " +
                      std::to_string(cfg.paper.max_outliers);
