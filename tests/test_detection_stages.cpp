@@ -5,18 +5,19 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numeric>
 #include <random>
 #include <tuple>
 
-#include "projsurf/detection/image_boxes.hpp"
 #include "projsurf/detection/default/observed_free_space.hpp"
 #include "projsurf/detection/default/planar_regions.hpp"
+#include "projsurf/detection/default/wall_shape.hpp"
+#include "projsurf/detection/image_boxes.hpp"
 #include "projsurf/detection/point_sampling.hpp"
 #include "projsurf/detection/projector_footprint.hpp"
 #include "projsurf/detection/rectangle_growth.hpp"
 #include "projsurf/detection/vertical_planes.hpp"
 #include "projsurf/detection/virtual_depth_image.hpp"
-#include "projsurf/detection/default/wall_shape.hpp"
 
 using namespace projsurf;
 
@@ -338,27 +339,76 @@ TEST(PlanarRegions, FindsEachWallOfACornerOnceAndNeverTheFloorWhateverTheOrder) 
     EXPECT_GT(regions[0].points, regions[1].points);  // biggest first
 }
 
-TEST(VirtualDepthImage, AShuffledFrameComesBackAsTheImageItWas) {
-    // A 640x480 pinhole image of a wall at 2 m with a box in front, as a shuffled point list:
-    // the virtual image has about the camera's focal length, every pixel holds a point of the
-    // input (the nearest of those that fall on it) and says which.
+namespace {
+
+/// A 640x480 pinhole image of a wall at 2 m with a box in front, 10 % of its pixels without a
+/// reading (spread out), as a shuffled point list; `jitter` px moves each ray off its pixel
+/// (uniform, a cloud on no pixel grid). `pixel_of` gets each point's pixel (row-major).
+Cloud shuffledFrame(double jitter, std::vector<int> *pixel_of = nullptr) {
     const double f = 525.0, cx = 319.5, cy = 239.5;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> off(-jitter, jitter);
     Cloud loose;
+    std::vector<int> pixels;
     for (int v = 0; v < 480; ++v)
         for (int u = 0; u < 640; ++u) {
-            const double x = (u - cx) / f, y = (v - cy) / f;
+            if ((u * 7 + v * 3) % 10 == 0) continue;
+            const double x = (u + off(rng) - cx) / f, y = (v + off(rng) - cy) / f;
             const bool box = u > 250 && u < 350 && v > 300 && v < 420;
-            if ((u * 7 + v * 3) % 10 == 0) continue;  // 10 % holes, spread out
             const double z = box ? 1.5 : 2.0;
             loose.points.emplace_back(static_cast<float>(x * z), static_cast<float>(y * z), static_cast<float>(z));
+            pixels.push_back(v * 640 + u);
         }
-    std::mt19937 rng(5);
-    std::shuffle(loose.points.begin(), loose.points.end(), rng);
-    loose.width = static_cast<int>(loose.points.size());
+    std::vector<int> order(loose.points.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::shuffle(order.begin(), order.end(), rng);
+    Cloud out;
+    for (int i : order) out.points.push_back(loose.points[static_cast<std::size_t>(i)]);
+    out.width = static_cast<int>(out.points.size());
+    if (pixel_of)
+        for (int i : order) pixel_of->push_back(pixels[static_cast<std::size_t>(i)]);
+    return out;
+}
+
+}  // namespace
+
+TEST(VirtualDepthImage, AShuffledFrameComesBackAsTheImageItWas) {
+    // The points of a depth image lie on its pixel grid (x/z on a lattice of step 1 / fx): the
+    // virtual image is that image, every point on the pixel it was read at.
+    std::vector<int> pixel_of;
+    const Cloud loose = shuffledFrame(0.0, &pixel_of);
+    const auto image = virtualDepthImage(loose, VirtualImageConfig{});
+    ASSERT_TRUE(image);
+    ASSERT_EQ(image->cloud.width, 640);
+    ASSERT_EQ(image->cloud.height, 480);
+    for (std::size_t i = 0; i < loose.points.size(); ++i) {
+        const auto at = static_cast<std::size_t>(pixel_of[i]);
+        ASSERT_EQ(image->source[at], static_cast<int>(i)) << "pixel " << at;
+        EXPECT_EQ(image->cloud.points[at], loose.points[i]);
+    }
+    int holes = 0;
+    for (std::size_t at = 0; at < image->cloud.points.size(); ++at) holes += image->source[at] < 0;
+    EXPECT_EQ(holes, 640 * 480 - static_cast<int>(loose.points.size()));
+    // Cropped (the first 37 columns and 11 rows gone): the grid starts at the first column held.
+    Cloud cropped;
+    for (std::size_t i = 0; i < loose.points.size(); ++i)
+        if (pixel_of[i] % 640 >= 37 && pixel_of[i] / 640 >= 11) cropped.points.push_back(loose.points[i]);
+    cropped.width = static_cast<int>(cropped.points.size());
+    const auto part = virtualDepthImage(cropped, VirtualImageConfig{});
+    ASSERT_TRUE(part);
+    EXPECT_EQ(part->cloud.width, 640 - 37);
+    EXPECT_EQ(part->cloud.height, 480 - 11);
+}
+
+TEST(VirtualDepthImage, ACloudOnNoPixelGridGetsOneAtItsOwnDensity) {
+    // Rays moved off their pixels by up to half a pixel (another viewpoint, a voxel grid): the
+    // virtual image has about the camera's focal length (its density: sqrt(0.9) of it with 10 %
+    // of the readings missing), every pixel holds a point of the input (the nearest of those
+    // that fall on it) and says which.
+    const Cloud loose = shuffledFrame(0.5);
     const auto image = virtualDepthImage(loose, VirtualImageConfig{});
     ASSERT_TRUE(image);
     EXPECT_TRUE(image->cloud.organized());
-    // Spread-out holes thin the points: the focal length follows the density (sqrt(0.9) here).
     EXPECT_NEAR(image->cloud.width, 640 * std::sqrt(0.9), 12);
     EXPECT_NEAR(image->cloud.height, 480 * std::sqrt(0.9), 9);
     int filled = 0;
@@ -372,7 +422,8 @@ TEST(VirtualDepthImage, AShuffledFrameComesBackAsTheImageItWas) {
         ASSERT_GE(image->source[i], 0);
         EXPECT_EQ(p, loose.points[static_cast<std::size_t>(image->source[i])]);
     }
-    EXPECT_GT(filled, 0.8 * loose.points.size());
+    // Rays off a grid fall two to a pixel now and then: most, not all, get one of their own.
+    EXPECT_GT(filled, 0.7 * loose.points.size());
     // Neighbouring pixels are neighbouring rays: along a row, x/z grows by about 1/f per pixel.
     const int row = image->cloud.height / 2;
     std::vector<double> steps;
@@ -383,7 +434,7 @@ TEST(VirtualDepthImage, AShuffledFrameComesBackAsTheImageItWas) {
     }
     ASSERT_GT(steps.size(), 300u);
     std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
-    EXPECT_NEAR(steps[steps.size() / 2] * f, 1.0 / std::sqrt(0.9), 0.1);
+    EXPECT_NEAR(steps[steps.size() / 2] * 525.0, 1.0 / std::sqrt(0.9), 0.15);
 }
 
 TEST(VirtualDepthImage, NotForOrganizedSparseOrStrayClouds) {
@@ -400,8 +451,8 @@ TEST(VirtualDepthImage, NotForOrganizedSparseOrStrayClouds) {
     off.enabled = false;
     Cloud wall;
     for (int i = 0; i < 4000; ++i) wall.points.emplace_back(0.001f * (i % 100), 0.001f * (i / 100), 2.0f);
-    wall.points.emplace_back(1e20f, 0.0f, 1.0f);                            // far off the axis: dropped
-    wall.points.emplace_back(0.0f, 0.0f, -2.0f);                            // behind the camera: dropped
+    wall.points.emplace_back(1e20f, 0.0f, 1.0f);  // far off the axis: dropped
+    wall.points.emplace_back(0.0f, 0.0f, -2.0f);  // behind the camera: dropped
     wall.points.emplace_back(std::numeric_limits<float>::quiet_NaN(), 0.0f, 1.0f);
     wall.width = static_cast<int>(wall.points.size());
     EXPECT_FALSE(virtualDepthImage(wall, off));

@@ -126,3 +126,35 @@ TEST(FaceSurround, AFarStrayPointIsBinnedWithoutOverflow) {
     EXPECT_GT(s.top.positions(), 0);
     EXPECT_FALSE(standsFree(s));
 }
+
+TEST(FaceSurround, OpenAboveABoxButNotAboveAWall) {
+    // The box's top edge looks past its plane onto the wall behind; a wall's top looks at nothing
+    // (the view ends) and a wall at a corner is bounded in front.
+    const CameraIntrinsics camera;
+    const sim::Scenario box = sim::makeScenario("big_obstacle", 2.0, 0.0);
+    const Face front = renderFace(box, camera, "box", makePlane(box.wall.normal, box.wall.d - 0.45));
+    ASSERT_GT(front.points.size(), 1000u);
+    EXPECT_TRUE(openAbove(surroundOf(front, camera)));
+    for (const char *name : {"wall", "corner"}) {
+        const sim::Scenario sc = sim::makeScenario(name, 2.0, 0.0);
+        const Face wall = renderFace(sc, camera, "wall", sc.wall);
+        ASSERT_GT(wall.points.size(), 10000u);
+        EXPECT_FALSE(openAbove(surroundOf(wall, camera))) << name;
+    }
+}
+
+TEST(FaceSurround, AStripOfAWallIsLowerThanAPicture) {
+    // The wall's points in a band of 8 image rows (about 3 cm at 2 m): a face no picture fits
+    // on (FreeStandingRule::min_height); the whole wall is far taller.
+    const CameraIntrinsics camera;
+    const sim::Scenario sc = sim::makeScenario("wall", 2.0, 0.0);
+    Face f = renderFace(sc, camera, "wall", sc.wall);
+    ASSERT_GT(f.points.size(), 10000u);
+    EXPECT_GT(surroundOf(f, camera).height, 1.0);
+    std::vector<int> strip;
+    for (int i : f.points)
+        if (i / camera.width >= 240 && i / camera.width < 248) strip.push_back(i);
+    ASSERT_GT(strip.size(), 1000u);
+    f.points = strip;
+    EXPECT_LT(surroundOf(f, camera).height, FreeStandingRule{}.min_height);
+}

@@ -12,11 +12,12 @@
 namespace projsurf {
 
 struct VirtualImageConfig {
-    bool enabled = true;              ///< false: unorganized clouds take the sequential-RANSAC path
-    double max_half_angle_deg = 70.0; ///< deg off the optical axis kept (the projector's beam is < 30)
-    double fill = 1.0;                ///< pixels per point over the covered view (1: the cloud's own density; the real 7-Scenes frames, fx 585 px, come back at 572-582 px)
-    int max_pixels = 1 << 20;         ///< image size cap (about 1.3 x 1280x800)
-    int min_points = 500;             ///< fewer points in front of the camera: no image
+    bool enabled = true;               ///< false: unorganized clouds take the sequential-RANSAC path
+    double max_half_angle_deg = 70.0;  ///< deg off the optical axis kept (the projector's beam is < 30)
+    double fill =
+        1.0;  ///< clouds on no pixel grid: pixels per point over the covered view (1: the cloud's own density)
+    int max_pixels = 1 << 20;  ///< image size cap (about 1.3 x 1280x800)
+    int min_points = 500;      ///< fewer points in front of the camera: no image
 };
 
 struct VirtualDepthImage {
@@ -24,8 +25,11 @@ struct VirtualDepthImage {
     std::vector<int> source;  ///< per pixel, the index of its point in the input cloud; -1 where none
 };
 
-/// The z-buffered image (nearest point per pixel) at the cloud's own angular density, over the
-/// points' extent (the outermost 0.1 % on each side left out); nullopt when the cloud is
+/// The z-buffered image (nearest point per pixel). A cloud whose points lie on a pinhole's pixel
+/// grid (a depth image's points, shuffled, filtered or cropped: x/z and y/z on lattices of step
+/// 1 / fx and 1 / fy) comes back on that grid, pixel for pixel, from its first to its last
+/// column and row holding a point; any other cloud at its own angular density, over the
+/// points' extent (the outermost 0.1 % on each side left out). Nullopt when the cloud is
 /// organized already, has too few points in front of the camera, or `config.enabled` is false.
 std::optional<VirtualDepthImage> virtualDepthImage(const Cloud &cloud, const VirtualImageConfig &config);
 

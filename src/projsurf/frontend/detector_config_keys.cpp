@@ -164,7 +164,9 @@ std::vector<ConfigKey> objectKeys() {
         PROJSURF_KEY(double, objects.rule.min_past, kShare, "share of those open behind for the edge to be open"),
         PROJSURF_KEY(double, objects.rule.wall_height, kNonNegative, "m, a face this tall and wide serves like a wall"),
         PROJSURF_KEY(double, objects.rule.wall_width, kNonNegative, "m, ... and this wide (wider than a door)"),
-        PROJSURF_KEY(double, objects.opening_depth, kPositive, "m, an enclosed face this far behind a wall is beyond an opening"),
+        PROJSURF_KEY(double, objects.rule.min_height, kNonNegative, "m, a face lower than this is a strip, no surface"),
+        PROJSURF_KEY(double, objects.opening_depth, kPositive,
+                     "m, an enclosed face this far behind a wall is beyond an opening"),
     };
 }
 

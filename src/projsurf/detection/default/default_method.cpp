@@ -7,18 +7,18 @@
 #include <optional>
 #include <random>
 
-#include "projsurf/types/camera.hpp"
-#include "projsurf/detection/image_boxes.hpp"
+#include "projsurf/detection/candidate.hpp"
+#include "projsurf/detection/colour/surface_suitability.hpp"
 #include "projsurf/detection/default/face_surround.hpp"
 #include "projsurf/detection/default/observed_free_space.hpp"
 #include "projsurf/detection/default/planar_regions.hpp"
+#include "projsurf/detection/image_boxes.hpp"
 #include "projsurf/detection/point_sampling.hpp"
 #include "projsurf/detection/rectangle_growth.hpp"
 #include "projsurf/detection/rectangle_search.hpp"
-#include "projsurf/detection/colour/surface_suitability.hpp"
-#include "projsurf/detection/vertical_planes.hpp"
-#include "projsurf/detection/candidate.hpp"
 #include "projsurf/detection/stage_timer.hpp"
+#include "projsurf/detection/vertical_planes.hpp"
+#include "projsurf/types/camera.hpp"
 
 namespace projsurf {
 namespace {
@@ -222,11 +222,52 @@ void shapeWall(const Cloud &cloud, const CloudSample &s, const DetectorConfig &c
     }
 }
 
-/// A face that stands free in the room (an object on the scene, not a wall); depth images only.
-bool standsFree(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cfg, const PlaneCandidate &c) {
+/// The box of the points (their 3rd to 97th percentiles) in the frame's plane coordinates.
+std::pair<Eigen::Vector2d, Eigen::Vector2d> pointBox(const Cloud &cloud, const PlaneFrame &frame,
+                                                     const std::vector<int> &points) {
+    std::vector<double> us, vs;
+    for (int i : points) {
+        const Eigen::Vector2d w = frame.toPlane(cloud.points[i].cast<double>());
+        us.push_back(w.x());
+        vs.push_back(w.y());
+    }
+    const auto at = [](std::vector<double> &v, double q) {
+        const auto k = v.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
+        std::nth_element(v.begin(), k, v.end());
+        return *k;
+    };
+    if (us.empty()) return {Eigen::Vector2d::Zero(), Eigen::Vector2d::Zero()};
+    return {{at(us, 0.03), at(vs, 0.03)}, {at(us, 0.97), at(vs, 0.97)}};
+}
+
+/// A larger wall behind the face, seen above it: a parallel candidate further from the camera
+/// by more than the obstacle margin whose points' box is larger, overlaps the face's sideways
+/// and reaches over its top.
+bool wallBehind(const Cloud &cloud, const DetectorConfig &cfg, const PlaneCandidate &c,
+                const std::vector<PlaneCandidate> &candidates) {
+    const auto [lo, hi] = pointBox(cloud, c.frame, c.inlier_indices);
+    const double reach = cfg.objects.surround.offsets.empty() ? 0.0 : cfg.objects.surround.offsets.front();
+    for (const PlaneCandidate &o : candidates) {
+        if (&o == &c || std::abs(o.plane.normal.dot(c.plane.normal)) < std::cos(cfg.planes.regions.merge_angle))
+            continue;
+        const double z = std::abs(c.plane.d);
+        if (std::abs(o.plane.d) - z <= cfg.tolerance.margin(static_cast<float>(z))) continue;
+        const auto [olo, ohi] = pointBox(cloud, c.frame, o.inlier_indices);
+        if ((ohi - olo).prod() > (hi - lo).prod() && olo.x() < hi.x() && ohi.x() > lo.x() && ohi.y() >= hi.y() + reach)
+            return true;
+    }
+    return false;
+}
+
+/// A face that is an object on the scene, not a wall (depth images only): it stands free in the
+/// room, or it stands before a larger wall that is seen above it, or it is a strip too low to
+/// hold a picture.
+bool objectFace(const Cloud &cloud, const CloudSample &s, const DetectorConfig &cfg, const PlaneCandidate &c,
+                const std::vector<PlaneCandidate> &candidates) {
     if (!cfg.objects.avoid || !s.camera) return false;
     const FaceSurround f = faceSurround(cloud, *s.camera, c.frame, c.inlier_indices, c.tolerance, cfg.objects.surround);
-    return standsFree(f, cfg.objects.rule);
+    if (f.height < cfg.objects.rule.min_height || standsFree(f, cfg.objects.rule)) return true;
+    return openAbove(f, cfg.objects.rule) && wallBehind(cloud, cfg, c, candidates);
 }
 
 /// The bounding box of the candidate's inliers in its plane coordinates (and its area).
@@ -418,10 +459,12 @@ bool beyondOpening(const Cloud &cloud, const CloudSample &s, const DetectorConfi
     if (!cfg.objects.avoid || !s.camera) return false;
     bool nearer_wall = false;
     for (const PlaneCandidate &o : candidates)
-        nearer_wall |= &o != &c && std::abs(o.plane.normal.dot(c.plane.normal)) > std::cos(cfg.planes.regions.merge_angle) &&
+        nearer_wall |= &o != &c &&
+                       std::abs(o.plane.normal.dot(c.plane.normal)) > std::cos(cfg.planes.regions.merge_angle) &&
                        std::abs(c.plane.d) - std::abs(o.plane.d) > cfg.objects.opening_depth;
     if (!nearer_wall) return false;
-    const FaceSurround f = faceSurround(cloud, *s.camera, c.frame, c.inlier_indices, cfg.tolerance, cfg.objects.surround);
+    const FaceSurround f =
+        faceSurround(cloud, *s.camera, c.frame, c.inlier_indices, cfg.tolerance, cfg.objects.surround);
     return enclosedInFront(f, cfg.objects.rule);
 }
 
@@ -467,7 +510,7 @@ Choice chooseCandidate(const Cloud &cloud, const CloudSample &s, const Projector
         // How the wall departs from its plane (the depth camera's bend) and its noise; on that
         // shape its points may reach further, so the raster is laid again.
         shapeWall(cloud, s, cfg, gravity, c);
-        const bool object = standsFree(cloud, s, cfg, c);
+        const bool object = objectFace(cloud, s, cfg, c, candidates);
         const bool framed = !object && frameCandidate(cloud, s, projector, cfg, aspect, c);
         time.lap("wall_shape");
         if (object) r.objects.push_back(k);

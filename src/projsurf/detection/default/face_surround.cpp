@@ -40,9 +40,9 @@ Beyond beyondAt(const Cloud &cloud, const CameraIntrinsics &camera, const Eigen:
 }
 
 /// One position along an edge: the nearest decisive reading among the offsets outward.
-void lookBeyond(const Cloud &cloud, const CameraIntrinsics &camera, const PlaneFrame &frame, const Eigen::Vector2d &edge,
-                const Eigen::Vector2d &outward, const DepthTolerance &tolerance, const FaceSurroundOptions &opt,
-                EdgeView &view) {
+void lookBeyond(const Cloud &cloud, const CameraIntrinsics &camera, const PlaneFrame &frame,
+                const Eigen::Vector2d &edge, const Eigen::Vector2d &outward, const DepthTolerance &tolerance,
+                const FaceSurroundOptions &opt, EdgeView &view) {
     bool on = false;
     for (double d : opt.offsets) {
         const Beyond b = beyondAt(cloud, camera, frame.toCamera(edge + d * outward), tolerance, opt);
@@ -118,7 +118,8 @@ FaceSurround faceSurround(const Cloud &cloud, const CameraIntrinsics &camera, co
     // The face's size: the median over columns (rows) of its longest unbroken stretch.
     std::vector<double> heights, widths;
     for (int k = 0; k < n; ++k) {
-        if (static_cast<int>(column[k].size()) >= opt.min_bin_points) heights.push_back(longestRun(column[k], opt.max_gap));
+        if (static_cast<int>(column[k].size()) >= opt.min_bin_points)
+            heights.push_back(longestRun(column[k], opt.max_gap));
         if (static_cast<int>(row[k].size()) >= opt.min_bin_points) widths.push_back(longestRun(row[k], opt.max_gap));
     }
     out.height = median(heights);
@@ -140,13 +141,24 @@ FaceSurround faceSurround(const Cloud &cloud, const CameraIntrinsics &camera, co
     return out;
 }
 
-bool standsFree(const FaceSurround &s, const FreeStandingRule &rule) {
-    const auto open = [&](const EdgeView &e) {
-        return e.positions() > 0 && e.past + e.front >= rule.min_seen * e.positions() && e.pastShare() >= rule.min_past;
-    };
-    if (s.height >= rule.wall_height && s.width >= rule.wall_width) return false;
-    return open(s.top) && (open(s.left) || open(s.right));
+namespace {
+
+bool open(const EdgeView &e, const FreeStandingRule &rule) {
+    return e.positions() > 0 && e.past + e.front >= rule.min_seen * e.positions() && e.pastShare() >= rule.min_past;
 }
+
+bool wallSized(const FaceSurround &s, const FreeStandingRule &rule) {
+    return s.height >= rule.wall_height && s.width >= rule.wall_width;
+}
+
+}  // namespace
+
+bool standsFree(const FaceSurround &s, const FreeStandingRule &rule) {
+    if (wallSized(s, rule)) return false;
+    return open(s.top, rule) && (open(s.left, rule) || open(s.right, rule));
+}
+
+bool openAbove(const FaceSurround &s, const FreeStandingRule &rule) { return !wallSized(s, rule) && open(s.top, rule); }
 
 bool enclosedInFront(const FaceSurround &s, const FreeStandingRule &rule) {
     const auto bounded = [&](const EdgeView &e) {
