@@ -164,7 +164,8 @@ std::vector<ConfigKey> objectKeys() {
         PROJSURF_KEY(double, objects.rule.min_past, kShare, "share of those open behind for the edge to be open"),
         PROJSURF_KEY(double, objects.rule.wall_height, kNonNegative, "m, a face this tall and wide serves like a wall"),
         PROJSURF_KEY(double, objects.rule.wall_width, kNonNegative, "m, ... and this wide (wider than a door)"),
-        PROJSURF_KEY(double, objects.opening_depth, kPositive, "m, an enclosed face this far behind a wall is beyond an opening"),
+        PROJSURF_KEY(double, objects.opening_depth, kPositive,
+                     "m, an enclosed face this far behind a wall is beyond an opening"),
     };
 }
 
@@ -181,6 +182,16 @@ std::vector<ConfigKey> freeSpaceKeys() {
                      "of the image width: margin around where a plane is seen"),
         PROJSURF_KEY(double, free_space.inlier_box_margin, from(0.0, 0.5),
                      "of the image width, when the cloud has no fitted intrinsics"),
+        PROJSURF_KEY(bool, free_space.proud.enabled, kAny,
+                     "cells whose readings stand off the wall's shape on average are not free"),
+        PROJSURF_KEY(double, free_space.proud.window, kPositive, "m, side of the square the offsets are averaged over"),
+        PROJSURF_KEY(int, free_space.proud.min_points, from(1, 100000), "a window with fewer readings says nothing"),
+        PROJSURF_KEY(double, free_space.proud.spreads, kNonNegative,
+                     "a window mean beyond this many robust spreads of the wall's window means is proud"),
+        PROJSURF_KEY(double, free_space.proud.min_offset, kNonNegative,
+                     "m, and beyond this (posters, whiteboards stay free)"),
+        PROJSURF_KEY(double, free_space.proud.min_extent, kNonNegative,
+                     "m, proud areas narrower than this are dropped (a few windows: the sensor's)"),
         PROJSURF_KEY(double, check.max_outlier_fraction, kShare, "share of checked points off the wall that rejects"),
     };
 }

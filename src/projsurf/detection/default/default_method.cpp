@@ -7,18 +7,18 @@
 #include <optional>
 #include <random>
 
-#include "projsurf/types/camera.hpp"
-#include "projsurf/detection/image_boxes.hpp"
+#include "projsurf/detection/candidate.hpp"
+#include "projsurf/detection/colour/surface_suitability.hpp"
 #include "projsurf/detection/default/face_surround.hpp"
 #include "projsurf/detection/default/observed_free_space.hpp"
 #include "projsurf/detection/default/planar_regions.hpp"
+#include "projsurf/detection/image_boxes.hpp"
 #include "projsurf/detection/point_sampling.hpp"
 #include "projsurf/detection/rectangle_growth.hpp"
 #include "projsurf/detection/rectangle_search.hpp"
-#include "projsurf/detection/colour/surface_suitability.hpp"
-#include "projsurf/detection/vertical_planes.hpp"
-#include "projsurf/detection/candidate.hpp"
 #include "projsurf/detection/stage_timer.hpp"
+#include "projsurf/detection/vertical_planes.hpp"
+#include "projsurf/types/camera.hpp"
 
 namespace projsurf {
 namespace {
@@ -280,7 +280,8 @@ void observeFreeSpace(const Cloud &cloud, DefaultScratch &scratch, const Project
     const double gap = std::ceil(spacing / c.raster.cell);
     const int gap_cells =
         std::isfinite(gap) ? static_cast<int>(std::clamp(gap, 1.0, double(cfg.free_space.max_gap_cells))) : 1;
-    SurfaceCells cells = observedFreeSurface(*c.observed, gap_cells, cfg.free_space.min_blocked_neighbours);
+    SurfaceCells cells = observedFreeSurface(*c.observed, gap_cells, cfg.free_space.min_blocked_neighbours,
+                                             cfg.free_space.proud, c.raster.cell);
     c.surface = cells.free;
     c.cell_state = cells.state;
     c.free = c.surface & footprintCells(c.raster, c.footprint.uv);
@@ -405,10 +406,12 @@ bool beyondOpening(const Cloud &cloud, const CloudSample &s, const DetectorConfi
     if (!cfg.objects.avoid || !s.camera) return false;
     bool nearer_wall = false;
     for (const PlaneCandidate &o : candidates)
-        nearer_wall |= &o != &c && std::abs(o.plane.normal.dot(c.plane.normal)) > std::cos(cfg.planes.regions.merge_angle) &&
+        nearer_wall |= &o != &c &&
+                       std::abs(o.plane.normal.dot(c.plane.normal)) > std::cos(cfg.planes.regions.merge_angle) &&
                        std::abs(c.plane.d) - std::abs(o.plane.d) > cfg.objects.opening_depth;
     if (!nearer_wall) return false;
-    const FaceSurround f = faceSurround(cloud, *s.camera, c.frame, c.inlier_indices, cfg.tolerance, cfg.objects.surround);
+    const FaceSurround f =
+        faceSurround(cloud, *s.camera, c.frame, c.inlier_indices, cfg.tolerance, cfg.objects.surround);
     return enclosedInFront(f, cfg.objects.rule);
 }
 
