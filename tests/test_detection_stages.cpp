@@ -122,6 +122,58 @@ TEST(ObservedFreeSurface, ClosesSampleGapsIgnoresLoneNoiseAndSaysWhyCellsAreNotF
     EXPECT_EQ(cells.free.at<uchar>(15, 20), 255);
 }
 
+/// An observation of a wall seen everywhere, 3 readings a cell, each off the wall's shape by
+/// `offset(r, c)` plus independent noise of `sigma` m.
+PlaneObservation offsetObservation(int rows, int cols, double sigma, const std::function<double(int, int)> &offset) {
+    PlaneObservation o = observation(rows, cols);
+    o.near = cv::Mat::zeros(rows, cols, CV_32SC1);
+    o.offset = cv::Mat::zeros(rows, cols, CV_32FC1);
+    std::mt19937 rng(3);
+    std::normal_distribution<double> noise(0.0, sigma);
+    for (int r = 0; r < rows; ++r)
+        for (int c = 0; c < cols; ++c) {
+            o.support.at<int>(r, c) = o.seen.at<int>(r, c) = o.near.at<int>(r, c) = 3;
+            for (int k = 0; k < 3; ++k) o.offset.at<float>(r, c) += static_cast<float>(offset(r, c) + noise(rng));
+        }
+    return o;
+}
+
+TEST(ObservedFreeSurface, AFrameTwoCentimetresProudIsNotFreeOverAreaThoughEachReadingIsWithinTheBand) {
+    // 1 cm cells, 9 mm of noise per reading (Kinect v1 at 2.5 m: a 3-sigma band of 2.7 cm).
+    const auto wall = [](int r, int c) {
+        if (r >= 20 && r < 50 && c >= 10 && c < 50) return 0.02;    // a picture frame 2 cm proud
+        if (r >= 20 && r < 50 && c >= 70 && c < 110) return 0.003;  // a whiteboard 3 mm proud
+        return 0.0;
+    };
+    const PlaneObservation o = offsetObservation(70, 130, 0.009, wall);
+    const SurfaceCells cells = observedFreeSurface(o, 1, 2, ProudEvidence{}, 0.01);
+    auto state = [&](int r, int c) { return static_cast<CellState>(cells.state.at<uchar>(r, c)); };
+    for (int r = 24; r < 46; r += 3)
+        for (int c = 14; c < 46; c += 3) EXPECT_EQ(state(r, c), CellState::Proud) << r << " " << c;
+    int free_board = 0, free_wall = 0;
+    for (int r = 20; r < 50; ++r)
+        for (int c = 70; c < 110; ++c) free_board += state(r, c) == CellState::Free;
+    for (int r = 55; r < 69; ++r)
+        for (int c = 1; c < 129; ++c) free_wall += state(r, c) == CellState::Free;
+    EXPECT_EQ(free_board, 30 * 40);  // the whiteboard stays free
+    EXPECT_EQ(free_wall, 14 * 128);  // and the plain wall
+    // Off: the same readings are free (each is within the band).
+    ProudEvidence off;
+    off.enabled = false;
+    EXPECT_EQ(observedFreeSurface(o, 1, 2, off, 0.01).state.at<uchar>(35, 30), static_cast<uchar>(CellState::Free));
+}
+
+TEST(ObservedFreeSurface, TheNoiseOfAWindowMeanIsMeasuredOnTheWallNotAssumedIndependent) {
+    // A sensor whose error is correlated in patches of 8 cm (+-1.8 cm, a stereo unit's): the
+    // window means spread by far more than 9 mm / sqrt(147) allows, and no patch is an obstacle.
+    const auto patches = [](int r, int c) { return ((r / 8 + c / 8) % 2 ? 0.018 : -0.018); };
+    const PlaneObservation o = offsetObservation(70, 130, 0.009, patches);
+    ProudEvidence proud;
+    proud.min_offset = 0.01;
+    const SurfaceCells cells = observedFreeSurface(o, 1, 2, proud, 0.01);
+    EXPECT_EQ(cv::countNonZero(cells.state == static_cast<int>(CellState::Proud)), 0);
+}
+
 TEST(RectangleGrowth, GrowsAgainstTheExactFootprintAndStopsAtWhatIsNotFree) {
     const Plane wall = makePlane({0, 0, -1}, 2.0);
     const PlaneFrame frame = makePlaneFrame(wall, Eigen::Vector3d::UnitY(), {0, 0, 2});

@@ -1,12 +1,13 @@
 #pragma once
 // Every setting of projection surface detection, one source per default, each with its unit
 // and where it comes from (paper section, datasheet, or a measurement of this project).
-#include "projsurf/types/depth_tolerance.hpp"
-#include "projsurf/detection/default/planar_regions.hpp"
 #include "projsurf/detection/colour/surface_suitability.hpp"
-#include "projsurf/detection/default/wall_shape.hpp"
 #include "projsurf/detection/default/face_surround.hpp"
+#include "projsurf/detection/default/observed_free_space.hpp"
+#include "projsurf/detection/default/planar_regions.hpp"
+#include "projsurf/detection/default/wall_shape.hpp"
 #include "projsurf/detection/virtual_depth_image.hpp"
+#include "projsurf/types/depth_tolerance.hpp"
 
 namespace projsurf {
 
@@ -91,6 +92,7 @@ struct FreeSpaceConfig {
     double image_margin =
         1.0 / 64;  ///< of the image width: margin around where a plane is seen (mixed pixels, grazing angles)
     double inlier_box_margin = 1.0 / 16;  ///< of the image width, when the cloud has no fitted intrinsics
+    ProudEvidence proud;                  ///< what stands off the wall's shape on average over a window
 };
 
 /// Default method, stage 5: the surface check on the rectangle (paper 3.2.3).
@@ -129,7 +131,7 @@ struct DetectorConfig {
     double max_tilt = 0.1;  ///< rad, normal vs horizontal (contract; paper 3.2.1)
     unsigned seed = 42;     ///< RANSAC random seed (runs are deterministic)
 
-    DepthTolerance tolerance;  ///< how far off a plane a reading may be (default method)
+    DepthTolerance tolerance;        ///< how far off a plane a reading may be (default method)
     VirtualImageConfig unorganized;  ///< default method: unorganized clouds as a pinhole's depth image
     PlaneSearchConfig planes;
     WallConfig wall;

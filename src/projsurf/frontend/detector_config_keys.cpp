@@ -183,6 +183,16 @@ std::vector<ConfigKey> freeSpaceKeys() {
                      "of the image width: margin around where a plane is seen"),
         PROJSURF_KEY(double, free_space.inlier_box_margin, from(0.0, 0.5),
                      "of the image width, when the cloud has no fitted intrinsics"),
+        PROJSURF_KEY(bool, free_space.proud.enabled, kAny,
+                     "cells whose readings stand off the wall's shape on average are not free"),
+        PROJSURF_KEY(double, free_space.proud.window, kPositive, "m, side of the square the offsets are averaged over"),
+        PROJSURF_KEY(int, free_space.proud.min_points, from(1, 100000), "a window with fewer readings says nothing"),
+        PROJSURF_KEY(double, free_space.proud.spreads, kNonNegative,
+                     "a window mean beyond this many robust spreads of the wall's window means is proud"),
+        PROJSURF_KEY(double, free_space.proud.min_offset, kNonNegative,
+                     "m, and beyond this (posters, whiteboards stay free)"),
+        PROJSURF_KEY(double, free_space.proud.min_extent, kNonNegative,
+                     "m, proud areas narrower than this are dropped (a few windows: the sensor's)"),
         PROJSURF_KEY(double, check.max_outlier_fraction, kShare, "share of checked points off the wall that rejects"),
     };
 }

@@ -19,7 +19,7 @@ namespace {
 const cv::Scalar kInlier(80, 200, 80), kFree(0, 220, 255), kWorkspace(255, 160, 40), kRect(255, 0, 255),
     kOutlier(40, 40, 255), kText(255, 255, 255), kInFront(0, 130, 255), kSeenThrough(220, 80, 200),
     kNoReading(150, 150, 150), kGlare(255, 255, 160), kDark(90, 40, 20), kTextured(0, 60, 160), kSaturated(160, 0, 90),
-    kCandidate(255, 255, 0);
+    kCandidate(255, 255, 0), kProud(0, 0, 140);
 
 /// Where camera-frame points land in the picture.
 struct View {
@@ -216,6 +216,7 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
     paintCells(img, view, det.debug, CellState::InFront, kInFront);
     paintCells(img, view, det.debug, CellState::SeenThrough, kSeenThrough);
     paintCells(img, view, det.debug, CellState::NoReading, kNoReading);
+    paintCells(img, view, det.debug, CellState::Proud, kProud);
     const std::vector<std::tuple<CellState, cv::Scalar, const char *>> unfit{
         {CellState::Glare, kGlare, "not fit: glare (specular, emissive)"},
         {CellState::Dark, kDark, "not fit: too dark (low albedo)"},
@@ -262,6 +263,8 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
         key.push_back({kInFront, "not free: something in front (its shadow)"});
         key.push_back({kSeenThrough, "not free: seen through (hole, door, glass)"});
         key.push_back({kNoReading, "not free: no wall reading"});
+        if (cv::countNonZero(det.debug.cell_state == static_cast<int>(CellState::Proud)) > 0)
+            key.push_back({kProud, "not free: stands proud of the wall on average (frame, switch)"});
         for (const auto &[state, colour, text] : unfit)
             if (cv::countNonZero(det.debug.cell_state == static_cast<int>(state)) > 0) key.push_back({colour, text});
     }

@@ -334,7 +334,8 @@ void observeFreeSpace(const Cloud &cloud, DefaultScratch &scratch, const Project
     const double gap = std::ceil(spacing / c.raster.cell);
     const int gap_cells =
         std::isfinite(gap) ? static_cast<int>(std::clamp(gap, 1.0, double(cfg.free_space.max_gap_cells))) : 1;
-    SurfaceCells cells = observedFreeSurface(*c.observed, gap_cells, cfg.free_space.min_blocked_neighbours);
+    SurfaceCells cells = observedFreeSurface(*c.observed, gap_cells, cfg.free_space.min_blocked_neighbours,
+                                             cfg.free_space.proud, c.raster.cell);
     c.surface = cells.free;
     c.cell_state = cells.state;
     c.free = c.surface & footprintCells(c.raster, c.footprint.uv);

@@ -6,8 +6,8 @@
 #include <array>
 #include <opencv2/core.hpp>
 
-#include "projsurf/detection/outline_raster.hpp"
 #include "projsurf/detection/default/plane_observation.hpp"
+#include "projsurf/detection/outline_raster.hpp"
 
 namespace projsurf {
 
@@ -23,6 +23,22 @@ enum class CellState : uchar {
     Dark = 6,       ///< too dark (low albedo)
     Textured = 7,   ///< textured or edgy (a framed picture, a calendar, a busy pattern)
     Saturated = 8,  ///< too saturated a colour
+    Proud = 9,      ///< the wall's readings there stand off its shape on average (a frame, a switch, a TV)
+};
+
+/// Obstacle evidence over an area: what stands a centimetre or two proud of a wall (a picture
+/// frame, a switch) lies within the band of a noisy sensor point by point, but the mean of the
+/// readings over a few centimetres moves with it. The noise of such a mean is measured on the
+/// wall itself (the spread of the window means over the raster), since a depth camera's error
+/// is correlated over many pixels and quantised, so that the independent-noise standard error
+/// would understate it.
+struct ProudEvidence {
+    bool enabled = true;
+    double window = 0.06;       ///< m, side of the square the offsets are averaged over (a switch plate is 8 cm)
+    int min_points = 8;         ///< a window with fewer readings says nothing
+    double spreads = 4.0;       ///< a window mean beyond this many robust spreads of the window means is proud,
+    double min_offset = 0.015;  ///< m, and beyond this (posters, whiteboards: a few mm, stay free)
+    double min_extent = 0.10;   ///< m, proud areas narrower than this are dropped (a few windows: the sensor's)
 };
 
 struct SurfaceCells {
@@ -33,8 +49,16 @@ struct SurfaceCells {
 /// Free surface from an observation: support closed over gaps up to `gap_cells` cells;
 /// blocked where more points were seen through than on the wall, or shadowed, ignoring blocked
 /// cells with fewer than `min_blocked_neighbours` blocked cells in their 3x3 (sensor noise);
-/// one cell trimmed off every edge so the picture never hangs over the wall's true edge.
-SurfaceCells observedFreeSurface(const PlaneObservation &observation, int gap_cells, int min_blocked_neighbours);
+/// blocked also where the readings' mean offset from the wall's shape over a window stands out
+/// (`proud`, `cell` the raster's cell in m); one cell trimmed off every edge so the picture
+/// never hangs over the wall's true edge.
+SurfaceCells observedFreeSurface(const PlaneObservation &observation, int gap_cells, int min_blocked_neighbours,
+                                 const ProudEvidence &proud = {}, double cell = 0.01);
+
+/// The cells (255) whose window of readings stands off the wall's shape on average by more
+/// than the spread of such means over the wall allows (ProudEvidence); empty when the
+/// observation has no offsets.
+cv::Mat proudCells(const PlaneObservation &observation, const ProudEvidence &proud, double cell);
 
 /// Cells of `raster` wholly inside the convex footprint (plane coordinates): 255, else 0.
 cv::Mat footprintCells(const RasterFrame &raster, const std::array<Eigen::Vector2d, 4> &footprint_uv);

@@ -1,6 +1,6 @@
 #include "projsurf/detection/default/plane_observation.hpp"
-#include "projsurf/types/clamp_to_int.hpp"
 #include "projsurf/detection/default/raster_shape.hpp"
+#include "projsurf/types/clamp_to_int.hpp"
 #include "projsurf/types/target_clones.hpp"
 
 #include <algorithm>
@@ -14,7 +14,7 @@ PROJSURF_CLONES
 void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane, const PlaneFrame &frame,
                  const RasterFrame &raster, const Eigen::Vector3d &projector_origin, const DepthTolerance &tolerance,
                  const RasterShape &shape, const std::uint8_t *exclude, std::int32_t *bins, std::int32_t *seen,
-                 std::int32_t *off_counts, int &support_points) {
+                 std::int32_t *off_counts, std::int32_t *near_counts, float *offsets, int &support_points) {
     // Everything in float and as plain scalars, so that the per-point loop vectorises.
     // Raster column of a point q of the plane: q . R + cr; row: q . U + cu.
     const Eigen::Vector3d R = frame.right / raster.cell, U = -frame.up / raster.cell;
@@ -36,7 +36,8 @@ void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane
     const float cols = static_cast<float>(raster.cols), rows = static_cast<float>(raster.rows);
     const std::int32_t ncols = raster.cols, cells = raster.cols * raster.rows;
 
-    std::vector<std::int32_t> bin(area.width), ray(area.width), off(area.width);
+    std::vector<std::int32_t> bin(area.width), ray(area.width), off(area.width), foot(area.width);
+    std::vector<float> offset(area.width);
     std::int32_t on_plane = 0;
     for (int gr = area.y; gr < area.y + area.height; ++gr) {
         const std::size_t first = static_cast<std::size_t>(gr) * grid.cols + area.x;
@@ -76,6 +77,13 @@ void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane
             const std::int32_t bin_cell = static_cast<std::int32_t>(kbw) * ncols + static_cast<std::int32_t>(kbc) +
                                           (beyond ? cells : 0) + (between ? 2 * cells : 0);
             const std::int32_t ray_cell = static_cast<std::int32_t>(ktw) * ncols + static_cast<std::int32_t>(ktc);
+            // Within the margin (on the wall or just proud of it): its offset, at its foot.
+            const float kac = std::min(cols, std::max(0.0f, ac)), kaw = std::min(rows, std::max(0.0f, aw));
+            const std::int32_t near_in =
+                (std::abs(r) <= margin) & (E[i] == 0) & (ac >= 0.0f) & (ac < cols) & (aw >= 0.0f) & (aw < rows);
+            const std::int32_t foot_cell = static_cast<std::int32_t>(kaw) * ncols + static_cast<std::int32_t>(kac);
+            foot[i] = near_in ? foot_cell : cells;
+            offset[i] = near_in ? r : 0.0f;
             bin[i] = bin_in ? bin_cell : 3 * cells;
             ray[i] = ray_in ? ray_cell : cells;
             off[i] = (std::abs(r) > margin) & ray_in;
@@ -86,6 +94,8 @@ void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane
             ++bins[bin[i]];
             ++seen[ray[i]];
             off_counts[ray[i]] += off[i];
+            ++near_counts[foot[i]];
+            offsets[foot[i]] += offset[i];
         }
     }
     support_points = on_plane;
@@ -97,9 +107,12 @@ void observePlane(const PointGrid &grid, const cv::Rect &box, const Plane &plane
                   const RasterFrame &raster, const Eigen::Vector3d &projector_origin, const DepthTolerance &tolerance,
                   PlaneObservation &out, const WallShape &shape, const std::vector<std::uint8_t> *exclude) {
     const int rows = raster.rows, cols = raster.cols;
-    const std::size_t row_cells = static_cast<std::size_t>(cols), total = (3 * rows + 1 + 2 * rows + 2) * row_cells;
+    const std::size_t row_cells = static_cast<std::size_t>(cols),
+                      total = (3 * rows + 1 + 2 * rows + 2 + rows + 1) * row_cells, sums = (rows + 1) * row_cells;
     if (out.counts.size() < total) out.counts.resize(total);
+    if (out.offsets.size() < sums) out.offsets.resize(sums);
     std::fill_n(out.counts.data(), total, 0);
+    std::fill_n(out.offsets.data(), sums, 0.0f);
     std::int32_t *bins = out.counts.data(), *rays = bins + (3 * rows + 1) * row_cells;
     auto view = [&](std::int32_t *first) { return cv::Mat(rows, cols, CV_32SC1, first); };
     out.support = view(bins);
@@ -107,12 +120,16 @@ void observePlane(const PointGrid &grid, const cv::Rect &box, const Plane &plane
     out.shadow = view(bins + 2 * rows * row_cells);
     out.seen = view(rays);
     out.off = view(rays + (rows + 1) * row_cells);
+    std::int32_t *near = rays + 2 * (rows + 1) * row_cells;
+    out.near = view(near);
+    out.offset = cv::Mat(rows, cols, CV_32FC1, out.offsets.data());
     const cv::Rect area = box & cv::Rect(0, 0, grid.cols, grid.rows);
     const bool use = exclude && exclude->size() == grid.x.size();
     thread_local std::vector<std::uint8_t> zeros;
     if (!use && zeros.size() < grid.x.size()) zeros.assign(grid.x.size(), 0);
     observeRows(grid, area, plane, frame, raster, projector_origin, tolerance, RasterShape(shape, raster),
-                use ? exclude->data() : zeros.data(), bins, rays, rays + (rows + 1) * row_cells, out.support_points);
+                use ? exclude->data() : zeros.data(), bins, rays, rays + (rows + 1) * row_cells, near,
+                out.offsets.data(), out.support_points);
 }
 
 namespace {

@@ -7,12 +7,12 @@
 #include <utility>
 #include <vector>
 
+#include "projsurf/detection/default/wall_shape.hpp"
 #include "projsurf/detection/outline_raster.hpp"
+#include "projsurf/detection/surface_check.hpp"
 #include "projsurf/types/plane.hpp"
 #include "projsurf/types/plane_frame.hpp"
 #include "projsurf/types/point_grid.hpp"
-#include "projsurf/detection/surface_check.hpp"
-#include "projsurf/detection/default/wall_shape.hpp"
 
 namespace projsurf {
 
@@ -32,14 +32,18 @@ struct PlaneObservation {
     cv::Mat shadow;   ///< CV_32S: points between the projector and the plane, where their shadow falls
     cv::Mat seen;     ///< CV_32S: points whose camera ray crosses the plane in the cell (all of them)
     cv::Mat off;      ///< CV_32S: of `seen`, the points off the plane by more than the tolerance margin
+    cv::Mat near;     ///< CV_32S: points within the margin of the wall's shape (on it or just proud), at their foot
+    cv::Mat offset;   ///< CV_32F: the sum of those points' offsets from the shape (m, towards the camera)
     int support_points = 0;
-    /// support, behind, shadow, spare row; seen, spare row, off, spare row
+    /// support, behind, shadow, spare row; seen, spare row, off, spare row; near, spare row
     std::vector<std::int32_t> counts;
+    std::vector<float> offsets;  ///< offset, spare row
 };
 
 /// One pass over the grid elements in `box` (grid coordinates): each finite point is on the
 /// wall (|r| <= band), beyond it (r < -margin), between the projector and the wall
-/// (margin < r, h < projector height), or in between (counted in `seen` only); h is its signed
+/// (margin < r, h < projector height), or in between (counted in `seen` only); those within the
+/// margin also add their r to `near` and `offset` at their foot; h is its signed
 /// distance to the plane, positive towards the camera, and r = h - shape's height at its foot.
 /// Grid elements with a non-zero `exclude` (grid-sized; points of another surface) are never
 /// support. Reuses `out`'s storage.
