@@ -10,24 +10,25 @@
 #include <opencv2/imgcodecs.hpp>
 #include <optional>
 
-#include "detection_dict.hpp"
 #include "argument_types.hpp"
+#include "detection_dict.hpp"
 #include "detector_options.hpp"
 #include "image_array.hpp"
 #include "plan_function.hpp"
 #include "points_array.hpp"
-#include "projsurf/types/lens_model_check.hpp"
-#include "projsurf/types/camera.hpp"
-#include "projsurf/keystone/keystone.hpp"
+#include "projsurf/detection/detector.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/frontend/registered_colour.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
-#include "projsurf/io/limits.hpp"
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/limits.hpp"
+#include "projsurf/io/utf8_text.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/keystone/keystone.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/types/lens_model_check.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -147,7 +148,17 @@ PYBIND11_MODULE(projsurf, m) {
         "Every bad argument (a wrong type, value or file) raises projsurf.InputError with one line.";
 
     // Same one-line messages as the CLI's "projsurf: error: <file>: <problem>" (without the prefix).
-    py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+    // The message as UTF-8 on one line, whatever file bytes it quotes (Python could not decode them).
+    static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const InputError &e) {
+            std::string text = utf8Escaped(e.what());
+            for (std::size_t i; (i = text.find_first_of("\r\n")) != std::string::npos;) text.replace(i, 1, "; ");
+            PyErr_SetString(input_error.ptr(), text.c_str());
+        }
+    });
 
     py::class_<Projector>(
         m, "Projector",
@@ -172,10 +183,7 @@ PYBIND11_MODULE(projsurf, m) {
         .def_property_readonly(
             "direction", [](const Projector &p) { return p.direction; }, "central (optical) axis, unit")
         .def_property_readonly(
-            "intrinsics",
-            [](const Projector &p) {
-                return py::make_tuple(p.fx(), p.fy(), p.cx(), p.cy());
-            },
+            "intrinsics", [](const Projector &p) { return py::make_tuple(p.fx(), p.fy(), p.cx(), p.cy()); },
             "(fx, fy, cx, cy), framebuffer px, pixel centres at integers: the calibration's intrinsics, or\n"
             "those of the plain model (principal point at the centre, focal lengths from fov_deg)")
         .def_property_readonly(
@@ -279,12 +287,13 @@ PYBIND11_MODULE(projsurf, m) {
         "(rad), voxel_leaf, ransac_distance (m), max_outliers (paper); cell (m), max_planes,\n"
         "max_outlier_fraction (default). hull=None is 'concave'. config: None or the path of a detector settings\n"
         "YAML (`projsurf detect --config`, every key: `projsurf detect --print-config`), read first; any other\n"
-        "argument given (not None) overrides it. The CLI's warnings (a gravity the floor contradicts, depths outside what RGB-D\n"
+        "argument given (not None) overrides it. The CLI's warnings (a gravity the floor contradicts, depths outside "
+        "what RGB-D\n"
         "cameras read, colour not registered) come as UserWarnings.";
-    py::class_<Detector>(m, "Detector",
-                         (std::string("Detection over a stream of clouds (reuses its buffers from frame to frame).\n") +
-                          options_doc)
-                             .c_str())
+    py::class_<Detector>(
+        m, "Detector",
+        (std::string("Detection over a stream of clouds (reuses its buffers from frame to frame).\n") + options_doc)
+            .c_str())
         .def(py::init([](const py::object &projector, const py::object &aspect, const py::object &gravity,
                          const py::object &method, const py::object &hull, const py::object &seed,
                          const py::object &min_width, const py::object &min_area, const py::object &suitability,
@@ -307,11 +316,11 @@ PYBIND11_MODULE(projsurf, m) {
                 return d.detect(points, colour);
             },
             "points"_a, py::kw_only(), "colour"_a = py::none(),
-             "points: (H, W, 3) or (N, 3) array (camera frame, m; NaN = no reading) or an object with .points.\n"
-             "colour: optional (H, W, 3) uint8 B, G, R image registered to (H, W) points: the surface's suitability\n"
-             "(docs/suitability.md); checked as `detect --rgb` checks it: another type or size is an InputError,\n"
-             "colour whose edges do not fit the depth's (or with unorganized points) is not used, with a\n"
-             "UserWarning. Returns the detection as a dict with the keys of the detection JSON.")
+            "points: (H, W, 3) or (N, 3) array (camera frame, m; NaN = no reading) or an object with .points.\n"
+            "colour: optional (H, W, 3) uint8 B, G, R image registered to (H, W) points: the surface's suitability\n"
+            "(docs/suitability.md); checked as `detect --rgb` checks it: another type or size is an InputError,\n"
+            "colour whose edges do not fit the depth's (or with unorganized points) is not used, with a\n"
+            "UserWarning. Returns the detection as a dict with the keys of the detection JSON.")
         .def_property_readonly("projector", &Detector::projector);
 
     m.def(
