@@ -53,6 +53,10 @@ struct Reader {
         for (const auto &xy : pts) {
             if (!xy.IsSequence() || xy.size() != 2) fail("'" + what + ".polygon' must be a list of [x, y] pixels");
             p.pixels.emplace_back(number(xy[0], what + ".polygon"), number(xy[1], what + ".polygon"));
+            // Depth images are at most 16384 px a side: a vertex far beyond is a typo, and 1e300
+            // overflows the rasterised polygon.
+            if (std::abs(p.pixels.back().x()) > 1e5 || std::abs(p.pixels.back().y()) > 1e5)
+                fail("'" + what + ".polygon' has a vertex more than 100000 px from the image");
         }
         return p;
     }
@@ -86,8 +90,7 @@ LabelBest readBest(const Reader &r, const YAML::Node &b, const std::string &key,
         r.fail("'" + key + ".surface' names no surface: '" + best.surface + "'");
     best.width = r.number(r.need(b, "width", key + "."), key + ".width");
     best.height = r.number(r.need(b, "height", key + "."), key + ".height");
-    if (!(best.width > 0 && best.height > 0))
-        r.fail("'" + key + ".width' and '" + key + ".height' must be positive");
+    if (!(best.width > 0 && best.height > 0)) r.fail("'" + key + ".width' and '" + key + ".height' must be positive");
     const YAML::Node c = r.need(b, "corners", key + ".");
     if (!c.IsSequence() || c.size() != 4) r.fail("'" + key + ".corners' must be a list of 4 [x, y, z] points");
     for (int k = 0; k < 4; ++k) best.corners[k] = r.vector3(c[k], key + ".corners");
@@ -124,6 +127,8 @@ RealLabel readRealLabel(const std::string &path) {
     RealLabel l;
     l.frame = r.text(r.need(root, "frame", ""), "frame");
     if (l.frame.empty()) r.fail("'frame' is empty");
+    if (l.frame.find('/') != std::string::npos || l.frame == "." || l.frame == "..")
+        r.fail("'frame' must be the name of one folder of the real frames, not a path");
     if (root["note"]) l.note = r.text(root["note"], "note");
 
     const YAML::Node g = r.need(root, "gravity", "");
