@@ -126,6 +126,10 @@ DetectionFile readDetectionJson(const std::string &path) {
                 throw InputError(path,
                                  "'rectangle.corners' lie more than 1000 m from the camera: give them in metres "
                                  "(millimetres?)");
+            if (!(out.rectangle.corners[i].z() > 0))
+                throw InputError(path,
+                                 "'rectangle.corners' lie behind the camera (z <= 0): a detection is on a "
+                                 "surface the camera saw, in the camera's optical frame");
         }
         if (j.contains("plane") && j["plane"].is_object() && j["plane"].contains("coefficients")) {
             const auto &pc = j["plane"]["coefficients"];
