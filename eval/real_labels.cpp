@@ -53,6 +53,10 @@ struct Reader {
         for (const auto &xy : pts) {
             if (!xy.IsSequence() || xy.size() != 2) fail("'" + what + ".polygon' must be a list of [x, y] pixels");
             p.pixels.emplace_back(number(xy[0], what + ".polygon"), number(xy[1], what + ".polygon"));
+            // Depth images are at most 16384 px a side: a vertex far beyond is a typo, and 1e300
+            // overflows the rasterised polygon.
+            if (std::abs(p.pixels.back().x()) > 1e5 || std::abs(p.pixels.back().y()) > 1e5)
+                fail("'" + what + ".polygon' has a vertex more than 100000 px from the image");
         }
         return p;
     }
@@ -135,6 +139,8 @@ RealLabel readRealLabel(const std::string &path) {
     RealLabel l;
     l.frame = r.text(r.need(root, "frame", ""), "frame");
     if (l.frame.empty()) r.fail("'frame' is empty");
+    if (l.frame.find('/') != std::string::npos || l.frame == "." || l.frame == "..")
+        r.fail("'frame' must be the name of one folder of the real frames, not a path");
     if (root["note"]) l.note = r.text(root["note"], "note");
 
     const YAML::Node g = r.need(root, "gravity", "");

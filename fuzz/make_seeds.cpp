@@ -85,6 +85,18 @@ int main(int argc, char **argv) {
     put(out / "camera_yaml", "camera.yaml", slurp(sim / "camera.yaml"));
     put(out / "calib_yaml", "calib.yaml", slurp(sim / "calib.yaml"));
     put(out / "detection_json", "det.json", slurp(argv[2]));
+    // The layout of procam-calibration's calibration_result.xml (OpenCV FileStorage).
+    const auto matrix = [](const char *name, int rows, int cols, const char *data) {
+        return std::string("<") + name + " type_id=\"opencv-matrix\"><rows>" + std::to_string(rows) + "</rows><cols>" +
+               std::to_string(cols) + "</cols><dt>d</dt><data>" + data + "</data></" + name + ">\n";
+    };
+    put(out / "procam_xml", "calibration_result.xml",
+        "<?xml version=\"1.0\"?>\n<opencv_storage>\n<img_shape>1280 1024</img_shape>\n<rms>0.5</rms>\n" +
+            matrix("cam_int", 3, 3, "1000. 0. 640. 0. 1000. 512. 0. 0. 1.") +
+            matrix("cam_dist", 1, 5, "0. 0. 0. 0. 0.") +
+            matrix("proj_int", 3, 3, "1500. 0. 512. 0. 1500. 384. 0. 0. 1.") +
+            matrix("proj_dist", 1, 5, "0. 0. 0. 0. 0.") + matrix("rotation", 3, 3, "1. 0. 0. 0. 1. 0. 0. 0. 1.") +
+            matrix("translation", 3, 1, "0.1 0. 0.") + "</opencv_storage>\n");
     put(out / "bag", "two_clouds.bag", bagtest::bagWithClouds({small, flat}, "/points"));
 
     for (int k = 0; k < 3; ++k) {

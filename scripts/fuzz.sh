@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # libFuzzer over every reader (PCD, PLY, depth PNG, camera and calibration YAML, detection
-# JSON, bags, capture images), a structured-light capture folder through its decoding and fit,
+# JSON, procam XML, bags, capture images), a structured-light capture folder through its decoding and fit,
 # and plan's search on a cloud, for a bounded time, with ASan + UBSan, in the sanitizer tree
 # (build-sanitize, configured by scripts/sanitize.sh). Seeds are made here from the simulator
 # (`projsurf simulate`, `projsurf detect`): nothing binary is committed. Each reader must run
@@ -37,7 +37,7 @@ PROJSURF_FUZZ_WRITE_SEEDS="$work/corpus/structured" "$tree/fuzz/fuzz_structured"
 mkdir -p "$work/corpus/plan"
 cp "$work/corpus/pcd/"* "$work/corpus/plan/"
 
-for name in pcd ply depth_png camera_yaml calib_yaml detection_json bag captures structured plan; do
+for name in pcd ply depth_png camera_yaml calib_yaml detection_json procam_xml bag captures structured plan; do
   corpus="$work/corpus/$name"
   mkdir -p "$corpus"
   need=$runs

@@ -27,6 +27,7 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/limits.hpp"
 #include "projsurf/io/rosbag_clouds.hpp"
+#include "projsurf/io/utf8_text.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace fs = std::filesystem;
@@ -193,9 +194,9 @@ TEST_F(Hostile, FarAndNonFinitePointsAreAFrameNotACrash) {
         const CliRun r = cli(detectArgs(at("far.pcd")) + " --method " + method, dir_);
         EXPECT_EQ(r.status, 0) << method << ": " << r.err;
         // At most the one line that says most points are beyond any sensor's range.
-        EXPECT_TRUE(r.err.empty() || (r.err.rfind("projsurf: warning: ", 0) == 0 &&
-                                      r.err.find('\n') == r.err.size() - 1 &&
-                                      r.err.find("farther than an RGB-D camera reads") != std::string::npos))
+        EXPECT_TRUE(r.err.empty() ||
+                    (r.err.rfind("projsurf: warning: ", 0) == 0 && r.err.find('\n') == r.err.size() - 1 &&
+                     r.err.find("farther than an RGB-D camera reads") != std::string::npos))
             << method << ": " << r.err;
         EXPECT_TRUE(nlohmann::json::accept(r.out)) << r.out;
     }
@@ -385,12 +386,10 @@ TEST_F(Hostile, StructuredLightDecodesOnePoseAtATime) {
     // TearDown checks the run stayed under 2 GiB (it took 2.8 GiB when every capture was
     // converted to float at once).
     writeDarkPose(dir_ / "sl", 3490, 3490);
-    refused("calibrate --captures " + at("sl") + " --out " + at("c.yaml"), at("sl"), "only 0 decoded",
-            {at("c.yaml")});
+    refused("calibrate --captures " + at("sl") + " --out " + at("c.yaml"), at("sl"), "only 0 decoded", {at("c.yaml")});
     // 39 poses (38 links to the first): refused from the listing, before any image is read.
     for (int k = 1; k < 39; ++k) fs::create_directory_symlink("pose_0", dir_ / "sl" / ("pose_" + std::to_string(k)));
-    refused("calibrate --captures " + at("sl") + " --out " + at("c.yaml"), at("sl"), "MiB to decode",
-            {at("c.yaml")});
+    refused("calibrate --captures " + at("sl") + " --out " + at("c.yaml"), at("sl"), "MiB to decode", {at("c.yaml")});
 }
 
 TEST_F(Hostile, StructuredLightFolderProblemsSayWhatIsWrong) {
@@ -409,8 +408,7 @@ TEST_F(Hostile, StructuredLightFolderProblemsSayWhatIsWrong) {
     // patterns.yaml a link to itself.
     fs::remove(sl / "patterns.yaml");
     fs::create_symlink("patterns.yaml", sl / "patterns.yaml");
-    refused("calibrate --captures " + sl.string() + " --out " + at("c.yaml"), "patterns.yaml", "loop",
-            {at("c.yaml")});
+    refused("calibrate --captures " + sl.string() + " --out " + at("c.yaml"), "patterns.yaml", "loop", {at("c.yaml")});
     // A framebuffer no calibration could hold.
     fs::remove(sl / "patterns.yaml");
     writeBytes(sl / "patterns.yaml",
@@ -446,8 +444,8 @@ TEST_F(Hostile, DegenerateLensModelsAreRefusedByEveryCommand) {
     ASSERT_NE(calib.find(res), std::string::npos);
     auto withIntrinsics = [&](const std::string &name, const std::string &fx) {
         std::string c = calib;
-        c.replace(c.find(res), res.size(), res + "  intrinsics:\n    fx: " + fx + "\n    fy: " + fx +
-                                                "\n    cx: 639.5\n    cy: 399.5\n");
+        c.replace(c.find(res), res.size(),
+                  res + "  intrinsics:\n    fx: " + fx + "\n    fy: " + fx + "\n    cx: 639.5\n    cy: 399.5\n");
         writeBytes(at(name), c);
         return at(name);
     };
@@ -473,7 +471,7 @@ TEST_F(Hostile, DegenerateLensModelsAreRefusedByEveryCommand) {
     fs::copy_file(sim_ / "depth.png", dir_ / "caps" / "depth.png");
     const std::string camera = test::slurp(sim("camera.yaml"));
     for (const auto &[key, value] : std::vector<std::pair<std::string, std::string>>{
-             {"fx", "1e-300"}, {"depth_scale", "1e-300"}, {"cx", "1e300"}}) {
+             {"fx", "1e-300"}, {"fx", "1e300"}, {"depth_scale", "1e-300"}, {"cx", "1e300"}}) {
         std::string c = camera;
         const std::size_t at_key = c.find("  " + key + ": ");
         ASSERT_NE(at_key, std::string::npos) << key;
@@ -516,8 +514,7 @@ TEST_F(Hostile, FramebuffersBeyondTheCalibrationLimitAreRefused) {
     const std::string big = " --resolution 16384,16384";
     refused("patterns --out " + at("p") + big, "--resolution", "framebuffer limit", {at("p")});
     refused("verify --write-card " + at("card.png") + big, "--resolution", "framebuffer limit", {at("card.png")});
-    refused("calibrate --write-picture " + at("pic.png") + big, "--resolution", "framebuffer limit",
-            {at("pic.png")});
+    refused("calibrate --write-picture " + at("pic.png") + big, "--resolution", "framebuffer limit", {at("pic.png")});
     // patterns that cannot be written leave no patterns/ folder behind.
     fs::create_directories(dir_ / "q" / "patterns.yaml");
     const CliRun r = cli("patterns --out " + at("q") + " --resolution 64,32", dir_);
@@ -535,9 +532,9 @@ TEST_F(Hostile, BagFrameIdThatIsNotUtf8IsNamed) {
     ASSERT_NE(id, std::string::npos);
     bag.replace(id, 2, "\xff\xfe");  // the same length: only the text is wrong
     writeBytes(at("id.bag"), bag);
-    refused("detect --calib " + sim("calib.yaml") + " --bag " + at("id.bag") + " --topic /points --json " +
-                at("o.jsonl"),
-            at("id.bag"), "header.frame_id is not UTF-8", {at("o.jsonl")});
+    refused(
+        "detect --calib " + sim("calib.yaml") + " --bag " + at("id.bag") + " --topic /points --json " + at("o.jsonl"),
+        at("id.bag"), "header.frame_id is not UTF-8", {at("o.jsonl")});
 }
 
 // --- A video that ends before its header says ----------------------------------------------
@@ -563,4 +560,135 @@ TEST_F(Hostile, TruncatedVideoWarns) {
     }
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("projsurf: warning: " + at("cut.avi") + ": ended after"), std::string::npos) << r.err;
+}
+
+// --- Numbers and text from the command line and from files --------------------------------
+
+TEST_F(Hostile, NonFiniteOptionValuesAreRefusedByEveryCommand) {
+    // CLI11's ranges let NaN through (every comparison with it is false); 1e400 reads as infinity.
+    const CliRun det = cli(detectArgs(sim("cloud.pcd")) + " --json " + at("det.json"), dir_);
+    ASSERT_EQ(det.status, 0) << det.err;
+    for (const char *v : {"nan", "inf", "-inf", "1e400"}) {
+        const std::string value(v);
+        refused(detectArgs(sim("cloud.pcd")) + " --min-width " + value + " --json " + at("d.json"), "--min-width",
+                value, {at("d.json")});
+        refused(detectArgs(sim("cloud.pcd")) + " --method paper --voxel-leaf " + value, "--voxel-leaf", value);
+        refused("plan --calib " + sim("calib.yaml") + " --cloud " + sim("cloud.pcd") + " --max-move " + value,
+                "--max-move", value);
+        refused("correct --calib " + sim("calib.yaml") + " --detection " + at("det.json") + " --video " +
+                    sim("rgb.png") + " --out " + at("v.avi") + " --fps " + value,
+                "--fps", value, {at("v.avi")});
+        refused("simulate --out " + at("s") + " --distance " + value, "--distance", value, {at("s")});
+    }
+    refused(detectArgs(sim("cloud.pcd")) + " --max-tilt nan", "--max-tilt", "'nan' is not a finite number");
+    // Two numbers in one word: each one.
+    refused("calibrate --captures " + sim("captures") + " --out " + at("c.yaml") + " --fov-deg 39.3,nan", "--fov-deg",
+            "expected two numbers", {at("c.yaml")});
+}
+
+TEST_F(Hostile, ErrorLinesAreUtf8WhateverTheFileHeld) {
+    // A settings file's word quoted in the message: its bytes that are not UTF-8 come out as \xNN.
+    writeBytes(at("bad.yaml"), "method: \xff\xfe\n");
+    const CliRun r = cli(detectArgs(sim("cloud.pcd")) + " --config " + at("bad.yaml"), dir_);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_TRUE(isUtf8(r.err)) << r.err;
+    EXPECT_NE(r.err.find("\\xFF\\xFE"), std::string::npos) << r.err;
+}
+
+TEST_F(Hostile, DetectionCornersFarOffOrBehindTheCameraAreRefused) {
+    // Corners of 1e300 m are finite, but the rectangle's sides overflow to infinity; verify
+    // compared them, correct refused them only as "behind the projector".
+    const CliRun det = cli(detectArgs(sim("cloud.pcd")) + " --json " + at("det.json"), dir_);
+    ASSERT_EQ(det.status, 0) << det.err;
+    nlohmann::json j = nlohmann::json::parse(test::slurp(at("det.json")));
+    for (auto &c : j["rectangle"]["corners"])
+        for (auto &x : c) x = x.get<double>() * 1000.0;  // millimetres
+    writeBytes(at("mm.json"), j.dump());
+    refused("correct --calib " + sim("calib.yaml") + " --detection " + at("mm.json") + " --image " + sim("rgb.png") +
+                " --out " + at("fb.png"),
+            at("mm.json"), "more than 1000 m", {at("fb.png")});
+    for (auto &c : j["rectangle"]["corners"])
+        for (auto &x : c) x = x.get<double>() * 1e297;
+    writeBytes(at("far.json"), j.dump());
+    fs::create_directories(dir_ / "caps");
+    for (const char *f : {"rgb.png", "depth.png", "camera.yaml"}) fs::copy_file(sim_ / f, dir_ / "caps" / f);
+    refused("verify --calib " + sim("calib.yaml") + " --detection " + at("far.json") + " --framebuffer " +
+                sim("rgb.png") + " --captures " + at("caps") + " --json " + at("v.json"),
+            at("far.json"), "more than 1000 m", {at("v.json")});
+    // Behind the camera: correct refused it as behind the projector, verify compared it.
+    for (auto &c : j["rectangle"]["corners"]) {
+        for (auto &x : c) x = x.get<double>() / 1e300;  // metres again
+        c[2] = -c[2].get<double>();
+    }
+    writeBytes(at("behind.json"), j.dump());
+    refused("verify --calib " + sim("calib.yaml") + " --detection " + at("behind.json") + " --framebuffer " +
+                sim("rgb.png") + " --captures " + at("caps") + " --json " + at("v.json"),
+            at("behind.json"), "behind the camera", {at("v.json")});
+}
+
+TEST_F(Hostile, DeeplyNestedProcamXmlIsRefusedBeforeOpenCvParsesIt) {
+    // 50,000 nested elements crashed OpenCV's recursive XML parser (SIGSEGV).
+    fs::create_directories(dir_ / "procam");
+    std::string xml = "<?xml version=\"1.0\"?>\n<opencv_storage>";
+    for (int i = 0; i < 50000; ++i) xml += "<a>";
+    for (int i = 0; i < 50000; ++i) xml += "</a>";
+    writeBytes(dir_ / "procam" / "calibration_result.xml", xml + "</opencv_storage>\n");
+    const std::string path = (dir_ / "procam" / "calibration_result.xml").string();
+    refused("eval --no-progress --procam " + at("procam") + " --out " + at("e"), path, "nested deeper than 64");
+}
+
+TEST_F(Hostile, SequenceFramesAndBagFramesThatAreNoFilesAreNamed) {
+    // A FIFO where a frame belongs ended the sequence there (a 1-frame video, exit 0) or was
+    // skipped by bag; a missing number still ends a sequence.
+    const CliRun det = cli(detectArgs(sim("cloud.pcd")) + " --json " + at("det.json"), dir_);
+    ASSERT_EQ(det.status, 0) << det.err;
+    fs::create_directories(dir_ / "seq");
+    fs::copy_file(sim_ / "rgb.png", dir_ / "seq" / "f_000.png");
+    ASSERT_EQ(::mkfifo((dir_ / "seq" / "f_001.png").c_str(), 0600), 0);
+    fs::copy_file(sim_ / "rgb.png", dir_ / "seq" / "f_002.png");
+    refused("correct --calib " + sim("calib.yaml") + " --detection " + at("det.json") + " --video " +
+                at("seq/f_%03d.png") + " --out " + at("v.avi"),
+            (dir_ / "seq" / "f_001.png").string(), "FIFO", {at("v.avi")});
+    fs::create_directories(dir_ / "depths");
+    fs::copy_file(sim_ / "depth.png", dir_ / "depths" / "d0.png");
+    fs::create_directories(dir_ / "depths" / "d1.png");
+    refused("bag --depth-dir " + at("depths") + " --camera " + sim("camera.yaml") + " --out " + at("o.bag"),
+            (dir_ / "depths" / "d1.png").string(), "is a directory", {at("o.bag")});
+    // Strings bag writes into the bag are UTF-8, as every reader of it needs.
+    fs::remove(dir_ / "depths" / "d1.png");
+    refused("bag --depth-dir " + at("depths") + " --camera " + sim("camera.yaml") + " --out " + at("o.bag") +
+                " --frame-id \"$(printf '\\377')\"",
+            "--frame-id", "UTF-8", {at("o.bag")});
+    // A frame rate no video writer takes: named as the option, not as the output.
+    refused("correct --calib " + sim("calib.yaml") + " --detection " + at("det.json") + " --video " +
+                at("seq/f_%03d.png") + " --out " + at("v.avi") + " --fps 1e-300",
+            "--fps", "0.01-1000 Hz", {at("v.avi")});
+}
+
+TEST_F(Hostile, CalibrateFovInRadiansIsRefusedBeforeWriting) {
+    // Accepted before, it wrote a calibration every reader refuses.
+    refused("calibrate --captures " + sim("captures") + " --out " + at("c.yaml") + " --fov-deg 0.6,0.4", "--fov-deg",
+            "looks like radians", {at("c.yaml")});
+}
+
+TEST_F(Hostile, LabelFramesArePlainNamesAndPolygonsNearTheImage) {
+    const std::string label =
+        test::slurp(std::string(PROJSURF_SOURCE_DIR) + "/labels/real/chimso_classroom_whiteboard.yaml");
+    const std::string frame = "frame: chimso_classroom_whiteboard";
+    ASSERT_NE(label.find(frame), std::string::npos);
+    fs::create_directories(dir_ / "labels");
+    const std::string path = (dir_ / "labels" / "chimso_classroom_whiteboard.yaml").string();
+    std::string bad = label;
+    bad.replace(bad.find(frame), frame.size(), "frame: ../../../../etc");
+    writeBytes(path, bad);
+    const std::string eval = "eval --no-progress --labelled-only --labels " + at("labels") + " --real-dir " +
+                             std::string(PROJSURF_SOURCE_DIR) + "/../shared/data/real --out " + at("e");
+    refused(eval, path, "not a path");
+    bad = label;
+    const std::size_t poly = bad.find("polygon: [[0, 0]");
+    ASSERT_NE(poly, std::string::npos);
+    bad.replace(poly, std::string("polygon: [[0, 0]").size(), "polygon: [[1e300, 0]");
+    writeBytes(path, bad);
+    refused(eval, path, "100000 px");
 }

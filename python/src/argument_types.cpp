@@ -44,8 +44,8 @@ std::vector<double> numbers(const py::handle &value, const char *name, std::size
         try {
             out.push_back(numberArgument(item, name));
         } catch (const InputError &) {
-            throw InputError(name, std::string("expected ") + expected + ", got " + describe(value) +
-                                       " whose item " + std::to_string(i) + " is " + describe(item));
+            throw InputError(name, std::string("expected ") + expected + ", got " + describe(value) + " whose item " +
+                                       std::to_string(i) + " is " + describe(item));
         }
     }
     return out;
@@ -62,8 +62,7 @@ std::string describe(const py::handle &value) {
         shape += a.ndim() == 1 ? ",)" : ")";
         return "an array of shape " + shape + " and dtype " + py::str(py::handle(a.dtype())).cast<std::string>();
     }
-    if (PyUnicode_Check(value.ptr()))
-        return "a str " + shortened(py::repr(value).cast<std::string>());
+    if (PyUnicode_Check(value.ptr())) return "a str " + shortened(py::repr(value).cast<std::string>());
     if (PyBool_Check(value.ptr())) return py::str(value).cast<std::string>();
     if (PyLong_Check(value.ptr()) || PyFloat_Check(value.ptr()))
         return article(typeName(value)) + " " + shortened(py::str(value).cast<std::string>());
@@ -75,12 +74,17 @@ std::string describe(const py::handle &value) {
 }
 
 std::string pathArgument(const py::handle &value, const char *name) {
-    if (PyUnicode_Check(value.ptr())) return value.cast<std::string>();
-    if (py::hasattr(value, "__fspath__")) {
-        const py::object path = value.attr("__fspath__")();
-        if (PyUnicode_Check(path.ptr())) return path.cast<std::string>();
+    std::string path;
+    if (PyUnicode_Check(value.ptr())) {
+        path = value.cast<std::string>();
+    } else if (py::hasattr(value, "__fspath__") && PyUnicode_Check(value.attr("__fspath__")().ptr())) {
+        path = value.attr("__fspath__")().cast<std::string>();
+    } else {
+        throw InputError(name, "expected a file path (str or pathlib.Path), got " + describe(value));
     }
-    throw InputError(name, "expected a file path (str or pathlib.Path), got " + describe(value));
+    // The C library would end the name at a NUL ('a\0b.png' wrote 'a'), as Python's open() refuses it.
+    if (path.find('\0') != std::string::npos) throw InputError(name, "a file path must not hold a NUL character");
+    return path;
 }
 
 const Projector &projectorArgument(const py::handle &value, const char *name) {

@@ -25,6 +25,7 @@
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"
 #include "projsurf/io/overlay.hpp"
+#include "projsurf/io/utf8_text.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/keystone/keystone.hpp"
 #include "projsurf/types/camera.hpp"
@@ -158,7 +159,17 @@ PYBIND11_MODULE(projsurf, m) {
         "Every bad argument (a wrong type, value or file) raises projsurf.InputError with one line.";
 
     // Same one-line messages as the CLI's "projsurf: error: <file>: <problem>" (without the prefix).
-    py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+    // The message as UTF-8 on one line, whatever file bytes it quotes (Python could not decode them).
+    static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const InputError &e) {
+            std::string text = utf8Escaped(e.what());
+            for (std::size_t i; (i = text.find_first_of("\r\n")) != std::string::npos;) text.replace(i, 1, "; ");
+            PyErr_SetString(input_error.ptr(), text.c_str());
+        }
+    });
 
     py::class_<Projector>(
         m, "Projector",
@@ -183,10 +194,7 @@ PYBIND11_MODULE(projsurf, m) {
         .def_property_readonly(
             "direction", [](const Projector &p) { return p.direction; }, "central (optical) axis, unit")
         .def_property_readonly(
-            "intrinsics",
-            [](const Projector &p) {
-                return py::make_tuple(p.fx(), p.fy(), p.cx(), p.cy());
-            },
+            "intrinsics", [](const Projector &p) { return py::make_tuple(p.fx(), p.fy(), p.cx(), p.cy()); },
             "(fx, fy, cx, cy), framebuffer px, pixel centres at integers: the calibration's intrinsics, or\n"
             "those of the plain model (principal point at the centre, focal lengths from fov_deg)")
         .def_property_readonly(
@@ -290,7 +298,8 @@ PYBIND11_MODULE(projsurf, m) {
         "(rad), voxel_leaf, ransac_distance (m), max_outliers (paper); cell (m), max_planes,\n"
         "max_outlier_fraction (default). hull=None is 'concave'. config: None or the path of a detector settings\n"
         "YAML (`projsurf detect --config`, every key: `projsurf detect --print-config`), read first; any other\n"
-        "argument given (not None) overrides it. The CLI's warnings (a gravity the floor contradicts, depths outside what RGB-D\n"
+        "argument given (not None) overrides it. The CLI's warnings (a gravity the floor contradicts, depths outside "
+        "what RGB-D\n"
         "cameras read, colour not registered) come as UserWarnings.";
     py::class_<Detector>(
         m, "Detector",

@@ -99,3 +99,23 @@ def test_tolerance_that_is_not_a_number_is_refused(projector, detection):
         with pytest.raises(projsurf.InputError) as info:
             projsurf.correct(np.zeros((48, 64, 3), np.uint8), projector, detection, tolerance_px=bad)
         assert "tolerance_px" in one_line(info)
+
+
+def test_a_path_with_a_nul_is_refused_not_cut_short(tmp_path, monkeypatch):
+    # The C library ends a name at its NUL: 'a\0b.png' used to write a file called 'a'.
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(projsurf.InputError) as info:
+        projsurf.write_image("a\0b.png", np.zeros((4, 4), np.uint8))
+    assert one_line(info).startswith("path: ")
+    assert list(tmp_path.iterdir()) == []
+    with pytest.raises(projsurf.InputError):
+        projsurf.read_calibration("calib\0.yaml")
+
+
+def test_messages_quoting_bytes_that_are_not_utf8_stay_one_readable_line(projector, tmp_path):
+    # A settings file's word is quoted in the message: Python could not decode the raw bytes.
+    bad = tmp_path / "bad.yaml"
+    bad.write_bytes(b"method: \xff\xfe\n")
+    with pytest.raises(projsurf.InputError) as info:
+        projsurf.detect(wall_and_floor(64, 48, f=52.5), projector, config=str(bad))
+    assert "\\xFF\\xFE" in one_line(info)

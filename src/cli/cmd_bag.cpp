@@ -12,6 +12,7 @@
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"
 #include "projsurf/io/ros_messages.hpp"
+#include "projsurf/io/utf8_text.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace fs = std::filesystem;
@@ -36,7 +37,9 @@ std::vector<fs::path> depthFrames(const std::string &dir) {
     for (const auto &e : fs::directory_iterator(dir, ec)) {
         std::string ext = e.path().extension().string();
         std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-        if (e.is_regular_file(ec) && ext == ".png") out.push_back(e.path());
+        if (ext != ".png") continue;
+        requireReadable(e.path().string());  // a FIFO, folder or broken link named .png: one line, never a wait
+        out.push_back(e.path());
     }
     std::sort(out.begin(), out.end());
     if (out.empty()) throw InputError(dir, "holds no .png depth frames");
@@ -50,6 +53,11 @@ void run(const BagOptions &o) {
     const std::string info_topic =
         !o.info_topic.empty() ? o.info_topic : o.topic.substr(0, o.topic.find_last_of('/') + 1) + "camera_info";
     if (info_topic == o.topic) throw InputError("--camera-info-topic", "must differ from --topic");
+    // ROS strings are UTF-8: a bag with other bytes there would be refused by every reader of it.
+    for (const auto &[name, text] : {std::pair<const char *, const std::string &>{"--topic", o.topic},
+                                     {"--camera-info-topic", info_topic},
+                                     {"--frame-id", o.frame_id}})
+        if (!isUtf8(text)) throw InputError(name, "must be UTF-8 text (ROS strings are)");
     const CameraIntrinsics camera = readCamera(o.camera);
     const std::vector<fs::path> frames = depthFrames(o.depth_dir);
     requireWritableFile(o.out);

@@ -18,8 +18,8 @@
 #include "projsurf/calibration/projector_fit.hpp"
 #include "projsurf/frontend/chessboard_calibration.hpp"
 #include "projsurf/frontend/resolution.hpp"
-#include "projsurf/io/chessboard_report.hpp"
 #include "projsurf/io/calibration_report.hpp"
+#include "projsurf/io/chessboard_report.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"
@@ -27,6 +27,7 @@
 #include "projsurf/io/procam_captures.hpp"
 #include "projsurf/io/structured_report.hpp"
 #include "projsurf/io/yaml_files.hpp"
+#include "projsurf/types/lens_model_check.hpp"
 
 namespace fs = std::filesystem;
 
@@ -180,6 +181,16 @@ void run(const CalibrateOptions &o) {
     if (!(fov_h > 0 && fov_h < 170 && fov_v > 0 && fov_v < 170))
         throw InputError("--fov-deg", "angles must be between 0 and 170 degrees");
     const auto [res_w, res_h] = frontend::parseResolution("--resolution", o.resolution);
+    {
+        // The lens check every reader applies (radians, for one): nothing is written that could not be read.
+        Projector lens;
+        lens.width = static_cast<int>(res_w);
+        lens.height = static_cast<int>(res_h);
+        lens.fov_h = fov_h * kDeg;
+        lens.fov_v = fov_v * kDeg;
+        const std::string problem = lensModelProblem(lens);
+        if (!problem.empty()) throw InputError("--fov-deg", problem);
+    }
     if (o.threshold < 0 || o.threshold > 254) throw InputError("--threshold", "must be between 0 and 254");
     std::error_code ec;
     if (!fs::is_directory(o.captures, ec)) throw InputError(o.captures, "not a directory");

@@ -10,9 +10,6 @@
 #include <opencv2/videoio.hpp>
 
 #include "cli/commands.hpp"
-#include "projsurf/people/beam_blanking.hpp"
-#include "projsurf/keystone/keystone.hpp"
-#include "projsurf/keystone/keystone_warper.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/frontend/progress.hpp"
 #include "projsurf/io/cloud_io.hpp"
@@ -23,6 +20,9 @@
 #include "projsurf/io/quiet_stderr.hpp"
 #include "projsurf/io/video_files.hpp"
 #include "projsurf/io/yaml_files.hpp"
+#include "projsurf/keystone/keystone.hpp"
+#include "projsurf/keystone/keystone_warper.hpp"
+#include "projsurf/people/beam_blanking.hpp"
 
 namespace fs = std::filesystem;
 
@@ -157,6 +157,8 @@ void runVideo(const CorrectOptions &o, const std::string &input, const Projector
 
 void run(const CorrectOptions &o) {
     if (!o.image.empty() && !o.video.empty()) throw InputError("--image", "give --image or --video, not both");
+    if (!(o.fps == 0 || (o.fps >= 0.01 && o.fps <= 1000)))
+        throw InputError("--fps", "must be 0 (the input's rate) or 0.01-1000 Hz");
     const std::string input = o.image.empty() ? o.video : o.image;
     if (input.empty()) throw InputError("correct", "--image (a picture, video or image-sequence pattern) is required");
     const bool video = !o.video.empty() || isVideoPath(input) || isFramePattern(input);

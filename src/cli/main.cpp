@@ -1,5 +1,7 @@
 // projsurf: find where a robot's projector can show a picture on a wall, and warp the
 // picture so it appears undistorted there. See README.md and the contract (docs/interface.md).
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 #include <new>
@@ -9,6 +11,7 @@
 
 #include "cli/commands.hpp"
 #include "projsurf/io/errors.hpp"
+#include "projsurf/io/utf8_text.hpp"
 
 namespace {
 
@@ -32,10 +35,36 @@ std::vector<std::string> glueNegativeValues(int argc, char **argv) {
     return out;
 }
 
-/// A message on one line: line breaks become "; ".
+/// A message on one line of UTF-8: line breaks become "; ", bytes that are not UTF-8 (a file's
+/// content or name quoted in the message) \xNN.
 std::string oneLine(std::string s) {
     for (std::size_t i; (i = s.find_first_of("\r\n")) != std::string::npos;) s.replace(i, 1, "; ");
-    return s;
+    return projsurf::utf8Escaped(s);
+}
+
+/// Every numeric option (and each number of a list) must be finite: CLI11's ranges let NaN
+/// through (every comparison with it is false), and 1e400 reads as infinity.
+void refuseNonFiniteNumbers(CLI::App &app) {
+    const CLI::Validator finite(
+        [](std::string &value) -> std::string {
+            std::size_t start = 0;
+            while (start <= value.size()) {
+                const std::size_t end = std::min(value.find(',', start), value.size());
+                const std::string word = value.substr(start, end - start);
+                char *stop = nullptr;
+                const double x = std::strtod(word.c_str(), &stop);
+                if (!word.empty() && stop && *stop == '\0' && !std::isfinite(x))
+                    return "'" + word + "' is not a finite number";
+                start = end + 1;
+            }
+            return "";
+        },
+        "FINITE");
+    for (CLI::App *sub : app.get_subcommands(static_cast<bool (*)(const CLI::App *)>(nullptr)))
+        for (CLI::Option *opt : sub->get_options()) {
+            const std::string type = opt->get_type_name();
+            if (type.find("FLOAT") != std::string::npos || type.find("INT") != std::string::npos) opt->check(finite);
+        }
 }
 
 /// CLI11 checks required options before it complains about unknown words, so `detect --bogus`
@@ -54,8 +83,7 @@ std::string unknownWord(const CLI::App &app) {
     for (const CLI::App *sub : app.get_subcommands(static_cast<bool (*)(const CLI::App *)>(nullptr)))
         names += (names.empty() ? "" : ", ") + sub->get_name();
     const std::vector<std::string> left = app.remaining();
-    if (left.empty())
-        return app.get_subcommands().empty() ? "a command is required (commands: " + names + ")" : "";
+    if (left.empty()) return app.get_subcommands().empty() ? "a command is required (commands: " + names + ")" : "";
     if (left.front().rfind("-", 0) == 0) return what(left.front()) + " (see projsurf --help)";
     return "unknown command '" + left.front() + "' (commands: " + names + ")";
 }
@@ -78,6 +106,7 @@ int main(int argc, char **argv) {
     projsurf::cli::addPatternsCommand(app);
     projsurf::cli::addVerifyCommand(app);
 
+    refuseNonFiniteNumbers(app);
     std::vector<std::string> args = glueNegativeValues(argc, argv);
     std::vector<char *> cargs;
     for (auto &a : args) cargs.push_back(a.data());
@@ -95,14 +124,14 @@ int main(int argc, char **argv) {
         // Usage mistakes too carry the one error prefix (an InputError's line form).
         const std::string unknown = unknownWord(app);
         if (!unknown.empty())
-            std::cerr << "projsurf: error: " << unknown << "\n";
+            std::cerr << "projsurf: error: " << oneLine(unknown) << "\n";
         else
             std::cerr << "projsurf: error: " << oneLine(e.what()) << " (see projsurf "
                       << (app.get_subcommands().empty() ? "" : app.get_subcommands().front()->get_name() + " ")
                       << "--help)\n";
         return 2;
     } catch (const projsurf::InputError &e) {
-        std::cerr << "projsurf: error: " << e.what() << "\n";
+        std::cerr << "projsurf: error: " << oneLine(e.what()) << "\n";
         return 2;
     } catch (const cv::Exception &e) {
         // OpenCV's what() spans several lines: its one-line message only.

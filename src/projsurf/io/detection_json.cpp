@@ -4,10 +4,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "projsurf/people/focus.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"
+#include "projsurf/people/focus.hpp"
 
 namespace projsurf {
 namespace {
@@ -79,11 +79,13 @@ void requireJsonText(const std::string &path, const std::string &text) {
     const bool yaml = text.find("projector:") != std::string::npos || text.find("camera:") != std::string::npos ||
                       text.find("image_width:") != std::string::npos;
     if (yaml)
-        throw InputError(path, "is a YAML file (a calibration or camera file), not the detection JSON that "
-                               "`projsurf detect --json` writes; --detection and --calib swapped?");
+        throw InputError(path,
+                         "is a YAML file (a calibration or camera file), not the detection JSON that "
+                         "`projsurf detect --json` writes; --detection and --calib swapped?");
     if (first != std::string::npos && text[first] != '[')
-        throw InputError(path, "is not JSON (it does not begin with '{'): give the detection JSON that "
-                               "`projsurf detect --json` writes");
+        throw InputError(path,
+                         "is not JSON (it does not begin with '{'): give the detection JSON that "
+                         "`projsurf detect --json` writes");
 }
 
 }  // namespace
@@ -120,6 +122,14 @@ DetectionFile readDetectionJson(const std::string &path) {
                 out.rectangle.corners[i][k] = c[k].get<double>();
             }
             if (!out.rectangle.corners[i].allFinite()) throw InputError(path, "'rectangle.corners' is not finite");
+            if (out.rectangle.corners[i].norm() > limits::kMaxDetectionDistanceM)
+                throw InputError(path,
+                                 "'rectangle.corners' lie more than 1000 m from the camera: give them in metres "
+                                 "(millimetres?)");
+            if (!(out.rectangle.corners[i].z() > 0))
+                throw InputError(path,
+                                 "'rectangle.corners' lie behind the camera (z <= 0): a detection is on a "
+                                 "surface the camera saw, in the camera's optical frame");
         }
         if (j.contains("plane") && j["plane"].is_object() && j["plane"].contains("coefficients")) {
             const auto &pc = j["plane"]["coefficients"];

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -153,9 +154,11 @@ std::string readSmallTextFile(const std::string &path, std::uint64_t max_bytes, 
     const std::string image_format = readImageHeader(text).format;
     if (!image_format.empty() && image_format != "PNM")
         throw InputError(path, "is a " + image_format + " image, not a " + kind + " file");
-    if (text.find('\0') != std::string::npos) throw InputError(path, std::string("binary data, not a ") + kind + " file");
-    // Nesting: brackets, and (YAML blocks) indentation steps; quotes and comments are not
-    // told apart, which only ever overcounts.
+    if (text.find('\0') != std::string::npos)
+        throw InputError(path, std::string("binary data, not a ") + kind + " file");
+    // Nesting: brackets, (YAML blocks) indentation steps, (XML) elements; quotes and comments
+    // are not told apart, which only ever overcounts.
+    const bool xml = std::string(kind) == "XML";
     int depth = 0, max_depth = 0;
     std::size_t line_start = 0;
     for (std::size_t i = 0; i <= text.size(); ++i) {
@@ -168,9 +171,11 @@ std::string readSmallTextFile(const std::string &path, std::uint64_t max_bytes, 
             continue;
         }
         const char c = text[i];
-        if (c == '[' || c == '{')
+        const char next = i + 1 < text.size() ? text[i + 1] : '\0';
+        if (c == '[' || c == '{' || (xml && c == '<' && std::isalpha(static_cast<unsigned char>(next))))
             max_depth = std::max(max_depth, ++depth);
-        else if ((c == ']' || c == '}') && depth > 0)
+        else if (((c == ']' || c == '}') || (xml && ((c == '<' && next == '/') || (c == '/' && next == '>')))) &&
+                 depth > 0)
             --depth;
     }
     if (max_depth > limits::kMaxNesting)
@@ -218,8 +223,8 @@ cv::Mat decodeImageFile(const std::string &path, int flags, std::uint64_t max_pi
     if (header.format.empty()) throw InputError(path, "not a readable image (expected PNG, JPEG, BMP or PNM)");
     if (header.width == 0 || header.height == 0)
         throw InputError(path, "not a readable image (" + header.format + " header gives a zero size)");
-    if (width > 0 && (header.width != static_cast<std::uint64_t>(width) ||
-                      header.height != static_cast<std::uint64_t>(height)))
+    if (width > 0 &&
+        (header.width != static_cast<std::uint64_t>(width) || header.height != static_cast<std::uint64_t>(height)))
         throw InputError(path, "is " + std::to_string(header.width) + "x" + std::to_string(header.height) + ", " +
                                    whose + " says " + std::to_string(width) + "x" + std::to_string(height));
     if (header.width * header.height > max_pixels)

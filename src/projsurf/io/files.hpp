@@ -44,7 +44,8 @@ private:
     std::vector<std::pair<std::string, std::string>> files_;  // temporary, final
 };
 /// The whole of a small text file (YAML, JSON): refused when larger than `max_bytes` or
-/// nested deeper than limits::kMaxNesting brackets or indentation levels (the parsers recurse).
+/// nested deeper than limits::kMaxNesting brackets, indentation levels or (kind "XML") elements
+/// (the parsers recurse).
 /// `kind` names the format in messages.
 std::string readSmallTextFile(const std::string &path, std::uint64_t max_bytes, const char *kind);
 /// Throws InputError when the file does not exist or is not a regular readable file.

@@ -39,10 +39,13 @@ constexpr std::uint64_t kMaxCapturePixels = std::uint64_t{1} << 26;
 /// pose's captures and decoding at a time, every pose's lifted points; see
 /// structuredLightBytes in io/pattern_files.hpp) at most 1.5 GiB.
 constexpr std::uint64_t kMaxStructuredLightBytes = std::uint64_t{1536} << 20;
-/// Bytes of a YAML file (camera, calibration): 64 KiB; of a detection JSON file: 1 MiB;
-/// nesting depth of either: 64.
+/// Bytes of a YAML file (camera, calibration): 64 KiB; of a detection JSON file (and a procam
+/// calibration_result.xml): 1 MiB; nesting depth of any of them: 64.
 constexpr std::uint64_t kMaxYamlBytes = std::uint64_t{64} << 10;
 constexpr std::uint64_t kMaxJsonBytes = std::uint64_t{1} << 20;
+/// How far from the camera a detection's corners may lie, m: no projector lights a wall 1 km away
+/// (a larger number is millimetres or garbage, and 1e300 overflows the rectangle's sides).
+constexpr double kMaxDetectionDistanceM = 1000.0;
 constexpr int kMaxNesting = 64;
 /// Bytes of a settings YAML file (detect --config): 1 MiB (every key with its comment is 10 KiB).
 constexpr std::uint64_t kMaxSettingsYamlBytes = std::uint64_t{1} << 20;

@@ -1,10 +1,10 @@
 #include "projsurf/io/procam_xml.hpp"
 
-#include <filesystem>
-
 #include <opencv2/core.hpp>
 
 #include "projsurf/io/errors.hpp"
+#include "projsurf/io/files.hpp"
+#include "projsurf/io/limits.hpp"
 
 namespace projsurf {
 namespace {
@@ -16,7 +16,8 @@ cv::Mat matrix(const cv::FileStorage &fs, const std::string &path, const std::st
     if (n.empty() && !alias.empty()) n = fs[alias];
     if (!n.empty()) n >> m;
     if (m.empty() || static_cast<int>(m.total()) != rows * cols)
-        throw InputError(path, "lacks a " + std::to_string(rows) + "x" + std::to_string(cols) + " matrix '" + key + "'");
+        throw InputError(path,
+                         "lacks a " + std::to_string(rows) + "x" + std::to_string(cols) + " matrix '" + key + "'");
     m.convertTo(m, CV_64F);
     return m.reshape(1, rows);
 }
@@ -24,11 +25,11 @@ cv::Mat matrix(const cv::FileStorage &fs, const std::string &path, const std::st
 }  // namespace
 
 PublishedProcam readProcamXml(const std::string &path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, "no such file");
+    // Read and checked first (size, nesting): OpenCV's parser recurses once per element.
+    const std::string text = readSmallTextFile(path, limits::kMaxJsonBytes, "XML");
     cv::FileStorage fs;
     try {
-        fs.open(path, cv::FileStorage::READ);
+        fs.open(text, cv::FileStorage::READ | cv::FileStorage::MEMORY);
     } catch (const cv::Exception &) {
         throw InputError(path, "not a readable OpenCV FileStorage file");
     }

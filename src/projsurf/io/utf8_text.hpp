@@ -1,10 +1,13 @@
 #pragma once
 // Whether bytes are well-formed UTF-8 (RFC 3629: no overlong forms, no surrogates, at most
-// U+10FFFF): what a string must be before it goes into JSON.
+// U+10FFFF): what a string must be before it goes into JSON or onto a terminal.
 #include <string>
 
 namespace projsurf {
 
 bool isUtf8(const std::string &bytes);
+/// The bytes with each one that is not part of well-formed UTF-8 written as \xNN (a message
+/// that quotes a file's bytes or a non-UTF-8 file name stays readable UTF-8).
+std::string utf8Escaped(const std::string &bytes);
 
 }  // namespace projsurf

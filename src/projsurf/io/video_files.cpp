@@ -99,9 +99,13 @@ std::string frameName(const std::string &pattern, long n) {
     return name;
 }
 
+/// Whether a sequence's frame is there: nothing at the name ends the sequence; anything else
+/// must be a readable regular file (a FIFO, a folder or a broken link there is an error naming it).
 bool exists(const std::string &path) {
     std::error_code ec;
-    return std::filesystem::is_regular_file(path, ec);
+    if (std::filesystem::symlink_status(path, ec).type() == std::filesystem::file_type::not_found) return false;
+    requireReadable(path);
+    return true;
 }
 
 void toBgr8(cv::Mat &frame) {

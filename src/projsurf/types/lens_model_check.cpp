@@ -18,6 +18,8 @@ std::string num(double v) {
 /// Empty when a focal length of `f` px over `side` px gives an angle of view in the range.
 std::string focalProblem(const std::string &key, double f, int side, bool narrow_ok = false) {
     if (!std::isfinite(f) || !(f > 0)) return key + " must be a positive finite number";
+    if (narrow_ok && f > kMaxCameraFocalPx)
+        return key + " = " + num(f) + " px is beyond " + num(kMaxCameraFocalPx) + " px: no camera lens is that long";
     const double fov = 2.0 * std::atan(0.5 * side / f) / kDeg;
     if ((!narrow_ok && fov < kMinLensFovDeg) || fov > kMaxLensFovDeg)
         return key + " = " + num(f) + " px gives a " + num(fov) + " deg angle of view over " + std::to_string(side) +
@@ -28,7 +30,8 @@ std::string focalProblem(const std::string &key, double f, int side, bool narrow
 std::string centreProblem(const std::string &key, double c, int side, bool crop_ok = false) {
     if (!std::isfinite(c)) return key + " is not finite";
     // A crop of a frame keeps the full frame's principal point: only a far-off one is refused.
-    if (std::abs(c - 0.5 * side) > (crop_ok ? 1e6 : 4.0 * side)) return key + " = " + num(c) + " lies implausibly far outside the image";
+    if (std::abs(c - 0.5 * side) > (crop_ok ? 1e6 : 4.0 * side))
+        return key + " = " + num(c) + " lies implausibly far outside the image";
     return "";
 }
 
@@ -71,8 +74,9 @@ std::string lensModelProblem(const Projector &p) {
 
 std::string cameraModelProblem(const CameraIntrinsics &c) {
     if (c.width < 1 || c.height < 1) return "camera.width and camera.height must be positive whole numbers";
-    for (const std::string &e : {focalProblem("camera.fx", c.fx, c.width, true), focalProblem("camera.fy", c.fy, c.height, true),
-                                 centreProblem("camera.cx", c.cx, c.width, true), centreProblem("camera.cy", c.cy, c.height, true)})
+    for (const std::string &e :
+         {focalProblem("camera.fx", c.fx, c.width, true), focalProblem("camera.fy", c.fy, c.height, true),
+          centreProblem("camera.cx", c.cx, c.width, true), centreProblem("camera.cy", c.cy, c.height, true)})
         if (!e.empty()) return e;
     // Units per metre (1000 is millimetres): wide bounds, so only a scale that makes every
     // depth infinite or zero is refused (a crop of a frame or far test scenes stay readable).

@@ -14,6 +14,10 @@ namespace projsurf {
 /// edge); a projector's is 15-120, a depth camera's 40-120.
 constexpr double kMinLensFovDeg = 1.0;
 constexpr double kMaxLensFovDeg = 170.0;
+/// The longest focal length a camera model may have, px: a crop of a frame keeps the frame's
+/// focal length and may see under 1 degree, so the camera's bound is this, not an angle; 10^6 px
+/// is a 1 m lens on 1 um pixels (depth cameras have 200-2000 px).
+constexpr double kMaxCameraFocalPx = 1e6;
 /// How far the full model's angles of view may lie from the file's fov_deg: 10 degrees
 /// (calibrate writes them equal; a hand-rounded file stays well inside).
 constexpr double kMaxFovDisagreementDeg = 10.0;
