@@ -1,7 +1,7 @@
 #include "bench_blanking.hpp"
 
 #include "eval/walk_in.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/scenarios.hpp"
 

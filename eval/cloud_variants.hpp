@@ -6,7 +6,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 
 namespace projsurf {
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
 namespace projsurf::sim {

@@ -14,7 +14,7 @@
 #include "projsurf/calibration/calibration.hpp"
 #include "projsurf/keystone/keystone.hpp"
 #include "eval/scoring.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/scene.hpp"
 #include "projsurf/sim/sensor_model.hpp"
 

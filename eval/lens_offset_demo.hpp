@@ -8,7 +8,7 @@
 
 #include "projsurf/types/projector.hpp"
 #include "eval/experiments.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"

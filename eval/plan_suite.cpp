@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/planning/floor_occupancy.hpp"
 #include "projsurf/planning/stance_view.hpp"
 #include "projsurf/sim/ground_truth.hpp"

@@ -7,7 +7,7 @@
 
 #include "projsurf/keystone/keystone.hpp"
 #include "eval/experiments.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 

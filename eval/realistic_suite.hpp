@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 
 namespace projsurf::sim {

@@ -4,7 +4,7 @@
 // as the best possible one (the paper's 0.05 m^2 criterion, section 4.1)?
 #include <string>
 
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 
 namespace projsurf::sim {

@@ -9,7 +9,7 @@
 #include "projsurf/keystone/keystone.hpp"
 #include "eval/walk_in.hpp"
 #include "projsurf/frontend/test_card.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"

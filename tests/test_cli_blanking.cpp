@@ -15,7 +15,7 @@
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 

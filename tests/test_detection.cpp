@@ -10,7 +10,7 @@
 #include "projsurf/types/point_grid.hpp"
 #include <opencv2/imgproc.hpp>
 #include "eval/scoring.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"

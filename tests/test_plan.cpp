@@ -13,7 +13,7 @@
 #include "cli_run.hpp"
 #include "eval/plan_suite.hpp"
 #include "eval/real_labels.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/planning/levelled_frame.hpp"

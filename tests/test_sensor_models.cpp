@@ -19,7 +19,7 @@
 
 #include "eval/experiments.hpp"
 #include "eval/realistic_suite.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/detection/default/planar_regions.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/types/point_grid.hpp"

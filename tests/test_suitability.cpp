@@ -15,7 +15,7 @@
 #include "eval/colour_suite.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/exact_depth.hpp"
 #include "projsurf/sim/ray_cast.hpp"

@@ -27,7 +27,7 @@
 #include "projsurf/io/limits.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;

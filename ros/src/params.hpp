@@ -10,7 +10,7 @@
 #include "projsurf/tracking/steady_tracker.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/planning/stand_planner.hpp"
 
 namespace projsurf::ros_node {

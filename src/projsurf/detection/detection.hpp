@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "projsurf/detection/surface_check.hpp"
+#include "projsurf/detection/wall_height.hpp"
 #include "projsurf/types/plane.hpp"
 #include "projsurf/types/plane_frame.hpp"
-#include "projsurf/detection/surface_check.hpp"
-#include "projsurf/detection/default/wall_shape.hpp"
 
 namespace projsurf {
 

@@ -1,12 +1,10 @@
 #pragma once
 // Every setting of projection surface detection, one source per default, each with its unit
 // and where it comes from (paper section, datasheet, or a measurement of this project).
-#include "projsurf/types/depth_tolerance.hpp"
-#include "projsurf/detection/default/planar_regions.hpp"
-#include "projsurf/detection/colour/surface_suitability.hpp"
-#include "projsurf/detection/default/wall_shape.hpp"
-#include "projsurf/detection/default/face_surround.hpp"
+#include <vector>
+
 #include "projsurf/detection/virtual_depth_image.hpp"
+#include "projsurf/types/depth_tolerance.hpp"
 
 namespace projsurf {
 
@@ -30,6 +28,19 @@ struct PaperConfig {
                               ///< 307,200 points
 };
 
+struct PlanarRegionOptions {
+    int cell = 8;                  ///< grid elements per cell side (8 at the 2-px grid: 16 px, CAPE's 20 px order)
+    double min_fill = 0.5;         ///< share of a cell's points that must be readings
+    double thickness_bands = 0.5;  ///< a flat cell is thinner (RMS off its plane) than this many inlier bands
+    double seed_tilt = 0.5;        ///< rad, a region starts from a cell whose normal is within this of horizontal
+    double max_tilt = 0.1;         ///< rad, a region's plane within this of horizontal (contract)
+    double join_bands =
+        0.6;  ///< a neighbour cell joins when its points' RMS distance to the region's plane is below this many bands
+    int min_cells = 6;  ///< smaller regions are not surfaces
+    double merge_angle =
+        0.15;  ///< rad, regions this parallel whose points lie within the obstacle margin of each other's plane are one
+};
+
 /// Default method, stage 1: the vertical planes in view: on depth images, planar regions of the
 /// image (deterministic); on unorganized clouds, sequential RANSAC on a sample.
 struct PlaneSearchConfig {
@@ -49,6 +60,34 @@ struct PlaneSearchConfig {
     double min_region_share = 0.05;
 };
 
+struct WallReliefOptions {
+    bool enabled = true;
+    /// px of the depth image at the wall's depth between nodes, and the Gaussian's sigma: the
+    /// sensor's distortion lives in the image (our Kinect v1 model: features of 110 px), so the
+    /// relief follows features of a few tens of pixels and no finer (a frame's edge stays out).
+    double node_px = 12.0;
+    double sigma_px = 20.0;
+    double tukey_bands = 1.5;  ///< Tukey biweight width in inlier bands
+    int rounds = 3;            ///< reweighting rounds
+    /// Nodes with less than this share of the median node weight shrink towards 0 (the
+    /// quadratic): where the wall was hardly seen, the relief does not guess.
+    double min_weight_share = 0.25;
+    int max_nodes = 96;  ///< per side; a larger wall takes wider spacing
+};
+
+struct WallShapeOptions {
+    double capture_bands = 2.5;  ///< points within this many inlier bands of the plane take part
+    double tukey_bands = 1.5;    ///< Tukey biweight width, in inlier bands (outliers: what stands proud)
+    int iterations = 5;          ///< reweighted least-squares rounds
+    int min_points = 60;         ///< fewer points: the wall stays flat
+    int max_points =
+        2000;  ///< more are thinned evenly (six coefficients; same areas on the real frames as 12000, measured)
+    double max_bend = 0.08;       ///< m, a fitted bend larger than this anywhere in the points' extent is refused,
+    double bend_per_z2 = 0.0089;  ///< 1/m, or than this times the depth squared there (max_bend at 3 m; Kinect v1's
+                                  ///< +-3-5 cm at 3 m grows with z^2 as its disparity error does)
+    WallReliefOptions relief;
+};
+
 /// Default method, stage 2: how each wall departs from its plane (detection/default/wall_shape.hpp).
 struct WallConfig {
     bool fit_shape = true;  ///< follow the smooth bend real depth cameras give a flat wall
@@ -65,6 +104,26 @@ struct WallConfig {
     int plane_refits = 1;
     double refit_min_turn = 0.0087;  ///< rad, 0.5 deg: a quarter of the 2 deg an upright picture may lean
     double refit_min_shift = 0.005;  ///< m, measured on the labelled real frames (docs/wall_model.md)
+};
+
+struct FaceSurroundOptions {
+    int bins = 16;                ///< positions along each edge (columns for the top, rows for the sides)
+    int min_bin_points = 3;       ///< face points a position needs for its edge to be taken there
+    double edge_quantile = 0.97;  ///< the edge at a position: this quantile of the face's points there (stray inliers)
+    std::vector<double> offsets = {0.04, 0.10, 0.20};  ///< m beyond the edge, looked at nearest first
+    double min_step = 0.05;  ///< m, a reading this far off the plane (and beyond the noise margin) is off it
+    int search_px = 2;       ///< px, a missing reading is looked for this far around its pixel
+    double max_gap = 0.10;   ///< m, a gap this wide between a face's points ends it (for its size)
+};
+
+struct FreeStandingRule {
+    double min_seen = 0.4;  ///< share of an edge's positions that must be past or front for it to count
+    double min_past = 0.6;  ///< share of those open behind (pastShare) for the edge to be open
+    /// A face at least this tall and wide serves like a wall even when it stands free: a
+    /// full-height wardrobe or closet front (paper 4.2 projects on one), taller than a person and
+    /// wider than a door.
+    double wall_height = 1.8;  ///< m
+    double wall_width = 0.8;   ///< m
 };
 
 /// Default method, stage 2: faces that stand free in the room (furniture, boxes, people) are
@@ -114,7 +173,47 @@ inline const char *suitabilityModeName(SuitabilityMode mode) {
     return "avoid";
 }
 
-/// Default method, stage 4b: the surface's suitability from its colour (issue 15), only when
+struct SuitabilityOptions {
+    double context = 0.05;  ///< m, the wall judged beyond the raster on each side, so that a thing reaching into it is
+                            ///< judged with the rest of it (a calendar the projector's reach cuts 7 cm into)
+    double weak_contrast = 0.12;  ///< window contrast above which cells near wide texture are textured too (hysteresis;
+                                  ///< a calendar's grid of thin lines holds 0.12-0.2; colour suite) ...
+    double weak_over_wall =
+        8.0;  ///< ... and above this many times the wall's median contrast (5 shrank the fabric
+              ///< wardrobe of real frame nyu_o3d_basement_closet, 8 leaves every labelled frame as it was)
+    double texture_growth = 0.05;  ///< m, how far from wide texture the weak cells may join it (0.03 leaves the
+                                   ///< calendar 2.2 % on the rectangle; colour suite)
+    double window = 0.05;  ///< m, side of the square on the wall texture and glare are judged over (5 cells at 1 cm)
+    double tone_window =
+        0.03;  ///< m, the square darkness and saturation are judged over (3 cells: a dark panel's edge to a cell)
+    double dark_relative =
+        0.45;  ///< darker than this share of the wall's median luminance: too dark (measured, docs/suitability.md)
+    double dark_min = 0.06;  ///< luminance share below which a surface is too dark whatever the wall (near black)
+    double max_chroma =
+        0.40;  ///< mean (max - min channel) / 255 above this: too saturated (measured, docs/suitability.md)
+    double max_contrast =
+        0.20;  ///< luminance std / mean over the window above this: textured (measured, docs/suitability.md)
+    double glare_level = 0.98;  ///< a sample whose brightest channel reaches this share of 255 is blown out
+    double max_glare_share =
+        0.1;  ///< more blown-out samples than this share of the window: glare (specular, emissive; one column of 5)
+    double glare_wall_share = 0.85;  ///< no glare on a wall whose median luminance reaches this share of glare_level
+                                     ///< (the camera clipped the wall itself; real frame sun3d_nvblox_studyroom_000116)
+    int row_step = 1;  ///< every this many rows of the point grid are sampled (2 halves the pass but lets a window pane
+                       ///< reach 2.1 % of the rectangle; colour suite)
+    int min_tone_samples = 8;  ///< fewer in the tone window: tone is judged over the window (a terracotta wall's
+                               ///< chroma, 0.37, crossed 0.40 on the noise of 3-7 samples; test_suitability)
+    int min_samples = 3;       ///< fewer wall samples in the window: colour decides nothing there
+    int trim_cells =
+        2;  ///< textured and glare cells given back on an unfit area's rim (the window reaches 2 cells beyond an edge)
+    double max_hole =
+        0.25;  ///< m^2, fit areas enclosed by unfit cells up to this size are unfit too (a picture's plain mat)
+    double min_unfit_area = 0.01;     ///< m^2, smaller unfit areas are fit (a light switch plate, 8 x 8 cm, clipped
+                                      ///< to white: real frame bundlefusion_copyroom_000000)
+    double min_texture_width = 0.05;  ///< m, textured areas narrower than this are fit (a door seam, a cable; real
+                                      ///< frame nyu_o3d_basement_closet)
+};
+
+/// Default method, stage 4b: the surface's suitability from its colour, only when
 /// the cloud carries colour (without colour it is off whatever the mode).
 struct SuitabilityConfig {
     SuitabilityMode mode = SuitabilityMode::Avoid;
@@ -128,7 +227,7 @@ struct DetectorConfig {
     double max_tilt = 0.1;  ///< rad, normal vs horizontal (contract; paper 3.2.1)
     unsigned seed = 42;     ///< RANSAC random seed (runs are deterministic)
 
-    DepthTolerance tolerance;  ///< how far off a plane a reading may be (default method)
+    DepthTolerance tolerance;        ///< how far off a plane a reading may be (default method)
     VirtualImageConfig unorganized;  ///< default method: unorganized clouds as a pinhole's depth image
     PlaneSearchConfig planes;
     WallConfig wall;

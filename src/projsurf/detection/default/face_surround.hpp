@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "projsurf/detection/detector_config.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/cloud.hpp"
 #include "projsurf/types/depth_tolerance.hpp"
@@ -26,18 +27,8 @@ struct EdgeView {
 };
 
 struct FaceSurround {
-    EdgeView top, left, right;  ///< as seen facing the face (left and right on the viewer's side)
+    EdgeView top, left, right;         ///< as seen facing the face (left and right on the viewer's side)
     double width = 0.0, height = 0.0;  ///< m, the face's size: the median unbroken stretch per row / column
-};
-
-struct FaceSurroundOptions {
-    int bins = 16;              ///< positions along each edge (columns for the top, rows for the sides)
-    int min_bin_points = 3;     ///< face points a position needs for its edge to be taken there
-    double edge_quantile = 0.97;  ///< the edge at a position: this quantile of the face's points there (stray inliers)
-    std::vector<double> offsets = {0.04, 0.10, 0.20};  ///< m beyond the edge, looked at nearest first
-    double min_step = 0.05;     ///< m, a reading this far off the plane (and beyond the noise margin) is off it
-    int search_px = 2;          ///< px, a missing reading is looked for this far around its pixel
-    double max_gap = 0.10;      ///< m, a gap this wide between a face's points ends it (for its size)
 };
 
 /// What the camera sees beyond the top, left and right edges of the face made of `points`
@@ -46,16 +37,6 @@ struct FaceSurroundOptions {
 FaceSurround faceSurround(const Cloud &cloud, const CameraIntrinsics &camera, const PlaneFrame &frame,
                           const std::vector<int> &points, const DepthTolerance &tolerance,
                           const FaceSurroundOptions &options = {});
-
-struct FreeStandingRule {
-    double min_seen = 0.4;  ///< share of an edge's positions that must be past or front for it to count
-    double min_past = 0.6;  ///< share of those open behind (pastShare) for the edge to be open
-    /// A face at least this tall and wide serves like a wall even when it stands free: a
-    /// full-height wardrobe or closet front (paper 4.2 projects on one), taller than a person and
-    /// wider than a door.
-    double wall_height = 1.8;  ///< m
-    double wall_width = 0.8;   ///< m
-};
 
 /// A face stands free (an object on the scene, not a wall) when the camera sees past its plane
 /// above its top edge and beside at least one side: bounded by open space, not by a ceiling,
