@@ -317,7 +317,7 @@ std::string colourSuiteMarkdown(const ColourSuiteResult &result) {
     std::ostringstream md;
     md << "Scenes of `sim/colour_suite.hpp` (realistic Kinect v1 depth, registered colour under room light), "
        << result.rounds
-       << " rounds each, default method with `--suitability avoid` and, for comparison, `off`. Targets (issue 15): "
+       << " rounds each, default method with `--suitability avoid` and, for comparison, `off`. Targets: "
           "the rectangle on unfit things <= 2 % of its area in every round and >= 95 % of the largest rectangle on "
           "fit wall (fit best: the largest rectangle on the detector's own free cells with suitability off, the "
           "unfit things taken out; mean over the rounds); on plain walls the area within 2 % of `off`. Depth truth "

@@ -1,5 +1,5 @@
 #pragma once
-// The colour suite (issue 15): walls that are free by depth but carry things a picture must
+// The colour suite: walls that are free by depth but carry things a picture must
 // not land on (flat framed pictures, a calendar, a busy poster, a flat TV, a bright window
 // pane, a dark panel; all 5 mm proud, so free by the depth truth), and plain walls of room
 // paints. Depth through the realistic Kinect v1 model, registered colour rendered at the same
@@ -38,7 +38,7 @@ struct ColourScene {
 ColourScene makeColourScene(const std::string &name, double distance, double angle_deg);
 
 struct ColourSuiteOptions {
-    int rounds = 10;  ///< per scene (issue 15: every round)
+    int rounds = 10;  ///< per scene (every round)
     unsigned seed = 1;
     double truth_cell = 0.01;  ///< m, as the eval
     double ambient =

@@ -3,7 +3,7 @@
 // the obstacles (red), the projector's footprint on the best surface (yellow), the label's
 // best rectangle (blue) and, when given, the detector's rectangle (magenta), drawn over the
 // registered colour image or, without one, the colour-mapped depth. What the colour makes
-// unsuitable (the label's colour section, issue 15) is orange.
+// unsuitable (the label's colour section) is orange.
 #include <opencv2/core.hpp>
 
 #include "projsurf/types/camera.hpp"

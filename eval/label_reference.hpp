@@ -46,7 +46,7 @@ LabelBest referenceBest(const Cloud &cloud, const CameraIntrinsics &camera, Real
 /// best): what a colour-aware answer is scored against.
 RealLabel colourAwareLabel(const RealLabel &label);
 
-/// The colour-aware best (issue 15): the same search as referenceBest, on the surfaces' planes
+/// The colour-aware best: the same search as referenceBest, on the surfaces' planes
 /// as fitted by it (call referenceBest first), with the unsuitable polygons as further obstacles.
 LabelBest colourReferenceBest(const CameraIntrinsics &camera, const RealLabel &label, double cell = 0.0025);
 

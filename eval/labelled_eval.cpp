@@ -328,14 +328,14 @@ std::string colourReportMarkdown(const std::vector<LabelledFrame> &frames, const
     const ColourSummary s = summariseColour(frames);
     std::ostringstream md;
     if (s.judged == 0) return md.str();
-    md << "### With colour (issue 15)\n\n"
+    md << "### With colour\n\n"
           "The labels of the frames with a registered `rgb.png` also name what the picture should not be shown on "
           "although depth calls it free (orange; `labels/README.md`, section *Colour*); the colour-aware best (blue) "
           "is the reference's search with those polygons as further obstacles. The detector runs once more with "
           "the frame's colour (as `detect --rgb <frame>/rgb.png --suitability avoid`; the colour is used only when "
           "the registration check passes), its rectangle in magenta, the depth-only answer above in white. Both "
           "are scored against the colour-aware label: *right* and *ratio* (area / colour best) as above, and the "
-          "share of the rectangle's area over unsuitable polygons (issue 15's target: ≤ 2 %).\n\n";
+          "share of the rectangle's area over unsuitable polygons (the target: ≤ 2 %).\n\n";
     md << "**" << colourSummaryLine(s) << ".**\n\n";
     md << "| Frame | colour | colour best (m²) | unsuitable polygons | depth only: m² | ratio | right | % unsuitable | "
           "with colour: m² | ratio | right | % unsuitable | why not (with colour) |\n"
@@ -398,7 +398,7 @@ std::string labelledReportMarkdown(const std::vector<LabelledFrame> &frames, con
           "valid answer, 0 otherwise. Seeds 1-5 and 42: area spread (max − min) / max, and how far the "
           "rectangle's centre moves.\n\n";
     md << "**" << labelledSummaryLine(s)
-       << ".** Targets (issue 11): every answer right, ratio ≥ 0.90, seed spread "
+       << ".** Targets: every answer right, ratio ≥ 0.90, seed spread "
           "≤ 2 %.\n\n";
     md << "![labelled frames](" << pictures << "/contact_sheet.png)\n\n";
     md << "| Frame | label best (m²) | detector (m²) | ratio | right | free % | why not | seed areas (m²) | spread | "

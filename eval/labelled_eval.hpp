@@ -3,7 +3,7 @@
 // projector and gravity (as `projsurf detect --depth <frame>/depth.png --camera
 // <frame>/camera.yaml --calib <label> --gravity gx,gy,gz` would), scored against the label,
 // once per seed for stability, with a picture of label and answer per frame. For the labels
-// judged on colour (issue 15), the detector also runs with the frame's registered colour
+// judged on colour, the detector also runs with the frame's registered colour
 // (as `detect --rgb <frame>/rgb.png --suitability avoid`), and both answers are scored against
 // the colour-aware label.
 #include <string>

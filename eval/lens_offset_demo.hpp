@@ -1,5 +1,5 @@
 #pragma once
-// The demo's real projector (issue 12): a projector whose lens throws the picture above its
+// The demo's real projector: a projector whose lens throws the picture above its
 // axis (100 % vertical offset) and is mounted with 1 deg of roll, calibrated by the paper's
 // disc method and by structured light, each used to detect and correct the same picture, and
 // the picture as an audience facing the wall sees it through the true projector.

@@ -1,5 +1,5 @@
 #pragma once
-// The demo's planned move (issue 13): where the robot should stand for a bigger picture, the
+// The demo's planned move: where the robot should stand for a bigger picture, the
 // scene seen again from there, detected and corrected, and what an audience then sees.
 #include <opencv2/core.hpp>
 

@@ -122,7 +122,7 @@ std::string cells(const CalibrationScore &s) {
 
 std::string projectorEvalMarkdown(const std::vector<ProjectorEvalRow> &rows) {
     std::string md =
-        "## Real projectors: disc vs structured-light calibration (issue 12)\n\n"
+        "## Real projectors: disc vs structured-light calibration\n\n"
         "Simulated projectors (the example projector with a vertical lens offset, roll, fy scaled, radial k1); "
         "reprojection of points at 1-4 m (px), origin error (mm), and end to end on a noisy Kinect cloud of a wall "
         "at 2 m, 20 deg: eq. 8 worst error (%), farthest corner from the detected rectangle (mm), tilt of the "

@@ -1,5 +1,5 @@
 #pragma once
-// The eval table of issue 12: simulated real projectors (sim/projector_rigs.hpp) calibrated by
+// The eval table of real projectors: simulated real projectors (sim/projector_rigs.hpp) calibrated by
 // the paper's disc method and by structured light, each scored against the true projector:
 // reprojection error over points at 1-4 m, origin error, and end to end (detection on a noisy
 // cloud of a wall at 2 m, keystone with the estimate, picture cast with the true projector):

@@ -37,7 +37,7 @@ struct LabelBest {
 };
 
 /// Something depth calls free that the picture should not be shown on, judged on the registered
-/// colour (issue 15): a framed print, a poster, a screen, a window, a dark panel, a glare spot.
+/// colour: a framed print, a poster, a screen, a window, a dark panel, a glare spot.
 struct LabelUnsuitable {
     LabelPolygon polygon;  ///< depth-image pixels, as the obstacles
     std::string why;       ///< "textured", "dark", "saturated" or "glare" (detection/colour/surface_suitability's Unfit)

@@ -1,5 +1,5 @@
 #pragma once
-// The realistic simulated suite (issue 11): realistic scenes (scenarios_realistic.hpp) x the
+// The realistic simulated suite: realistic scenes (scenarios_realistic.hpp) x the
 // three realistic sensors (depth_sensor.hpp) x rounds, scored by the eval's ground-truth rule
 // (scoring.hpp: valid, >= 97 % free, area within 0.05 m^2 of the best). Round r uses sensor
 // unit `first_unit + r` (its own fixed distortions) and its own frame noise, so the rounds
@@ -22,7 +22,7 @@ struct RealisticCase {
 const std::vector<RealisticCase> &realisticSuiteCases();
 
 struct RealisticSuiteOptions {
-    int rounds = 10;    ///< per scene and sensor (issue 11: 10)
+    int rounds = 10;    ///< per scene and sensor (10 as the suite's targets ask)
     unsigned seed = 1;  ///< frame-noise and RANSAC seed base
     int first_unit = 0;
     double truth_cell = 0.01;  ///< m, as the eval (EvalPlan::truth_cell)

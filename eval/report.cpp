@@ -712,7 +712,7 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
           "framebuffer's "
           "aspect (letterbox = the whole rectangle).\n";
     if (!info.realistic_markdown.empty())
-        md << "\n## Realistic simulated suite (issue 11)\n\n" << info.realistic_markdown;
+        md << "\n## Realistic simulated suite\n\n" << info.realistic_markdown;
     return md.str();
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// A person walking into the beam of a placed picture (issue 13), and how well a blanking mask
+// A person walking into the beam of a placed picture, and how well a blanking mask
 // kept the light off them: what lit framebuffer pixels hit, cast through the true scene.
 #include <opencv2/core.hpp>
 #include <vector>

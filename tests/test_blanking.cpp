@@ -1,4 +1,4 @@
-// Blanking what stands in the beam (contract "Blanking", issue 13): a person walks into the
+// Blanking what stands in the beam (contract "Blanking"): a person walks into the
 // beam of a placed picture; no lit pixel may fall on them, the rest of the picture stays lit,
 // and sensor noise on an empty wall blanks (almost) nothing.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The full projector model (issue 12): intrinsics with a lens offset, roll, distortion; the
+// The full projector model : intrinsics with a lens offset, roll, distortion; the
 // optional calibration keys; and the keystone with it against the paper's model.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// Surface suitability from registered colour (issue 15) and the colour registration check
-// (issue 14): the core on synthetic walls, the detector on the colour suite's scenes, the CLI.
+// Surface suitability from registered colour and the colour registration check
+//: the core on synthetic walls, the detector on the colour suite's scenes, the CLI.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -1,4 +1,4 @@
-// projsurf verify (issue 12): the projected picture found in the simulated colour image lands
+// projsurf verify : the projected picture found in the simulated colour image lands
 // where the true projector puts it, with a right and with a wrong calibration.
 #include <gtest/gtest.h>
 

@@ -72,7 +72,7 @@ void run(const DemoCliOptions &o) {
     cv::rectangle(framebuffer_view, cv::Rect(0, 0, framebuffer_view.cols, framebuffer_view.rows),
                   cv::Scalar(80, 80, 80), 2);  // the framebuffer's edge, for looking at it on a page
 
-    // A person walks into the beam of the placed picture (issue 13): the picture is blanked
+    // A person walks into the beam of the placed picture (blanking): the picture is blanked
     // where they stand, frame by frame.
     std::vector<sim::WalkInShot> walk;
     cv::Mat walk_in, walk_compare;
@@ -109,7 +109,7 @@ void run(const DemoCliOptions &o) {
         }
     }
 
-    // A real projector (issue 12): its lens throws the picture above its axis and it is mounted
+    // A real projector (lens offset and roll): its lens throws the picture above its axis and it is mounted
     // with a little roll; calibrated by the paper's disc and by structured light.
     const sim::LensOffsetDemo lens =
         sim::runLensOffsetDemo(r.scenario, r.picture, r.audience_view, r.audience_light, o.seed);

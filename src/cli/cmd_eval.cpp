@@ -45,7 +45,7 @@ struct EvalOptions {
     std::string labels_dir = "labels/real";  // label files of the real frames, relative to the repository root
     bool labels_dir_given = false;
     bool no_progress = false;
-    bool projector_only = false;  // only the projector table (issue 12)
+    bool projector_only = false;  // only the projector table
     bool colour_only = false;     // only the colour suite
     bool realistic_only = false;  // only the realistic-sensor suite
     std::string procam;           // a procam-calibration sample_data folder: ours beside its XML
@@ -263,12 +263,12 @@ void run(const EvalOptions &o, const std::string &command) {
         !bar ? sim::Progress()
              : sim::Progress([&bar](int done, int total, const std::string &what) { bar->update(done, total, what); });
     const sim::EvalResults results = sim::runEval(plan, progress);
-    // The realistic suite (realistic sensors and scenes, issue 11), the default method.
+    // The realistic suite (realistic sensors and scenes), the default method.
     sim::RealisticSuiteOptions ropt = o.quick ? sim::quickRealisticSuite() : sim::RealisticSuiteOptions{};
     if (!o.quick) ropt.rounds = rounds;
     ropt.seed = o.seed;
     const sim::RealisticSuiteResult realistic = sim::runRealisticSuite(ropt, sim::defaultVariant().config, progress);
-    // The colour suite (surface suitability, issue 15), the default method.
+    // The colour suite (surface suitability), the default method.
     const sim::ColourSuiteResult colour =
         sim::runColourSuite(colourSuiteOptions(o), sim::defaultVariant().config, progress);
 
@@ -313,7 +313,7 @@ void run(const EvalOptions &o, const std::string &command) {
     fs::create_directories(out, ec);
     if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
     writeEvalReport(o.out, results, gallery, info);
-    std::ofstream(out / "report.md", std::ios::app) << "\n## Colour suite: surface suitability (issue 15)\n\n"
+    std::ofstream(out / "report.md", std::ios::app) << "\n## Colour suite: surface suitability\n\n"
                                                     << sim::colourSuiteMarkdown(colour);
     std::printf("eval: %zu detections in %.1f s (%d rounds%s), %zu real frames; wrote %s/report.md\n",
                 results.trials.size() + results.keystone.size(), results.seconds, rounds, o.quick ? ", quick" : "",

@@ -55,8 +55,7 @@ struct PlaneSearchConfig {
     int refine_rounds = 2;         ///< least-squares refits of each plane on its inliers
     double merge_angle = 0.05;     ///< rad, a plane this parallel to a found one, within its margin, is a slice of it
     /// Depth images: when the vertical regions hold less than this share of the readings (cells
-    /// too rough to grow), the RANSAC search runs as well. Measured: 1-2 % on a D435 wall whose
-    /// per-pixel noise is 3x the model's, 8-57 % on the labelled real frames.
+    /// too rough to grow), the RANSAC search runs as well (measured: docs/tuning.md).
     double min_region_share = 0.05;
 };
 
@@ -76,12 +75,11 @@ struct WallReliefOptions {
 };
 
 struct WallShapeOptions {
-    double capture_bands = 2.5;  ///< points within this many inlier bands of the plane take part
-    double tukey_bands = 1.5;    ///< Tukey biweight width, in inlier bands (outliers: what stands proud)
-    int iterations = 5;          ///< reweighted least-squares rounds
-    int min_points = 60;         ///< fewer points: the wall stays flat
-    int max_points =
-        2000;  ///< more are thinned evenly (six coefficients; same areas on the real frames as 12000, measured)
+    double capture_bands = 2.5;   ///< points within this many inlier bands of the plane take part
+    double tukey_bands = 1.5;     ///< Tukey biweight width, in inlier bands (outliers: what stands proud)
+    int iterations = 5;           ///< reweighted least-squares rounds
+    int min_points = 60;          ///< fewer points: the wall stays flat
+    int max_points = 2000;        ///< more are thinned evenly (six coefficients; measured, docs/tuning.md)
     double max_bend = 0.08;       ///< m, a fitted bend larger than this anywhere in the points' extent is refused,
     double bend_per_z2 = 0.0089;  ///< 1/m, or than this times the depth squared there (max_bend at 3 m; Kinect v1's
                                   ///< +-3-5 cm at 3 m grows with z^2 as its disparity error does)
@@ -103,7 +101,7 @@ struct WallConfig {
     /// ends them.
     int plane_refits = 1;
     double refit_min_turn = 0.0087;  ///< rad, 0.5 deg: a quarter of the 2 deg an upright picture may lean
-    double refit_min_shift = 0.005;  ///< m, measured on the labelled real frames (docs/wall_model.md)
+    double refit_min_shift = 0.005;  ///< m, measured on the labelled real frames (docs/tuning.md)
 };
 
 struct FaceSurroundOptions {
@@ -175,14 +173,13 @@ inline const char *suitabilityModeName(SuitabilityMode mode) {
 
 struct SuitabilityOptions {
     double context = 0.05;  ///< m, the wall judged beyond the raster on each side, so that a thing reaching into it is
-                            ///< judged with the rest of it (a calendar the projector's reach cuts 7 cm into)
-    double weak_contrast = 0.12;  ///< window contrast above which cells near wide texture are textured too (hysteresis;
-                                  ///< a calendar's grid of thin lines holds 0.12-0.2; colour suite) ...
+                            ///< judged with the rest of it (colour suite; docs/tuning.md)
+    double weak_contrast = 0.12;  ///< window contrast above which cells near wide texture are textured too
+                                  ///< (hysteresis; colour suite, docs/tuning.md) ...
     double weak_over_wall =
-        8.0;  ///< ... and above this many times the wall's median contrast (5 shrank the fabric
-              ///< wardrobe of real frame nyu_o3d_basement_closet, 8 leaves every labelled frame as it was)
-    double texture_growth = 0.05;  ///< m, how far from wide texture the weak cells may join it (0.03 leaves the
-                                   ///< calendar 2.2 % on the rectangle; colour suite)
+        8.0;  ///< ... and above this many times the wall's median contrast (labelled real frames, docs/tuning.md)
+    double texture_growth = 0.05;  ///< m, how far from wide texture the weak cells may join it (colour suite,
+                                   ///< docs/tuning.md)
     double window = 0.05;  ///< m, side of the square on the wall texture and glare are judged over (5 cells at 1 cm)
     double tone_window =
         0.03;  ///< m, the square darkness and saturation are judged over (3 cells: a dark panel's edge to a cell)
@@ -197,20 +194,19 @@ struct SuitabilityOptions {
     double max_glare_share =
         0.1;  ///< more blown-out samples than this share of the window: glare (specular, emissive; one column of 5)
     double glare_wall_share = 0.85;  ///< no glare on a wall whose median luminance reaches this share of glare_level
-                                     ///< (the camera clipped the wall itself; real frame sun3d_nvblox_studyroom_000116)
-    int row_step = 1;  ///< every this many rows of the point grid are sampled (2 halves the pass but lets a window pane
-                       ///< reach 2.1 % of the rectangle; colour suite)
-    int min_tone_samples = 8;  ///< fewer in the tone window: tone is judged over the window (a terracotta wall's
-                               ///< chroma, 0.37, crossed 0.40 on the noise of 3-7 samples; test_suitability)
+                                     ///< (the camera clipped the wall itself; labelled real frames, docs/tuning.md)
+    int row_step = 1;          ///< every this many rows of the point grid are sampled (colour suite, docs/tuning.md)
+    int min_tone_samples = 8;  ///< fewer in the tone window: tone is judged over the window (fewer let a plain
+                               ///< wall's chroma noise cross max_chroma; docs/tuning.md)
     int min_samples = 3;       ///< fewer wall samples in the window: colour decides nothing there
     int trim_cells =
         2;  ///< textured and glare cells given back on an unfit area's rim (the window reaches 2 cells beyond an edge)
     double max_hole =
         0.25;  ///< m^2, fit areas enclosed by unfit cells up to this size are unfit too (a picture's plain mat)
-    double min_unfit_area = 0.01;     ///< m^2, smaller unfit areas are fit (a light switch plate, 8 x 8 cm, clipped
-                                      ///< to white: real frame bundlefusion_copyroom_000000)
-    double min_texture_width = 0.05;  ///< m, textured areas narrower than this are fit (a door seam, a cable; real
-                                      ///< frame nyu_o3d_basement_closet)
+    double min_unfit_area = 0.01;     ///< m^2, smaller unfit areas are fit (a light switch plate, 8 x 8 cm;
+                                      ///< docs/tuning.md)
+    double min_texture_width = 0.05;  ///< m, textured areas narrower than this are fit (a door seam, a cable;
+                                      ///< docs/tuning.md)
 };
 
 /// Default method, stage 4b: the surface's suitability from its colour, only when

@@ -1,6 +1,6 @@
 #pragma once
 // Whether the wall under each raster cell is fit to project on, from the registered colour of
-// the wall points seen there (issue 15): too dark (low albedo: the picture is dim), too
+// the wall points seen there: too dark (low albedo: the picture is dim), too
 // saturated (its colours shift), textured (a framed picture, a calendar, a busy pattern: it is
 // unreadable), or blown out (specular or emissive: glass, a lamp, a screen). Statistics are
 // taken over sliding windows on the wall around each cell (texture and glare over `window`,

@@ -1,9 +1,8 @@
 #pragma once
 // How a wall seen by a real depth camera departs from its plane. Structured-light and stereo
 // cameras bend a flat wall smoothly by centimetres (Kinect v1: +-1-2 cm at 2 m, +-3-5 cm at 3 m
-// towards the image border, fixed per unit: Smisek et al. 2011, Herrera et al. 2012; the
-// classroom frame in shared/data/real: 19-21 mm RMS about its plane against ~10 mm of local
-// noise), and real walls bow by millimetres. A quadratic height over the plane follows the
+// towards the image border, fixed per unit: Smisek et al. 2011, Herrera et al. 2012; measured
+// on a real frame: docs/tuning.md), and real walls bow by millimetres. A quadratic height over the plane follows the
 // broad bend, a relief (wall_relief.hpp) the distortion's features of a hundred pixels; what
 // stands proud of the wall (a box, a frame) is local and stays in the residual.
 #include <Eigen/Core>
