@@ -15,7 +15,7 @@
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
 
 struct ColourCase {
     std::string scene;      ///< colourSceneNames()
@@ -30,7 +30,7 @@ const std::vector<ColourCase> &colourSuiteCases();
 /// A colour scene: the scenario and where the unfit things are on its main wall (s0, s1, h0,
 /// h1 in the WallFrame's coordinates: m along the wall from the axis point, m above the floor).
 struct ColourScene {
-    Scenario scenario;
+    sim::Scenario scenario;
     std::vector<std::array<double, 4>> unfit;
     bool plain = false;  ///< a plain painted wall (nothing unfit)
 };
@@ -79,4 +79,4 @@ ColourSuiteResult runColourSuite(const ColourSuiteOptions &options, const Detect
 std::string colourSuiteMarkdown(const ColourSuiteResult &result);
 std::string colourSuiteSummary(const ColourSuiteResult &result);  ///< one line
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

@@ -6,12 +6,12 @@
 // unsuitable (the label's colour section) is orange.
 #include <opencv2/core.hpp>
 
+#include "eval/real_labels.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/cloud.hpp"
 #include "projsurf/types/plane_frame.hpp"
-#include "eval/real_labels.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 
 /// Depth as a turbo colour map, 0.5 m blue to 5 m red, black where there is no reading.
 cv::Mat depthColour(const Cloud &cloud);
@@ -27,4 +27,4 @@ cv::Mat renderLabelOverlay(const cv::Mat &background, const RealLabel &label, co
 cv::Mat renderColourLabelOverlay(const cv::Mat &background, const RealLabel &label, const CameraIntrinsics &camera,
                                  const Rectangle *with_colour, const Rectangle *depth_only, double tint = 0.35);
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

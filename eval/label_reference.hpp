@@ -7,12 +7,12 @@
 #include <optional>
 #include <vector>
 
+#include "eval/real_labels.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/cloud.hpp"
 #include "projsurf/types/plane_frame.hpp"
-#include "eval/real_labels.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 
 /// Even-odd point-in-polygon test (pixel coordinates).
 bool insidePolygon(const std::vector<Eigen::Vector2d> &polygon, const Eigen::Vector2d &p);
@@ -50,4 +50,4 @@ RealLabel colourAwareLabel(const RealLabel &label);
 /// as fitted by it (call referenceBest first), with the unsuitable polygons as further obstacles.
 LabelBest colourReferenceBest(const CameraIntrinsics &camera, const RealLabel &label, double cell = 0.0025);
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

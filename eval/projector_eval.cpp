@@ -5,13 +5,15 @@
 #include <cmath>
 #include <cstdio>
 
-#include "projsurf/keystone/keystone.hpp"
 #include "eval/experiments.hpp"
 #include "projsurf/detector/detector.hpp"
+#include "projsurf/keystone/keystone.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
+
+using namespace projsurf::sim;  // the simulator the evaluation runs on
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
@@ -159,4 +161,4 @@ std::string projectorEvalSummary(const std::vector<ProjectorEvalRow> &rows) {
     return buf;
 }
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

@@ -13,7 +13,7 @@
 
 namespace fs = std::filesystem;
 
-namespace projsurf {
+namespace projsurf::eval {
 namespace {
 
 /// Reads keys of one file and names them in errors as "file: 'key.sub' ...".
@@ -86,8 +86,7 @@ LabelBest readBest(const Reader &r, const YAML::Node &b, const std::string &key,
         r.fail("'" + key + ".surface' names no surface: '" + best.surface + "'");
     best.width = r.number(r.need(b, "width", key + "."), key + ".width");
     best.height = r.number(r.need(b, "height", key + "."), key + ".height");
-    if (!(best.width > 0 && best.height > 0))
-        r.fail("'" + key + ".width' and '" + key + ".height' must be positive");
+    if (!(best.width > 0 && best.height > 0)) r.fail("'" + key + ".width' and '" + key + ".height' must be positive");
     const YAML::Node c = r.need(b, "corners", key + ".");
     if (!c.IsSequence() || c.size() != 4) r.fail("'" + key + ".corners' must be a list of 4 [x, y, z] points");
     for (int k = 0; k < 4; ++k) best.corners[k] = r.vector3(c[k], key + ".corners");
@@ -243,4 +242,4 @@ std::vector<std::string> listLabelFiles(const std::string &dir) {
     return out;
 }
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

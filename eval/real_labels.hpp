@@ -10,7 +10,7 @@
 #include "projsurf/types/plane.hpp"
 #include "projsurf/types/projector.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 
 /// A simple polygon in depth-image pixel coordinates (x right, y down; pixel centres are
 /// whole numbers, as in CameraIntrinsics::backProject).
@@ -40,7 +40,7 @@ struct LabelBest {
 /// colour: a framed print, a poster, a screen, a window, a dark panel, a glare spot.
 struct LabelUnsuitable {
     LabelPolygon polygon;  ///< depth-image pixels, as the obstacles
-    std::string why;       ///< "textured", "dark", "saturated" or "glare" (detection/colour/surface_suitability's Unfit)
+    std::string why;  ///< "textured", "dark", "saturated" or "glare" (detection/colour/surface_suitability's Unfit)
 };
 
 /// The optional `colour:` section (frames with a registered rgb.png): judged = the section is
@@ -61,7 +61,7 @@ struct RealLabel {
     std::vector<LabelSurface> surfaces;   ///< empty: no usable wall in this frame
     std::vector<LabelPolygon> obstacles;  ///< in front of / proud of the surfaces, or no reading
     LabelBest best;
-    LabelColour colour;                   ///< not judged when the file has no `colour:` section
+    LabelColour colour;  ///< not judged when the file has no `colour:` section
 };
 
 /// The reasons a `colour.unsuitable[].why` may give.
@@ -74,4 +74,4 @@ void writeRealLabel(const std::string &path, const RealLabel &label);
 /// The label files (*.yaml) of a directory, sorted; empty when it is not a directory.
 std::vector<std::string> listLabelFiles(const std::string &dir);
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

@@ -6,11 +6,11 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "eval/real_labels.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/plane_frame.hpp"
-#include "eval/real_labels.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 
 struct RealScoreRules {
     double min_free = 0.95;    ///< share of the rectangle's area free by the labels
@@ -56,4 +56,4 @@ struct ColourScore {
 ColourScore scoreColourRectangle(const RealLabel &label, const CameraIntrinsics &camera, bool found,
                                  const Rectangle &rectangle, const RealScoreRules &rules = {});
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

@@ -11,7 +11,7 @@
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
 
 struct RealisticCase {
     std::string scenario;   ///< realisticScenarioNames()
@@ -26,7 +26,7 @@ struct RealisticSuiteOptions {
     unsigned seed = 1;  ///< frame-noise and RANSAC seed base
     int first_unit = 0;
     double truth_cell = 0.01;  ///< m, as the eval (EvalPlan::truth_cell)
-    std::vector<SensorKind> sensors = sensorKinds();
+    std::vector<sim::SensorKind> sensors = sim::sensorKinds();
     std::vector<RealisticCase> cases = realisticSuiteCases();
 };
 /// 2 rounds, every scene and sensor (for tests).
@@ -34,7 +34,7 @@ RealisticSuiteOptions quickRealisticSuite();
 
 struct RealisticRow {
     RealisticCase scene;
-    SensorKind sensor = SensorKind::Kinect1;
+    sim::SensorKind sensor = sim::SensorKind::Kinect1;
     int rounds = 0, found = 0, valid = 0, success = 0;
     double best_area = 0.0;  ///< m^2, ground truth
     double mean_area = 0.0;  ///< m^2, over found rounds (0 when none)
@@ -59,11 +59,11 @@ RealisticSuiteResult runRealisticSuite(const RealisticSuiteOptions &options, con
 struct SensorTotals {
     int rounds = 0, success = 0, scenes = 0, scenes_ok = 0;
 };
-SensorTotals sensorTotals(const RealisticSuiteResult &result, SensorKind sensor);
+SensorTotals sensorTotals(const RealisticSuiteResult &result, sim::SensorKind sensor);
 
 /// Markdown: a per-sensor summary table and the per-scene table (success % per sensor).
 std::string realisticSuiteMarkdown(const RealisticSuiteResult &result);
 /// One line: success per sensor and scenes at >= 98 %.
 std::string realisticSuiteSummary(const RealisticSuiteResult &result);
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

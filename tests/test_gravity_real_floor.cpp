@@ -16,6 +16,8 @@
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/io/cloud_io.hpp"
 
+using namespace projsurf::eval;  // the evaluation under test
+
 namespace fs = std::filesystem;
 using namespace projsurf;
 

@@ -31,6 +31,8 @@
 #include "projsurf/sim/wall_residual_stats.hpp"
 #include "projsurf/sim/window_noise.hpp"
 
+using namespace projsurf::eval;  // the evaluation under test
+
 using namespace projsurf;
 using namespace projsurf::sim;
 namespace fs = std::filesystem;

@@ -17,6 +17,8 @@
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
+using namespace projsurf::eval;  // the evaluation under test
+
 using namespace projsurf;
 namespace fs = std::filesystem;
 
@@ -43,7 +45,7 @@ Loop closeLoop(const Projector &believed, const Projector &truth, const sim::Sce
     l.keystone = *k.keystone;
     l.framebuffer = warpToFramebuffer(card, l.keystone);
     l.seen = sim::renderFrame(sc.scene, sensor, seed + 1, sim::Projection{truth, l.framebuffer});
-    l.landed = sim::framebufferOnWall(truth, sc.scene, l.keystone.picture_px).corners;
+    l.landed = eval::framebufferOnWall(truth, sc.scene, l.keystone.picture_px).corners;
     return l;
 }
 
