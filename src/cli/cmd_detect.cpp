@@ -12,12 +12,12 @@
 #include "projsurf/frontend/aspect.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/depth_range_check.hpp"
-#include "projsurf/frontend/gravity_sanity.hpp"
 #include "projsurf/frontend/detect_answer.hpp"
+#include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/detector_config_file.hpp"
 #include "projsurf/frontend/detector_config_keys.hpp"
-#include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
+#include "projsurf/frontend/gravity_sanity.hpp"
 #include "projsurf/frontend/method_settings.hpp"
 #include "projsurf/frontend/method_words.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
@@ -39,11 +39,10 @@ namespace {
 constexpr double kTiltWarningDeg = 5.0;  ///< deg, a floor this far from level means the camera is not level
 
 struct DetectOptions {
-    std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity, method = "default", hull = "concave",
-                                                                                  bag, topic, info_topic, suitability,
-        config_file;
+    std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity,
+        method = "default", hull = "concave", bag, topic, info_topic, suitability, config_file;
     bool print_config = false;
-    DetectorConfig config;  ///< the pipeline flags' values (used where a flag was given)
+    DetectorConfig config;                     ///< the pipeline flags' values (used where a flag was given)
     double min_width = -1.0, min_area = -1.0;  ///< m, m^2; < 0: the method's default (frontend/minimum_size.hpp)
 };
 
@@ -63,13 +62,13 @@ void warnIfIgnored(const CLI::App &sub, Method method) {
         const std::string name = frontend::optionName(setting);
         if (sub.get_option(name)->count() > 0)
             std::fprintf(stderr, "projsurf: warning: %s is ignored by the %s method\n", name.c_str(),
-                         method == Method::Paper ? "paper" : "default");
+                         frontend::methodName(method));
     }
 }
 
 /// The pipeline flags bound to o.config, by the settings' shared names (frontend/method_settings.hpp).
-constexpr const char *kConfigFlags[] = {"max_tilt", "seed",       "voxel_leaf",          "ransac_distance",
-                                        "max_outliers", "cell",   "max_planes",          "max_outlier_fraction"};
+constexpr const char *kConfigFlags[] = {"max_tilt",     "seed", "voxel_leaf", "ransac_distance",
+                                        "max_outliers", "cell", "max_planes", "max_outlier_fraction"};
 
 /// The detector's settings: the defaults, then --config's file, then the flags given.
 DetectorConfig detectorConfig(const DetectOptions &o, const CLI::App &sub) {
@@ -254,7 +253,8 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     if (const auto w = frontend::depthRangeWarning(cloud, o.depth.empty() ? o.cloud : o.camera, !o.depth.empty()))
         std::fprintf(stderr, "projsurf: warning: %s\n", w->c_str());
     SurfaceDetector detector(projector, cfg);
-    const Detection det = frontend::detectAnswer(detector, cloud, gravity, minimum, o.cloud.empty() ? o.depth : o.cloud);
+    const Detection det =
+        frontend::detectAnswer(detector, cloud, gravity, minimum, o.cloud.empty() ? o.depth : o.cloud);
     const nlohmann::json j = detectionToJson(det, cfg, &projector);
     // Both outputs, or neither: written beside their targets, renamed once both are there.
     OutputGroup outputs;
