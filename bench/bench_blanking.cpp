@@ -1,9 +1,11 @@
 #include "bench_blanking.hpp"
 
 #include "eval/walk_in.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/scenarios.hpp"
+
+using namespace projsurf::eval;  // the evaluation under test
 
 namespace projsurf::bench {
 
@@ -15,7 +17,7 @@ std::vector<BlankingCase> blankingCases(const std::vector<BenchFrame> &real, con
     const Detection det = detectSurface(empty.cloud, projector, DetectorConfig{}, sc.gravity);
     const Plane plane = det.found ? det.plane : sc.wall;
     out.push_back({"sim: empty wall 2.5 m, Kinect v1", empty.cloud, plane});
-    const auto walk = sim::walkInScenes(sc.scene, -0.6, -0.6, 1, 1.4);
+    const auto walk = eval::walkInScenes(sc.scene, -0.6, -0.6, 1, 1.4);
     out.push_back({"sim: person in the beam, Kinect v1",
                    sim::renderSensorFrame(walk[0], kinect, 2, std::nullopt, false).cloud, plane});
     for (const auto &f : real) {

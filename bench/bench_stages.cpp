@@ -27,7 +27,7 @@
 #include "projsurf/detection/colour/colour_registration.hpp"
 #include "projsurf/detection/rectangle_search.hpp"
 #include "projsurf/io/errors.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
 namespace {

@@ -28,7 +28,7 @@
 #include "pcl_reference.hpp"
 #include "projsurf/types/projector.hpp"
 #include "projsurf/io/errors.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
 namespace {

@@ -1,7 +1,8 @@
 # Install rules and the exported package: `cmake --install build --prefix P` gives
 #   P/include/projsurf/{types,calibration,detection,keystone,people,planning,tracking,sim,io,frontend}/*.hpp
-#   P/lib/libprojsurf_{core,sim,io,frontend}.so*     P/bin/projsurf (the evaluation, eval/, is linked into it, not installed)
+#   P/lib/libprojsurf_{sim,io,frontend}.so* and one per core folder (libprojsurf_types.so, ...)     P/bin/projsurf (the evaluation, eval/, is linked into it, not installed)
 #   P/lib/cmake/projsurf/  find_package(projsurf [COMPONENTS core sim io frontend]) -> projsurf::<component>
+#                          (projsurf::core links projsurf::types, projsurf::detection, ...)
 #   P/lib/pkgconfig/       projsurf-core.pc (the core), projsurf.pc (all of them)
 # Each component has its own export file, so find_package(projsurf COMPONENTS core) looks up
 # only what the core's headers need (Eigen, OpenCV core): no nlohmann-json, PCL or CLI11.
@@ -17,7 +18,11 @@ if(TARGET projsurf_frontend)
   list(APPEND PROJSURF_COMPONENTS frontend)  # the CLI links it
 endif()
 foreach(component ${PROJSURF_COMPONENTS})
-  install(TARGETS projsurf_${component} EXPORT projsurf-${component}-targets
+  set(targets projsurf_${component})
+  if(component STREQUAL "core")
+    list(APPEND targets ${PROJSURF_CORE_TARGETS})  # the folders' libraries behind the umbrella
+  endif()
+  install(TARGETS ${targets} EXPORT projsurf-${component}-targets
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT runtime NAMELINK_COMPONENT devel
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT devel
     RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT runtime)
@@ -42,6 +47,12 @@ set(PROJSURF_PC_IO_PRIVATE "")
 if(NOT PROJSURF_SHARED_LIBS)
   set(PROJSURF_PC_IO_PRIVATE yaml-cpp)
 endif()
+# projsurf-core links every folder's library, the ones that use others first.
+set(PROJSURF_PC_CORE_LIBS "")
+foreach(target ${PROJSURF_CORE_TARGETS})
+  string(PREPEND PROJSURF_PC_CORE_LIBS "-l${target} ")
+endforeach()
+string(STRIP "${PROJSURF_PC_CORE_LIBS}" PROJSURF_PC_CORE_LIBS)
 set(PROJSURF_PC_FILES projsurf-core)
 if(TARGET projsurf_io)
   list(APPEND PROJSURF_PC_FILES projsurf)

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <random>
 
-namespace projsurf {
+namespace projsurf::eval {
 namespace {
 
 VariantRun compare(const Detection &variant, const Detection &organized) {
@@ -53,4 +53,4 @@ std::vector<VariantRun> shiftedVariants(const Cloud &cloud, const Detection &org
     return runs;
 }
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

@@ -6,9 +6,9 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 
 /// A variant's answer against the organized frame's.
 struct VariantRun {
@@ -28,4 +28,4 @@ VariantRun unorganizedVariant(const Cloud &cloud, const Detection &organized, co
 std::vector<VariantRun> shiftedVariants(const Cloud &cloud, const Detection &organized, const Projector &projector,
                                         const DetectorConfig &config, const Eigen::Vector3d &gravity);
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

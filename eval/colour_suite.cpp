@@ -8,9 +8,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "eval/experiments.hpp"
 #include "projsurf/detection/colour/colour_registration.hpp"
 #include "projsurf/detection/rectangle_search.hpp"
-#include "eval/experiments.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/exact_depth.hpp"
 #include "projsurf/sim/ground_truth.hpp"
@@ -20,7 +20,9 @@
 #include "projsurf/sim/wall_frame.hpp"
 #include "projsurf/types/formatted.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
+
+using namespace projsurf::sim;  // the simulator the evaluation runs on
 namespace {
 
 constexpr double kTexel = 0.005;  ///< m per texel of the things' textures
@@ -317,7 +319,7 @@ std::string colourSuiteMarkdown(const ColourSuiteResult &result) {
     std::ostringstream md;
     md << "Scenes of `sim/colour_suite.hpp` (realistic Kinect v1 depth, registered colour under room light), "
        << result.rounds
-       << " rounds each, default method with `--suitability avoid` and, for comparison, `off`. Targets (issue 15): "
+       << " rounds each, default method with `--suitability avoid` and, for comparison, `off`. Targets: "
           "the rectangle on unfit things <= 2 % of its area in every round and >= 95 % of the largest rectangle on "
           "fit wall (fit best: the largest rectangle on the detector's own free cells with suitability off, the "
           "unfit things taken out; mean over the rounds); on plain walls the area within 2 % of `off`. Depth truth "
@@ -331,10 +333,11 @@ std::string colourSuiteMarkdown(const ColourSuiteResult &result) {
            << formatted("%.0f°", r.scene.angle_deg) << " | " << formatted("%.2f m²", r.depth_best) << " | "
            << formatted("%.2f m²", r.suitable_best) << " | " << formatted("%.2f m²", r.mean_area) << " | "
            << (r.plain ? std::string("-") : formatted("%.1f %%", r.max_unfit_pct)) << " | "
-           << (r.plain ? std::string("-") : formatted("%.0f %%", r.min_area_pct)) << " | " << formatted("%.2f m²", r.mean_area_off)
-           << " | " << (r.plain ? std::string("-") : formatted("%.0f %%", r.max_off_unfit_pct)) << " | "
-           << (r.plain ? formatted("%.1f %%", r.worst_plain_pct) : std::string("-")) << " | " << formatted("%.2f", r.suitability_ms)
-           << " | " << (r.ok() ? "holds" : "**misses**") << " |\n";
+           << (r.plain ? std::string("-") : formatted("%.0f %%", r.min_area_pct)) << " | "
+           << formatted("%.2f m²", r.mean_area_off) << " | "
+           << (r.plain ? std::string("-") : formatted("%.0f %%", r.max_off_unfit_pct)) << " | "
+           << (r.plain ? formatted("%.1f %%", r.worst_plain_pct) : std::string("-")) << " | "
+           << formatted("%.2f", r.suitability_ms) << " | " << (r.ok() ? "holds" : "**misses**") << " |\n";
     }
     return md.str();
 }
@@ -347,4 +350,4 @@ std::string colourSuiteSummary(const ColourSuiteResult &result) {
            formatted("%.0f s", result.seconds) + ")";
 }
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

@@ -1,5 +1,5 @@
 #pragma once
-// The colour suite (issue 15): walls that are free by depth but carry things a picture must
+// The colour suite: walls that are free by depth but carry things a picture must
 // not land on (flat framed pictures, a calendar, a busy poster, a flat TV, a bright window
 // pane, a dark panel; all 5 mm proud, so free by the depth truth), and plain walls of room
 // paints. Depth through the realistic Kinect v1 model, registered colour rendered at the same
@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
 
 struct ColourCase {
     std::string scene;      ///< colourSceneNames()
@@ -30,7 +30,7 @@ const std::vector<ColourCase> &colourSuiteCases();
 /// A colour scene: the scenario and where the unfit things are on its main wall (s0, s1, h0,
 /// h1 in the WallFrame's coordinates: m along the wall from the axis point, m above the floor).
 struct ColourScene {
-    Scenario scenario;
+    sim::Scenario scenario;
     std::vector<std::array<double, 4>> unfit;
     bool plain = false;  ///< a plain painted wall (nothing unfit)
 };
@@ -38,7 +38,7 @@ struct ColourScene {
 ColourScene makeColourScene(const std::string &name, double distance, double angle_deg);
 
 struct ColourSuiteOptions {
-    int rounds = 10;  ///< per scene (issue 15: every round)
+    int rounds = 10;  ///< per scene (every round)
     unsigned seed = 1;
     double truth_cell = 0.01;  ///< m, as the eval
     double ambient =
@@ -79,4 +79,4 @@ ColourSuiteResult runColourSuite(const ColourSuiteOptions &options, const Detect
 std::string colourSuiteMarkdown(const ColourSuiteResult &result);
 std::string colourSuiteSummary(const ColourSuiteResult &result);  ///< one line
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

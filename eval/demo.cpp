@@ -7,7 +7,9 @@
 #include "projsurf/frontend/test_card.hpp"
 #include "projsurf/sim/ray_cast.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
+
+using namespace projsurf::sim;  // the simulator the evaluation runs on
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -91,4 +93,4 @@ DemoResult runDemo(const DemoOptions &o) {
     return res;
 }
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

@@ -10,14 +10,14 @@
 
 #include <opencv2/core.hpp>
 
-#include "projsurf/keystone/keystone.hpp"
 #include "eval/experiments.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
+#include "projsurf/keystone/keystone.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
 
 struct DemoOptions {
     std::string scenario = "wall";
@@ -32,11 +32,11 @@ struct DemoOptions {
 };
 
 struct DemoResult {
-    Scenario scenario;
+    sim::Scenario scenario;
     Projector true_projector;    ///< the simulated robot's real projector
     CalibrationRun calibration;  ///< the projector as calibrated from simulated captures
-    RgbdFrame frame;             ///< what the RGB-D camera saw
-    GroundTruth truth;
+    sim::RgbdFrame frame;        ///< what the RGB-D camera saw
+    sim::GroundTruth truth;
     DetectorConfig config;
     Detection detection;  ///< with the calibrated projector
     Score score;          ///< against ground truth
@@ -48,12 +48,12 @@ struct DemoResult {
     WallPicture uncorrected_on_wall;  ///< the whole framebuffer's corners on the real wall (eq. 8)
     cv::Mat audience_uncorrected;     ///< the picture projected as is (keystoned)
     cv::Mat audience_corrected;       ///< the corrected framebuffer projected
-    PinholeView audience_view;        ///< where the audience views are seen from
-    Lighting audience_light;
+    sim::PinholeView audience_view;   ///< where the audience views are seen from
+    sim::Lighting audience_light;
     std::vector<std::pair<std::string, double>> stage_ms;  ///< in order
 };
 
 /// Runs the demo; throws std::invalid_argument for an unknown scenario or impossible pose.
 DemoResult runDemo(const DemoOptions &options);
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

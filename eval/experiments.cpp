@@ -12,7 +12,9 @@
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
+
+using namespace projsurf::sim;  // the simulator the evaluation runs on
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -352,4 +354,4 @@ EvalResults runEval(const EvalPlan &plan, const Progress &progress) {
     return res;
 }
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

@@ -11,14 +11,14 @@
 
 #include <opencv2/core.hpp>
 
-#include "projsurf/calibration/calibration.hpp"
-#include "projsurf/keystone/keystone.hpp"
 #include "eval/scoring.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/calibration/calibration.hpp"
+#include "projsurf/detector/detector.hpp"
+#include "projsurf/keystone/keystone.hpp"
 #include "projsurf/sim/scene.hpp"
 #include "projsurf/sim/sensor_model.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// px: a second ground-truth verdict lets the rectangle leave the framebuffer by this much (the
@@ -74,7 +74,7 @@ void applyPaperCriterion(std::vector<Trial> &trials, double tolerance = 0.05);
 
 /// A trial from a detection already made: scores it against `truth`, also the rectangle that a
 /// rejecting checker was shown.
-Trial scoreTrial(const Detection &detection, const GroundTruth &truth, const Projector &projector,
+Trial scoreTrial(const Detection &detection, const sim::GroundTruth &truth, const Projector &projector,
                  const Eigen::Vector3d &gravity, double aspect);
 
 /// Aggregates of a set of trials.
@@ -113,7 +113,8 @@ struct CalibrationRun {
     double max_residual_m = kNaN;  ///< worst centroid distance to the fitted axis
     double ms = 0.0;               ///< render + calibrate
 };
-CalibrationRun calibrateFromSimulation(const Projector &truth, const SensorModel &sensor, int captures, unsigned seed);
+CalibrationRun calibrateFromSimulation(const Projector &truth, const sim::SensorModel &sensor, int captures,
+                                       unsigned seed);
 
 /// Where a picture shown in `rect` lands: framebuffer corners computed with the `believed`
 /// projector (eq. 7 + letterbox), cast through the `real` projector onto the scene.
@@ -128,11 +129,11 @@ struct WallPicture {
 /// `tolerance_px`: how far the rectangle may leave the believed framebuffer (computeKeystone);
 /// the paper's detector can return rectangles a raster cell beyond it, which its correction
 /// would show cut at the edge.
-WallPicture pictureOnWall(const Projector &believed, const Projector &real, const Scene &scene, const Rectangle &rect,
-                          cv::Size picture, double tolerance_px = 0.5);
+WallPicture pictureOnWall(const Projector &believed, const Projector &real, const sim::Scene &scene,
+                          const Rectangle &rect, cv::Size picture, double tolerance_px = 0.5);
 /// Framebuffer pixels cast through the `real` projector onto the scene (e.g. the whole
 /// framebuffer, uncorrected); ok = false when a ray misses.
-WallPicture framebufferOnWall(const Projector &real, const Scene &scene, const Corners2 &framebuffer_px);
+WallPicture framebufferOnWall(const Projector &real, const sim::Scene &scene, const Corners2 &framebuffer_px);
 
 /// One Table 3 measurement.
 struct KeystoneTrial {
@@ -183,4 +184,4 @@ using Progress = std::function<void(int done, int total, const std::string &what
 /// Runs the plan sequentially (per-core timings), deterministically for its seed.
 EvalResults runEval(const EvalPlan &plan, const Progress &progress = nullptr);
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

@@ -6,7 +6,7 @@
 
 #include "projsurf/types/plane.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 namespace {
 
 const cv::Scalar kUnsuitable{0, 150, 255};  ///< BGR orange: unsuitable by its colour
@@ -112,12 +112,9 @@ cv::Mat renderColourLabelOverlay(const cv::Mat &background, const RealLabel &lab
     cv::Mat img = renderLabelOverlay(background, l, camera, nullptr, tint);
     if (depth_only) quad3(img, camera, depth_only->corners, {255, 255, 255}, 1);
     if (with_colour) quad3(img, camera, with_colour->corners, {255, 0, 255}, 2);
-    const std::vector<std::pair<std::string, cv::Scalar>> legend{{"usable", {0, 230, 0}},
-                                                                 {"obstacle", {0, 0, 255}},
-                                                                 {"unsuitable (colour)", kUnsuitable},
-                                                                 {"colour best", {255, 120, 0}},
-                                                                 {"detector, colour", {255, 0, 255}},
-                                                                 {"detector, depth only", {255, 255, 255}}};
+    const std::vector<std::pair<std::string, cv::Scalar>> legend{
+        {"usable", {0, 230, 0}},        {"obstacle", {0, 0, 255}},           {"unsuitable (colour)", kUnsuitable},
+        {"colour best", {255, 120, 0}}, {"detector, colour", {255, 0, 255}}, {"detector, depth only", {255, 255, 255}}};
     int y = img.rows - 8 - 14 * static_cast<int>(legend.size() - 1);
     for (const auto &[text, colour] : legend) {
         cv::rectangle(img, {6, y - 9}, {16, y + 1}, colour, cv::FILLED);
@@ -128,4 +125,4 @@ cv::Mat renderColourLabelOverlay(const cv::Mat &background, const RealLabel &lab
     return img;
 }
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

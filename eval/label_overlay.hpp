@@ -3,15 +3,15 @@
 // the obstacles (red), the projector's footprint on the best surface (yellow), the label's
 // best rectangle (blue) and, when given, the detector's rectangle (magenta), drawn over the
 // registered colour image or, without one, the colour-mapped depth. What the colour makes
-// unsuitable (the label's colour section, issue 15) is orange.
+// unsuitable (the label's colour section) is orange.
 #include <opencv2/core.hpp>
 
+#include "eval/real_labels.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/cloud.hpp"
 #include "projsurf/types/plane_frame.hpp"
-#include "eval/real_labels.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 
 /// Depth as a turbo colour map, 0.5 m blue to 5 m red, black where there is no reading.
 cv::Mat depthColour(const Cloud &cloud);
@@ -27,4 +27,4 @@ cv::Mat renderLabelOverlay(const cv::Mat &background, const RealLabel &label, co
 cv::Mat renderColourLabelOverlay(const cv::Mat &background, const RealLabel &label, const CameraIntrinsics &camera,
                                  const Rectangle *with_colour, const Rectangle *depth_only, double tint = 0.35);
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

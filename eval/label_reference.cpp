@@ -7,7 +7,7 @@
 
 #include "projsurf/types/plane.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 
 bool insidePolygon(const std::vector<Eigen::Vector2d> &poly, const Eigen::Vector2d &p) {
     bool in = false;
@@ -206,4 +206,4 @@ LabelBest colourReferenceBest(const CameraIntrinsics &cam, const RealLabel &labe
     return best;
 }
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

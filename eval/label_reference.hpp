@@ -7,12 +7,12 @@
 #include <optional>
 #include <vector>
 
+#include "eval/real_labels.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/cloud.hpp"
 #include "projsurf/types/plane_frame.hpp"
-#include "eval/real_labels.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 
 /// Even-odd point-in-polygon test (pixel coordinates).
 bool insidePolygon(const std::vector<Eigen::Vector2d> &polygon, const Eigen::Vector2d &p);
@@ -46,8 +46,8 @@ LabelBest referenceBest(const Cloud &cloud, const CameraIntrinsics &camera, Real
 /// best): what a colour-aware answer is scored against.
 RealLabel colourAwareLabel(const RealLabel &label);
 
-/// The colour-aware best (issue 15): the same search as referenceBest, on the surfaces' planes
+/// The colour-aware best: the same search as referenceBest, on the surfaces' planes
 /// as fitted by it (call referenceBest first), with the unsuitable polygons as further obstacles.
 LabelBest colourReferenceBest(const CameraIntrinsics &camera, const RealLabel &label, double cell = 0.0025);
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

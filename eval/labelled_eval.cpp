@@ -9,10 +9,10 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/detection/colour/colour_registration.hpp"
 #include "eval/label_overlay.hpp"
 #include "eval/label_reference.hpp"
 #include "eval/plot.hpp"
+#include "projsurf/detection/colour/colour_registration.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -22,7 +22,7 @@
 
 namespace fs = std::filesystem;
 
-namespace projsurf {
+namespace projsurf::eval {
 namespace {
 
 /// Written so that it reads back to the same doubles: the command then gives the same answer.
@@ -83,9 +83,9 @@ ColourRun runWithColour(const LabelledFrame &f, const std::string &dir, const Ca
         c.detection = f.detection;
     }
     c.with_colour = scoreColourRectangle(f.label, camera, c.detection.found, c.detection.rectangle);
-    cv::Mat img = renderColourLabelOverlay(background, f.label, camera,
-                                           c.detection.found ? &c.detection.rectangle : nullptr,
-                                           f.detection.found ? &f.detection.rectangle : nullptr);
+    cv::Mat img =
+        renderColourLabelOverlay(background, f.label, camera, c.detection.found ? &c.detection.rectangle : nullptr,
+                                 f.detection.found ? &f.detection.rectangle : nullptr);
     std::string caption = f.name + ": ";
     if (!c.detection.found)
         caption += "nothing found";
@@ -94,7 +94,8 @@ ColourRun runWithColour(const LabelledFrame &f, const std::string &dir, const Ca
                    formatted(", %.0f %% unsuitable", 100.0 * c.with_colour.unsuitable_share) +
                    (c.colour_used ? formatted(" (depth only %.0f %%)", 100.0 * c.depth_only.unsuitable_share)
                                   : std::string(" (colour not used)"));
-    caption += f.label.colour.best.found ? ", best " + formatted("%.3f", f.label.colour.best.area()) : ", no usable surface";
+    caption +=
+        f.label.colour.best.found ? ", best " + formatted("%.3f", f.label.colour.best.area()) : ", no usable surface";
     c.overlay = withCaption(img, caption, 0.45);
     return c;
 }
@@ -120,7 +121,8 @@ ExampleRun runWithExampleProjector(const LabelledFrame &f, const std::string &di
     if (!e.detection.found)
         caption += "nothing found";
     else
-        caption += formatted("%.3f m^2", e.detection.area) + (e.score.valid ? ", valid" : ", INVALID (" + e.score.why + ")");
+        caption +=
+            formatted("%.3f m^2", e.detection.area) + (e.score.valid ? ", valid" : ", INVALID (" + e.score.why + ")");
     caption += e.reference.found ? ", reference " + formatted("%.3f m^2", e.reference.area()) : ", reference: nothing";
     e.overlay = withCaption(img, caption, 0.45);
     return e;
@@ -184,8 +186,10 @@ LabelledFrame evaluateLabelledFrame(const std::string &label_path, const std::st
     if (!f.score.found)
         caption += "nothing found";
     else
-        caption += formatted("%.3f m^2", f.score.area) + (f.score.valid ? ", valid" : ", INVALID (" + f.score.why + ")");
-    caption += f.label.best.found ? ", label best " + formatted("%.3f m^2", f.label.best.area()) : ", no usable surface";
+        caption +=
+            formatted("%.3f m^2", f.score.area) + (f.score.valid ? ", valid" : ", INVALID (" + f.score.why + ")");
+    caption +=
+        f.label.best.found ? ", label best " + formatted("%.3f m^2", f.label.best.area()) : ", no usable surface";
     f.overlay = withCaption(img, caption, 0.45);
     if (f.label.colour.judged) f.colour = runWithColour(f, dir, camera, cloud, cfg, background);
     f.example = runWithExampleProjector(f, dir, camera, cloud, cfg, background);
@@ -253,15 +257,18 @@ std::string exampleReportMarkdown(const std::vector<LabelledFrame> &frames, cons
           "surfaces); nothing found is right where the reference search with this projector (blue) finds no usable "
           "surface either, a *miss* otherwise.\n\n";
     md << "**" << exampleSummaryLine(summariseExample(frames)) << ".**\n\n";
-    md << "| Frame | reference (m²) | detector (m²) | right | free % | surface | why not |\n|---|---:|---:|---|---:|---|---|\n";
+    md << "| Frame | reference (m²) | detector (m²) | right | free % | surface | why not "
+          "|\n|---|---:|---:|---|---:|---|---|\n";
     for (const auto &f : frames) {
         const ExampleRun &e = f.example;
         md << "| [" << f.name << "](" << pictures << "/" << f.name << "_example.png) | "
            << (e.reference.found ? formatted("%.3f", e.reference.area()) : "none") << " | "
            << (e.detection.found ? formatted("%.3f", e.detection.area) : "—") << " | "
-           << (e.right ? "yes" : e.off_surface ? "**no: off**" : "**no: miss**") << " | "
-           << (e.detection.found ? formatted("%.0f", 100.0 * e.score.free_fraction) : "") << " | " << e.score.surface
-           << " | " << (e.score.valid || !e.detection.found ? "" : e.score.why) << " |\n";
+           << (e.right         ? "yes"
+               : e.off_surface ? "**no: off**"
+                               : "**no: miss**")
+           << " | " << (e.detection.found ? formatted("%.0f", 100.0 * e.score.free_fraction) : "") << " | "
+           << e.score.surface << " | " << (e.score.valid || !e.detection.found ? "" : e.score.why) << " |\n";
     }
     md << "\nCommand: `projsurf detect --depth <frame>/depth.png --camera <frame>/camera.yaml --calib "
           "examples/calib/example_calib.yaml --gravity <label gravity>`.\n\n";
@@ -275,8 +282,8 @@ std::string exampleCsv(const std::vector<LabelledFrame> &frames) {
         const ExampleRun &e = f.example;
         csv << f.name << "," << (e.reference.found ? formatted("%.4f", e.reference.area()) : "") << ","
             << (e.detection.found ? formatted("%.4f", e.detection.area) : "") << "," << (e.right ? "yes" : "no") << ","
-            << (e.off_surface ? "yes" : "no") << "," << formatted("%.3f", e.score.free_fraction) << "," << e.score.surface
-            << ",\"" << (e.score.valid ? "" : e.score.why) << "\"\n";
+            << (e.off_surface ? "yes" : "no") << "," << formatted("%.3f", e.score.free_fraction) << ","
+            << e.score.surface << ",\"" << (e.score.valid ? "" : e.score.why) << "\"\n";
     }
     return csv.str();
 }
@@ -319,8 +326,8 @@ std::string colourSummaryLine(const ColourSummary &s) {
                   "colour, %d depth only; area / colour best median %.2f with colour, %.2f depth only (invalid = 0); "
                   "worst share over unsuitable %.1f %% with colour, %.1f %% depth only",
                   s.judged, s.colour_used, s.right_colour, s.right_depth, s.with_best, s.clean_colour, s.clean_depth,
-                  s.median_ratio_colour, s.median_ratio_depth,
-                  100.0 * s.worst_share_colour, 100.0 * s.worst_share_depth);
+                  s.median_ratio_colour, s.median_ratio_depth, 100.0 * s.worst_share_colour,
+                  100.0 * s.worst_share_depth);
     return buf;
 }
 
@@ -328,14 +335,14 @@ std::string colourReportMarkdown(const std::vector<LabelledFrame> &frames, const
     const ColourSummary s = summariseColour(frames);
     std::ostringstream md;
     if (s.judged == 0) return md.str();
-    md << "### With colour (issue 15)\n\n"
+    md << "### With colour\n\n"
           "The labels of the frames with a registered `rgb.png` also name what the picture should not be shown on "
           "although depth calls it free (orange; `labels/README.md`, section *Colour*); the colour-aware best (blue) "
           "is the reference's search with those polygons as further obstacles. The detector runs once more with "
           "the frame's colour (as `detect --rgb <frame>/rgb.png --suitability avoid`; the colour is used only when "
           "the registration check passes), its rectangle in magenta, the depth-only answer above in white. Both "
           "are scored against the colour-aware label: *right* and *ratio* (area / colour best) as above, and the "
-          "share of the rectangle's area over unsuitable polygons (issue 15's target: ≤ 2 %).\n\n";
+          "share of the rectangle's area over unsuitable polygons (the target: ≤ 2 %).\n\n";
     md << "**" << colourSummaryLine(s) << ".**\n\n";
     md << "| Frame | colour | colour best (m²) | unsuitable polygons | depth only: m² | ratio | right | % unsuitable | "
           "with colour: m² | ratio | right | % unsuitable | why not (with colour) |\n"
@@ -362,7 +369,8 @@ std::string colourReportMarkdown(const std::vector<LabelledFrame> &frames, const
 
 std::string colourCsv(const std::vector<LabelledFrame> &frames) {
     std::ostringstream csv;
-    csv << "frame,colour_used,colour_best_m2,unsuitable_polygons,depth_area_m2,depth_ratio,depth_right,depth_unsuitable,"
+    csv << "frame,colour_used,colour_best_m2,unsuitable_polygons,depth_area_m2,depth_ratio,depth_right,depth_"
+           "unsuitable,"
            "colour_area_m2,colour_ratio,colour_right,colour_unsuitable,why\n";
     for (const auto &f : frames) {
         const ColourRun &c = f.colour;
@@ -371,8 +379,9 @@ std::string colourCsv(const std::vector<LabelledFrame> &frames) {
             << (f.label.colour.best.found ? formatted("%.4f", f.label.colour.best.area()) : "") << ","
             << f.label.colour.unsuitable.size();
         for (const ColourScore *a : {&c.depth_only, &c.with_colour})
-            csv << "," << (a->score.found ? formatted("%.4f", a->score.area) : "") << "," << formatted("%.4f", a->score.ratio)
-                << "," << (a->score.right ? "yes" : "no") << "," << formatted("%.4f", a->unsuitable_share);
+            csv << "," << (a->score.found ? formatted("%.4f", a->score.area) : "") << ","
+                << formatted("%.4f", a->score.ratio) << "," << (a->score.right ? "yes" : "no") << ","
+                << formatted("%.4f", a->unsuitable_share);
         csv << ",\"" << c.with_colour.score.why << "\"\n";
     }
     return csv.str();
@@ -398,7 +407,7 @@ std::string labelledReportMarkdown(const std::vector<LabelledFrame> &frames, con
           "valid answer, 0 otherwise. Seeds 1-5 and 42: area spread (max − min) / max, and how far the "
           "rectangle's centre moves.\n\n";
     md << "**" << labelledSummaryLine(s)
-       << ".** Targets (issue 11): every answer right, ratio ≥ 0.90, seed spread "
+       << ".** Targets: every answer right, ratio ≥ 0.90, seed spread "
           "≤ 2 %.\n\n";
     md << "![labelled frames](" << pictures << "/contact_sheet.png)\n\n";
     md << "| Frame | label best (m²) | detector (m²) | ratio | right | free % | why not | seed areas (m²) | spread | "
@@ -437,7 +446,10 @@ std::string variantReportMarkdown(const std::vector<LabelledFrame> &frames) {
     for (const auto &f : frames) {
         const VariantRun &u = f.unorganized;
         md << "| " << f.name << " | " << area(f.detection.found, f.detection.area) << " | " << area(u.found, u.area)
-           << " | " << (u.found && f.detection.found ? formatted("%.2f", u.angle_deg) + " / " + formatted("%.1f", 100.0 * u.offset) : "")
+           << " | "
+           << (u.found && f.detection.found
+                   ? formatted("%.2f", u.angle_deg) + " / " + formatted("%.1f", 100.0 * u.offset)
+                   : "")
            << " | " << (u.agrees ? "yes" : "**no**") << " | ";
         bool all = true;
         for (std::size_t i = 0; i < f.shifted.size(); ++i) {
@@ -492,4 +504,4 @@ void writeLabelledPictures(const std::string &dir, const std::vector<LabelledFra
                        "Labelled real frames: usable (green), obstacles (red), label best (blue), detector (magenta)"));
 }
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

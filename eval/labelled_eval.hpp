@@ -3,7 +3,7 @@
 // projector and gravity (as `projsurf detect --depth <frame>/depth.png --camera
 // <frame>/camera.yaml --calib <label> --gravity gx,gy,gz` would), scored against the label,
 // once per seed for stability, with a picture of label and answer per frame. For the labels
-// judged on colour (issue 15), the detector also runs with the frame's registered colour
+// judged on colour, the detector also runs with the frame's registered colour
 // (as `detect --rgb <frame>/rgb.png --suitability avoid`), and both answers are scored against
 // the colour-aware label.
 #include <string>
@@ -16,7 +16,7 @@
 #include "eval/real_labels.hpp"
 #include "eval/real_scoring.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 
 struct SeedRun {
     unsigned seed = 0;
@@ -45,12 +45,12 @@ struct ColourRun {
 /// reference search with that projector finds no usable surface either.
 struct ExampleRun {
     GalleryEntry detection;
-    RealScore score;        ///< against the label (its best is the label projector's: ratio unused)
-    LabelBest reference;    ///< the reference search with the example projector
-    bool right = false;     ///< valid, or nothing found where the reference finds nothing
+    RealScore score;           ///< against the label (its best is the label projector's: ratio unused)
+    LabelBest reference;       ///< the reference search with the example projector
+    bool right = false;        ///< valid, or nothing found where the reference finds nothing
     bool off_surface = false;  ///< found but not valid: the answer the target forbids
-    std::string command;    ///< the equivalent `projsurf detect` command line
-    cv::Mat overlay;        ///< BGR: label polygons, reference (blue), detector (magenta)
+    std::string command;       ///< the equivalent `projsurf detect` command line
+    cv::Mat overlay;           ///< BGR: label polygons, reference (blue), detector (magenta)
 };
 
 struct LabelledFrame {
@@ -67,8 +67,8 @@ struct LabelledFrame {
     cv::Mat overlay;      ///< BGR: label polygons, label best (blue), detector (magenta)
     ColourRun colour;
     ExampleRun example;
-    VariantRun unorganized;             ///< the frame's points as an unorganized cloud
-    std::vector<VariantRun> shifted;    ///< the depth image cropped by a pixel or three
+    VariantRun unorganized;           ///< the frame's points as an unorganized cloud
+    std::vector<VariantRun> shifted;  ///< the depth image cropped by a pixel or three
 };
 
 struct LabelledSummary {
@@ -85,10 +85,10 @@ struct LabelledSummary {
 struct ExampleSummary {
     int frames = 0;
     int right = 0;
-    int valid = 0;        ///< found and valid
-    int off_surface = 0;  ///< found and not valid (target: 0)
-    int missed = 0;       ///< nothing found where the reference finds a surface
-    int rightly_none = 0; ///< nothing found and the reference finds nothing
+    int valid = 0;         ///< found and valid
+    int off_surface = 0;   ///< found and not valid (target: 0)
+    int missed = 0;        ///< nothing found where the reference finds a surface
+    int rightly_none = 0;  ///< nothing found and the reference finds nothing
 };
 
 /// Over the frames judged on colour: how often each answer is right against the colour-aware
@@ -99,7 +99,7 @@ struct ColourSummary {
     int right_depth = 0, right_colour = 0;
     int with_best = 0;  ///< judged frames with a colour best (a usable surface); the rest count below only:
     int found_depth = 0, found_colour = 0;
-    int clean_depth = 0, clean_colour = 0;  ///< found and <= 2 % over unsuitable polygons
+    int clean_depth = 0, clean_colour = 0;                       ///< found and <= 2 % over unsuitable polygons
     double median_ratio_depth = 0.0, median_ratio_colour = 0.0;  ///< area / colour best (invalid = 0)
     double worst_share_depth = 0.0, worst_share_colour = 0.0;    ///< largest share over unsuitable polygons
 };
@@ -149,4 +149,4 @@ std::string colourCsv(const std::vector<LabelledFrame> &frames);
 /// dir/example_results.csv; `dir` is created.
 void writeLabelledPictures(const std::string &dir, const std::vector<LabelledFrame> &frames);
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

@@ -3,7 +3,9 @@
 #include "projsurf/keystone/keystone.hpp"
 #include "projsurf/sim/sensor_model.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
+
+using namespace projsurf::sim;  // the simulator the evaluation runs on
 namespace {
 
 LensOffsetShot showWith(const Projector &believed, const Projector &truth, const Scenario &scenario,
@@ -59,4 +61,4 @@ LensOffsetDemo runLensOffsetDemo(const Scenario &scenario, const cv::Mat &pictur
     return d;
 }
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

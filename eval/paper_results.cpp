@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace projsurf::sim {
+namespace projsurf::eval {
 namespace {
 
 const std::vector<double> kD5{1.0, 1.5, 2.0, 2.5, 3.0};
@@ -67,4 +67,4 @@ const PaperKeystoneCell *findPaperKeystone(double angle_deg, double distance) {
 PaperOutlierFacts paperOutlierFacts() { return {}; }
 PaperTiming paperTiming() { return {}; }
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace projsurf::sim {
+namespace projsurf::eval {
 
 /// One row of Tables 1 and 2: success rate (%) and mean area error (m^2) per distance.
 struct PaperSuccessRow {
@@ -55,4 +55,4 @@ struct PaperTiming {
 };
 PaperTiming paperTiming();
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

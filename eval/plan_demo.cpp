@@ -2,7 +2,9 @@
 
 #include "projsurf/keystone/keystone.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
+
+using namespace projsurf::sim;  // the simulator the evaluation runs on
 
 PlanShot planShot(const Scenario &scenario, const Projector &real, const Projector &believed, const Cloud &cloud,
                   const DetectorConfig &config, const cv::Mat &picture, const PinholeView &viewer,
@@ -29,4 +31,4 @@ PlanShot planShot(const Scenario &scenario, const Projector &real, const Project
     return shot;
 }
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

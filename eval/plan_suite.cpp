@@ -5,14 +5,16 @@
 #include <cmath>
 #include <cstdio>
 
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/planning/floor_occupancy.hpp"
 #include "projsurf/planning/stance_view.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
+
+using namespace projsurf::sim;  // the simulator the evaluation runs on
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -21,10 +23,12 @@ constexpr double kPi = 3.14159265358979323846;
 Cloud sceneSamples(const Scene &scene) {
     Cloud c;
     for (const Quad &q : scene.quads) {
-        const int na = std::max(1, static_cast<int>(q.edge_a.norm() / 0.04)), nb = std::max(1, static_cast<int>(q.edge_b.norm() / 0.04));
+        const int na = std::max(1, static_cast<int>(q.edge_a.norm() / 0.04)),
+                  nb = std::max(1, static_cast<int>(q.edge_b.norm() / 0.04));
         for (int i = 0; i <= na; ++i)
             for (int j = 0; j <= nb; ++j)
-                c.points.push_back((q.corner + q.edge_a * (double(i) / na) + q.edge_b * (double(j) / nb)).cast<float>());
+                c.points.push_back(
+                    (q.corner + q.edge_a * (double(i) / na) + q.edge_b * (double(j) / nb)).cast<float>());
     }
     c.width = static_cast<int>(c.points.size());
     c.height = 1;
@@ -41,7 +45,8 @@ struct Reference {
 /// the picture's far corner within the plan's range.
 Reference referenceSearch(const Scenario &sc, const Projector &projector, const PlanOptions &o) {
     Reference ref;
-    const FloorOccupancy floor(sceneSamples(sc.scene), sc.gravity, o.max_move + o.robot_radius + 0.2, o.obstacle_height);
+    const FloorOccupancy floor(sceneSamples(sc.scene), sc.gravity, o.max_move + o.robot_radius + 0.2,
+                               o.obstacle_height);
     SensorModel sensor = SensorModel::ideal();
     sensor.max_depth = o.max_distance;
     TruthOptions topt;
@@ -53,7 +58,8 @@ Reference referenceSearch(const Scenario &sc, const Projector &projector, const 
             const double f = i * step, l = j * step, move = std::hypot(f, l);
             if (move > o.max_move + 1e-9) continue;
             const Stance at = makeStance(floor.frame(), f, l, 0.0);
-            if (move > 0 && (floor.occupied(at.translation, o.robot_radius) || floor.pathBlocked(at.translation, o.robot_radius)))
+            if (move > 0 &&
+                (floor.occupied(at.translation, o.robot_radius) || floor.pathBlocked(at.translation, o.robot_radius)))
                 continue;
             for (int k = -9; k <= 9; ++k) {
                 const Stance s = makeStance(floor.frame(), f, l, k * 10.0 * kPi / 180.0);
@@ -68,7 +74,8 @@ Reference referenceSearch(const Scenario &sc, const Projector &projector, const 
                 if (far > o.max_distance + 0.05) continue;
                 ref.area = std::max(ref.area, t.best.rectangle.area());
                 ref.width = std::max(ref.width, t.best.rectangle.width);
-                if (o.width > 0 && t.best.rectangle.width >= o.width && (ref.move_to_width < 0 || move < ref.move_to_width))
+                if (o.width > 0 && t.best.rectangle.width >= o.width &&
+                    (ref.move_to_width < 0 || move < ref.move_to_width))
                     ref.move_to_width = move;
             }
         }
@@ -88,18 +95,30 @@ Detection detectFromMoved(const Scenario &sc, const Projector &projector, const 
 
 std::vector<PlanScene> planSuiteScenes() {
     return {
-        {"wall", 1.0, 0.0, 0.0, "near"},          {"wall", 1.2, 0.0, 0.0, "near"},
-        {"wall", 1.5, 35.0, 0.0, "angled"},       {"wall", 2.0, 17.19, 0.0, "angled"},
-        {"wall", 3.0, 30.0, 0.0, "angled"},       {"small_obstacles", 1.3, 10.0, 0.0, "furniture"},
-        {"closet", 1.5, 0.0, 0.0, "furniture"},   {"big_obstacle", 1.5, 17.19, 0.0, "furniture"},
-        {"corner", 1.5, 0.0, 0.0, "corner"},      {"desk", 1.5, 10.0, 0.0, "furniture"},
-        {"poster", 1.2, 20.0, 0.0, "near"},       {"wall", 1.5, 30.0, 0.0, "angled"},
-        {"wall", 2.5, 48.0, 0.0, "angled"},       {"wall", 1.5, -45.0, 0.0, "angled"},
-        {"wall", 2.0, 60.0, 0.0, "angled"},       {"closet", 1.2, 0.0, 0.0, "furniture"},
-        {"closet", 1.5, -20.0, 0.0, "furniture"}, {"desk", 1.2, 0.0, 0.0, "furniture"},
-        {"big_obstacle", 1.2, 0.0, 0.0, "furniture"}, {"wall", 0.86, 0.0, 1.2, "width"},
-        {"wall", 1.0, 20.0, 1.4, "width"},        {"wall", 1.2, 0.0, 1.2, "width"},
-        {"corner", 2.0, 30.0, 0.0, "corner"},     {"corner", 1.2, -20.0, 0.0, "corner"},
+        {"wall", 1.0, 0.0, 0.0, "near"},
+        {"wall", 1.2, 0.0, 0.0, "near"},
+        {"wall", 1.5, 35.0, 0.0, "angled"},
+        {"wall", 2.0, 17.19, 0.0, "angled"},
+        {"wall", 3.0, 30.0, 0.0, "angled"},
+        {"small_obstacles", 1.3, 10.0, 0.0, "furniture"},
+        {"closet", 1.5, 0.0, 0.0, "furniture"},
+        {"big_obstacle", 1.5, 17.19, 0.0, "furniture"},
+        {"corner", 1.5, 0.0, 0.0, "corner"},
+        {"desk", 1.5, 10.0, 0.0, "furniture"},
+        {"poster", 1.2, 20.0, 0.0, "near"},
+        {"wall", 1.5, 30.0, 0.0, "angled"},
+        {"wall", 2.5, 48.0, 0.0, "angled"},
+        {"wall", 1.5, -45.0, 0.0, "angled"},
+        {"wall", 2.0, 60.0, 0.0, "angled"},
+        {"closet", 1.2, 0.0, 0.0, "furniture"},
+        {"closet", 1.5, -20.0, 0.0, "furniture"},
+        {"desk", 1.2, 0.0, 0.0, "furniture"},
+        {"big_obstacle", 1.2, 0.0, 0.0, "furniture"},
+        {"wall", 0.86, 0.0, 1.2, "width"},
+        {"wall", 1.0, 20.0, 1.4, "width"},
+        {"wall", 1.2, 0.0, 1.2, "width"},
+        {"corner", 2.0, 30.0, 0.0, "corner"},
+        {"corner", 1.2, -20.0, 0.0, "corner"},
     };
 }
 
@@ -117,8 +136,7 @@ PlanSceneResult runPlanScene(const PlanScene &scene, const PlanSuiteOptions &opt
     r.before = r.plan.todayArea();
     if (r.plan.found) {
         r.predicted = r.plan.predicted.area();
-        const Detection after =
-            r.plan.moves() ? detectFromMoved(sc, projector, r.plan, options.seed) : r.plan.today;
+        const Detection after = r.plan.moves() ? detectFromMoved(sc, projector, r.plan, options.seed) : r.plan.today;
         r.realised = after.found ? after.rectangle.area() : 0.0;
         r.realised_width = after.found ? after.rectangle.width : 0.0;
     }
@@ -149,16 +167,19 @@ std::string planSuiteMarkdown(const std::vector<PlanSceneResult> &rows) {
         const std::string width = r.scene.width > 0 ? std::to_string(r.scene.width).substr(0, 4) + " m" : "-";
         const std::string realised_w =
             r.scene.width > 0 ? " (" + std::to_string(r.realised_width).substr(0, 4) + " m wide)" : "";
-        const std::string ref = r.scene.width > 0 ? std::to_string(r.reference_width).substr(0, 4) + " m wide at most" +
-                                                        (r.reference_move >= 0 ? ", " + std::to_string(r.reference_move).substr(0, 4) + " m move"
-                                                                               : "")
-                                                  : std::to_string(r.reference).substr(0, 5);
-        std::snprintf(buf, sizeof buf, "| %s | %.2f | %.1f | %s | %s | %.3f | %.3f | %.3f%s | %.1f %% | %.2fx | %s | %s | %s | %.0f | %s |\n",
-                      r.scene.scenario.c_str(), r.scene.distance, r.scene.angle_deg, width.c_str(),
-                      r.plan.found ? moveInWords(r.plan.move).c_str() : ("not found: " + r.plan.reason).c_str(),
-                      r.before, r.predicted, r.realised, realised_w.c_str(),
-                      r.predicted > 0 ? 100.0 * r.realised / r.predicted : 0.0, r.realised / std::max(r.before, 1e-9),
-                      ref.c_str(), r.allows_gain ? "yes" : "no", r.plan.limit.c_str(), r.plan_ms, r.holds ? "yes" : "**no**");
+        const std::string ref =
+            r.scene.width > 0
+                ? std::to_string(r.reference_width).substr(0, 4) + " m wide at most" +
+                      (r.reference_move >= 0 ? ", " + std::to_string(r.reference_move).substr(0, 4) + " m move" : "")
+                : std::to_string(r.reference).substr(0, 5);
+        std::snprintf(
+            buf, sizeof buf,
+            "| %s | %.2f | %.1f | %s | %s | %.3f | %.3f | %.3f%s | %.1f %% | %.2fx | %s | %s | %s | %.0f | %s |\n",
+            r.scene.scenario.c_str(), r.scene.distance, r.scene.angle_deg, width.c_str(),
+            r.plan.found ? moveInWords(r.plan.move).c_str() : ("not found: " + r.plan.reason).c_str(), r.before,
+            r.predicted, r.realised, realised_w.c_str(), r.predicted > 0 ? 100.0 * r.realised / r.predicted : 0.0,
+            r.realised / std::max(r.before, 1e-9), ref.c_str(), r.allows_gain ? "yes" : "no", r.plan.limit.c_str(),
+            r.plan_ms, r.holds ? "yes" : "**no**");
         md += buf;
     }
     return md;
@@ -176,10 +197,11 @@ std::string planSuiteSummary(const std::vector<PlanSceneResult> &rows) {
         ms = std::max(ms, r.plan_ms);
     }
     char buf[300];
-    std::snprintf(buf, sizeof buf,
-                  "plan suite: the targets hold in %d of %zu scenes; realised %.1f-%.1f %% of predicted; plan at most %.0f ms",
-                  holds, rows.size(), 100.0 * lo, 100.0 * hi, ms);
+    std::snprintf(
+        buf, sizeof buf,
+        "plan suite: the targets hold in %d of %zu scenes; realised %.1f-%.1f %% of predicted; plan at most %.0f ms",
+        holds, rows.size(), 100.0 * lo, 100.0 * hi, ms);
     return buf;
 }
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

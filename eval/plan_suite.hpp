@@ -9,7 +9,7 @@
 
 #include "projsurf/planning/stand_planner.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
 
 struct PlanScene {
     std::string scenario;  ///< sim/scenarios.hpp
@@ -25,16 +25,16 @@ std::vector<PlanScene> planSuiteScenes();
 struct PlanSceneResult {
     PlanScene scene;
     PlanResult plan;
-    double plan_ms = 0.0;           ///< planStand (today's detection included), wall clock
-    double before = 0.0;            ///< m^2, detect's picture today
-    double predicted = 0.0;         ///< m^2
-    double realised = 0.0;          ///< m^2, detected from the moved robot
-    double realised_width = 0.0;    ///< m
-    double reference = 0.0;         ///< m^2, the reference search's best truth picture
-    double reference_width = 0.0;   ///< m, the widest truth picture of the reference (for width scenes)
-    double reference_move = 0.0;    ///< m, the reference's shortest move to the width (width scenes)
-    bool allows_gain = false;       ///< the reference reaches 1.5x today's (or the width)
-    bool holds = false;             ///< the targets hold on this scene
+    double plan_ms = 0.0;          ///< planStand (today's detection included), wall clock
+    double before = 0.0;           ///< m^2, detect's picture today
+    double predicted = 0.0;        ///< m^2
+    double realised = 0.0;         ///< m^2, detected from the moved robot
+    double realised_width = 0.0;   ///< m
+    double reference = 0.0;        ///< m^2, the reference search's best truth picture
+    double reference_width = 0.0;  ///< m, the widest truth picture of the reference (for width scenes)
+    double reference_move = 0.0;   ///< m, the reference's shortest move to the width (width scenes)
+    bool allows_gain = false;      ///< the reference reaches 1.5x today's (or the width)
+    bool holds = false;            ///< the targets hold on this scene
 };
 
 struct PlanSuiteOptions {
@@ -47,4 +47,4 @@ PlanSceneResult runPlanScene(const PlanScene &scene, const PlanSuiteOptions &opt
 std::string planSuiteMarkdown(const std::vector<PlanSceneResult> &rows);
 std::string planSuiteSummary(const std::vector<PlanSceneResult> &rows);
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <opencv2/imgproc.hpp>
 
-namespace projsurf {
+namespace projsurf::eval {
 namespace {
 
 const cv::Scalar kWhite(255, 255, 255), kBlack(30, 30, 30), kGrid(225, 225, 225), kGreyText(90, 90, 90);
@@ -364,4 +364,4 @@ cv::Mat withCaption(const cv::Mat &image, const std::string &caption, double fon
     return out;
 }
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-namespace projsurf {
+namespace projsurf::eval {
 
 struct Series {
     std::string label;
@@ -51,4 +51,4 @@ cv::Mat tilePanels(const std::vector<cv::Mat> &panels, int cols, const std::stri
 /// A label strip above an image (white text on dark grey), for captions in composites.
 cv::Mat withCaption(const cv::Mat &image, const std::string &caption, double font_scale = 0.8);
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

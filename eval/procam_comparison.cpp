@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace projsurf::sim {
+namespace projsurf::eval {
 namespace {
 
 constexpr double kDeg = 180.0 / 3.14159265358979323846;
@@ -87,10 +87,11 @@ std::string procamJson(const StereoFit &o, const PublishedProcam &p, const Proca
                       {"cx", o.projector.cx},
                       {"cy", o.projector.cy},
                       {"distortion", o.projector.distortion},
-                      {"sigma", {{"fx", o.projector.sigma[0]},
-                                 {"fy", o.projector.sigma[1]},
-                                 {"cx", o.projector.sigma[2]},
-                                 {"cy", o.projector.sigma[3]}}}};
+                      {"sigma",
+                       {{"fx", o.projector.sigma[0]},
+                        {"fy", o.projector.sigma[1]},
+                        {"cx", o.projector.sigma[2]},
+                        {"cy", o.projector.sigma[3]}}}};
     j["camera"] = {{"fx", o.camera.fx},
                    {"fy", o.camera.fy},
                    {"cx", o.camera.cx},
@@ -107,7 +108,11 @@ std::string procamJson(const StereoFit &o, const PublishedProcam &p, const Proca
     const Eigen::Vector3d tp = p.translation * unit_m;
     j["published"] = {
         {"projector",
-         {{"fx", p.proj_fx}, {"fy", p.proj_fy}, {"cx", p.proj_cx}, {"cy", p.proj_cy}, {"distortion", p.proj_distortion}}},
+         {{"fx", p.proj_fx},
+          {"fy", p.proj_fy},
+          {"cx", p.proj_cx},
+          {"cy", p.proj_cy},
+          {"distortion", p.proj_distortion}}},
         {"camera",
          {{"fx", p.cam_fx}, {"fy", p.cam_fy}, {"cx", p.cam_cx}, {"cy", p.cam_cy}, {"distortion", p.cam_distortion}}},
         {"rotation", matrixJson(p.rotation)},
@@ -123,4 +128,4 @@ std::string procamJson(const StereoFit &o, const PublishedProcam &p, const Proca
     return j.dump(2) + "\n";
 }
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

@@ -7,7 +7,7 @@
 #include "projsurf/calibration/stereo_fit.hpp"
 #include "projsurf/io/procam_xml.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
 
 struct ProcamComparison {
     double fx_pct = 0, fy_pct = 0;   ///< (ours - published) / published, %
@@ -32,4 +32,4 @@ std::string procamJson(const StereoFit &ours, const PublishedProcam &published, 
                        double published_unit_m, double square_m, double decoded_board_share,
                        const std::vector<double> &pose_shares);
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

@@ -5,13 +5,15 @@
 #include <cmath>
 #include <cstdio>
 
-#include "projsurf/keystone/keystone.hpp"
 #include "eval/experiments.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
+#include "projsurf/keystone/keystone.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
+
+using namespace projsurf::sim;  // the simulator the evaluation runs on
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
@@ -122,7 +124,7 @@ std::string cells(const CalibrationScore &s) {
 
 std::string projectorEvalMarkdown(const std::vector<ProjectorEvalRow> &rows) {
     std::string md =
-        "## Real projectors: disc vs structured-light calibration (issue 12)\n\n"
+        "## Real projectors: disc vs structured-light calibration\n\n"
         "Simulated projectors (the example projector with a vertical lens offset, roll, fy scaled, radial k1); "
         "reprojection of points at 1-4 m (px), origin error (mm), and end to end on a noisy Kinect cloud of a wall "
         "at 2 m, 20 deg: eq. 8 worst error (%), farthest corner from the detected rectangle (mm), tilt of the "
@@ -159,4 +161,4 @@ std::string projectorEvalSummary(const std::vector<ProjectorEvalRow> &rows) {
     return buf;
 }
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

@@ -1,5 +1,5 @@
 #pragma once
-// The eval table of issue 12: simulated real projectors (sim/projector_rigs.hpp) calibrated by
+// The eval table of real projectors: simulated real projectors (sim/projector_rigs.hpp) calibrated by
 // the paper's disc method and by structured light, each scored against the true projector:
 // reprojection error over points at 1-4 m, origin error, and end to end (detection on a noisy
 // cloud of a wall at 2 m, keystone with the estimate, picture cast with the true projector):
@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "projsurf/types/projector.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/sensor_model.hpp"
+#include "projsurf/types/projector.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
 
 struct CalibrationScore {
     bool ok = false;
@@ -24,11 +24,11 @@ struct CalibrationScore {
 };
 
 /// Scores `believed` against `truth` (end to end on the "wall" scenario at 2 m, 20 deg).
-CalibrationScore scoreCalibration(const Projector &believed, const Projector &truth, const SensorModel &sensor,
+CalibrationScore scoreCalibration(const Projector &believed, const Projector &truth, const sim::SensorModel &sensor,
                                   unsigned seed);
 
 struct ProjectorEvalRow {
-    RigSpec rig;
+    sim::RigSpec rig;
     std::string sl_poses;  ///< "3 flat" or "1 relief"
     CalibrationScore disc, structured;
     double seconds = 0;
@@ -40,4 +40,4 @@ std::string projectorEvalMarkdown(const std::vector<ProjectorEvalRow> &rows);
 /// One line: the structured-light worst values against the targets.
 std::string projectorEvalSummary(const std::vector<ProjectorEvalRow> &rows);
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

@@ -17,7 +17,7 @@
 
 namespace fs = std::filesystem;
 
-namespace projsurf {
+namespace projsurf::eval {
 
 std::vector<std::string> listFrameFolders(const std::string &dir) {
     std::vector<std::string> out;
@@ -105,4 +105,4 @@ cv::Mat contactSheet(const std::vector<GalleryEntry> &entries, int columns, int 
                       "Detection on real RGB-D frames (default method, example calibration, gravity from the floor)");
 }
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

@@ -7,9 +7,9 @@
 
 #include <opencv2/core.hpp>
 
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 
 struct GalleryEntry {
     std::string name;     ///< the frame's folder name
@@ -40,4 +40,4 @@ GalleryEntry detectRealFrame(const std::string &folder, const Projector &project
 /// Thumbnails of the overlays in a grid, each labelled with its name and result.
 cv::Mat contactSheet(const std::vector<GalleryEntry> &entries, int columns = 3, int thumb_width = 480);
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

@@ -13,7 +13,7 @@
 
 namespace fs = std::filesystem;
 
-namespace projsurf {
+namespace projsurf::eval {
 namespace {
 
 /// Reads keys of one file and names them in errors as "file: 'key.sub' ...".
@@ -263,4 +263,4 @@ std::vector<std::string> listLabelFiles(const std::string &dir) {
     return out;
 }
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

@@ -10,7 +10,7 @@
 #include "projsurf/types/plane.hpp"
 #include "projsurf/types/projector.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 
 /// A simple polygon in depth-image pixel coordinates (x right, y down; pixel centres are
 /// whole numbers, as in CameraIntrinsics::backProject).
@@ -37,7 +37,7 @@ struct LabelBest {
 };
 
 /// Something depth calls free that the picture should not be shown on, judged on the registered
-/// colour (issue 15): a framed print, a poster, a screen, a window, a dark panel, a glare spot.
+/// colour: a framed print, a poster, a screen, a window, a dark panel, a glare spot.
 struct LabelUnsuitable {
     LabelPolygon polygon;  ///< depth-image pixels, as the obstacles
     std::string why;  ///< "textured", "dark", "saturated" or "glare" (detection/colour/surface_suitability's Unfit)
@@ -78,4 +78,4 @@ void writeRealLabel(const std::string &path, const RealLabel &label);
 /// The label files (*.yaml) of a directory, sorted; empty when it is not a directory.
 std::vector<std::string> listLabelFiles(const std::string &dir);
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

@@ -6,7 +6,7 @@
 
 #include "eval/label_reference.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 
 RealScore scoreRealRectangle(const RealLabel &label, const CameraIntrinsics &camera, bool found, const Rectangle &r,
                              const RealScoreRules &rules) {
@@ -98,4 +98,4 @@ ColourScore scoreColourRectangle(const RealLabel &label, const CameraIntrinsics 
     return c;
 }
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

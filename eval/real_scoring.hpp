@@ -6,14 +6,14 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "eval/real_labels.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/plane_frame.hpp"
-#include "eval/real_labels.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 
 struct RealScoreRules {
-    double min_free = 0.95;    ///< share of the rectangle's area free by the labels (issue 11)
+    double min_free = 0.95;    ///< share of the rectangle's area free by the labels
     double on_surface = 0.05;  ///< m, |distance| to the surface's labelled plane (paper 3.2.3's outlier distance) ...
     double on_surface_share = 0.03;  ///< ... or this share of the range if larger (1.5 x Intel's 2 % RMS for the D4xx)
     double max_upright_deg = 2.0;    ///< deg, its sides vs gravity seen on its plane (the detector uses the same
@@ -41,7 +41,7 @@ RealScore scoreRealRectangle(const RealLabel &label, const CameraIntrinsics &cam
                              const Rectangle &rectangle, const RealScoreRules &rules = {});
 
 /// Share of `rectangle`'s area (the same sample grid) that the camera sees inside one of the
-/// label's colour-unsuitable polygons (issue 15's target: <= 2 %). 0 without any.
+/// label's colour-unsuitable polygons (the target: <= 2 %). 0 without any.
 double unsuitableShare(const RealLabel &label, const CameraIntrinsics &camera, const Rectangle &rectangle,
                        const RealScoreRules &rules = {});
 
@@ -56,4 +56,4 @@ struct ColourScore {
 ColourScore scoreColourRectangle(const RealLabel &label, const CameraIntrinsics &camera, bool found,
                                  const Rectangle &rectangle, const RealScoreRules &rules = {});
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

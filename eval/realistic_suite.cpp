@@ -11,7 +11,9 @@
 #include "projsurf/sim/scenarios_realistic.hpp"
 #include "projsurf/types/formatted.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
+
+using namespace projsurf::sim;  // the simulator the evaluation runs on
 
 const std::vector<RealisticCase> &realisticSuiteCases() {
     static const std::vector<RealisticCase> cases{
@@ -152,8 +154,8 @@ std::string realisticSuiteMarkdown(const RealisticSuiteResult &result) {
     for (SensorKind k : kinds) {
         const SensorTotals t = sensorTotals(result, k);
         md << "| " << sensorName(k) << " | " << t.rounds << " | "
-           << formatted("%.1f %%", t.rounds ? 100.0 * t.success / t.rounds : 0.0) << " | " << t.scenes_ok << " / " << t.scenes
-           << " |\n";
+           << formatted("%.1f %%", t.rounds ? 100.0 * t.success / t.rounds : 0.0) << " | " << t.scenes_ok << " / "
+           << t.scenes << " |\n";
     }
     md << "\nPer scene and sensor: success % (rounds found / valid / successful), mean found area (m²); and the "
           "most frequent failure.\n\n";
@@ -164,16 +166,16 @@ std::string realisticSuiteMarkdown(const RealisticSuiteResult &result) {
     md << "---|\n";
     for (std::size_t i = 0; i < result.rows.size();) {
         const RealisticCase &c = result.rows[i].scene;
-        md << "| " << c.scenario << " | " << formatted("%.1f m", c.distance) << " | " << formatted("%.0f°", c.angle_deg) << " | "
-           << formatted("%.2f m²", result.rows[i].best_area) << " |";
+        md << "| " << c.scenario << " | " << formatted("%.1f m", c.distance) << " | " << formatted("%.0f°", c.angle_deg)
+           << " | " << formatted("%.2f m²", result.rows[i].best_area) << " |";
         std::string failures;
         std::size_t j = i;
         for (; j < result.rows.size() && result.rows[j].scene.scenario == c.scenario &&
                result.rows[j].scene.distance == c.distance && result.rows[j].scene.angle_deg == c.angle_deg;
              ++j) {
             const RealisticRow &r = result.rows[j];
-            md << " " << formatted("%.0f", r.successPct()) << " (" << r.found << "/" << r.valid << "/" << r.success << "), "
-               << formatted("%.2f", r.mean_area) << " |";
+            md << " " << formatted("%.0f", r.successPct()) << " (" << r.found << "/" << r.valid << "/" << r.success
+               << "), " << formatted("%.2f", r.mean_area) << " |";
             if (!r.failure.empty())
                 failures += (failures.empty() ? "" : "; ") + sensorName(r.sensor) + ": " + r.failure;
         }
@@ -195,4 +197,4 @@ std::string realisticSuiteSummary(const RealisticSuiteResult &result) {
     return s.str();
 }
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

@@ -1,5 +1,5 @@
 #pragma once
-// The realistic simulated suite (issue 11): realistic scenes (scenarios_realistic.hpp) x the
+// The realistic simulated suite: realistic scenes (scenarios_realistic.hpp) x the
 // three realistic sensors (depth_sensor.hpp) x rounds, scored by the eval's ground-truth rule
 // (scoring.hpp: valid, >= 97 % free, area within 0.05 m^2 of the best). Round r uses sensor
 // unit `first_unit + r` (its own fixed distortions) and its own frame noise, so the rounds
@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
 
 struct RealisticCase {
     std::string scenario;   ///< realisticScenarioNames()
@@ -22,11 +22,11 @@ struct RealisticCase {
 const std::vector<RealisticCase> &realisticSuiteCases();
 
 struct RealisticSuiteOptions {
-    int rounds = 10;    ///< per scene and sensor (issue 11: 10)
+    int rounds = 10;    ///< per scene and sensor (10 as the suite's targets ask)
     unsigned seed = 1;  ///< frame-noise and RANSAC seed base
     int first_unit = 0;
     double truth_cell = 0.01;  ///< m, as the eval (EvalPlan::truth_cell)
-    std::vector<SensorKind> sensors = sensorKinds();
+    std::vector<sim::SensorKind> sensors = sim::sensorKinds();
     std::vector<RealisticCase> cases = realisticSuiteCases();
 };
 /// 2 rounds, every scene and sensor (for tests).
@@ -34,7 +34,7 @@ RealisticSuiteOptions quickRealisticSuite();
 
 struct RealisticRow {
     RealisticCase scene;
-    SensorKind sensor = SensorKind::Kinect1;
+    sim::SensorKind sensor = sim::SensorKind::Kinect1;
     int rounds = 0, found = 0, valid = 0, success = 0;
     double best_area = 0.0;  ///< m^2, ground truth
     double mean_area = 0.0;  ///< m^2, over found rounds (0 when none)
@@ -59,11 +59,11 @@ RealisticSuiteResult runRealisticSuite(const RealisticSuiteOptions &options, con
 struct SensorTotals {
     int rounds = 0, success = 0, scenes = 0, scenes_ok = 0;
 };
-SensorTotals sensorTotals(const RealisticSuiteResult &result, SensorKind sensor);
+SensorTotals sensorTotals(const RealisticSuiteResult &result, sim::SensorKind sensor);
 
 /// Markdown: a per-sensor summary table and the per-scene table (success % per sensor).
 std::string realisticSuiteMarkdown(const RealisticSuiteResult &result);
 /// One line: success per sensor and scenes at >= 98 %.
 std::string realisticSuiteSummary(const RealisticSuiteResult &result);
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

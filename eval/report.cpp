@@ -15,12 +15,8 @@
 
 namespace fs = std::filesystem;
 
-namespace projsurf {
+namespace projsurf::eval {
 namespace {
-
-using sim::kNaN;
-using sim::Summary;
-using sim::Trial;
 
 // Chart colours (BGR), one per method; the paper's published values use the same colour, dashed.
 const cv::Scalar kConcave(190, 110, 30), kConvex(30, 140, 240), kDefault(60, 160, 60), kGrey(110, 110, 110);
@@ -78,7 +74,7 @@ bool hasMethod(const std::vector<Trial> &trials, const std::string &scenario, co
 /// Summary of a scenario and method; NaN angle or distance = all of them.
 Summary sumFor(const std::vector<Trial> &trials, const std::string &scenario, const std::string &method, double angle,
                double distance) {
-    return sim::summarize(sim::select(trials, [&](const Trial &t) {
+    return summarize(select(trials, [&](const Trial &t) {
         return t.scenario == scenario && t.method == method && (std::isnan(angle) || same(t.angle_deg, angle)) &&
                (std::isnan(distance) || same(t.distance, distance));
     }));
@@ -105,19 +101,19 @@ std::string distanceTable(const std::vector<double> &distances, const std::vecto
     return s.str();
 }
 
-Row paperSuccessRow(const sim::PaperSuccessRow *row, const std::string &label) {
+Row paperSuccessRow(const PaperSuccessRow *row, const std::string &label) {
     return {label, [row](double d) {
                 if (!row) return std::string("–");
                 if (std::isnan(d)) return pct(row->average_success_pct);
-                const auto v = sim::paperSuccessAt(*row, d);
+                const auto v = paperSuccessAt(*row, d);
                 return v ? pct(*v) : std::string("–");
             }};
 }
-Row paperErrorRow(const sim::PaperSuccessRow *row, const std::string &label) {
+Row paperErrorRow(const PaperSuccessRow *row, const std::string &label) {
     return {label, [row](double d) {
                 if (!row) return std::string("–");
                 if (std::isnan(d)) return num(row->average_area_error_m2, 2);
-                const auto v = sim::paperErrorAt(*row, d);
+                const auto v = paperErrorAt(*row, d);
                 return v ? num(*v, 3) : std::string("–");
             }};
 }
@@ -154,7 +150,7 @@ struct KeyStats {
     double overshoot = 0.0;
     double h = kNaN, hs = kNaN, v = kNaN, vs = kNaN, g = kNaN, gs = kNaN;
 };
-KeyStats keyStats(const std::vector<sim::KeystoneTrial> &k, double angle, double distance, const std::string &method) {
+KeyStats keyStats(const std::vector<KeystoneTrial> &k, double angle, double distance, const std::string &method) {
     KeyStats s;
     std::vector<double> h, v, g;
     for (const auto &t : k)
@@ -182,7 +178,7 @@ KeyStats keyStats(const std::vector<sim::KeystoneTrial> &k, double angle, double
     return s;
 }
 
-std::vector<std::pair<double, double>> keystonePoses(const std::vector<sim::KeystoneTrial> &k) {
+std::vector<std::pair<double, double>> keystonePoses(const std::vector<KeystoneTrial> &k) {
     std::vector<std::pair<double, double>> poses;  // (angle, distance) in run order
     for (const auto &t : k)
         if (std::none_of(poses.begin(), poses.end(),
@@ -213,10 +209,10 @@ std::vector<double> successSeries(const std::vector<Trial> &trials, const std::s
     return y;
 }
 
-std::vector<double> publishedSeries(const sim::PaperSuccessRow *row, const std::vector<double> &ds) {
+std::vector<double> publishedSeries(const PaperSuccessRow *row, const std::vector<double> &ds) {
     std::vector<double> y;
     for (double d : ds) {
-        const auto v = row ? sim::paperSuccessAt(*row, d) : std::nullopt;
+        const auto v = row ? paperSuccessAt(*row, d) : std::nullopt;
         y.push_back(v ? *v : kNaN);
     }
     return y;
@@ -224,7 +220,7 @@ std::vector<double> publishedSeries(const sim::PaperSuccessRow *row, const std::
 
 cv::Mat successPanel(const std::vector<Trial> &trials, const std::string &scenario, double angle, bool paper_criterion,
                      const std::vector<std::tuple<std::string, std::string, cv::Scalar, int>> &methods,
-                     const std::vector<std::tuple<std::string, const sim::PaperSuccessRow *, cv::Scalar>> &published) {
+                     const std::vector<std::tuple<std::string, const PaperSuccessRow *, cv::Scalar>> &published) {
     LineChart c;
     const std::vector<double> ds = distancesOf(trials, scenario);
     c.title = scenario + " at " + plotAngle(angle) + (paper_criterion ? ": paper's criterion" : ": ground truth");
@@ -251,7 +247,7 @@ cv::Mat successPanel(const std::vector<Trial> &trials, const std::string &scenar
 
 }  // namespace
 
-std::vector<std::pair<std::string, cv::Mat>> evalPlots(const sim::EvalResults &res) {
+std::vector<std::pair<std::string, cv::Mat>> evalPlots(const EvalResults &res) {
     std::vector<std::pair<std::string, cv::Mat>> out;
     const auto &T = res.trials;
 
@@ -264,8 +260,8 @@ std::vector<std::pair<std::string, cv::Mat>> evalPlots(const sim::EvalResults &r
                                               {{"paper-concave", "ours: paper method, concave", kConcave, 0},
                                                {"paper-convex", "ours: paper method, convex", kConvex, 1},
                                                {"default", "ours: default method", kDefault, 2}},
-                                              {{"published: concave", sim::findPaperRow("1", "concave", a), kConcave},
-                                               {"published: convex", sim::findPaperRow("1", "convex", a), kConvex}}));
+                                              {{"published: concave", findPaperRow("1", "concave", a), kConcave},
+                                               {"published: convex", findPaperRow("1", "convex", a), kConvex}}));
         out.emplace_back("success_uncluttered.png",
                          tilePanels(panels, 2, "Table 1: success rate on the plain wall (solid: ours, dashed: paper)"));
     }
@@ -277,7 +273,7 @@ std::vector<std::pair<std::string, cv::Mat>> evalPlots(const sim::EvalResults &r
                 panels.push_back(successPanel(T, "closet", a, paper,
                                               {{"paper-concave", "ours: paper method", kConcave, 0},
                                                {"default", "ours: default method", kDefault, 2}},
-                                              {{"published", sim::findPaperRow("2", "cluttered", a), kConcave}}));
+                                              {{"published", findPaperRow("2", "cluttered", a), kConcave}}));
         out.emplace_back("success_cluttered.png",
                          tilePanels(panels, 2, "Table 2: success rate, cluttered scene (solid: ours, dashed: paper)"));
     }
@@ -315,7 +311,7 @@ std::vector<std::pair<std::string, cv::Mat>> evalPlots(const sim::EvalResults &r
             acc.series.push_back({tag + " default", colors[k], ds, accd, {}, false, k});
             ++k;
         }
-        const sim::PaperOutlierFacts f = sim::paperOutlierFacts();
+        const PaperOutlierFacts f = paperOutlierFacts();
         outl.h_lines = {{static_cast<double>(f.outlier_limit), "paper's limit 5000", true, false},
                         {f.highest_median_no_obstacle, "paper: NO max median 4285", false, true},
                         {f.smallest_median_obstacles, "paper: SO/BO min median 7383", false, false}};
@@ -338,7 +334,7 @@ std::vector<std::pair<std::string, cv::Mat>> evalPlots(const sim::EvalResults &r
                 ours_d{"ours: default method", kDefault, {}, {}, {}};
             for (const auto &[a, d] : poses) {
                 b.categories.push_back(distanceLabel(d) + " m|" + plotAngle(a));
-                const sim::PaperKeystoneCell *pc = sim::findPaperKeystone(a, d);
+                const PaperKeystoneCell *pc = findPaperKeystone(a, d);
                 const KeyStats kp = keyStats(res.keystone, a, d, "paper-concave"),
                                kd = keyStats(res.keystone, a, d, "default");
                 const double pm[] = {pc ? pc->horizontal_mean : kNaN, pc ? pc->vertical_mean : kNaN,
@@ -377,7 +373,7 @@ std::vector<std::pair<std::string, cv::Mat>> evalPlots(const sim::EvalResults &r
             for (double d : ds) y.push_back(sumFor(T, "wall", name, kNaN, d).time_median_ms);
             c.series.push_back({label, color, ds, y, {}, false, marker});
         }
-        const sim::PaperTiming pt = sim::paperTiming();
+        const PaperTiming pt = paperTiming();
         c.series.push_back({"published (Mbot CPU)",
                             kGrey,
                             {1.0, 3.0},
@@ -390,11 +386,11 @@ std::vector<std::pair<std::string, cv::Mat>> evalPlots(const sim::EvalResults &r
     return out;
 }
 
-std::vector<HeadlineRow> evalHeadline(const sim::EvalResults &res) {
+std::vector<HeadlineRow> evalHeadline(const EvalResults &res) {
     const auto &T = res.trials;
     std::vector<HeadlineRow> rows;
     for (double a : anglesOf(T, "wall")) {
-        const auto *row = sim::findPaperRow("1", "concave", a);
+        const auto *row = findPaperRow("1", "concave", a);
         rows.push_back({"Table 1, plain wall, " + angleLabel(a) + ", concave hull: success (%)",
                         row ? pct(row->average_success_pct) : "–",
                         pct(sumFor(T, "wall", "paper-concave", a, kNaN).paperRatePct()),
@@ -403,7 +399,7 @@ std::vector<HeadlineRow> evalHeadline(const sim::EvalResults &res) {
                         pct(sumFor(T, "wall", "default", a, kNaN).truthRatePct())});
     }
     for (double a : anglesOf(T, "closet")) {
-        const auto *row = sim::findPaperRow("2", "cluttered", a);
+        const auto *row = findPaperRow("2", "cluttered", a);
         rows.push_back({"Table 2, cluttered (closet), " + angleLabel(a) + ": success (%)",
                         row ? pct(row->average_success_pct) : "–",
                         pct(sumFor(T, "closet", "paper-concave", a, kNaN).paperRatePct()),
@@ -441,7 +437,7 @@ std::vector<HeadlineRow> evalHeadline(const sim::EvalResults &res) {
     }
     {
         const auto all = [&](const std::string &m) {
-            return sim::summarize(sim::select(T, [&](const Trial &t) { return t.method == m; }));
+            return summarize(select(T, [&](const Trial &t) { return t.method == m; }));
         };
         rows.push_back({"Time per detection, median (ms)", "~1500", num(all("paper-concave").time_median_ms, 1), "", "",
                         num(all("default").time_median_ms, 1)});
@@ -449,7 +445,7 @@ std::vector<HeadlineRow> evalHeadline(const sim::EvalResults &res) {
     return rows;
 }
 
-std::string evalHeadlineText(const sim::EvalResults &res) {
+std::string evalHeadlineText(const EvalResults &res) {
     std::string out =
         "Tables 1-3 (published | ours, paper method: paper's criterion, ground truth, + 40 px slack | ours, default "
         "method: ground truth; report.md's Headline):";
@@ -461,7 +457,7 @@ std::string evalHeadlineText(const sim::EvalResults &res) {
     return out;
 }
 
-std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<GalleryEntry> &gallery,
+std::string evalReportMarkdown(const EvalResults &res, const std::vector<GalleryEntry> &gallery,
                                const ReportInfo &info) {
     const auto &T = res.trials;
     std::ostringstream md;
@@ -484,7 +480,7 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
           "the best of the rounds for that pose and method (paper 4.1); *ground truth* = the simulator's true "
           "largest free rectangle: the answer must be on a real surface, upright, inside the projector's "
           "framebuffer (within 2 px), at least 97 % truly free, and within 0.05 m² of the true best area "
-          "(`sim::scoreDetection`); *+ 40 px slack* lets the corners leave the framebuffer by up to 40 px (the "
+          "(`scoreDetection`); *+ 40 px slack* lets the corners leave the framebuffer by up to 40 px (the "
           "paper method's 2 cm raster often overshoots the projector's footprint by about one cell).\n\n";
     md << "| Experiment | published | ours, paper method, paper's criterion | ours, paper method, ground truth | "
           "ours, paper method, ground truth + 40 px slack | ours, default method, ground truth |\n"
@@ -504,7 +500,7 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
         std::vector<Row> rows;
         for (const std::string hull : {"concave", "convex"}) {
             if (!hasMethod(T, "wall", "paper-" + hull)) continue;
-            const auto *row = sim::findPaperRow("1", hull, a);
+            const auto *row = findPaperRow("1", hull, a);
             rows.push_back(paperSuccessRow(row, "**" + hull + " hull**: published, success (%)"));
             rows.push_back(paperErrorRow(row, "published, mean area error (m²)"));
             for (auto &r : ourRows(T, "wall", a, "paper-" + hull, "ours (paper method)", false)) rows.push_back(r);
@@ -524,7 +520,7 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
     for (double a : anglesOf(T, "closet")) {
         md << "### Cluttered, " << angleLabel(a) << "\n\n";
         std::vector<Row> rows;
-        const auto *row = sim::findPaperRow("2", "cluttered", a);
+        const auto *row = findPaperRow("2", "cluttered", a);
         rows.push_back(paperSuccessRow(row, "published, success (%)"));
         rows.push_back(paperErrorRow(row, "published, mean area error (m²)"));
         for (auto &r : ourRows(T, "closet", a, "paper-concave", "ours (paper method)", true)) rows.push_back(r);
@@ -536,7 +532,7 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
 
     // Fig 15.
     md << "## Figure 15: surface-check outliers, no / small / big obstacles (paper 4.3)\n\n";
-    const sim::PaperOutlierFacts f = sim::paperOutlierFacts();
+    const PaperOutlierFacts f = paperOutlierFacts();
     md << "The paper counts points of the checked area farther than " << f.threshold_m
        << " m from the area's mean depth and rejects the area above " << f.outlier_limit
        << " outliers. Its figure's bars are not in the text; the text gives the highest median without obstacles ("
@@ -595,7 +591,7 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
         md << "| Angle | Distance (m) | Error | published | ours, paper method | ours, default method |\n"
               "|---:|---:|---|---:|---:|---:|\n";
         for (const auto &[a, d] : keystonePoses(res.keystone)) {
-            const sim::PaperKeystoneCell *pc = sim::findPaperKeystone(a, d);
+            const PaperKeystoneCell *pc = findPaperKeystone(a, d);
             const KeyStats kp = keyStats(res.keystone, a, d, "paper-concave"),
                            kd = keyStats(res.keystone, a, d, "default");
             md << "| " << angleLabel(a) << " | " << distanceLabel(d) << " | horizontal | "
@@ -613,7 +609,7 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
 
     // Why rounds failed.
     md << "## Why rounds failed (ground truth)\n\n";
-    md << "The first condition of `sim::scoreDetection` that failed, counted over all rounds of a scene and "
+    md << "The first condition of `scoreDetection` that failed, counted over all rounds of a scene and "
           "method.\n\n| Scene | Method | rounds | failed | reasons (count) |\n|---|---|---:|---:|---|\n";
     for (const std::string sc : {"wall", "closet", "small_obstacles", "big_obstacle"})
         for (const std::string m : {"paper-concave", "paper-convex", "default"}) {
@@ -706,17 +702,16 @@ std::string evalReportMarkdown(const sim::EvalResults &res, const std::vector<Ga
           "a rectangle that is consistently wrong (e.g. always on the wrong surface).\n";
     md << "- Ground truth: `sim::computeGroundTruth` (1 cm raster on every vertical surface: seen by the camera, lit "
           "by "
-          "the projector, not occluded) and `sim::scoreDetection`; *area error vs ground truth* = mean |best − area| "
+          "the projector, not occluded) and `scoreDetection`; *area error vs ground truth* = mean |best − area| "
           "over all rounds (a round that found nothing counts the whole best area).\n";
     md << "- Table 3 uses the wall scenario at 1, 2, 3 m and 27.5°, 17.19°, −12.06° with a picture of the "
           "framebuffer's "
           "aspect (letterbox = the whole rectangle).\n";
-    if (!info.realistic_markdown.empty())
-        md << "\n## Realistic simulated suite (issue 11)\n\n" << info.realistic_markdown;
+    if (!info.realistic_markdown.empty()) md << "\n## Realistic simulated suite\n\n" << info.realistic_markdown;
     return md.str();
 }
 
-void writeEvalReport(const std::string &dir, const sim::EvalResults &results, const std::vector<GalleryEntry> &gallery,
+void writeEvalReport(const std::string &dir, const EvalResults &results, const std::vector<GalleryEntry> &gallery,
                      const ReportInfo &info) {
     const fs::path out(dir);
     for (const auto &[name, image] : evalPlots(results)) writeImageAtomic((out / name).string(), image);
@@ -732,4 +727,4 @@ void writeEvalReport(const std::string &dir, const sim::EvalResults &results, co
     writeFileAtomic((out / "report.md").string(), evalReportMarkdown(results, gallery, info));
 }
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

@@ -12,7 +12,7 @@
 #include "eval/labelled_eval.hpp"
 #include "eval/real_gallery.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 
 struct ReportInfo {
     std::string command;  ///< the command line that made the report
@@ -20,7 +20,7 @@ struct ReportInfo {
     std::string real_dir;            ///< where the real frames came from ("" = none)
     double real_seconds = 0;         ///< time spent on the gallery
     std::string load;                ///< machine load while it ran (e.g. "1-min load average 7.4 -> 6.5 on 2 cores")
-    std::string realistic_markdown;  ///< the realistic suite's section body (sim::realisticSuiteMarkdown), "" = none
+    std::string realistic_markdown;  ///< the realistic suite's section body (realisticSuiteMarkdown), "" = none
     const std::vector<LabelledFrame> *labelled = nullptr;  ///< labelled real-frame suite (nullptr = not run)
     std::string labels_dir;                                ///< where its label files came from
 };
@@ -30,21 +30,21 @@ struct ReportInfo {
 struct HeadlineRow {
     std::string experiment, published, paper_criterion, paper_truth, paper_slack, default_truth;
 };
-std::vector<HeadlineRow> evalHeadline(const sim::EvalResults &results);
+std::vector<HeadlineRow> evalHeadline(const EvalResults &results);
 /// The same as lines for stdout (eval prints it after its run).
-std::string evalHeadlineText(const sim::EvalResults &results);
+std::string evalHeadlineText(const EvalResults &results);
 
 /// The report's Markdown (links plots and gallery pictures by relative path).
-std::string evalReportMarkdown(const sim::EvalResults &results, const std::vector<GalleryEntry> &gallery,
+std::string evalReportMarkdown(const EvalResults &results, const std::vector<GalleryEntry> &gallery,
                                const ReportInfo &info);
 
 /// The charts, as (file name, image).
-std::vector<std::pair<std::string, cv::Mat>> evalPlots(const sim::EvalResults &results);
+std::vector<std::pair<std::string, cv::Mat>> evalPlots(const EvalResults &results);
 
 /// Writes dir/report.md, the charts, dir/gallery/<name>.png and dir/gallery/contact_sheet.png,
 /// and for the labelled suite dir/labels/<name>.png, contact_sheet.png and results.csv
 /// (atomically, each file). `dir` must exist.
-void writeEvalReport(const std::string &dir, const sim::EvalResults &results, const std::vector<GalleryEntry> &gallery,
+void writeEvalReport(const std::string &dir, const EvalResults &results, const std::vector<GalleryEntry> &gallery,
                      const ReportInfo &info);
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

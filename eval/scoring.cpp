@@ -3,7 +3,9 @@
 #include <cmath>
 #include <limits>
 
-namespace projsurf::sim {
+namespace projsurf::eval {
+
+using namespace projsurf::sim;  // the simulator the evaluation runs on
 namespace {
 
 /// Share of sample points of the rectangle that fall on free cells of the surface's mask.
@@ -86,4 +88,4 @@ Score scoreDetection(const Detection &det, const GroundTruth &truth, const Proje
     return s;
 }
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

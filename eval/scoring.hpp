@@ -4,10 +4,10 @@
 // as the best possible one (the paper's 0.05 m^2 criterion, section 4.1)?
 #include <string>
 
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
 
 struct ScoreOptions {
     double area_tolerance = 0.05;     ///< m^2, success when area >= best - this (paper 4.1)
@@ -29,7 +29,7 @@ struct Score {
     std::string why;  ///< the first failed condition
 };
 
-Score scoreDetection(const Detection &detection, const GroundTruth &truth, const Projector &projector,
+Score scoreDetection(const Detection &detection, const sim::GroundTruth &truth, const Projector &projector,
                      const Eigen::Vector3d &gravity, double aspect, const ScoreOptions &options = {});
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

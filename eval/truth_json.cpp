@@ -1,9 +1,9 @@
 #include "eval/truth_json.hpp"
 
-#include "projsurf/types/plane.hpp"
 #include "projsurf/io/files.hpp"
+#include "projsurf/types/plane.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 namespace {
 
 nlohmann::json vec(const Eigen::Vector3d &v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
@@ -70,4 +70,4 @@ void writeTruthJson(const std::string &path, const sim::GroundTruth &truth, cons
     writeFileAtomic(path, truthToJson(truth, scenario, seed, noise).dump(2) + "\n");
 }
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

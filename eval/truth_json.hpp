@@ -8,7 +8,7 @@
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
-namespace projsurf {
+namespace projsurf::eval {
 
 /// Keys: found, aspect, cell_m, scenario{name, description, distance_m, angle_deg, roll_deg, pitch_deg,
 /// gravity, seed, noise}, plane{coefficients, orientation_deg, surface}, rectangle{corners,
@@ -21,4 +21,4 @@ nlohmann::json truthToJson(const sim::GroundTruth &truth, const sim::Scenario &s
 void writeTruthJson(const std::string &path, const sim::GroundTruth &truth, const sim::Scenario &scenario,
                     unsigned seed, bool noise);
 
-}  // namespace projsurf
+}  // namespace projsurf::eval

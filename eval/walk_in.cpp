@@ -5,7 +5,9 @@
 
 #include "projsurf/people/beam_blanking.hpp"
 
-namespace projsurf::sim {
+namespace projsurf::eval {
+
+using namespace projsurf::sim;  // the simulator the evaluation runs on
 namespace {
 
 const cv::Vec3f kClothes{0.45f, 0.25f, 0.15f};  // BGR, a dark blue jumper
@@ -122,4 +124,4 @@ std::vector<WalkInShot> walkInShots(const Scene &scene, const Plane &wall, const
     return shots;
 }
 
-}  // namespace projsurf::sim
+}  // namespace projsurf::eval

@@ -16,7 +16,7 @@ function(step name)
 endfunction()
 
 step("cmake --install" ${CMAKE_COMMAND} --install ${PROJSURF_BUILD_DIR} --prefix ${prefix})
-foreach(f bin/projsurf include/projsurf/detection/detector.hpp include/projsurf/io/yaml_files.hpp
+foreach(f bin/projsurf include/projsurf/detector/detector.hpp include/projsurf/io/yaml_files.hpp
           lib/cmake/projsurf/projsurf-config.cmake lib/pkgconfig/projsurf.pc lib/pkgconfig/projsurf-core.pc)
   if(NOT EXISTS ${prefix}/${f})
     message(FATAL_ERROR "install test: ${prefix}/${f} was not installed")

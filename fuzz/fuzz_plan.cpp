@@ -4,7 +4,7 @@
 // beyond 20,000 points are skipped: the readers' limits have their own harnesses, and the
 // search's time per input is what makes a useful number of inputs per minute.
 #include "fuzz_common.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/frontend/detect_answer.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
 #include "projsurf/frontend/plan_json.hpp"

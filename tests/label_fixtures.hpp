@@ -13,6 +13,8 @@
 #include "eval/real_labels.hpp"
 #include "projsurf/io/errors.hpp"
 
+using namespace projsurf::eval;  // the evaluation under test
+
 namespace projsurf::test {
 
 inline std::string writeLabel(const std::filesystem::path &dir, const std::string &name, const std::string &text) {

@@ -33,6 +33,8 @@
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
+using namespace projsurf::eval;  // the evaluation under test
+
 namespace fs = std::filesystem;
 using namespace projsurf;
 

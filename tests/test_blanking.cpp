@@ -1,4 +1,4 @@
-// Blanking what stands in the beam (contract "Blanking", issue 13): a person walks into the
+// Blanking what stands in the beam (contract "Blanking"): a person walks into the
 // beam of a placed picture; no lit pixel may fall on them, the rest of the picture stays lit,
 // and sensor noise on an empty wall blanks (almost) nothing.
 #include <gtest/gtest.h>
@@ -9,10 +9,12 @@
 #include "projsurf/keystone/keystone.hpp"
 #include "eval/walk_in.hpp"
 #include "projsurf/frontend/test_card.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
+
+using namespace projsurf::eval;  // the evaluation under test
 
 using namespace projsurf;
 
@@ -98,13 +100,13 @@ TEST(Blanking, PersonWalkingIntoTheBeam) {
         const Projector projector = sim::exampleProjector();
         BeamBlanker blanker(projector);
         // From outside the beam on the left to its middle, 1.4 m from the camera, arm out.
-        const auto frames = sim::walkInScenes(placed.scenario.scene, -1.3, 0.1, 6, 1.4);
+        const auto frames = eval::walkInScenes(placed.scenario.scene, -1.3, 0.1, 6, 1.4);
         for (std::size_t k = 0; k < frames.size(); ++k) {
             const sim::RgbdFrame frame = look(frames[k], c.kinect1, 100 + static_cast<unsigned>(k));
             cv::Mat fb = placed.framebuffer.clone();
             applyBlanking(fb, blanker.compute(frame.cloud, placed.detection.plane));
-            const sim::BeamScore s =
-                sim::scoreBlanking(frames[k], placed.scenario.wall, projector, placed.framebuffer, fb);
+            const eval::BeamScore s =
+                eval::scoreBlanking(frames[k], placed.scenario.wall, projector, placed.framebuffer, fb);
             std::printf(
                 "walk-in %.1f m %.2f deg %s frame %zu: %ld px on the person, %ld of them lit; %ld picture px "
                 "> 10 cm away, %.2f %% lit; %d px blanked\n",

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "projsurf/detection/default/observed_free_space.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"

@@ -15,9 +15,11 @@
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
+
+using namespace projsurf::eval;  // the evaluation under test
 
 namespace fs = std::filesystem;
 using namespace projsurf;
@@ -34,7 +36,7 @@ TEST(CliBlanking, CorrectBlanksThePersonInTheBeam) {
     writeCalibration((dir / "calib.yaml").string(), projector);
     writeFileAtomic((dir / "det.json").string(), detectionToJson(det, cfg, &projector).dump(2));
     cv::imwrite((dir / "card.png").string(), frontend::testCard(cv::Size(640, 400)));
-    const sim::Scene with_person = sim::walkInScenes(sc.scene, -0.5, -0.5, 1, 1.4)[0];
+    const sim::Scene with_person = eval::walkInScenes(sc.scene, -0.5, -0.5, 1, 1.4)[0];
     const sim::RgbdFrame now = sim::renderFrame(with_person, sim::SensorModel(), 2);
     writeCloudPcd((dir / "now.pcd").string(), now.cloud);
     writeCloudPcd((dir / "empty.pcd").string(), empty.cloud);
@@ -65,7 +67,7 @@ TEST(CliBlanking, CorrectBlanksThePersonInTheBeam) {
     EXPECT_GT(darkened, n / 4);
     EXPECT_LE(darkened, n);
     // No lit pixel lands on the person.
-    const sim::BeamScore s = sim::scoreBlanking(with_person, sc.wall, projector, a, b);
+    const eval::BeamScore s = eval::scoreBlanking(with_person, sc.wall, projector, a, b);
     EXPECT_GT(s.on_person, 10000);
     EXPECT_EQ(s.lit_on_person, 0);
     // The depth PNG gives the same answer within the millimetre rounding.

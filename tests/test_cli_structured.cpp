@@ -108,7 +108,7 @@ TEST(CliStructured, DemoCorrectsALensOffsetProjectorCalibratedByStructuredLight)
     EXPECT_GT(worst("disc calibration:"), 3.0);  // the paper's model misses the offset
     const double structured = worst("structured light:");
     EXPECT_GE(structured, 0.0);
-    EXPECT_LE(structured, 0.2);  // issue 12's end-to-end target
+    EXPECT_LE(structured, 0.2);  // the end-to-end target
     fs::remove_all(dir);
 }
 

@@ -1,4 +1,4 @@
-// The colour section of the real-frame labels (issue 15): the reader and its errors, the
+// The colour section of the real-frame labels: the reader and its errors, the
 // colour-aware reference best and the share over unsuitable polygons on a synthetic wall with
 // a known answer, and the guard that every stored colour label is what the reference computes.
 #include <gtest/gtest.h>
@@ -20,6 +20,8 @@
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/yaml_files.hpp"
+
+using namespace projsurf::eval;  // the evaluation under test
 
 using namespace projsurf;
 namespace fs = std::filesystem;
@@ -249,7 +251,7 @@ TEST(ColourLabelSuite, EvalDetectsWithColourAsTheCliDoes) {
                 << "corner " << k;
     // The report has the colour table and its summary line.
     const std::string md = labelledReportMarkdown({f}, "labels/real", "labels");
-    EXPECT_NE(md.find("### With colour (issue 15)"), std::string::npos);
+    EXPECT_NE(md.find("### With colour"), std::string::npos);
     EXPECT_NE(md.find(colourSummaryLine(summariseColour({f}))), std::string::npos);
     EXPECT_NE(md.find("](labels/" + frame + "_colour.png)"), std::string::npos);
     fs::remove_all(dir);

@@ -10,10 +10,12 @@
 #include "projsurf/types/point_grid.hpp"
 #include <opencv2/imgproc.hpp>
 #include "eval/scoring.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
+
+using namespace projsurf::eval;  // the evaluation under test
 
 using namespace projsurf;
 
@@ -22,7 +24,7 @@ namespace {
 struct Outcome {
     Detection det;
     sim::GroundTruth truth;
-    sim::Score score;
+    eval::Score score;
 };
 
 Outcome runScene(const std::string &name, double distance, double angle, unsigned seed, Method method = Method::Default,
@@ -40,7 +42,7 @@ Outcome runScene(const std::string &name, double distance, double angle, unsigne
     sim::TruthOptions topt;
     topt.cell = 0.01;
     o.truth = sim::computeGroundTruth(sc.scene, sensor, projector, sc.gravity, topt);
-    o.score = sim::scoreDetection(o.det, o.truth, projector, sc.gravity, projector.aspect());
+    o.score = eval::scoreDetection(o.det, o.truth, projector, sc.gravity, projector.aspect());
     return o;
 }
 
@@ -178,7 +180,7 @@ TEST(Detection, UnorganizedCloudGivesTheSameAnswer) {
     ASSERT_FALSE(loose.organized());
     const Detection det = detectSurface(loose, projector, DetectorConfig{}, sc.gravity);
     const sim::GroundTruth truth = sim::computeGroundTruth(sc.scene, sim::SensorModel{}, projector, sc.gravity);
-    const sim::Score score = sim::scoreDetection(det, truth, projector, sc.gravity, projector.aspect());
+    const eval::Score score = eval::scoreDetection(det, truth, projector, sc.gravity, projector.aspect());
     EXPECT_TRUE(score.valid) << score.why;
     EXPECT_TRUE(score.success) << score.area << " vs best " << score.best_area << ": " << score.why;
 }

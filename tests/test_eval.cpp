@@ -17,6 +17,8 @@
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
+using namespace projsurf::eval;  // the evaluation under test
+
 using namespace projsurf;
 namespace fs = std::filesystem;
 
@@ -54,8 +56,8 @@ struct WallCase {
         d.surface_check.points = 1000;
         return d;
     }
-    sim::Trial score(const Rectangle &r) const {
-        return sim::scoreTrial(detectionOf(r), truth, projector, scenario.gravity, projector.aspect());
+    eval::Trial score(const Rectangle &r) const {
+        return eval::scoreTrial(detectionOf(r), truth, projector, scenario.gravity, projector.aspect());
     }
 };
 
@@ -72,7 +74,7 @@ Rectangle transformedAboutCenter(const Rectangle &r, const Eigen::Matrix3d &m, d
 
 TEST(EvalScoring, PaperCriterionIsTheBestOfTheRoundsWithinTolerance) {
     // Paper 4.1: a round fails when its area is more than 0.05 m^2 below the best round's.
-    const sim::RoundsVerdict v = sim::paperCriterion({1.00, 0.97, 0.95, std::nullopt, 0.90, 0.949}, 0.05);
+    const eval::RoundsVerdict v = eval::paperCriterion({1.00, 0.97, 0.95, std::nullopt, 0.90, 0.949}, 0.05);
     EXPECT_DOUBLE_EQ(v.best_area, 1.00);
     const std::vector<bool> expected{true, true, true, false, false, false};
     EXPECT_EQ(v.success, expected);
@@ -80,15 +82,15 @@ TEST(EvalScoring, PaperCriterionIsTheBestOfTheRoundsWithinTolerance) {
     EXPECT_NEAR(v.area_error[4], 0.10, 1e-12);
     EXPECT_TRUE(std::isnan(v.area_error[3]));  // found nothing: a failure without an area error
     // Nothing found in any round: every round fails.
-    const sim::RoundsVerdict none = sim::paperCriterion({std::nullopt, std::nullopt});
+    const eval::RoundsVerdict none = eval::paperCriterion({std::nullopt, std::nullopt});
     EXPECT_TRUE(std::isnan(none.best_area));
     EXPECT_EQ(none.success, std::vector<bool>({false, false}));
 }
 
 TEST(EvalScoring, PaperCriterionGroupsByPoseAndMethod) {
-    std::vector<sim::Trial> trials;
+    std::vector<eval::Trial> trials;
     auto add = [&](const std::string &method, double distance, double area) {
-        sim::Trial t;
+        eval::Trial t;
         t.scenario = "wall";
         t.method = method;
         t.distance = distance;
@@ -101,14 +103,14 @@ TEST(EvalScoring, PaperCriterionGroupsByPoseAndMethod) {
     add("paper-concave", 2.0, 0.5);   // 0.5 below its group's best: fails
     add("default", 2.0, 0.5);         // its own group's best: succeeds
     add("paper-concave", 3.0, 0.52);  // another pose: its own best
-    sim::applyPaperCriterion(trials);
+    eval::applyPaperCriterion(trials);
     EXPECT_TRUE(trials[0].paper_success);
     EXPECT_FALSE(trials[1].paper_success);
     EXPECT_NEAR(trials[1].paper_area_error, 0.5, 1e-12);
     EXPECT_TRUE(trials[2].paper_success);
     EXPECT_TRUE(trials[3].paper_success);
-    const sim::Summary s =
-        sim::summarize(sim::select(trials, [](const sim::Trial &t) { return t.method == "paper-concave"; }));
+    const eval::Summary s =
+        eval::summarize(eval::select(trials, [](const eval::Trial &t) { return t.method == "paper-concave"; }));
     EXPECT_EQ(s.n, 3);
     EXPECT_EQ(s.paper_success, 2);
     EXPECT_NEAR(s.paperRatePct(), 200.0 / 3.0, 1e-9);
@@ -118,7 +120,7 @@ TEST(EvalScoring, PaperCriterionGroupsByPoseAndMethod) {
 TEST(EvalScoring, TheTrueRectangleScoresAsSuccess) {
     const WallCase w;
     ASSERT_TRUE(w.truth.found);
-    const sim::Trial t = w.score(w.truth.best.rectangle);
+    const eval::Trial t = w.score(w.truth.best.rectangle);
     EXPECT_TRUE(t.score.valid) << t.score.why;
     EXPECT_TRUE(t.score.success) << t.score.why;
     EXPECT_TRUE(t.slack_success);
@@ -136,26 +138,26 @@ TEST(EvalScoring, WrongRectanglesFail) {
     // Off the wall: 0.2 m in front of it.
     Rectangle off = best;
     for (auto &c : off.corners) c += 0.2 * n;
-    const sim::Trial t_off = w.score(off);
+    const eval::Trial t_off = w.score(off);
     EXPECT_FALSE(t_off.score.success);
     EXPECT_FALSE(t_off.score.valid);
     EXPECT_FALSE(t_off.checked_valid);
 
     // Too small: valid but a quarter of the area.
-    const sim::Trial t_small = w.score(transformedAboutCenter(best, Eigen::Matrix3d::Identity(), 0.5));
+    const eval::Trial t_small = w.score(transformedAboutCenter(best, Eigen::Matrix3d::Identity(), 0.5));
     EXPECT_TRUE(t_small.score.valid) << t_small.score.why;
     EXPECT_FALSE(t_small.score.success);
     EXPECT_NEAR(t_small.score.area_error, 0.75 * best.area(), 1e-6);
 
     // Rotated by 10 degrees in the wall plane: not upright.
     const Eigen::Matrix3d rot = Eigen::AngleAxisd(10.0 * M_PI / 180.0, n).toRotationMatrix();
-    const sim::Trial t_rot = w.score(transformedAboutCenter(best, rot, 0.8));
+    const eval::Trial t_rot = w.score(transformedAboutCenter(best, rot, 0.8));
     EXPECT_FALSE(t_rot.score.success);
     EXPECT_FALSE(t_rot.score.valid);
 
     // Not found at all: a failure that loses the whole area.
     Detection none;
-    const sim::Trial t_none = sim::scoreTrial(none, w.truth, w.projector, w.scenario.gravity, w.projector.aspect());
+    const eval::Trial t_none = eval::scoreTrial(none, w.truth, w.projector, w.scenario.gravity, w.projector.aspect());
     EXPECT_FALSE(t_none.score.success);
     EXPECT_FALSE(t_none.checked);
     EXPECT_NEAR(t_none.score.area_error, best.area(), 1e-9);
@@ -165,27 +167,27 @@ TEST(EvalKeystone, ExactCalibrationGivesARectangleAndAWrongOneDoesNot) {
     const WallCase w;
     ASSERT_TRUE(w.truth.found);
     const cv::Size picture(w.projector.width, w.projector.height);
-    const sim::WallPicture exact =
-        sim::pictureOnWall(w.projector, w.projector, w.scenario.scene, w.truth.best.rectangle, picture);
+    const eval::WallPicture exact =
+        eval::pictureOnWall(w.projector, w.projector, w.scenario.scene, w.truth.best.rectangle, picture);
     ASSERT_TRUE(exact.ok) << exact.problem;
     EXPECT_LT(exact.errors.worst_pct(), 0.05);
     // A calibration whose axis is 1.5 degrees off: the picture lands distorted (and shifted).
     Projector wrong = w.projector;
     wrong.direction = Eigen::AngleAxisd(1.5 * M_PI / 180.0, Eigen::Vector3d::UnitY()) * wrong.direction;
-    const sim::WallPicture off =
-        sim::pictureOnWall(wrong, w.projector, w.scenario.scene,
+    const eval::WallPicture off =
+        eval::pictureOnWall(wrong, w.projector, w.scenario.scene,
                            transformedAboutCenter(w.truth.best.rectangle, Eigen::Matrix3d::Identity(), 0.8), picture);
     ASSERT_TRUE(off.ok) << off.problem;
     EXPECT_GT(off.errors.worst_pct(), 0.3);
     // The uncorrected framebuffer on a wall at 17 degrees is clearly keystoned.
-    const sim::WallPicture raw =
-        sim::framebufferOnWall(w.projector, w.scenario.scene, w.projector.framebufferCorners());
+    const eval::WallPicture raw =
+        eval::framebufferOnWall(w.projector, w.scenario.scene, w.projector.framebufferCorners());
     ASSERT_TRUE(raw.ok);
     EXPECT_GT(raw.errors.worst_pct(), 5.0);
 }
 
 TEST(EvalPlan, QuickPlanCoversEveryExperimentAtTwoMetres) {
-    const sim::EvalPlan plan = sim::paperEvalPlan(2, true);
+    const eval::EvalPlan plan = eval::paperEvalPlan(2, true);
     std::set<std::string> scenarios;
     int keystone = 0;
     for (const auto &j : plan.jobs) {
@@ -195,7 +197,7 @@ TEST(EvalPlan, QuickPlanCoversEveryExperimentAtTwoMetres) {
     }
     EXPECT_EQ(scenarios, (std::set<std::string>{"wall", "closet", "small_obstacles", "big_obstacle"}));
     EXPECT_EQ(keystone, 3);  // Table 3: three angles
-    const sim::EvalPlan full = sim::paperEvalPlan(10, false);
+    const eval::EvalPlan full = eval::paperEvalPlan(10, false);
     EXPECT_EQ(full.jobs.size(), 10u + 8u + 10u + 10u + 9u);  // wall (shared by 4.1-4.3), closet, SO, BO, Table 3
 }
 

@@ -11,7 +11,7 @@
 
 #include "projsurf/people/focus.hpp"
 #include "projsurf/io/detection_json.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 

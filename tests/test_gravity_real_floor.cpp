@@ -15,6 +15,7 @@
 #include "projsurf/io/cloud_io.hpp"
 
 using namespace projsurf;
+using namespace projsurf::eval;  // the evaluation under test
 namespace fs = std::filesystem;
 
 namespace {

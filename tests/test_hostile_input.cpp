@@ -1,4 +1,4 @@
-// Hostile input (issue 16), end to end through the CLI: every finding is a case here, built
+// Hostile input, end to end through the CLI: every finding is a case here, built
 // from a simulated frame in the test (no committed binaries). A refused input must give exit
 // 2, exactly one stderr line "projsurf: error: <file>: ...", and no output file (nor a
 // temporary) left behind; a valid but odd input (all-NaN cloud, far points) exit 0.

@@ -13,7 +13,7 @@
 #include "cli_run.hpp"
 #include "eval/plan_suite.hpp"
 #include "eval/real_labels.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/planning/levelled_frame.hpp"
@@ -21,15 +21,17 @@
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
+using namespace projsurf::eval;  // the evaluation under test
+
 namespace fs = std::filesystem;
 using namespace projsurf;
 using namespace projsurf::test;
 
 TEST(Plan, EverySuiteSceneRealisesThePrediction) {
-    sim::PlanSuiteOptions quick;
+    eval::PlanSuiteOptions quick;
     quick.reference = false;  // run only where the plan gains less than 1.5x
-    for (const sim::PlanScene &scene : sim::planSuiteScenes()) {
-        sim::PlanSceneResult r = sim::runPlanScene(scene, quick);
+    for (const eval::PlanScene &scene : eval::planSuiteScenes()) {
+        eval::PlanSceneResult r = eval::runPlanScene(scene, quick);
         const std::string what = scene.scenario + " " + std::to_string(scene.distance) + " m " +
                                  std::to_string(scene.angle_deg) + " deg";
         ASSERT_TRUE(r.plan.found) << what << ": " << r.plan.reason;
@@ -44,19 +46,19 @@ TEST(Plan, EverySuiteSceneRealisesThePrediction) {
         }
         if (r.realised >= 1.5 * r.before) continue;
         // Less than 1.5x: the exhaustive reference must say the scene does not allow it.
-        const sim::PlanSceneResult ref = sim::runPlanScene(scene);
+        const eval::PlanSceneResult ref = eval::runPlanScene(scene);
         EXPECT_FALSE(ref.allows_gain) << what << ": the reference finds " << ref.reference << " m^2";
     }
 }
 
 TEST(Plan, ShortestMoveForAWidthAndARefusal) {
-    const sim::PlanSceneResult r = sim::runPlanScene({"wall", 0.86, 0.0, 1.2, "width"}, {4, false});
+    const eval::PlanSceneResult r = eval::runPlanScene({"wall", 0.86, 0.0, 1.2, "width"}, {4, false});
     ASSERT_TRUE(r.plan.found) << r.plan.reason;
     EXPECT_GE(r.plan.predicted.width, 1.2);
     EXPECT_LT(r.plan.move.forward_m, 0.0) << "a wider picture needs a step back";
     EXPECT_GE(r.realised_width, 0.95 * 1.2);
     // Wider than possible within the bound: a clear refusal that names the width.
-    const sim::PlanSceneResult none = sim::runPlanScene({"wall", 0.86, 0.0, 20.0, "width"}, {4, false});
+    const eval::PlanSceneResult none = eval::runPlanScene({"wall", 0.86, 0.0, 20.0, "width"}, {4, false});
     EXPECT_FALSE(none.plan.found);
     EXPECT_NE(none.plan.reason.find("20.00 m wide"), std::string::npos) << none.plan.reason;
 }

@@ -1,4 +1,4 @@
-// The full projector model (issue 12): intrinsics with a lens offset, roll, distortion; the
+// The full projector model : intrinsics with a lens offset, roll, distortion; the
 // optional calibration keys; and the keystone with it against the paper's model.
 #include <gtest/gtest.h>
 
@@ -19,6 +19,8 @@
 #include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/scenarios.hpp"
 #include "projsurf/sim/scene.hpp"
+
+using namespace projsurf::eval;  // the evaluation under test
 
 using namespace projsurf;
 
@@ -174,14 +176,14 @@ TEST(ProjectorModel, OffsetProjectorCorrectedWithTheFullModelIsARectangle) {
         for (const auto &spec : {sim::RigSpec{1.0, 0.0, 1.0, 0.0}, sim::RigSpec{1.33, 2.0, 1.005, -0.05}}) {
             const Projector real = sim::projectorRig(spec);
             const Rectangle rect = wall.rectangle(real, 0.8);
-            const sim::WallPicture full = sim::pictureOnWall(real, real, wall.scene, rect, picture);
+            const eval::WallPicture full = eval::pictureOnWall(real, real, wall.scene, rect, picture);
             ASSERT_TRUE(full.ok) << full.problem;
             EXPECT_LT(full.errors.worst_pct(), 0.2) << spec.name() << " yaw " << yaw;
             // The corners land on the rectangle (letterboxed: same aspect, so the same corners).
             for (int i = 0; i < 4; ++i) EXPECT_LT((full.corners[i] - rect.corners[i]).norm(), 1e-3);
             // The paper's model of the same projector: a visibly trapezoidal picture.
-            const sim::WallPicture paper =
-                sim::pictureOnWall(sim::paperModelOf(real), real, wall.scene, rect, picture, 1e9);
+            const eval::WallPicture paper =
+                eval::pictureOnWall(sim::paperModelOf(real), real, wall.scene, rect, picture, 1e9);
             ASSERT_TRUE(paper.ok) << paper.problem;
             EXPECT_GT(paper.errors.worst_pct(), 3.0) << spec.name() << " yaw " << yaw;
             if (spec.offset == 1.0 && yaw == 0.0) {
@@ -252,13 +254,13 @@ TEST(ProjectorModel, FootprintRaysStayInsideTheLitArea) {
 TEST(ProjectorModel, EvalScoreSeparatesTheTrueModelFromThePapersModel) {
     const Projector truth = sim::projectorRig({1.0, 2.0, 1.005, -0.05});
     const sim::SensorModel sensor;
-    const sim::CalibrationScore exact = sim::scoreCalibration(truth, truth, sensor, 4);
+    const eval::CalibrationScore exact = eval::scoreCalibration(truth, truth, sensor, 4);
     ASSERT_TRUE(exact.ok) << exact.problem;
     EXPECT_LT(exact.rms_px, 1e-6);
     EXPECT_LT(exact.eq8_pct, 0.2);
     EXPECT_LT(exact.upright_deg, 0.1);
     EXPECT_LT(exact.corner_mm, 5.0);
-    const sim::CalibrationScore paper = sim::scoreCalibration(sim::paperModelOf(truth), truth, sensor, 4);
+    const eval::CalibrationScore paper = eval::scoreCalibration(sim::paperModelOf(truth), truth, sensor, 4);
     EXPECT_GT(paper.rms_px, 5.0);
     EXPECT_GT(paper.upright_deg, 1.0);
 }

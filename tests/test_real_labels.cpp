@@ -24,6 +24,8 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
+using namespace projsurf::eval;  // the evaluation under test
+
 using namespace projsurf;
 namespace fs = std::filesystem;
 using namespace projsurf::test;

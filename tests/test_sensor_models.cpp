@@ -19,7 +19,7 @@
 
 #include "eval/experiments.hpp"
 #include "eval/realistic_suite.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/detection/default/planar_regions.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/types/point_grid.hpp"
@@ -30,6 +30,8 @@
 #include "projsurf/sim/wall_frame.hpp"
 #include "projsurf/sim/wall_residual_stats.hpp"
 #include "projsurf/sim/window_noise.hpp"
+
+using namespace projsurf::eval;  // the evaluation under test
 
 using namespace projsurf;
 using namespace projsurf::sim;

@@ -1,4 +1,4 @@
-// Structured-light calibration (issue 12): Gray-code patterns, decoding, lifting, the fit.
+// Structured-light calibration : Gray-code patterns, decoding, lifting, the fit.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
-// Surface suitability from registered colour (issue 15) and the colour registration check
-// (issue 14): the core on synthetic walls, the detector on the colour suite's scenes, the CLI.
+// Surface suitability from registered colour and the colour registration check
+//: the core on synthetic walls, the detector on the colour suite's scenes, the CLI.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -15,12 +15,14 @@
 #include "eval/colour_suite.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/exact_depth.hpp"
 #include "projsurf/sim/ray_cast.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/wall_frame.hpp"
+
+using namespace projsurf::eval;  // the evaluation under test
 
 namespace fs = std::filesystem;
 using namespace projsurf;
@@ -242,14 +244,14 @@ namespace {
 
 /// A colour-suite scene through the Kinect v1 model, its registered colour attached.
 struct ColourFrame {
-    sim::ColourScene scene;
+    eval::ColourScene scene;
     sim::RgbdFrame frame;
     cv::Mat rgb;
     CameraIntrinsics camera;
 };
 ColourFrame colourFrame(const std::string &name, double distance, double angle_deg) {
     ColourFrame f;
-    f.scene = sim::makeColourScene(name, distance, angle_deg);
+    f.scene = eval::makeColourScene(name, distance, angle_deg);
     // A box on the floor in front of the wall, right of the axis: depth edges for the
     // registration check (the flat things on the wall have none).
     const sim::WallFrame w(distance, angle_deg);
@@ -309,9 +311,9 @@ TEST(Suitability, DetectorAvoidsThePicturesAndReportsIt) {
 }
 
 TEST(Suitability, ColourSuiteQuickMeetsTheUnfitTarget) {
-    sim::ColourSuiteOptions o = sim::quickColourSuite();
+    eval::ColourSuiteOptions o = eval::quickColourSuite();
     o.rounds = 1;
-    const sim::ColourSuiteResult r = sim::runColourSuite(o);
+    const eval::ColourSuiteResult r = eval::runColourSuite(o);
     ASSERT_EQ(r.rows.size(), o.cases.size());
     for (const auto &row : r.rows) {
         EXPECT_EQ(row.found, row.rounds) << row.scene.scene;
@@ -320,7 +322,7 @@ TEST(Suitability, ColourSuiteQuickMeetsTheUnfitTarget) {
         else
             EXPECT_LE(row.max_unfit_pct, 2.0) << row.scene.scene;
     }
-    EXPECT_NE(sim::colourSuiteMarkdown(r).find("| pictures |"), std::string::npos);
+    EXPECT_NE(eval::colourSuiteMarkdown(r).find("| pictures |"), std::string::npos);
 }
 
 namespace {

@@ -1,4 +1,4 @@
-// projsurf verify (issue 12): the projected picture found in the simulated colour image lands
+// projsurf verify : the projected picture found in the simulated colour image lands
 // where the true projector puts it, with a right and with a wrong calibration.
 #include <gtest/gtest.h>
 
@@ -12,10 +12,12 @@
 #include "eval/experiments.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
+
+using namespace projsurf::eval;  // the evaluation under test
 
 using namespace projsurf;
 namespace fs = std::filesystem;
@@ -43,7 +45,7 @@ Loop closeLoop(const Projector &believed, const Projector &truth, const sim::Sce
     l.keystone = *k.keystone;
     l.framebuffer = warpToFramebuffer(card, l.keystone);
     l.seen = sim::renderFrame(sc.scene, sensor, seed + 1, sim::Projection{truth, l.framebuffer});
-    l.landed = sim::framebufferOnWall(truth, sc.scene, l.keystone.picture_px).corners;
+    l.landed = eval::framebufferOnWall(truth, sc.scene, l.keystone.picture_px).corners;
     return l;
 }
 

@@ -10,7 +10,7 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/yaml_files.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "synthetic_input.hpp"  // makeWallAndFloor(), makePicture(): when no file is given
 
 int main(int argc, char **argv) {

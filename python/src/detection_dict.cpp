@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "projsurf/frontend/candidates_json.hpp"
+#include "projsurf/frontend/method_words.hpp"
 #include "projsurf/io/errors.hpp"
 
 namespace py = pybind11;
@@ -19,7 +20,7 @@ py::dict detectionToDict(const Detection &det, const DetectorConfig &config, boo
     py::dict d;
     d["found"] = det.found;
     d["reason"] = det.found ? py::object(py::none()) : py::object(py::str(det.reason));
-    d["method"] = config.method == Method::Paper ? "paper" : "default";
+    d["method"] = frontend::methodName(config.method);
     if (det.inliers > 0) {
         const Eigen::Vector4d c = det.plane.coefficients();
         d["plane"] = py::dict("coefficients"_a = py::array_t<double>(4, c.data()),

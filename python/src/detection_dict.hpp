@@ -4,7 +4,7 @@
 // and back, the rectangle that `correct` and `keystone` need.
 #include <pybind11/pybind11.h>
 
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 
 namespace projsurf::python {
 

@@ -11,7 +11,7 @@
 #include "projsurf/types/cloud.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 
 namespace projsurf::python {
 

@@ -16,7 +16,6 @@
 #include "image_array.hpp"
 #include "plan_function.hpp"
 #include "points_array.hpp"
-#include "projsurf/detection/detector.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/frontend/registered_colour.hpp"
@@ -30,6 +29,7 @@
 #include "projsurf/keystone/keystone.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/lens_model_check.hpp"
+#include "projsurf/detector/detector.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;

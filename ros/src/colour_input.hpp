@@ -1,5 +1,5 @@
 #pragma once
-// The node's registered colour (issue 15): colour images kept by stamp, so that each cloud
+// The node's registered colour: colour images kept by stamp, so that each cloud
 // (depth image) gets the colour image of its own stamp (frontend/stamp_pairing.hpp, as depth
 // gets its camera_info), and the check that the colour is registered to the depth
 // (detection/colour/colour_registration.hpp), run once per stream, not per frame. Colour that does not fit

@@ -8,7 +8,7 @@
 #include "params.hpp"
 #include "projsurf/types/cloud.hpp"
 #include "projsurf/tracking/steady_tracker.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 
 namespace projsurf::ros_node {
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "projsurf/types/cloud.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 
 namespace projsurf::ros_node {
 

@@ -22,7 +22,7 @@
 #include "params.hpp"
 #include "plan_service.hpp"
 #include "projsurf/frontend/stamp_pairing.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 
 namespace projsurf::ros_node {
 

@@ -10,7 +10,7 @@
 #include "projsurf/tracking/steady_tracker.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/planning/stand_planner.hpp"
 
 namespace projsurf::ros_node {
@@ -20,7 +20,7 @@ struct NodeParams {
     std::string image;        ///< ~image: picture to show (optional; the `image` topic overrides it)
     bool continuous = false;  ///< ~continuous: detect on every cloud and keep the picture steady
     /// ~use_colour: pair each cloud with the registered colour image of its stamp (topic
-    /// `rgb/image_rect_color`) for the surface suitability (issue 15); false = depth only.
+    /// `rgb/image_rect_color`) for the surface suitability; false = depth only.
     bool use_colour = false;
     bool explain = false;  ///< ~explain: ~result carries `candidates`, every plane considered and why it lost
     /// ~suitability was given (off | avoid | prefer, the CLI's --suitability; stored in

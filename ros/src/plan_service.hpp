@@ -1,5 +1,5 @@
 #pragma once
-// The node's ~plan (contract "Where to stand", issue 13): on the latest cloud, where the
+// The node's ~plan (contract "Where to stand"): on the latest cloud, where the
 // robot should stand for the largest picture (or ~plan_width). Answered through
 // std_srvs/Trigger (success = found, message = the summary in words and the plan JSON, as
 // `projsurf plan` writes them); the moved camera's

@@ -1,4 +1,4 @@
-// The node with registered colour (issue 15, ~use_colour): a framed picture hung flat on the
+// The node with registered colour (~use_colour): a framed picture hung flat on the
 // wall, invisible to depth, is avoided with colour (/colour) and covered without (/plain,
 // today's node); colour of another size or not registered is not used, with one warning, and
 // the detection is still published. Both nodes run in continuous mode (run_node_test.sh), so

@@ -772,7 +772,7 @@ TEST_F(Bag, DetectBagWritesOneJsonLinePerCloud) {
     EXPECT_EQ(rc3, 2);
     EXPECT_NE(text3.find("projsurf: error: " + bag_path_ + ": no topic '/nope'"), std::string::npos) << text3;
     EXPECT_FALSE(std::ifstream(out3).good());
-    // The bag's one cloud topic is taken without --topic (issue 14).
+    // The bag's one cloud topic is taken without --topic.
     const auto [rc4, text4] =
         runCommand("timeout 60 '" + cli + "' detect --bag '" + bag_path_ + "' --calib '" + calib + "'");
     EXPECT_EQ(rc4, 0) << text4;

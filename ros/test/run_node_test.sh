@@ -111,7 +111,7 @@ pids+=($!)
     >"$tmp/still_node.log" 2>&1 &
 pids+=($!)
 
-# Registered colour (issue 15), continuous so that ~result has each frame's frame_ms; and the
+# Registered colour, continuous so that ~result has each frame's frame_ms; and the
 # same node without colour (today's behaviour) on the same frames.
 "$build/projsurf_node" __ns:=/colour __name:=projsurf _calib:="$tmp/calib.yaml" _continuous:=true \
     _use_colour:=true >"$tmp/colour_node.log" 2>&1 &

@@ -34,7 +34,7 @@ struct DemoCliOptions {
     double angle_deg = 17.19;  // deg (paper 4.1)
 };
 
-void printErrors(const char *what, const sim::WallPicture &w) {
+void printErrors(const char *what, const eval::WallPicture &w) {
     if (!w.ok) {
         std::printf("  %-28s (not on the wall: %s)\n", what, w.problem.c_str());
         return;
@@ -50,14 +50,14 @@ void run(const DemoCliOptions &o) {
     std::error_code ec;
     if (fs::exists(out, ec) && !fs::is_directory(out, ec)) throw InputError(o.out, "exists and is not a directory");
 
-    sim::DemoOptions d;
+    eval::DemoOptions d;
     d.scenario = o.scenario;
     d.distance = o.distance;
     d.angle_deg = o.angle_deg;
     d.seed = o.seed;
-    sim::DemoResult r;
+    eval::DemoResult r;
     try {
-        r = sim::runDemo(d);
+        r = eval::runDemo(d);
     } catch (const std::invalid_argument &e) {
         throw InputError("--scenario", e.what());
     }
@@ -66,54 +66,56 @@ void run(const DemoCliOptions &o) {
     const CameraIntrinsics camera = sim::SensorModel().camera;
     const cv::Mat overlay = renderOverlay(r.frame.cloud, r.detection, r.config, &camera, r.frame.rgb);
     cv::Mat audience;
-    cv::hconcat(withCaption(r.audience_uncorrected, "(a) projected as is: keystoned"),
-                withCaption(r.audience_corrected, "(b) corrected by projsurf"), audience);
+    cv::hconcat(eval::withCaption(r.audience_uncorrected, "(a) projected as is: keystoned"),
+                eval::withCaption(r.audience_corrected, "(b) corrected by projsurf"), audience);
     cv::Mat framebuffer_view = r.framebuffer.clone();
     cv::rectangle(framebuffer_view, cv::Rect(0, 0, framebuffer_view.cols, framebuffer_view.rows),
                   cv::Scalar(80, 80, 80), 2);  // the framebuffer's edge, for looking at it on a page
 
-    // A person walks into the beam of the placed picture (issue 13): the picture is blanked
+    // A person walks into the beam of the placed picture (blanking): the picture is blanked
     // where they stand, frame by frame.
-    std::vector<sim::WalkInShot> walk;
+    std::vector<eval::WalkInShot> walk;
     cv::Mat walk_in, walk_compare;
     if (r.keystone && o.distance >= 1.2) {
         const Projector &believed = r.calibration.ok ? r.calibration.projector : r.true_projector;
-        walk = sim::walkInShots(r.scenario.scene, r.scenario.wall, r.true_projector, believed, r.detection.plane,
-                                r.framebuffer, r.audience_view, r.audience_light, 0.55 * o.distance, o.seed);
+        walk = eval::walkInShots(r.scenario.scene, r.scenario.wall, r.true_projector, believed, r.detection.plane,
+                                 r.framebuffer, r.audience_view, r.audience_light, 0.55 * o.distance, o.seed);
         std::vector<cv::Mat> row;
         for (std::size_t k = 0; k < walk.size(); ++k) {
             char caption[160];
             std::snprintf(caption, sizeof caption, "(%zu) walking in: %d px blanked, %ld lit px on the person", k + 1,
                           walk[k].blanked_pixels, walk[k].score.lit_on_person);
-            row.push_back(withCaption(walk[k].view, caption));
+            row.push_back(eval::withCaption(walk[k].view, caption));
         }
         cv::hconcat(row, walk_in);
-        cv::hconcat(withCaption(walk.back().view_unblanked, "(a) without blanking: the picture lands on the person"),
-                    withCaption(walk.back().view, "(b) blanked by projsurf"), walk_compare);
+        cv::hconcat(
+            eval::withCaption(walk.back().view_unblanked, "(a) without blanking: the picture lands on the person"),
+            eval::withCaption(walk.back().view, "(b) blanked by projsurf"), walk_compare);
     }
 
     // Where the robot should stand for a bigger picture, and the picture shown from there.
-    sim::PlanShot planned;
+    eval::PlanShot planned;
     cv::Mat plan_views;
     if (r.detection.found) {
         const Projector &believed = r.calibration.ok ? r.calibration.projector : r.true_projector;
-        planned = sim::planShot(r.scenario, r.true_projector, believed, r.frame.cloud, r.config, r.picture,
-                                r.audience_view, r.audience_light, o.seed);
+        planned = eval::planShot(r.scenario, r.true_projector, believed, r.frame.cloud, r.config, r.picture,
+                                 r.audience_view, r.audience_light, o.seed);
         if (!planned.view_after.empty()) {
             char before[120], after[160];
             std::snprintf(before, sizeof before, "(a) where the robot stands: %.2f m^2", r.detection.rectangle.area());
             std::snprintf(after, sizeof after, "(b) after the planned move (%.2f m): %.2f m^2 (%.2f predicted)",
                           planned.plan.translation.norm(), planned.after.rectangle.area(),
                           planned.plan.predicted.area());
-            cv::hconcat(withCaption(r.audience_corrected, before), withCaption(planned.view_after, after), plan_views);
+            cv::hconcat(eval::withCaption(r.audience_corrected, before), eval::withCaption(planned.view_after, after),
+                        plan_views);
         }
     }
 
-    // A real projector (issue 12): its lens throws the picture above its axis and it is mounted
+    // A real projector (lens offset and roll): its lens throws the picture above its axis and it is mounted
     // with a little roll; calibrated by the paper's disc and by structured light.
-    const sim::LensOffsetDemo lens =
-        sim::runLensOffsetDemo(r.scenario, r.picture, r.audience_view, r.audience_light, o.seed);
-    auto lensCaption = [](const std::string &what, const sim::LensOffsetShot &s) {
+    const eval::LensOffsetDemo lens =
+        eval::runLensOffsetDemo(r.scenario, r.picture, r.audience_view, r.audience_light, o.seed);
+    auto lensCaption = [](const std::string &what, const eval::LensOffsetShot &s) {
         char buf[240];
         if (s.ok)
             std::snprintf(buf, sizeof buf, "%s: eq. 8 worst %.2f %%", what.c_str(), s.on_wall.errors.worst_pct());
@@ -122,11 +124,11 @@ void run(const DemoCliOptions &o) {
         return std::string(buf);
     };
     cv::Mat lens_views;
-    cv::hconcat(
-        withCaption(lens.disc.audience, lensCaption("(a) lens offset 100 %, roll 1 deg; disc calibration", lens.disc)),
-        withCaption(lens.structured.audience,
-                    lensCaption("(b) the same projector; structured-light calibration", lens.structured)),
-        lens_views);
+    cv::hconcat(eval::withCaption(lens.disc.audience,
+                                  lensCaption("(a) lens offset 100 %, roll 1 deg; disc calibration", lens.disc)),
+                eval::withCaption(lens.structured.audience,
+                                  lensCaption("(b) the same projector; structured-light calibration", lens.structured)),
+                lens_views);
 
     fs::create_directories(out, ec);
     if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
@@ -183,7 +185,7 @@ void run(const DemoCliOptions &o) {
                     planned.after.found ? planned.after.rectangle.area() : 0.0, r.detection.rectangle.area());
     else if (r.detection.found)
         std::printf("plan: %s\n", planned.plan.reason.c_str());
-    auto printLens = [](const char *what, const sim::LensOffsetShot &s) {
+    auto printLens = [](const char *what, const eval::LensOffsetShot &s) {
         if (s.ok)
             std::printf("  %-22s eq. 8 h %.2f %%, v %.2f %%, diag %.2f %% (%.2f x %.2f m found)\n", what,
                         s.on_wall.errors.horizontal_pct, s.on_wall.errors.vertical_pct, s.on_wall.errors.diagonal_pct,

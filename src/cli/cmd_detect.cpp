@@ -64,13 +64,13 @@ void warnIfIgnored(const CLI::App &sub, Method method) {
         const std::string name = frontend::optionName(setting);
         if (sub.get_option(name)->count() > 0)
             std::fprintf(stderr, "projsurf: warning: %s is ignored by the %s method\n", name.c_str(),
-                         method == Method::Paper ? "paper" : "default");
+                         frontend::methodName(method));
     }
 }
 
 /// The pipeline flags bound to o.config, by the settings' shared names (frontend/method_settings.hpp).
-constexpr const char *kConfigFlags[] = {"max_tilt", "seed",       "voxel_leaf",          "ransac_distance",
-                                        "max_outliers", "cell",   "max_planes",          "max_outlier_fraction"};
+constexpr const char *kConfigFlags[] = {"max_tilt",     "seed", "voxel_leaf", "ransac_distance",
+                                        "max_outliers", "cell", "max_planes", "max_outlier_fraction"};
 
 /// The detector's settings: the defaults, then --config's file, then the flags given.
 DetectorConfig detectorConfig(const DetectOptions &o, const CLI::App &sub) {

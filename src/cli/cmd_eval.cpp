@@ -15,8 +15,8 @@
 #include "eval/colour_suite.hpp"
 #include "eval/experiments.hpp"
 #include "eval/labelled_eval.hpp"
-#include "eval/procam_comparison.hpp"
 #include "eval/plan_suite.hpp"
+#include "eval/procam_comparison.hpp"
 #include "eval/projector_eval.hpp"
 #include "eval/real_gallery.hpp"
 #include "eval/real_labels.hpp"
@@ -45,7 +45,7 @@ struct EvalOptions {
     std::string labels_dir = "labels/real";  // label files of the real frames, relative to the repository root
     bool labels_dir_given = false;
     bool no_progress = false;
-    bool projector_only = false;  // only the projector table (issue 12)
+    bool projector_only = false;  // only the projector table
     bool colour_only = false;     // only the colour suite
     bool realistic_only = false;  // only the realistic-sensor suite
     std::string procam;           // a procam-calibration sample_data folder: ours beside its XML
@@ -55,8 +55,8 @@ struct EvalOptions {
     // 75 (read as mm); its XML's translation is in those units.
     double square_m = 0.075;
     double published_square = 75;
-    bool plan_only = false;       // only the plan suite (where to stand)
-    bool labelled_only = false;   // only the labelled real frames
+    bool plan_only = false;      // only the plan suite (where to stand)
+    bool labelled_only = false;  // only the labelled real frames
 };
 
 /// Our chessboard calibration of a procam-calibration folder beside its calibration_result.xml.
@@ -69,20 +69,20 @@ void runProcam(const EvalOptions &o) {
     const ProcamFolder folder = readProcamFolder(o.procam, std::nullopt);
     const frontend::ChessboardCalibration cal = frontend::calibrateChessboard(folder, o.square_m);
     const double unit_m = o.square_m / o.published_square;
-    const sim::ProcamComparison c = sim::compareProcam(cal.fit, published, unit_m);
+    const eval::ProcamComparison c = eval::compareProcam(cal.fit, published, unit_m);
     std::printf("eval --procam %s: %zu poses, board %dx%d inner corners, projector %dx%d; published: %s\n",
                 o.procam.c_str(), folder.poses.size(), cal.inner.width, cal.inner.height, cal.width, cal.height,
                 xml.c_str());
     for (const auto &p : cal.poses)
         std::printf("  %s: %s, %d/%d corners carried, board %.1f %% decoded\n", p.dir.c_str(),
                     p.board ? "board" : "no board", p.carried, p.corners, 100 * p.board_share);
-    std::printf("\n%s", sim::procamTable(cal.fit, published, c, unit_m, o.square_m, cal.decoded_board_share).c_str());
+    std::printf("\n%s", eval::procamTable(cal.fit, published, c, unit_m, o.square_m, cal.decoded_board_share).c_str());
     if (!o.json.empty()) {
         std::vector<double> shares;
         for (const auto &p : cal.poses)
             if (p.board) shares.push_back(p.board_share);
         writeFileAtomic(o.json,
-                        sim::procamJson(cal.fit, published, c, unit_m, o.square_m, cal.decoded_board_share, shares));
+                        eval::procamJson(cal.fit, published, c, unit_m, o.square_m, cal.decoded_board_share, shares));
     }
 }
 
@@ -112,28 +112,27 @@ std::string defaultLabelsDir(const std::string &relative) {
 /// The projector table (sim/projector_eval.hpp): DIR/projector.md and a summary line.
 void runProjectorTable(const EvalOptions &o) {
     const auto t0 = std::chrono::steady_clock::now();
-    const auto rows = sim::runProjectorEval(o.seed, o.quick);
+    const auto rows = eval::runProjectorEval(o.seed, o.quick);
     std::error_code ec;
     fs::create_directories(o.out, ec);
     if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
-    const std::string md = sim::projectorEvalMarkdown(rows);
+    const std::string md = eval::projectorEvalMarkdown(rows);
     writeFileAtomic((fs::path(o.out) / "projector.md").string(), md);
     std::printf("%s", md.c_str());
-    std::printf("%s (%.0f s); wrote %s/projector.md\n", sim::projectorEvalSummary(rows).c_str(),
+    std::printf("%s (%.0f s); wrote %s/projector.md\n", eval::projectorEvalSummary(rows).c_str(),
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), o.out.c_str());
 }
 
 /// The colour suite's options for these flags: 2 rounds with --quick, else --rounds.
-sim::ColourSuiteOptions colourSuiteOptions(const EvalOptions &o) {
-    sim::ColourSuiteOptions copt = o.quick ? sim::quickColourSuite() : sim::ColourSuiteOptions{};
+eval::ColourSuiteOptions colourSuiteOptions(const EvalOptions &o) {
+    eval::ColourSuiteOptions copt = o.quick ? eval::quickColourSuite() : eval::ColourSuiteOptions{};
     if (!o.quick) copt.rounds = o.rounds;
     copt.seed = o.seed;
     return copt;
 }
 
 /// One suite's table alone: DIR/<file> (created with DIR), the table and its summary line on stdout.
-void writeSuiteTable(const EvalOptions &o, const std::string &file, const std::string &md,
-                     const std::string &summary) {
+void writeSuiteTable(const EvalOptions &o, const std::string &file, const std::string &md, const std::string &summary) {
     std::error_code ec;
     fs::create_directories(o.out, ec);
     if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
@@ -144,40 +143,39 @@ void writeSuiteTable(const EvalOptions &o, const std::string &file, const std::s
 
 /// The colour suite alone (detection/colour/surface_suitability.hpp).
 void runColourTable(const EvalOptions &o) {
-    const sim::ColourSuiteResult colour = sim::runColourSuite(colourSuiteOptions(o), sim::defaultVariant().config);
-    writeSuiteTable(o, "colour.md", sim::colourSuiteMarkdown(colour), sim::colourSuiteSummary(colour));
+    const eval::ColourSuiteResult colour = eval::runColourSuite(colourSuiteOptions(o), eval::defaultVariant().config);
+    writeSuiteTable(o, "colour.md", eval::colourSuiteMarkdown(colour), eval::colourSuiteSummary(colour));
 }
 
 /// The realistic suite alone (realistic sensors and scenes).
 void runRealisticTable(const EvalOptions &o) {
-    sim::RealisticSuiteOptions ropt = o.quick ? sim::quickRealisticSuite() : sim::RealisticSuiteOptions{};
+    eval::RealisticSuiteOptions ropt = o.quick ? eval::quickRealisticSuite() : eval::RealisticSuiteOptions{};
     if (!o.quick) ropt.rounds = o.rounds;
     ropt.seed = o.seed;
-    const sim::RealisticSuiteResult realistic = sim::runRealisticSuite(ropt, sim::defaultVariant().config);
-    writeSuiteTable(o, "realistic.md", sim::realisticSuiteMarkdown(realistic), sim::realisticSuiteSummary(realistic));
+    const eval::RealisticSuiteResult realistic = eval::runRealisticSuite(ropt, eval::defaultVariant().config);
+    writeSuiteTable(o, "realistic.md", eval::realisticSuiteMarkdown(realistic), eval::realisticSuiteSummary(realistic));
 }
 
 /// The plan suite alone (eval/plan_suite.hpp): DIR/plan.md and its summary line; --quick skips the reference search.
 void runPlanTable(const EvalOptions &o) {
-    std::vector<sim::PlanSceneResult> rows;
-    sim::PlanSuiteOptions popt;
+    std::vector<eval::PlanSceneResult> rows;
+    eval::PlanSuiteOptions popt;
     popt.reference = !o.quick;
     popt.seed = o.seed;
-    for (const sim::PlanScene &scene : sim::planSuiteScenes()) {
-        rows.push_back(sim::runPlanScene(scene, popt));
-        if (!o.no_progress)
-            std::fprintf(stderr, "plan suite: %zu scenes done\r", rows.size());
+    for (const eval::PlanScene &scene : eval::planSuiteScenes()) {
+        rows.push_back(eval::runPlanScene(scene, popt));
+        if (!o.no_progress) std::fprintf(stderr, "plan suite: %zu scenes done\r", rows.size());
     }
     if (!o.no_progress) std::fprintf(stderr, "\n");
-    writeSuiteTable(o, "plan.md", sim::planSuiteMarkdown(rows), sim::planSuiteSummary(rows));
+    writeSuiteTable(o, "plan.md", eval::planSuiteMarkdown(rows), eval::planSuiteSummary(rows));
 }
 
 /// The labelled real frames, each with the label's projector and gravity and again with the
 /// example calibration.
-std::vector<LabelledFrame> runLabelled(const std::vector<std::string> &labels,
-                                       const std::vector<std::string> &label_frames, const std::string &real_dir,
-                                       bool labels_dir_given, const sim::Progress &progress) {
-    std::vector<LabelledFrame> labelled;
+std::vector<eval::LabelledFrame> runLabelled(const std::vector<std::string> &labels,
+                                             const std::vector<std::string> &label_frames, const std::string &real_dir,
+                                             bool labels_dir_given, const eval::Progress &progress) {
+    std::vector<eval::LabelledFrame> labelled;
     std::error_code ec;
     for (std::size_t i = 0; i < labels.size(); ++i) {
         // The default labels go with the default frames: a --real-dir of other frames skips them.
@@ -185,18 +183,19 @@ std::vector<LabelledFrame> runLabelled(const std::vector<std::string> &labels,
         if (progress)
             progress(static_cast<int>(i), static_cast<int>(labels.size()),
                      "labelled " + fs::path(labels[i]).stem().string());
-        labelled.push_back(evaluateLabelledFrame(labels[i], real_dir, DetectorConfig{}, stabilitySeeds()));
+        labelled.push_back(eval::evaluateLabelledFrame(labels[i], real_dir, DetectorConfig{}, eval::stabilitySeeds()));
     }
     if (progress && !labelled.empty())
         progress(static_cast<int>(labels.size()), static_cast<int>(labels.size()), "labelled frames");
     return labelled;
 }
 
-void printLabelledLines(const std::vector<LabelledFrame> &labelled) {
+void printLabelledLines(const std::vector<eval::LabelledFrame> &labelled) {
     if (labelled.empty()) return;
-    std::printf("%s\n", labelledSummaryLine(summariseLabelled(labelled)).c_str());
-    std::printf("%s\n", exampleSummaryLine(summariseExample(labelled)).c_str());
-    if (summariseColour(labelled).judged > 0) std::printf("%s\n", colourSummaryLine(summariseColour(labelled)).c_str());
+    std::printf("%s\n", eval::labelledSummaryLine(eval::summariseLabelled(labelled)).c_str());
+    std::printf("%s\n", eval::exampleSummaryLine(eval::summariseExample(labelled)).c_str());
+    if (eval::summariseColour(labelled).judged > 0)
+        std::printf("%s\n", eval::colourSummaryLine(summariseColour(labelled)).c_str());
 }
 
 /// The labelled real frames alone: DIR/labelled.md, DIR/labels/ and the summary lines.
@@ -209,15 +208,17 @@ void runLabelledTable(const EvalOptions &o, const std::vector<std::string> &labe
     if (labels.empty()) throw InputError(labels_dir.empty() ? std::string("--labels") : labels_dir, "no label files");
     std::unique_ptr<frontend::ProgressLine> bar;
     if (!o.no_progress) bar = std::make_unique<frontend::ProgressLine>("eval", "frames", true);
-    const sim::Progress progress =
-        !bar ? sim::Progress()
-             : sim::Progress([&bar](int done, int total, const std::string &what) { bar->update(done, total, what); });
-    const std::vector<LabelledFrame> labelled = runLabelled(labels, label_frames, o.real_dir, o.labels_dir_given, progress);
+    const eval::Progress progress =
+        !bar ? eval::Progress()
+             : eval::Progress([&bar](int done, int total, const std::string &what) { bar->update(done, total, what); });
+    const std::vector<eval::LabelledFrame> labelled =
+        runLabelled(labels, label_frames, o.real_dir, o.labels_dir_given, progress);
     if (bar) bar->endLine();
     fs::create_directories(o.out, ec);
     if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
-    writeLabelledPictures((fs::path(o.out) / "labels").string(), labelled);
-    writeFileAtomic((fs::path(o.out) / "labelled.md").string(), labelledReportMarkdown(labelled, labels_dir, "labels"));
+    eval::writeLabelledPictures((fs::path(o.out) / "labels").string(), labelled);
+    writeFileAtomic((fs::path(o.out) / "labelled.md").string(),
+                    eval::labelledReportMarkdown(labelled, labels_dir, "labels"));
     printLabelledLines(labelled);
     std::printf("wrote %s/labelled.md\n", o.out.c_str());
 }
@@ -237,9 +238,9 @@ void run(const EvalOptions &o, const std::string &command) {
     // Bad label files are reported before the long simulation runs.
     const std::string labels_dir = o.labels_dir_given ? o.labels_dir : defaultLabelsDir(o.labels_dir);
     const std::vector<std::string> labels =
-        labels_dir.empty() ? std::vector<std::string>{} : listLabelFiles(labels_dir);
+        labels_dir.empty() ? std::vector<std::string>{} : eval::listLabelFiles(labels_dir);
     std::vector<std::string> label_frames;
-    for (const std::string &l : labels) label_frames.push_back(readRealLabel(l).frame);
+    for (const std::string &l : labels) label_frames.push_back(eval::readRealLabel(l).frame);
 
     if (o.projector_only) return runProjectorTable(o);
     if (o.colour_only) return runColourTable(o);
@@ -254,38 +255,39 @@ void run(const EvalOptions &o, const std::string &command) {
                      o.real_dir.c_str(), fs::current_path(ec).string().c_str());
 
     const int rounds = o.quick ? std::min(o.rounds, 2) : o.rounds;
-    const sim::EvalPlan plan = sim::paperEvalPlan(rounds, o.quick, o.seed);
+    const eval::EvalPlan plan = eval::paperEvalPlan(rounds, o.quick, o.seed);
     const double load_before = loadAverage();
     // Drawn on stderr unless --no-progress (a log, too: eval's runs are long).
     std::unique_ptr<frontend::ProgressLine> bar;
     if (!o.no_progress) bar = std::make_unique<frontend::ProgressLine>("eval", "runs", true);
-    const sim::Progress progress =
-        !bar ? sim::Progress()
-             : sim::Progress([&bar](int done, int total, const std::string &what) { bar->update(done, total, what); });
-    const sim::EvalResults results = sim::runEval(plan, progress);
-    // The realistic suite (realistic sensors and scenes, issue 11), the default method.
-    sim::RealisticSuiteOptions ropt = o.quick ? sim::quickRealisticSuite() : sim::RealisticSuiteOptions{};
+    const eval::Progress progress =
+        !bar ? eval::Progress()
+             : eval::Progress([&bar](int done, int total, const std::string &what) { bar->update(done, total, what); });
+    const eval::EvalResults results = eval::runEval(plan, progress);
+    // The realistic suite (realistic sensors and scenes), the default method.
+    eval::RealisticSuiteOptions ropt = o.quick ? eval::quickRealisticSuite() : eval::RealisticSuiteOptions{};
     if (!o.quick) ropt.rounds = rounds;
     ropt.seed = o.seed;
-    const sim::RealisticSuiteResult realistic = sim::runRealisticSuite(ropt, sim::defaultVariant().config, progress);
-    // The colour suite (surface suitability, issue 15), the default method.
-    const sim::ColourSuiteResult colour =
-        sim::runColourSuite(colourSuiteOptions(o), sim::defaultVariant().config, progress);
+    const eval::RealisticSuiteResult realistic = eval::runRealisticSuite(ropt, eval::defaultVariant().config, progress);
+    // The colour suite (surface suitability), the default method.
+    const eval::ColourSuiteResult colour =
+        eval::runColourSuite(colourSuiteOptions(o), eval::defaultVariant().config, progress);
 
     // Real frames: default method, the contract's example calibration, the default gravity.
-    std::vector<GalleryEntry> gallery;
-    ReportInfo info;
+    std::vector<eval::GalleryEntry> gallery;
+    eval::ReportInfo info;
     info.command = command;
     info.quick = o.quick;
-    info.realistic_markdown = sim::realisticSuiteMarkdown(realistic);
+    info.realistic_markdown = eval::realisticSuiteMarkdown(realistic);
     const auto t0 = std::chrono::steady_clock::now();
     const std::string &real_dir = o.real_dir;
-    const std::vector<std::string> frames = real_dir.empty() ? std::vector<std::string>{} : listFrameFolders(real_dir);
+    const std::vector<std::string> frames =
+        real_dir.empty() ? std::vector<std::string>{} : eval::listFrameFolders(real_dir);
     for (std::size_t i = 0; i < frames.size(); ++i) {
         if (progress)
             progress(static_cast<int>(i), static_cast<int>(frames.size()),
                      "real frame " + fs::path(frames[i]).filename().string());
-        gallery.push_back(detectRealFrame(frames[i], sim::exampleProjector(), DetectorConfig{}));
+        gallery.push_back(eval::detectRealFrame(frames[i], sim::exampleProjector(), DetectorConfig{}));
     }
     if (progress && !frames.empty())
         progress(static_cast<int>(frames.size()), static_cast<int>(frames.size()), "real frames");
@@ -293,8 +295,8 @@ void run(const EvalOptions &o, const std::string &command) {
     info.real_dir = frames.empty() ? "" : real_dir;
 
     // Labelled real frames: each label's projector and gravity, scored against the label.
-    const std::vector<LabelledFrame> labelled =
-        frames.empty() ? std::vector<LabelledFrame>{}
+    const std::vector<eval::LabelledFrame> labelled =
+        frames.empty() ? std::vector<eval::LabelledFrame>{}
                        : runLabelled(labels, label_frames, real_dir, o.labels_dir_given, progress);
     if (bar && !labelled.empty()) bar->endLine();
     if (!labelled.empty()) {
@@ -313,14 +315,14 @@ void run(const EvalOptions &o, const std::string &command) {
     fs::create_directories(out, ec);
     if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
     writeEvalReport(o.out, results, gallery, info);
-    std::ofstream(out / "report.md", std::ios::app) << "\n## Colour suite: surface suitability (issue 15)\n\n"
-                                                    << sim::colourSuiteMarkdown(colour);
+    std::ofstream(out / "report.md", std::ios::app) << "\n## Colour suite: surface suitability\n\n"
+                                                    << eval::colourSuiteMarkdown(colour);
     std::printf("eval: %zu detections in %.1f s (%d rounds%s), %zu real frames; wrote %s/report.md\n",
                 results.trials.size() + results.keystone.size(), results.seconds, rounds, o.quick ? ", quick" : "",
                 gallery.size(), o.out.c_str());
     std::printf("%s\n", evalHeadlineText(results).c_str());
-    std::printf("%s\n", sim::realisticSuiteSummary(realistic).c_str());
-    std::printf("%s\n", sim::colourSuiteSummary(colour).c_str());
+    std::printf("%s\n", eval::realisticSuiteSummary(realistic).c_str());
+    std::printf("%s\n", eval::colourSuiteSummary(colour).c_str());
     printLabelledLines(labelled);
     if (!o.quick) runProjectorTable(o);
 }
@@ -366,7 +368,8 @@ void addEvalCommand(CLI::App &app) {
     sub->add_option("--square-m", o->square_m, "with --procam: the board's square, m (default 0.075: its README's 75)");
     sub->add_flag("--plan-only", o->plan_only,
                   "Only the plan suite (where to stand: planned, rendered from the moved robot, detected there, "
-                  "against an exhaustive reference search): DIR/plan.md; --seed renders the frames, --quick skips the reference")
+                  "against an exhaustive reference search): DIR/plan.md; --seed renders the frames, --quick skips the "
+                  "reference")
         ->excludes("--projector-only")
         ->excludes("--colour-only")
         ->excludes("--realistic-only");

@@ -165,7 +165,7 @@ void run(const SimulateOptions &o) {
         if (!audience.empty()) writeImageAtomic((out / "audience.png").string(), audience);
         writeCamera((out / "camera.yaml").string(), sensor.camera);
         writeCalibration((out / "calib.yaml").string(), projector);
-        writeTruthJson((out / "truth.json").string(), truth, *scenario, o.seed, !o.noise_free);
+        eval::writeTruthJson((out / "truth.json").string(), truth, *scenario, o.seed, !o.noise_free);
     }
     if (!captures.empty()) {
         const fs::path dir = out / "captures";

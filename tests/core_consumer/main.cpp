@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "projsurf/keystone/keystone.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 
 int main() {
     projsurf::Cloud cloud;

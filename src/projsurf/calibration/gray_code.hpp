@@ -1,5 +1,5 @@
 #pragma once
-// Structured light for projector calibration (issue 12): Gray-code stripes of the framebuffer
+// Structured light for projector calibration : Gray-code stripes of the framebuffer
 // columns and rows, each with its inverse (a camera pixel's bit is whichever of the pair is
 // brighter, so no global threshold), plus all-white and all-black. Decoding is per camera
 // pixel; bits the camera cannot resolve (stripes finer than a camera pixel, blur) are left

@@ -1,5 +1,5 @@
 #pragma once
-// Closed-loop check (issue 12, contract "Closed-loop check"): where a projected picture really
+// Closed-loop check (contract "Closed-loop check"): where a projected picture really
 // landed. The picture is found in the colour camera's image as the largest bright
 // quadrilateral (the test card is white), its edges fitted as lines with sub-pixel care, the
 // corners intersected, and lifted to 3-D through the plane fitted to the registered depth

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "projsurf/detection/candidate_outcome.hpp"
-#include "projsurf/detection/default/wall_shape.hpp"
 #include "projsurf/detection/surface_check.hpp"
+#include "projsurf/detection/wall_height.hpp"
 #include "projsurf/types/plane.hpp"
 #include "projsurf/types/plane_frame.hpp"
 

@@ -1,11 +1,8 @@
 #pragma once
 // Every setting of projection surface detection, one source per default, each with its unit
 // and where it comes from (paper section, datasheet, or a measurement of this project).
-#include "projsurf/detection/colour/surface_suitability.hpp"
-#include "projsurf/detection/default/face_surround.hpp"
-#include "projsurf/detection/default/observed_free_space.hpp"
-#include "projsurf/detection/default/planar_regions.hpp"
-#include "projsurf/detection/default/wall_shape.hpp"
+#include <vector>
+
 #include "projsurf/detection/virtual_depth_image.hpp"
 #include "projsurf/types/depth_tolerance.hpp"
 
@@ -31,6 +28,19 @@ struct PaperConfig {
                               ///< 307,200 points
 };
 
+struct PlanarRegionOptions {
+    int cell = 8;                  ///< grid elements per cell side (8 at the 2-px grid: 16 px, CAPE's 20 px order)
+    double min_fill = 0.5;         ///< share of a cell's points that must be readings
+    double thickness_bands = 0.5;  ///< a flat cell is thinner (RMS off its plane) than this many inlier bands
+    double seed_tilt = 0.5;        ///< rad, a region starts from a cell whose normal is within this of horizontal
+    double max_tilt = 0.1;         ///< rad, a region's plane within this of horizontal (contract)
+    double join_bands =
+        0.6;  ///< a neighbour cell joins when its points' RMS distance to the region's plane is below this many bands
+    int min_cells = 6;  ///< smaller regions are not surfaces
+    double merge_angle =
+        0.15;  ///< rad, regions this parallel whose points lie within the obstacle margin of each other's plane are one
+};
+
 /// Default method, stage 1: the vertical planes in view: on depth images, planar regions of the
 /// image (deterministic); on unorganized clouds, sequential RANSAC on a sample.
 struct PlaneSearchConfig {
@@ -45,9 +55,35 @@ struct PlaneSearchConfig {
     int refine_rounds = 2;         ///< least-squares refits of each plane on its inliers
     double merge_angle = 0.05;     ///< rad, a plane this parallel to a found one, within its margin, is a slice of it
     /// Depth images: when the vertical regions hold less than this share of the readings (cells
-    /// too rough to grow), the RANSAC search runs as well. Measured: 1-2 % on a D435 wall whose
-    /// per-pixel noise is 3x the model's, 8-57 % on the labelled real frames.
+    /// too rough to grow), the RANSAC search runs as well (measured: docs/tuning.md).
     double min_region_share = 0.05;
+};
+
+struct WallReliefOptions {
+    bool enabled = true;
+    /// px of the depth image at the wall's depth between nodes, and the Gaussian's sigma: the
+    /// sensor's distortion lives in the image (our Kinect v1 model: features of 110 px), so the
+    /// relief follows features of a few tens of pixels and no finer (a frame's edge stays out).
+    double node_px = 12.0;
+    double sigma_px = 20.0;
+    double tukey_bands = 1.5;  ///< Tukey biweight width in inlier bands
+    int rounds = 3;            ///< reweighting rounds
+    /// Nodes with less than this share of the median node weight shrink towards 0 (the
+    /// quadratic): where the wall was hardly seen, the relief does not guess.
+    double min_weight_share = 0.25;
+    int max_nodes = 96;  ///< per side; a larger wall takes wider spacing
+};
+
+struct WallShapeOptions {
+    double capture_bands = 2.5;   ///< points within this many inlier bands of the plane take part
+    double tukey_bands = 1.5;     ///< Tukey biweight width, in inlier bands (outliers: what stands proud)
+    int iterations = 5;           ///< reweighted least-squares rounds
+    int min_points = 60;          ///< fewer points: the wall stays flat
+    int max_points = 2000;        ///< more are thinned evenly (six coefficients; measured, docs/tuning.md)
+    double max_bend = 0.08;       ///< m, a fitted bend larger than this anywhere in the points' extent is refused,
+    double bend_per_z2 = 0.0089;  ///< 1/m, or than this times the depth squared there (max_bend at 3 m; Kinect v1's
+                                  ///< +-3-5 cm at 3 m grows with z^2 as its disparity error does)
+    WallReliefOptions relief;
 };
 
 /// Default method, stage 2: how each wall departs from its plane (detection/default/wall_shape.hpp).
@@ -65,12 +101,35 @@ struct WallConfig {
     /// ends them.
     int plane_refits = 1;
     double refit_min_turn = 0.0087;  ///< rad, 0.5 deg: a quarter of the 2 deg an upright picture may lean
-    double refit_min_shift = 0.005;  ///< m, measured on the labelled real frames (docs/wall_model.md)
+    double refit_min_shift = 0.005;  ///< m, measured on the labelled real frames (docs/tuning.md)
 };
 
-/// Default method, stage 2: faces that stand free in the room (furniture, boxes, people), stand
-/// before a larger wall seen above them, or are too low for a picture are objects, not
-/// projection surfaces (detection/default/face_surround.hpp); depth images only.
+struct FaceSurroundOptions {
+    int bins = 16;                ///< positions along each edge (columns for the top, rows for the sides)
+    int min_bin_points = 3;       ///< face points a position needs for its edge to be taken there
+    double edge_quantile = 0.97;  ///< the edge at a position: this quantile of the face's points there (stray inliers)
+    std::vector<double> offsets = {0.04, 0.10, 0.20};  ///< m beyond the edge, looked at nearest first
+    double min_step = 0.05;  ///< m, a reading this far off the plane (and beyond the noise margin) is off it
+    int search_px = 2;       ///< px, a missing reading is looked for this far around its pixel
+    double max_gap = 0.10;   ///< m, a gap this wide between a face's points ends it (for its size)
+};
+
+struct FreeStandingRule {
+    double min_seen = 0.4;  ///< share of an edge's positions that must be past or front for it to count
+    double min_past = 0.6;  ///< share of those open behind (pastShare) for the edge to be open
+    /// A face at least this tall and wide serves like a wall even when it stands free: a
+    /// full-height wardrobe or closet front (paper 4.2 projects on one), taller than a person and
+    /// wider than a door.
+    double wall_height = 1.8;  ///< m
+    double wall_width = 0.8;   ///< m
+    /// A face lower than this (its median unbroken height) is a strip, no surface: a desk's or a
+    /// shelf's edge, clutter that happens to lie in one plane. The smallest picture (0.15 m wide
+    /// at 16:10) is 0.094 m tall.
+    double min_height = 0.1;  ///< m
+};
+
+/// Default method, stage 2: faces that stand free in the room (furniture, boxes, people) are
+/// objects, not projection surfaces (detection/default/face_surround.hpp); depth images only.
 struct ObjectFaceConfig {
     bool avoid = true;  ///< skip faces that stand free; false takes any vertical face (the paper's behaviour)
     FaceSurroundOptions surround;
@@ -82,6 +141,21 @@ struct ObjectFaceConfig {
 };
 
 /// Default method, stage 3: where on a plane the camera saw free wall (paper 3.2.2).
+/// Obstacle evidence over an area: what stands a centimetre or two proud of a wall (a picture
+/// frame, a switch) lies within the band of a noisy sensor point by point, but the mean of the
+/// readings over a few centimetres moves with it. The noise of such a mean is measured on the
+/// wall itself (the spread of the window means over the raster), since a depth camera's error
+/// is correlated over many pixels and quantised, so that the independent-noise standard error
+/// would understate it.
+struct ProudEvidence {
+    bool enabled = true;
+    double window = 0.06;       ///< m, side of the square the offsets are averaged over (a switch plate is 8 cm)
+    int min_points = 8;         ///< a window with fewer readings says nothing
+    double spreads = 4.0;       ///< a window mean beyond this many robust spreads of the window means is proud,
+    double min_offset = 0.015;  ///< m, and beyond this (posters, whiteboards: a few mm, stay free)
+    double min_extent = 0.10;   ///< m, proud areas narrower than this are dropped (a few windows: the sensor's)
+};
+
 struct FreeSpaceConfig {
     double cell = 0.01;  ///< m, raster cell (area error < 0.05 m^2 at 3 m, measured)
     int stride = 2;      ///< pixel step of the pass on organized clouds (3 lost 7 % of the area behind a person)
@@ -117,7 +191,45 @@ inline const char *suitabilityModeName(SuitabilityMode mode) {
     return "avoid";
 }
 
-/// Default method, stage 4b: the surface's suitability from its colour (issue 15), only when
+struct SuitabilityOptions {
+    double context = 0.05;  ///< m, the wall judged beyond the raster on each side, so that a thing reaching into it is
+                            ///< judged with the rest of it (colour suite; docs/tuning.md)
+    double weak_contrast = 0.12;  ///< window contrast above which cells near wide texture are textured too
+                                  ///< (hysteresis; colour suite, docs/tuning.md) ...
+    double weak_over_wall =
+        8.0;  ///< ... and above this many times the wall's median contrast (labelled real frames, docs/tuning.md)
+    double texture_growth = 0.05;  ///< m, how far from wide texture the weak cells may join it (colour suite,
+                                   ///< docs/tuning.md)
+    double window = 0.05;  ///< m, side of the square on the wall texture and glare are judged over (5 cells at 1 cm)
+    double tone_window =
+        0.03;  ///< m, the square darkness and saturation are judged over (3 cells: a dark panel's edge to a cell)
+    double dark_relative =
+        0.45;  ///< darker than this share of the wall's median luminance: too dark (measured, docs/suitability.md)
+    double dark_min = 0.06;  ///< luminance share below which a surface is too dark whatever the wall (near black)
+    double max_chroma =
+        0.40;  ///< mean (max - min channel) / 255 above this: too saturated (measured, docs/suitability.md)
+    double max_contrast =
+        0.20;  ///< luminance std / mean over the window above this: textured (measured, docs/suitability.md)
+    double glare_level = 0.98;  ///< a sample whose brightest channel reaches this share of 255 is blown out
+    double max_glare_share =
+        0.1;  ///< more blown-out samples than this share of the window: glare (specular, emissive; one column of 5)
+    double glare_wall_share = 0.85;  ///< no glare on a wall whose median luminance reaches this share of glare_level
+                                     ///< (the camera clipped the wall itself; labelled real frames, docs/tuning.md)
+    int row_step = 1;          ///< every this many rows of the point grid are sampled (colour suite, docs/tuning.md)
+    int min_tone_samples = 8;  ///< fewer in the tone window: tone is judged over the window (fewer let a plain
+                               ///< wall's chroma noise cross max_chroma; docs/tuning.md)
+    int min_samples = 3;       ///< fewer wall samples in the window: colour decides nothing there
+    int trim_cells =
+        2;  ///< textured and glare cells given back on an unfit area's rim (the window reaches 2 cells beyond an edge)
+    double max_hole =
+        0.25;  ///< m^2, fit areas enclosed by unfit cells up to this size are unfit too (a picture's plain mat)
+    double min_unfit_area = 0.01;     ///< m^2, smaller unfit areas are fit (a light switch plate, 8 x 8 cm;
+                                      ///< docs/tuning.md)
+    double min_texture_width = 0.05;  ///< m, textured areas narrower than this are fit (a door seam, a cable;
+                                      ///< docs/tuning.md)
+};
+
+/// Default method, stage 4b: the surface's suitability from its colour, only when
 /// the cloud carries colour (without colour it is off whatever the mode).
 struct SuitabilityConfig {
     SuitabilityMode mode = SuitabilityMode::Avoid;

@@ -6,7 +6,7 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
 
 namespace projsurf::frontend {

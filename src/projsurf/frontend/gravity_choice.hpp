@@ -6,7 +6,7 @@
 #include <string>
 
 #include "projsurf/types/cloud.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 
 namespace projsurf::frontend {
 

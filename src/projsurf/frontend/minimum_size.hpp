@@ -13,9 +13,8 @@ namespace projsurf::frontend {
 struct MinimumSize {
     /// m. Text stays readable from about 1/120 of the viewing distance in letter height
     /// (signage rule of thumb: 25 mm per 3 m): at 1.5 m, where a robot stands to show
-    /// something to a person beside it, 12 mm letters, a few words a line in 0.15 m. Below
-    /// it were only wrong answers on the labelled real frames (the 7-Scenes cabinets' right
-    /// ones are 0.19-0.20 m wide).
+    /// something to a person beside it, 12 mm letters, a few words a line in 0.15 m (checked
+    /// on the labelled real frames: docs/tuning.md).
     double width = 0.15;
     /// m^2: 0.15 m wide at 16:9 (the widest common aspect) is 0.0127 m^2; a little less.
     double area = 0.012;

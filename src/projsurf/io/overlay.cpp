@@ -149,8 +149,20 @@ CameraIntrinsics estimateIntrinsics(const Cloud &cloud) {
     return *fit;
 }
 
-cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorConfig &config,
-                      const CameraIntrinsics *camera, const cv::Mat &color, bool explain) {
+namespace {
+
+/// The cell states colour refuses, their colours and their legend's words.
+const std::vector<std::tuple<CellState, cv::Scalar, const char *>> &unfitStates() {
+    static const std::vector<std::tuple<CellState, cv::Scalar, const char *>> unfit{
+        {CellState::Glare, kGlare, "not fit: glare (specular, emissive)"},
+        {CellState::Dark, kDark, "not fit: too dark (low albedo)"},
+        {CellState::Textured, kTextured, "not fit: textured (picture, pattern)"},
+        {CellState::Saturated, kSaturated, "not fit: too saturated a colour"}};
+    return unfit;
+}
+
+/// The camera the overlay is drawn from and its enlargement.
+View overlayView(const Cloud &cloud, const CameraIntrinsics *camera) {
     View view;
     if (camera)
         view.cam = *camera;
@@ -167,6 +179,14 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
     while (view.scale > 1.0 && w * view.scale * h * view.scale > static_cast<double>(limits::kMaxImagePixels))
         view.scale = std::max(1.0, view.scale / 2.0);
 
+    return view;
+}
+
+/// The frame at the camera's resolution: the colour image (or the depth in grey), outliers
+/// red, the wall's inliers green.
+cv::Mat shadedFrame(const Cloud &cloud, const Detection &det, const DetectorConfig &config, const View &view,
+                    const cv::Mat &color) {
+    const int w = view.cam.width, h = view.cam.height;
     // Background: the colour image, or the depth shaded grey (near = bright).
     cv::Mat base(h, w, CV_8UC3, cv::Scalar(30, 30, 30));
     const bool use_color = !color.empty() && color.cols == w && color.rows == h && color.type() == CV_8UC3;
@@ -210,19 +230,16 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
                                static_cast<uchar>(px[2] * 0.5 + 40));
         }
     }
-    cv::Mat img;
-    cv::resize(base, img, {}, view.scale, view.scale, cv::INTER_NEAREST);
+    return base;
+}
 
+/// The free-space cells, the outlines, the workspace and the rectangle, on the enlarged frame.
+void drawDetection(cv::Mat &img, const View &view, const Detection &det) {
     paintCells(img, view, det.debug, CellState::InFront, kInFront);
     paintCells(img, view, det.debug, CellState::SeenThrough, kSeenThrough);
     paintCells(img, view, det.debug, CellState::NoReading, kNoReading);
     paintCells(img, view, det.debug, CellState::Proud, kProud);
-    const std::vector<std::tuple<CellState, cv::Scalar, const char *>> unfit{
-        {CellState::Glare, kGlare, "not fit: glare (specular, emissive)"},
-        {CellState::Dark, kDark, "not fit: too dark (low albedo)"},
-        {CellState::Textured, kTextured, "not fit: textured (picture, pattern)"},
-        {CellState::Saturated, kSaturated, "not fit: too saturated a colour"}};
-    for (const auto &[state, colour, text] : unfit) paintCells(img, view, det.debug, state, colour);
+    for (const auto &[state, colour, text] : unfitStates()) paintCells(img, view, det.debug, state, colour);
     for (const auto &outline : det.debug.hull) polyline(img, view, outline, outline.size() > 2, kFree, 2);
     if (det.debug.has_workspace)
         polyline(img, view, {det.debug.workspace.begin(), det.debug.workspace.end()}, true, kWorkspace, 2);
@@ -232,7 +249,10 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
         const cv::Point2f tl = view(det.rectangle.corners[0]);
         cv::putText(img, "TL", tl + cv::Point2f(6, 22), cv::FONT_HERSHEY_SIMPLEX, 0.6, kRect, 2, cv::LINE_AA);
     }
+}
 
+/// The caption: found or why not, the plane, the surface check.
+std::vector<std::string> captionLines(const Detection &det, const DetectorConfig &config) {
     char line[256];
     std::vector<std::string> lines;
     if (det.found) {
@@ -252,7 +272,11 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
                   config.method == Method::Paper ? "paper" : "default",
                   det.timing_ms.count("total") ? det.timing_ms.at("total") : 0.0);
     lines.emplace_back(line);
-    if (explain) drawCandidates(img, view, det, lines);
+    return lines;
+}
+
+/// The legend: what each colour means (the cells' states only when there are cells).
+std::vector<std::pair<cv::Scalar, std::string>> legendKey(const Detection &det, const DetectorConfig &config, bool explain) {
     std::vector<std::pair<cv::Scalar, std::string>> key{
         {kInlier, "wall points (on the wall as fitted)"},
         {kFree, config.method == Method::Paper ? "plane hull" : "free space on the wall"},
@@ -265,11 +289,24 @@ cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorCo
         key.push_back({kNoReading, "not free: no wall reading"});
         if (cv::countNonZero(det.debug.cell_state == static_cast<int>(CellState::Proud)) > 0)
             key.push_back({kProud, "not free: stands proud of the wall on average (frame, switch)"});
-        for (const auto &[state, colour, text] : unfit)
+        for (const auto &[state, colour, text] : unfitStates())
             if (cv::countNonZero(det.debug.cell_state == static_cast<int>(state)) > 0) key.push_back({colour, text});
     }
     if (explain) key.push_back({kCandidate, "candidate planes as seen (#: see above)"});
-    return withLegend(img, key, lines);
+    return key;
+}
+
+}  // namespace
+
+cv::Mat renderOverlay(const Cloud &cloud, const Detection &det, const DetectorConfig &config,
+                      const CameraIntrinsics *camera, const cv::Mat &color, bool explain) {
+    const View view = overlayView(cloud, camera);
+    cv::Mat img;
+    cv::resize(shadedFrame(cloud, det, config, view, color), img, {}, view.scale, view.scale, cv::INTER_NEAREST);
+    drawDetection(img, view, det);
+    std::vector<std::string> lines = captionLines(det, config);
+    if (explain) drawCandidates(img, view, det, lines);
+    return withLegend(img, legendKey(det, config, explain), lines);
 }
 
 }  // namespace projsurf

@@ -5,7 +5,7 @@
 #include <opencv2/core.hpp>
 
 #include "projsurf/types/camera.hpp"
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 
 namespace projsurf {
 

@@ -67,6 +67,64 @@ struct PcdHeader {
     std::size_t data_offset = 0;
 };
 
+/// The FIELDS, SIZE, TYPE and COUNT lines as fields, each checked.
+std::vector<PcdField> pcdFields(const std::string &path, const std::vector<std::string_view> &names,
+                                const std::vector<std::string_view> &sizes, const std::vector<std::string_view> &types,
+                                const std::vector<std::string_view> &counts) {
+    auto bad = [&](const std::string &what) { return InputError(path, "malformed PCD header: " + what); };
+    std::vector<PcdField> fields;
+    if (names.empty()) throw bad("no FIELDS line");
+    if (sizes.empty()) throw bad("no SIZE line");
+    if (types.empty()) throw bad("no TYPE line");
+    if (sizes.size() != names.size() || types.size() != names.size() ||
+        (!counts.empty() && counts.size() != names.size()))
+        throw bad("FIELDS has " + std::to_string(names.size()) + " entries but SIZE has " +
+                  std::to_string(sizes.size()) + ", TYPE " + std::to_string(types.size()) +
+                  (counts.empty() ? std::string() : ", COUNT " + std::to_string(counts.size())));
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        PcdField f;
+        f.name = std::string(names[i]);
+        std::uint64_t size = 0;
+        if (!parseU64(sizes[i], size) || (size != 1 && size != 2 && size != 4 && size != 8))
+            throw bad("SIZE of field " + shown(names[i]) + " must be 1, 2, 4 or 8, got " + shown(sizes[i]));
+        f.type.size = static_cast<int>(size);
+        if (types[i] == "F")
+            f.type.kind = Kind::Float;
+        else if (types[i] == "I")
+            f.type.kind = Kind::Int;
+        else if (types[i] == "U")
+            f.type.kind = Kind::UInt;
+        else
+            throw bad("TYPE of field " + shown(names[i]) + " must be F, I or U, got " + shown(types[i]));
+        if (f.type.kind == Kind::Float && size != 4 && size != 8)
+            throw bad("field " + shown(names[i]) + " has TYPE F with SIZE " + std::to_string(size) +
+                      " (expected 4 or 8)");
+        if (!counts.empty() && (!parseU64(counts[i], f.count) || f.count < 1 || f.count > (1u << 20)))
+            throw bad("COUNT of field " + shown(names[i]) + " must be a whole number in 1..2^20, got " +
+                      shown(counts[i]));
+        fields.push_back(f);
+    }
+    return fields;
+}
+
+/// WIDTH x HEIGHT, checked against POINTS and the size limits.
+std::uint64_t checkedPointCount(const std::string &path, const PcdHeader &h, bool have_width, bool have_points,
+                                std::uint64_t points) {
+    auto bad = [&](const std::string &what) { return InputError(path, "malformed PCD header: " + what); };
+    if (!have_width) throw bad("no WIDTH line");
+    const std::uint64_t int_max = static_cast<std::uint64_t>(std::numeric_limits<int>::max());
+    if (h.width > int_max || h.height > int_max)
+        throw bad("WIDTH " + std::to_string(h.width) + " x HEIGHT " + std::to_string(h.height) + " is too large");
+    const std::uint64_t wh = h.width * h.height;  // both < 2^31: no overflow
+    if (have_points && points != wh)
+        throw bad("POINTS " + std::to_string(points) + " does not match WIDTH x HEIGHT = " + std::to_string(h.width) +
+                  " x " + std::to_string(h.height));
+    if (wh > limits::kMaxCloudPoints)
+        throw InputError(path, "cloud of " + std::to_string(wh) + " points exceeds the limit of " +
+                                   std::to_string(limits::kMaxCloudPoints) + " points");
+    return wh;
+}
+
 PcdHeader parsePcdHeader(const std::string &path, const std::string &bytes) {
     auto bad = [&](const std::string &what) { return InputError(path, "malformed PCD header: " + what); };
     std::vector<std::string_view> names, sizes, types, counts, words;
@@ -138,156 +196,145 @@ PcdHeader parsePcdHeader(const std::string &path, const std::string &bytes) {
     }
     h.data_offset = pos;
 
-    if (names.empty()) throw bad("no FIELDS line");
-    if (sizes.empty()) throw bad("no SIZE line");
-    if (types.empty()) throw bad("no TYPE line");
-    if (sizes.size() != names.size() || types.size() != names.size() ||
-        (!counts.empty() && counts.size() != names.size()))
-        throw bad("FIELDS has " + std::to_string(names.size()) + " entries but SIZE has " +
-                  std::to_string(sizes.size()) + ", TYPE " + std::to_string(types.size()) +
-                  (counts.empty() ? std::string() : ", COUNT " + std::to_string(counts.size())));
-    for (std::size_t i = 0; i < names.size(); ++i) {
-        PcdField f;
-        f.name = std::string(names[i]);
-        std::uint64_t size = 0;
-        if (!parseU64(sizes[i], size) || (size != 1 && size != 2 && size != 4 && size != 8))
-            throw bad("SIZE of field " + shown(names[i]) + " must be 1, 2, 4 or 8, got " + shown(sizes[i]));
-        f.type.size = static_cast<int>(size);
-        if (types[i] == "F")
-            f.type.kind = Kind::Float;
-        else if (types[i] == "I")
-            f.type.kind = Kind::Int;
-        else if (types[i] == "U")
-            f.type.kind = Kind::UInt;
-        else
-            throw bad("TYPE of field " + shown(names[i]) + " must be F, I or U, got " + shown(types[i]));
-        if (f.type.kind == Kind::Float && size != 4 && size != 8)
-            throw bad("field " + shown(names[i]) + " has TYPE F with SIZE " + std::to_string(size) +
-                      " (expected 4 or 8)");
-        if (!counts.empty() && (!parseU64(counts[i], f.count) || f.count < 1 || f.count > (1u << 20)))
-            throw bad("COUNT of field " + shown(names[i]) + " must be a whole number in 1..2^20, got " +
-                      shown(counts[i]));
-        h.fields.push_back(f);
-    }
-    if (!have_width) throw bad("no WIDTH line");
-    const std::uint64_t int_max = static_cast<std::uint64_t>(std::numeric_limits<int>::max());
-    if (h.width > int_max || h.height > int_max)
-        throw bad("WIDTH " + std::to_string(h.width) + " x HEIGHT " + std::to_string(h.height) + " is too large");
-    const std::uint64_t wh = h.width * h.height;  // both < 2^31: no overflow
-    if (have_points && points != wh)
-        throw bad("POINTS " + std::to_string(points) + " does not match WIDTH x HEIGHT = " + std::to_string(h.width) +
-                  " x " + std::to_string(h.height));
-    h.points = wh;
-    if (h.points > limits::kMaxCloudPoints)
-        throw InputError(path, "cloud of " + std::to_string(h.points) + " points exceeds the limit of " +
-                                   std::to_string(limits::kMaxCloudPoints) + " points");
+    h.fields = pcdFields(path, names, sizes, types, counts);
+    h.points = checkedPointCount(path, h, have_width, have_points, points);
     return h;
+}
+
+/// Where x, y, z live in a point: field index, byte offset within a point (binary), value
+/// index (ascii).
+struct PcdLayout {
+    std::uint64_t point_size = 0, values_per_point = 0;
+    std::vector<std::uint64_t> field_offset, field_value;
+    int xyz[3] = {0, 0, 0};
+};
+
+const char *const kAxisNames[3] = {"x", "y", "z"};
+
+PcdLayout pcdLayout(const std::string &path, const PcdHeader &h) {
+    PcdLayout lay;
+    for (const PcdField &f : h.fields) {
+        lay.field_offset.push_back(lay.point_size);
+        lay.field_value.push_back(lay.values_per_point);
+        lay.point_size += f.type.size * f.count;
+        lay.values_per_point += f.count;
+    }
+    for (int a = 0; a < 3; ++a) {
+        const auto it =
+            std::find_if(h.fields.begin(), h.fields.end(), [&](const PcdField &f) { return f.name == kAxisNames[a]; });
+        if (it == h.fields.end()) {
+            std::string list;
+            for (const PcdField &f : h.fields) list += (list.empty() ? "" : " ") + f.name;
+            throw InputError(path,
+                             std::string("no ") + kAxisNames[a] + " field in the PCD (FIELDS: " + shown(list) + ")");
+        }
+        lay.xyz[a] = static_cast<int>(it - h.fields.begin());
+    }
+    return lay;
+}
+
+InputError truncatedPcd(const std::string &path, const PcdHeader &h, const std::string &detail) {
+    return InputError(path, "truncated data: the header promises " + std::to_string(h.points) + " points; " + detail);
+}
+
+void readAsciiPoints(const std::string &path, const std::string &bytes, const PcdHeader &h, const PcdLayout &lay,
+                     std::vector<Point> &points) {
+    const std::size_t remaining = bytes.size() - h.data_offset;
+    const char *const *axis_names = kAxisNames;
+    auto truncated = [&](const std::string &detail) { return truncatedPcd(path, h, detail); };
+    // Each point needs at least one character and one separator per value.
+    points.reserve(
+        static_cast<std::size_t>(std::min<std::uint64_t>(h.points, remaining / (2 * lay.values_per_point) + 1)));
+    std::vector<std::string_view> words;
+    std::size_t pos = h.data_offset, line_no = 0;
+    while (points.size() < h.points && pos < bytes.size()) {
+        const std::string_view line = nextLine(bytes, pos);
+        ++line_no;
+        splitWords(line, words);
+        if (words.empty()) continue;
+        if (words.size() != lay.values_per_point)
+            throw InputError(path, "ascii data line " + std::to_string(line_no) + ": expected " +
+                                       std::to_string(lay.values_per_point) + " values, found " +
+                                       std::to_string(words.size()));
+        Point p;
+        for (int a = 0; a < 3; ++a) {
+            double v;
+            const std::string_view w = words[lay.field_value[lay.xyz[a]]];
+            if (!parseDouble(w, v))
+                throw InputError(path, "ascii data line " + std::to_string(line_no) + ": " + axis_names[a] +
+                                           " is not a number: " + shown(w));
+            p[a] = toFloat(v);
+        }
+        points.push_back(p);
+    }
+    if (points.size() < h.points) throw truncated("found " + std::to_string(points.size()));
+}
+
+void readBinaryPoints(const std::string &path, const std::string &bytes, const PcdHeader &h, const PcdLayout &lay,
+                      std::vector<Point> &points) {
+    const std::size_t remaining = bytes.size() - h.data_offset;
+    const auto *data = reinterpret_cast<const unsigned char *>(bytes.data()) + h.data_offset;
+    auto truncated = [&](const std::string &detail) { return truncatedPcd(path, h, detail); };
+    if (h.points > remaining / lay.point_size)
+        throw truncated("needs " + std::to_string(h.points * lay.point_size) + " bytes of binary data, the file has " +
+                        std::to_string(remaining));
+    points.resize(static_cast<std::size_t>(h.points));
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const unsigned char *p = data + i * lay.point_size;
+        for (int a = 0; a < 3; ++a)
+            points[i][a] = toFloat(decodeScalar(p + lay.field_offset[lay.xyz[a]], h.fields[lay.xyz[a]].type, false));
+    }
+}
+
+void readCompressedPoints(const std::string &path, const std::string &bytes, const PcdHeader &h, const PcdLayout &lay,
+                          std::vector<Point> &points) {
+    const std::size_t remaining = bytes.size() - h.data_offset;
+    const auto *data = reinterpret_cast<const unsigned char *>(bytes.data()) + h.data_offset;
+    auto truncated = [&](const std::string &detail) { return truncatedPcd(path, h, detail); };
+    if (remaining < 8) throw truncated("the binary_compressed size words are missing");
+    const std::uint64_t compressed = readU32LE(data), raw = readU32LE(data + 4);
+    if (compressed > remaining - 8)
+        throw truncated(std::to_string(compressed) + " compressed bytes announced, " + std::to_string(remaining - 8) +
+                        " present");
+    if (h.points > std::numeric_limits<std::uint32_t>::max() / lay.point_size || raw != h.points * lay.point_size)
+        throw InputError(path, "corrupt binary_compressed data: uncompressed size " + std::to_string(raw) +
+                                   " does not match " + std::to_string(h.points) + " points of " +
+                                   std::to_string(lay.point_size) + " bytes");
+    if (raw > limits::kMaxDecompressedBytes)
+        throw InputError(path, "binary_compressed data of " + std::to_string(raw) +
+                                   " uncompressed bytes exceeds the limit of " +
+                                   std::to_string(limits::kMaxDecompressedBytes) + " bytes");
+    if (raw > compressed * kLzfMaxRatio)
+        throw InputError(path, "corrupt binary_compressed data: " + std::to_string(compressed) +
+                                   " compressed bytes cannot hold " + std::to_string(raw) + " bytes");
+    std::vector<unsigned char> soa(static_cast<std::size_t>(raw));
+    if (!lzfDecompress(data + 8, static_cast<std::size_t>(compressed), soa.data(), soa.size()))
+        throw InputError(path, "corrupt binary_compressed data (LZF stream does not decode)");
+    // Field-major layout: all points' values of field 0, then of field 1, ...
+    std::uint64_t start[3];
+    for (int a = 0; a < 3; ++a) start[a] = lay.field_offset[lay.xyz[a]] * h.points;
+    points.resize(static_cast<std::size_t>(h.points));
+    for (int a = 0; a < 3; ++a) {
+        const PcdField &f = h.fields[lay.xyz[a]];
+        const std::uint64_t stride = f.type.size * f.count;
+        for (std::size_t i = 0; i < points.size(); ++i)
+            points[i][a] = toFloat(decodeScalar(soa.data() + start[a] + i * stride, f.type, false));
+    }
 }
 
 }  // namespace
 
 Cloud readPcd(const std::string &path, const std::string &bytes) {
     const PcdHeader h = parsePcdHeader(path, bytes);
-    // Where x, y, z live: field index, byte offset within a point (binary), value index (ascii).
-    std::uint64_t point_size = 0, values_per_point = 0;
-    std::vector<std::uint64_t> field_offset, field_value;
-    for (const PcdField &f : h.fields) {
-        field_offset.push_back(point_size);
-        field_value.push_back(values_per_point);
-        point_size += f.type.size * f.count;
-        values_per_point += f.count;
-    }
-    int xyz[3];
-    const char *axis_names[3] = {"x", "y", "z"};
-    for (int a = 0; a < 3; ++a) {
-        const auto it =
-            std::find_if(h.fields.begin(), h.fields.end(), [&](const PcdField &f) { return f.name == axis_names[a]; });
-        if (it == h.fields.end()) {
-            std::string list;
-            for (const PcdField &f : h.fields) list += (list.empty() ? "" : " ") + f.name;
-            throw InputError(path,
-                             std::string("no ") + axis_names[a] + " field in the PCD (FIELDS: " + shown(list) + ")");
-        }
-        xyz[a] = static_cast<int>(it - h.fields.begin());
-    }
+    const PcdLayout lay = pcdLayout(path, h);
     if (h.points == 0) throw InputError(path, "the cloud has zero points");
-
     Cloud cloud;
-    const std::size_t remaining = bytes.size() - h.data_offset;
-    const auto *data = reinterpret_cast<const unsigned char *>(bytes.data()) + h.data_offset;
-    auto truncated = [&](const std::string &detail) {
-        return InputError(path,
-                          "truncated data: the header promises " + std::to_string(h.points) + " points; " + detail);
-    };
-
-    if (h.data == PcdData::Ascii) {
-        // Each point needs at least one character and one separator per value.
-        cloud.points.reserve(
-            static_cast<std::size_t>(std::min<std::uint64_t>(h.points, remaining / (2 * values_per_point) + 1)));
-        std::vector<std::string_view> words;
-        std::size_t pos = h.data_offset, line_no = 0;
-        while (cloud.points.size() < h.points && pos < bytes.size()) {
-            const std::string_view line = nextLine(bytes, pos);
-            ++line_no;
-            splitWords(line, words);
-            if (words.empty()) continue;
-            if (words.size() != values_per_point)
-                throw InputError(path, "ascii data line " + std::to_string(line_no) + ": expected " +
-                                           std::to_string(values_per_point) + " values, found " +
-                                           std::to_string(words.size()));
-            Point p;
-            for (int a = 0; a < 3; ++a) {
-                double v;
-                const std::string_view w = words[field_value[xyz[a]]];
-                if (!parseDouble(w, v))
-                    throw InputError(path, "ascii data line " + std::to_string(line_no) + ": " + axis_names[a] +
-                                               " is not a number: " + shown(w));
-                p[a] = toFloat(v);
-            }
-            cloud.points.push_back(p);
-        }
-        if (cloud.points.size() < h.points) throw truncated("found " + std::to_string(cloud.points.size()));
-    } else if (h.data == PcdData::Binary) {
-        if (h.points > remaining / point_size)
-            throw truncated("needs " + std::to_string(h.points * point_size) + " bytes of binary data, the file has " +
-                            std::to_string(remaining));
-        cloud.points.resize(static_cast<std::size_t>(h.points));
-        for (std::size_t i = 0; i < cloud.points.size(); ++i) {
-            const unsigned char *p = data + i * point_size;
-            for (int a = 0; a < 3; ++a)
-                cloud.points[i][a] = toFloat(decodeScalar(p + field_offset[xyz[a]], h.fields[xyz[a]].type, false));
-        }
-    } else {
-        if (remaining < 8) throw truncated("the binary_compressed size words are missing");
-        const std::uint64_t compressed = readU32LE(data), raw = readU32LE(data + 4);
-        if (compressed > remaining - 8)
-            throw truncated(std::to_string(compressed) + " compressed bytes announced, " +
-                            std::to_string(remaining - 8) + " present");
-        if (h.points > std::numeric_limits<std::uint32_t>::max() / point_size || raw != h.points * point_size)
-            throw InputError(path, "corrupt binary_compressed data: uncompressed size " + std::to_string(raw) +
-                                       " does not match " + std::to_string(h.points) + " points of " +
-                                       std::to_string(point_size) + " bytes");
-        if (raw > limits::kMaxDecompressedBytes)
-            throw InputError(path, "binary_compressed data of " + std::to_string(raw) +
-                                       " uncompressed bytes exceeds the limit of " +
-                                       std::to_string(limits::kMaxDecompressedBytes) + " bytes");
-        if (raw > compressed * kLzfMaxRatio)
-            throw InputError(path, "corrupt binary_compressed data: " + std::to_string(compressed) +
-                                       " compressed bytes cannot hold " + std::to_string(raw) + " bytes");
-        std::vector<unsigned char> soa(static_cast<std::size_t>(raw));
-        if (!lzfDecompress(data + 8, static_cast<std::size_t>(compressed), soa.data(), soa.size()))
-            throw InputError(path, "corrupt binary_compressed data (LZF stream does not decode)");
-        // Field-major layout: all points' values of field 0, then of field 1, ...
-        std::uint64_t start[3];
-        for (int a = 0; a < 3; ++a) start[a] = field_offset[xyz[a]] * h.points;
-        cloud.points.resize(static_cast<std::size_t>(h.points));
-        for (int a = 0; a < 3; ++a) {
-            const PcdField &f = h.fields[xyz[a]];
-            const std::uint64_t stride = f.type.size * f.count;
-            for (std::size_t i = 0; i < cloud.points.size(); ++i)
-                cloud.points[i][a] = toFloat(decodeScalar(soa.data() + start[a] + i * stride, f.type, false));
-        }
-    }
+    if (h.data == PcdData::Ascii)
+        readAsciiPoints(path, bytes, h, lay, cloud.points);
+    else if (h.data == PcdData::Binary)
+        readBinaryPoints(path, bytes, h, lay, cloud.points);
+    else
+        readCompressedPoints(path, bytes, h, lay, cloud.points);
     if (h.height > 1) {
         cloud.width = static_cast<int>(h.width);
         cloud.height = static_cast<int>(h.height);

@@ -103,22 +103,39 @@ const cv::Mat &BeamBlanker::compute(const Cloud &cloud, const Plane &plane) {
     blanked_ = 0;
     candidates_ = 0;
     noise_k_ = 0.0;
-    {
-        const double focal = std::max(projector_.fx(), projector_.fy());
-        const double angle = std::max(options_.cell_angle, options_.cell_per_pixel * pixelAngle(cloud));
-        const int cell = clampToInt(std::round(angle * focal), 1, std::max(1, std::max(projector_.width, projector_.height)));
-        if (cell != cell_) configure(cell);
-    }
-    const Eigen::Vector3f o = projector_.origin.cast<float>();
+    fitCellToCloud(cloud);
+    const float lens_side = lensSide(plane);
+    if (!(lens_side > 0.0f) || !plane.normal.cast<float>().allFinite()) return blankNothing();
+    measureWallNoise(cloud, plane);
+    binObstructions(cloud, plane, lens_side);
+    if (candidates_ == 0) return blankNothing();
+    keepConnectedCells();
+    if (!growByMargins()) return blankNothing();
+    writeMask();
+    return mask_;
+}
+
+const cv::Mat &BeamBlanker::blankNothing() {
+    mask_.setTo(0);
+    return mask_;
+}
+
+float BeamBlanker::lensSide(const Plane &plane) const {
+    return plane.normal.cast<float>().dot(projector_.origin.cast<float>()) + static_cast<float>(plane.d);
+}
+
+void BeamBlanker::fitCellToCloud(const Cloud &cloud) {
+    const double focal = std::max(projector_.fx(), projector_.fy());
+    const double angle = std::max(options_.cell_angle, options_.cell_per_pixel * pixelAngle(cloud));
+    const int cell =
+        clampToInt(std::round(angle * focal), 1, std::max(1, std::max(projector_.width, projector_.height)));
+    if (cell != cell_) configure(cell);
+}
+
+void BeamBlanker::measureWallNoise(const Cloud &cloud, const Plane &plane) {
+    // The wall's noise: |distance| / z^2 of the points near the plane, on every 4th point.
     const Eigen::Vector3f n = plane.normal.cast<float>();
     const float d = static_cast<float>(plane.d);
-    const float lens_side = n.dot(o) + d;  // signed distance of the lens from the plane
-    if (!(lens_side > 0.0f) || !n.allFinite()) {
-        mask_.setTo(0);
-        return mask_;
-    }
-
-    // The wall's noise: |distance| / z^2 of the points near the plane, on every 4th point.
     constexpr int kBins = 2000;
     constexpr float kBin = 1e-5f;  // 1/m per bin: sigma_k up to 0.013 (Kinect v1 ~0.0025)
     histogram_.assign(kBins, 0);
@@ -137,9 +154,22 @@ const cv::Mat &BeamBlanker::compute(const Cloud &cloud, const Plane &plane) {
         while (b < kBins && 2 * (seen + histogram_[b]) < near_points) seen += histogram_[b++];
         noise_k_ = 1.4826 * (b + 0.5) * kBin;  // median absolute distance from the plane -> sigma
     }
-    const float noise_gap = static_cast<float>(options_.noise_sigmas * noise_k_);
+}
 
+float BeamBlanker::smallestCosine(const Plane &plane) const {
+    float min_cos = 1.0f;
+    const double l = -(pad_ * cell_) - 0.5, r = projector_.width + pad_ * cell_, b = projector_.height + pad_ * cell_;
+    for (const auto &c : {Eigen::Vector2d(l, l), Eigen::Vector2d(r, l), Eigen::Vector2d(r, b), Eigen::Vector2d(l, b)})
+        min_cos = std::min(min_cos, static_cast<float>(std::abs(plane.normal.dot(projector_.ray(c)))));
+    return min_cos;
+}
+
+void BeamBlanker::binObstructions(const Cloud &cloud, const Plane &plane, float lens_side) {
     // The obstructing points, binned into the grid (nearest depth along the axis per cell).
+    const Eigen::Vector3f o = projector_.origin.cast<float>();
+    const Eigen::Vector3f n = plane.normal.cast<float>();
+    const float d = static_cast<float>(plane.d);
+    const float noise_gap = static_cast<float>(options_.noise_sigmas * noise_k_);
     hit_.create(grid_h_, grid_w_, CV_8U);
     hit_.setTo(0);
     nearest_.create(grid_h_, grid_w_, CV_32F);
@@ -153,15 +183,7 @@ const cv::Mat &BeamBlanker::compute(const Cloud &cloud, const Plane &plane) {
     // Along the ray the gap is the distance from the plane over the cosine between ray and
     // normal: a point nearer the plane than min_gap times the smallest cosine over the padded
     // framebuffer cannot count.
-    float min_cos = 1.0f;
-    {
-        const double l = -(pad_ * cell_) - 0.5, r = projector_.width + pad_ * cell_,
-                     b = projector_.height + pad_ * cell_;
-        for (const auto &c :
-             {Eigen::Vector2d(l, l), Eigen::Vector2d(r, l), Eigen::Vector2d(r, b), Eigen::Vector2d(l, b)})
-            min_cos = std::min(min_cos, static_cast<float>(std::abs(plane.normal.dot(projector_.ray(c)))));
-    }
-    const float pre_gap = min_gap * std::max(min_cos, 0.05f);
+    const float pre_gap = min_gap * std::max(smallestCosine(plane), 0.05f);
     uchar *hit = hit_.ptr<uchar>();
     float *nearest = nearest_.ptr<float>();
     // Grid coordinates: g = (f (rel . right) / z + c + 0.5) / cell + pad.
@@ -188,19 +210,18 @@ const cv::Mat &BeamBlanker::compute(const Cloud &cloud, const Plane &plane) {
         nearest[i] = std::min(nearest[i], z);
         ++candidates_;
     }
-    if (candidates_ == 0) {
-        mask_.setTo(0);
-        return mask_;
-    }
+}
 
-    // Connected groups only.
+void BeamBlanker::keepConnectedCells() {
     if (options_.filter_noise) {
         cv::morphologyEx(hit_, scratch_, cv::MORPH_CLOSE, cv::Mat());
         cv::morphologyEx(scratch_, kept_, cv::MORPH_OPEN, cv::Mat());
     } else {
         hit_.copyTo(kept_);
     }
+}
 
+bool BeamBlanker::growByMargins() {
     // Each kept cell grows by its margin: distance_ starts at -radius on kept cells (a cell
     // the closing filled takes the nearest depth of its 3x3) and the chamfer scans leave
     // d(q) = min over kept p of (octagonal distance p -> q - radius(p)), <= 0 = blanked.
@@ -208,6 +229,7 @@ const cv::Mat &BeamBlanker::compute(const Cloud &cloud, const Plane &plane) {
     distance_.create(grid_h_, grid_w_, CV_32F);
     const float focal = static_cast<float>(std::max(projector_.fx(), projector_.fy()));
     const float margin = static_cast<float>(options_.ray_margin);
+    const float min_depth = static_cast<float>(options_.min_depth);
     int x0 = grid_w_, y0 = grid_h_, x1 = -1, y1 = -1;
     float max_radius = 0.0f;
     for (int y = 0; y < grid_h_; ++y) {
@@ -226,10 +248,7 @@ const cv::Mat &BeamBlanker::compute(const Cloud &cloud, const Plane &plane) {
             x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
         }
     }
-    if (x1 < 0) {
-        mask_.setTo(0);
-        return mask_;
-    }
+    if (x1 < 0) return false;
     const int reach = static_cast<int>(std::ceil(max_radius)) + 1;
     const cv::Rect roi = cv::Rect(x0 - reach, y0 - reach, x1 - x0 + 1 + 2 * reach, y1 - y0 + 1 + 2 * reach) &
                          cv::Rect(0, 0, grid_w_, grid_h_);
@@ -239,7 +258,10 @@ const cv::Mat &BeamBlanker::compute(const Cloud &cloud, const Plane &plane) {
     grown_.setTo(0);
     cv::Mat grown_roi = grown_(roi);
     cv::compare(dist_roi, cv::Scalar(0.0), grown_roi, cv::CMP_LE);
+    return true;
+}
 
+void BeamBlanker::writeMask() {
     // Back to framebuffer pixels: each cell covers cell_ x cell_ pixels.
     const int w = projector_.width, h = projector_.height;
     row_.resize(static_cast<std::size_t>(w));
@@ -262,7 +284,6 @@ const cv::Mat &BeamBlanker::compute(const Cloud &cloud, const Plane &plane) {
         blanked += cols * rows;
     }
     blanked_ = static_cast<int>(blanked);
-    return mask_;
 }
 
 void applyBlanking(cv::Mat &framebuffer, const cv::Mat &mask) {

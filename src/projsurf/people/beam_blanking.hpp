@@ -71,6 +71,16 @@ public:
 private:
     /// Grid geometry for cells of `cell_px` framebuffer pixels.
     void configure(int cell_px);
+    // The steps of compute, in order.
+    void fitCellToCloud(const Cloud &cloud);                        ///< cells as wide as the cloud's pixels allow
+    float lensSide(const Plane &plane) const;                       ///< m, signed distance of the lens from the plane
+    void measureWallNoise(const Cloud &cloud, const Plane &plane);  ///< noise_k_
+    float smallestCosine(const Plane &plane) const;  ///< between the plane's normal and the padded grid's rays
+    void binObstructions(const Cloud &cloud, const Plane &plane, float lens_side);  ///< hit_, nearest_
+    void keepConnectedCells();                                                      ///< kept_: hit_ without lone cells
+    bool growByMargins();  ///< grown_; false when no cell was kept
+    void writeMask();      ///< mask_ and blanked_ from grown_
+    const cv::Mat &blankNothing();
 
     Projector projector_;
     BlankingOptions options_;

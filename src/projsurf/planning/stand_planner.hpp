@@ -14,7 +14,7 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/planning/levelled_frame.hpp"
 #include "projsurf/types/plane_frame.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// Simulated real projectors (issue 12): the paper's example projector given a lens offset,
+// Simulated real projectors : the paper's example projector given a lens offset,
 // roll, unequal focal lengths and radial distortion, and what the paper's model of such a
 // projector would be (the ray through the framebuffer centre, a symmetric field of view).
 #include <string>

@@ -110,22 +110,19 @@ cv::Mat renderView(const Scene &scene, const PinholeView &viewer, const std::opt
     return img;
 }
 
-RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned seed,
-                      const std::optional<Projection> &projection, const Lighting &lighting) {
-    const CameraIntrinsics &cam = sensor.camera;
-    const PinholeView view = cameraView(cam);
-    const DepthBuffer buf = castView(scene, view, 0.05);
+namespace {
 
-    std::optional<ShadowMap> emitter;
-    if (sensor.ir_shadow) {
-        // The emitter's pattern covers a little more than the camera's view.
-        PinholeView e = view.padded(cam.width / 8);
-        e.origin = sensor.emitter;
-        emitter = makeShadowMap(scene, e);
-    }
-    // A projector shadow map as wide as the camera image is enough for the light's edges.
-    const std::optional<ProjectorLight> light = makeLight(scene, projection, cam.width);
+/// The emitter's shadow map, for sensors whose emitter sits beside the camera (IR shadows).
+std::optional<ShadowMap> emitterShadow(const Scene &scene, const SensorModel &sensor, const PinholeView &view) {
+    if (!sensor.ir_shadow) return std::nullopt;
+    // The emitter's pattern covers a little more than the camera's view.
+    PinholeView e = view.padded(sensor.camera.width / 8);
+    e.origin = sensor.emitter;
+    return makeShadowMap(scene, e);
+}
 
+/// A frame of the camera's size with no reading and black colour.
+RgbdFrame emptyFrame(const CameraIntrinsics &cam, const DepthBuffer &buf) {
     RgbdFrame f;
     f.depth = cv::Mat(cam.height, cam.width, CV_16UC1, cv::Scalar(0));
     f.rgb = cv::Mat(cam.height, cam.width, CV_8UC3, cv::Scalar(0, 0, 0));
@@ -134,6 +131,39 @@ RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned se
     f.cloud.height = cam.height;
     const float nan = std::numeric_limits<float>::quiet_NaN();
     f.cloud.points.assign(static_cast<std::size_t>(cam.width) * cam.height, Point(nan, nan, nan));
+    return f;
+}
+
+/// Pixels within two of a depth edge (a different surface more than edge_jump away): 1.
+cv::Mat depthEdges(const DepthBuffer &buf, const SensorModel &sensor) {
+    const CameraIntrinsics &cam = sensor.camera;
+    cv::Mat edges = cv::Mat::zeros(cam.height, cam.width, CV_8U);
+    auto jump = [&](int u0, int v0, int u1, int v1) {
+        const int a = buf.quad.at<int>(v0, u0), b = buf.quad.at<int>(v1, u1);
+        return a != b &&
+               (a < 0 || b < 0 || std::abs(buf.z.at<double>(v0, u0) - buf.z.at<double>(v1, u1)) > sensor.edge_jump);
+    };
+    for (int v = 0; v < cam.height; ++v)
+        for (int u = 0; u < cam.width; ++u)
+            if ((u + 1 < cam.width && jump(u, v, u + 1, v)) || (v + 1 < cam.height && jump(u, v, u, v + 1)))
+                edges.at<uchar>(v, u) = 1;
+    cv::dilate(edges, edges, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
+    return edges;
+}
+
+}  // namespace
+
+RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned seed,
+                      const std::optional<Projection> &projection, const Lighting &lighting) {
+    const CameraIntrinsics &cam = sensor.camera;
+    const PinholeView view = cameraView(cam);
+    const DepthBuffer buf = castView(scene, view, 0.05);
+
+    const std::optional<ShadowMap> emitter = emitterShadow(scene, sensor, view);
+    // A projector shadow map as wide as the camera image is enough for the light's edges.
+    const std::optional<ProjectorLight> light = makeLight(scene, projection, cam.width);
+
+    RgbdFrame f = emptyFrame(cam, buf);
 
     // Per-quad constants, and the grazing-angle thresholds as cosines (no acos per pixel).
     std::vector<Eigen::Vector3d> normals;
@@ -141,22 +171,8 @@ RgbdFrame renderFrame(const Scene &scene, const SensorModel &sensor, unsigned se
     const double cos_start = std::cos(sensor.grazing_start_deg / kRadToDeg);
     const double cos_max = std::cos(sensor.grazing_max_deg / kRadToDeg);
 
-    // Pixels within two of a depth edge (a different surface more than edge_jump away).
     const bool jitter = sensor.noise && sensor.edge_jitter_px > 0.0;
-    cv::Mat edges;
-    if (jitter) {
-        edges = cv::Mat::zeros(cam.height, cam.width, CV_8U);
-        auto jump = [&](int u0, int v0, int u1, int v1) {
-            const int a = buf.quad.at<int>(v0, u0), b = buf.quad.at<int>(v1, u1);
-            return a != b &&
-                   (a < 0 || b < 0 || std::abs(buf.z.at<double>(v0, u0) - buf.z.at<double>(v1, u1)) > sensor.edge_jump);
-        };
-        for (int v = 0; v < cam.height; ++v)
-            for (int u = 0; u < cam.width; ++u)
-                if ((u + 1 < cam.width && jump(u, v, u + 1, v)) || (v + 1 < cam.height && jump(u, v, u, v + 1)))
-                    edges.at<uchar>(v, u) = 1;
-        cv::dilate(edges, edges, cv::getStructuringElement(cv::MORPH_RECT, cv::Size(5, 5)));
-    }
+    const cv::Mat edges = jitter ? depthEdges(buf, sensor) : cv::Mat();
 
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
@@ -235,7 +251,8 @@ LightTransport lightTransport(const Scene &scene, const PinholeView &viewer, con
             const Quad &quad = scene.quads[qi];
             const Eigen::Vector3d p = viewer.origin + buf.z.at<double>(v, u) * viewer.rayDirection(u, v);
             const cv::Vec3f albedo = albedoAt(quad, p);
-            t.ambient.at<cv::Vec3f>(v, u) = albedo * static_cast<float>(lighting.ambient) + cv::Vec3f::all(quad.emission);
+            t.ambient.at<cv::Vec3f>(v, u) =
+                albedo * static_cast<float>(lighting.ambient) + cv::Vec3f::all(quad.emission);
             const auto px = framebufferPixel(*light, p, qi);
             if (!px) continue;
             t.reflectance.at<cv::Vec3f>(v, u) = albedo * static_cast<float>(lighting.projector_gain);

@@ -91,18 +91,11 @@ void pitchCamera(Scenario &s, double pitch_deg) {
     s.pitch_deg += pitch_deg;
 }
 
-Scenario makeScenario(const std::string &name, double distance, double angle_deg) {
-    if (!(distance >= 0.5 && distance <= 10.0))
-        throw std::invalid_argument("scenario distance must be between 0.5 and 10 m");
-    if (!(std::abs(angle_deg) < 75.0)) throw std::invalid_argument("scenario angle must be within +-75 degrees");
-    Scenario sc;
-    sc.name = name;
-    sc.distance = distance;
-    sc.angle_deg = angle_deg;
-    const WallFrame w(distance, angle_deg);
-    sc.wall = makePlane(w.normal, -w.normal.dot(w.origin));
-    Scene &scene = sc.scene;
+namespace {
 
+/// The paper's scenes (4.1-4.3) on the wall `w`; false for another name.
+bool buildPaperScene(Scenario &sc, const std::string &name, const WallFrame &w) {
+    Scene &scene = sc.scene;
     if (name == "wall" || name == "rolled") {
         sc.description = "plain wall and floor";
         addMainWall(scene, w, {});
@@ -133,7 +126,17 @@ Scenario makeScenario(const std::string &name, double distance, double angle_deg
         addMainWall(scene, w, {});
         addFloor(scene, w, 0.0, 8.0);
         markVerticalFaces(scene, wallBox(scene, w, -0.8, 0.2, 0.0, 2.0, 0.0, 0.6, kWood, "closet"));
-    } else if (name == "door") {
+    } else {
+        return false;
+    }
+    return true;
+}
+
+/// The scenes beyond the paper's (openings, a poster, a person, a corner, a desk); false for
+/// another name.
+bool buildRoomScene(Scenario &sc, const std::string &name, const WallFrame &w) {
+    Scene &scene = sc.scene;
+    if (name == "door") {
         sc.description = "an open doorway (0.9 x 2.05 m) right of the axis, a room 3.5 m deep behind";
         addMainWall(scene, w, {{0.35, 0.0, 1.25, 2.05}});
         addFloor(scene, w, -3.5, 8.0);
@@ -175,8 +178,25 @@ Scenario makeScenario(const std::string &name, double distance, double angle_deg
         addFloor(scene, w, 0.0, 8.0);
         markVerticalFaces(scene, wallBox(scene, w, -0.7, 0.5, 0.0, 0.75, 0.0, 0.6, kWood, "desk"));
     } else {
-        throw std::invalid_argument("unknown scenario '" + name + "'");
+        return false;
     }
+    return true;
+}
+
+}  // namespace
+
+Scenario makeScenario(const std::string &name, double distance, double angle_deg) {
+    if (!(distance >= 0.5 && distance <= 10.0))
+        throw std::invalid_argument("scenario distance must be between 0.5 and 10 m");
+    if (!(std::abs(angle_deg) < 75.0)) throw std::invalid_argument("scenario angle must be within +-75 degrees");
+    Scenario sc;
+    sc.name = name;
+    sc.distance = distance;
+    sc.angle_deg = angle_deg;
+    const WallFrame w(distance, angle_deg);
+    sc.wall = makePlane(w.normal, -w.normal.dot(w.origin));
+    if (!buildPaperScene(sc, name, w) && !buildRoomScene(sc, name, w))
+        throw std::invalid_argument("unknown scenario '" + name + "'");
     return sc;
 }
 

@@ -100,24 +100,19 @@ bool isRealisticScenario(const std::string &name) {
     return std::find(n.begin(), n.end(), name) != n.end();
 }
 
-Scenario makeRealisticScenario(const std::string &name, double distance, double angle_deg) {
-    if (!isRealisticScenario(name)) throw std::invalid_argument("unknown scenario '" + name + "'");
-    Scenario sc = makeScenario("wall", distance, angle_deg);  // checks the pose, sets wall and gravity
-    sc.name = name;
-    sc.scene = Scene{};
+namespace {
+
+/// Throws unless the camera stands at least `out` m from the wall: the scenario's furniture
+/// stands in front of it.
+void requireCameraOut(const std::string &name, const WallFrame &w, double out) {
+    if (w.cameraOut() < out)
+        throw std::invalid_argument("scenario '" + name + "' needs the camera at least " +
+                                    std::to_string(out).substr(0, 4) + " m from the wall");
+}
+
+/// What hangs on the wall: skirting, switches, frames, a TV, sheets, glass.
+void hangOnWall(Scenario &sc, const std::string &name, const WallFrame &w) {
     Scene &scene = sc.scene;
-    const WallFrame w(distance, angle_deg);
-    auto needs = [&](double out) {
-        if (w.cameraOut() < out)
-            throw std::invalid_argument("scenario '" + name + "' needs the camera at least " +
-                                        std::to_string(out).substr(0, 4) + " m from the wall");
-    };
-    if (name == "window_glass" || name == "living_room") {
-        addWallAndFloor(scene, w, {{-1.5, 0.9, -0.3, 1.9}});
-        windowWithGlass(scene, w, -1.5, -0.3, 0.9, 1.9, 1.5);
-    } else {
-        addWallAndFloor(scene, w, {});
-    }
     if (name == "plain_bowed") {
         sc.description = "a plain wall bowed by 4 mm, and the floor";
     } else if (name == "skirting_switches") {
@@ -149,13 +144,19 @@ Scenario makeRealisticScenario(const std::string &name, double distance, double 
     } else if (name == "window_glass") {
         sc.description = "a window (1.2 x 1.0 m, sill 0.9 m) with glass left of the axis, a facade 1.5 m behind";
         skirting(scene, w);
-    } else if (name == "black_furniture") {
+    }
+}
+
+/// What stands in front of the wall: furniture, clutter, a side wall.
+void furnishRoom(Scenario &sc, const std::string &name, const WallFrame &w) {
+    Scene &scene = sc.scene;
+    if (name == "black_furniture") {
         sc.description = "a black cabinet (1.0 wide, 1.2 tall, 0.5 m deep) against the wall right of the axis";
-        needs(0.8);
+        requireCameraOut(name, w, 0.8);
         setMaterial(scene, wallBox(scene, w, 0.3, 1.3, 0.0, 1.2, 0.0, 0.5, kBlack, "cabinet"), Material::Black);
     } else if (name == "clutter") {
         sc.description = "boxes and a chair on the floor 0.3-1.0 m in front of the wall";
-        needs(1.3);
+        requireCameraOut(name, w, 1.3);
         skirting(scene, w);
         wallBox(scene, w, -0.9, -0.4, 0.0, 0.45, 0.3, 0.7, kCardboard, "box");
         wallBox(scene, w, 0.2, 0.8, 0.0, 0.35, 0.5, 0.9, kCardboard, "box");
@@ -178,19 +179,38 @@ Scenario makeRealisticScenario(const std::string &name, double distance, double 
         switchAt(scene, w, 0.9, 0.30);
     } else if (name == "living_room") {
         sc.description = "a TV right of the axis, a black sofa below it, a window with glass on the left";
-        needs(1.3);
+        requireCameraOut(name, w, 1.3);
         skirting(scene, w);
         tvAt(scene, w, 0.5, 1.0);
         setMaterial(scene, wallBox(scene, w, -0.2, 1.8, 0.0, 0.8, 0.0, 0.9, kBlack, "sofa"), Material::Black);
     } else if (name == "desk_clutter") {
         sc.description = "a desk (1.2 x 0.75 x 0.6 m) with a black monitor and boxes on it, a switch above";
-        needs(1.0);
+        requireCameraOut(name, w, 1.0);
         skirting(scene, w);
         wallBox(scene, w, -0.7, 0.5, 0.0, 0.75, 0.0, 0.6, kWood, "desk");
         setMaterial(scene, wallBox(scene, w, -0.4, 0.1, 0.75, 1.1, 0.2, 0.25, kBlack, "monitor"), Material::Black);
         wallBox(scene, w, 0.2, 0.45, 0.75, 0.95, 0.1, 0.4, kCardboard, "box");
         switchAt(scene, w, 0.8, 1.05);
     }
+}
+
+}  // namespace
+
+Scenario makeRealisticScenario(const std::string &name, double distance, double angle_deg) {
+    if (!isRealisticScenario(name)) throw std::invalid_argument("unknown scenario '" + name + "'");
+    Scenario sc = makeScenario("wall", distance, angle_deg);  // checks the pose, sets wall and gravity
+    sc.name = name;
+    sc.scene = Scene{};
+    Scene &scene = sc.scene;
+    const WallFrame w(distance, angle_deg);
+    if (name == "window_glass" || name == "living_room") {
+        addWallAndFloor(scene, w, {{-1.5, 0.9, -0.3, 1.9}});
+        windowWithGlass(scene, w, -1.5, -0.3, 0.9, 1.9, 1.5);
+    } else {
+        addWallAndFloor(scene, w, {});
+    }
+    hangOnWall(sc, name, w);
+    furnishRoom(sc, name, w);
     return sc;
 }
 

@@ -12,20 +12,20 @@
 namespace projsurf {
 
 struct RegistrationOptions {
-    int max_shift_px = 20;  ///< px, shifts tried in x and y (the issue's +-20 px; unregistered pairs are 10-20 px off)
-    double depth_jump = 0.04;        ///< m, a depth edge: the depth changes by more than this ...
+    int max_shift_px = 20;     ///< px, shifts tried in x and y (unregistered pairs are 10-20 px off; docs/tuning.md)
+    double depth_jump = 0.04;  ///< m, a depth edge: the depth changes by more than this ...
     double depth_jump_share = 0.03;  ///< ... and by more than this share of the depth, across 2 px
     double jump_over_slope =
         3.0;  ///< ... and is this many times steeper than the surface beside it (a grazing floor is no edge)
-    int min_edge_pixels = 150;  ///< fewer depth-edge pixels: the check cannot tell (the real frames have 557 and more)
+    int min_edge_pixels = 150;  ///< fewer depth-edge pixels: the check cannot tell (measured, docs/tuning.md)
     double min_prominence =
         1.05;  ///< the best score must exceed the median over all shifts by this factor, else it cannot tell
     int local_window_px =
         41;  ///< px, colour edges are taken relative to their mean over this window (texture does not win)
-    double min_zero_over_median = 1.25;  ///< registered: the score at offset 0 over the median shift's; measured on the
-                                         ///< real frames (registered 1.35-2.9, unregistered 0.86-1.14)
-    double min_zero_over_best = 0.7;     ///< ... and at least this share of the best shift's (registered real frames
-                                         ///< 0.81-1.0; a shift along one edge direction keeps the other's edges)
+    double min_zero_over_median = 1.25;  ///< registered: the score at offset 0 over the median shift's (measured,
+                                         ///< docs/tuning.md)
+    double min_zero_over_best = 0.7;     ///< ... and at least this share of the best shift's (a shift along one edge
+                                         ///< direction keeps the other's edges; measured, docs/tuning.md)
     int max_samples = 6000;              ///< depth-edge pixels used at most (evenly spread), for speed
 };
 

@@ -1,6 +1,6 @@
 #include "projsurf/detection/colour/surface_suitability.hpp"
 
-#include "projsurf/detection/default/raster_shape.hpp"
+#include "projsurf/detection/raster_shape.hpp"
 #include "projsurf/types/target_clones.hpp"
 
 #include <algorithm>

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "projsurf/detection/detector_config.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/cloud.hpp"
 #include "projsurf/types/depth_tolerance.hpp"
@@ -30,16 +31,6 @@ struct FaceSurround {
     double width = 0.0, height = 0.0;  ///< m, the face's size: the median unbroken stretch per row / column
 };
 
-struct FaceSurroundOptions {
-    int bins = 16;                ///< positions along each edge (columns for the top, rows for the sides)
-    int min_bin_points = 3;       ///< face points a position needs for its edge to be taken there
-    double edge_quantile = 0.97;  ///< the edge at a position: this quantile of the face's points there (stray inliers)
-    std::vector<double> offsets = {0.04, 0.10, 0.20};  ///< m beyond the edge, looked at nearest first
-    double min_step = 0.05;  ///< m, a reading this far off the plane (and beyond the noise margin) is off it
-    int search_px = 2;       ///< px, a missing reading is looked for this far around its pixel
-    double max_gap = 0.10;   ///< m, a gap this wide between a face's points ends it (for its size)
-};
-
 /// What the camera sees beyond the top, left and right edges of the face made of `points`
 /// (indices into the organized `cloud`) on the plane of the upright `frame`. `camera` maps the
 /// cloud's points to their pixels.
@@ -47,30 +38,11 @@ FaceSurround faceSurround(const Cloud &cloud, const CameraIntrinsics &camera, co
                           const std::vector<int> &points, const DepthTolerance &tolerance,
                           const FaceSurroundOptions &options = {});
 
-struct FreeStandingRule {
-    double min_seen = 0.4;  ///< share of an edge's positions that must be past or front for it to count
-    double min_past = 0.6;  ///< share of those open behind (pastShare) for the edge to be open
-    /// A face at least this tall and wide serves like a wall even when it stands free: a
-    /// full-height wardrobe or closet front (paper 4.2 projects on one), taller than a person and
-    /// wider than a door.
-    double wall_height = 1.8;  ///< m
-    double wall_width = 0.8;   ///< m
-    /// A face lower than this (its median unbroken height) is a strip, no surface: a desk's or a
-    /// shelf's edge, clutter that happens to lie in one plane. The smallest picture (0.15 m wide
-    /// at 16:10) is 0.094 m tall.
-    double min_height = 0.1;  ///< m
-};
-
 /// A face stands free (an object on the scene, not a wall) when the camera sees past its plane
 /// above its top edge and beside at least one side: bounded by open space, not by a ceiling,
 /// walls or the view's border. Built-in fronts running to the ceiling or wall to wall do not,
 /// nor does a face of a wall's size (FreeStandingRule::wall_height, wall_width).
 bool standsFree(const FaceSurround &surround, const FreeStandingRule &rule = {});
-
-/// The face's top is open (the camera sees past its plane above it), and it is no wall-sized
-/// face: with a wall seen behind it (the caller checks), an object standing before that wall
-/// (a bin, a sofa's front between its arms, a cabinet below a counter).
-bool openAbove(const FaceSurround &surround, const FreeStandingRule &rule = {});
 
 /// The face is bounded in front of its plane above it and on both sides (a recess, or what is
 /// seen through a window or a door): each edge seen as FreeStandingRule::min_seen asks, and

@@ -7,6 +7,7 @@
 #include <opencv2/core.hpp>
 
 #include "projsurf/detection/default/plane_observation.hpp"
+#include "projsurf/detection/detector_config.hpp"
 #include "projsurf/detection/outline_raster.hpp"
 
 namespace projsurf {
@@ -24,21 +25,6 @@ enum class CellState : uchar {
     Textured = 7,   ///< textured or edgy (a framed picture, a calendar, a busy pattern)
     Saturated = 8,  ///< too saturated a colour
     Proud = 9,      ///< the wall's readings there stand off its shape on average (a frame, a switch, a TV)
-};
-
-/// Obstacle evidence over an area: what stands a centimetre or two proud of a wall (a picture
-/// frame, a switch) lies within the band of a noisy sensor point by point, but the mean of the
-/// readings over a few centimetres moves with it. The noise of such a mean is measured on the
-/// wall itself (the spread of the window means over the raster), since a depth camera's error
-/// is correlated over many pixels and quantised, so that the independent-noise standard error
-/// would understate it.
-struct ProudEvidence {
-    bool enabled = true;
-    double window = 0.06;       ///< m, side of the square the offsets are averaged over (a switch plate is 8 cm)
-    int min_points = 8;         ///< a window with fewer readings says nothing
-    double spreads = 4.0;       ///< a window mean beyond this many robust spreads of the window means is proud,
-    double min_offset = 0.015;  ///< m, and beyond this (posters, whiteboards: a few mm, stay free)
-    double min_extent = 0.10;   ///< m, proud areas narrower than this are dropped (a few windows: the sensor's)
 };
 
 struct SurfaceCells {

@@ -10,24 +10,12 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "projsurf/detection/detector_config.hpp"
 #include "projsurf/types/depth_tolerance.hpp"
 #include "projsurf/types/plane.hpp"
 #include "projsurf/types/point_grid.hpp"
 
 namespace projsurf {
-
-struct PlanarRegionOptions {
-    int cell = 8;                  ///< grid elements per cell side (8 at the 2-px grid: 16 px, CAPE's 20 px order)
-    double min_fill = 0.5;         ///< share of a cell's points that must be readings
-    double thickness_bands = 0.5;  ///< a flat cell is thinner (RMS off its plane) than this many inlier bands
-    double seed_tilt = 0.5;        ///< rad, a region starts from a cell whose normal is within this of horizontal
-    double max_tilt = 0.1;         ///< rad, a region's plane within this of horizontal (contract)
-    double join_bands =
-        0.6;  ///< a neighbour cell joins when its points' RMS distance to the region's plane is below this many bands
-    int min_cells = 6;  ///< smaller regions are not surfaces
-    double merge_angle =
-        0.15;  ///< rad, regions this parallel whose points lie within the obstacle margin of each other's plane are one
-};
 
 struct PlanarRegion {
     Plane plane;

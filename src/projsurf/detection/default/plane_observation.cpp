@@ -1,6 +1,6 @@
 #include "projsurf/detection/default/plane_observation.hpp"
-#include "projsurf/detection/default/raster_shape.hpp"
 #include "projsurf/types/clamp_to_int.hpp"
+#include "projsurf/detection/raster_shape.hpp"
 #include "projsurf/types/target_clones.hpp"
 
 #include <algorithm>

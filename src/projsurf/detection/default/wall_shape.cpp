@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "projsurf/detection/default/wall_relief.hpp"
+
 namespace projsurf {
 
 std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const std::vector<float> &band,

@@ -1,5 +1,5 @@
 #pragma once
-// A wall's shape (detection/default/wall_shape.hpp) in the raster's (column, row) coordinates,
+// A wall's shape (detection/wall_height.hpp) in the raster's (column, row) coordinates,
 // in float: what the per-point passes over a raster evaluate at a point's foot (column =
 // (u - top_left.x) / cell, row = (top_left.y - v) / cell, fractional): the quadratic as a
 // polynomial, the relief looked up at the centre of the cell (it changes by far less than a
@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <vector>
 
-#include "projsurf/detection/default/wall_shape.hpp"
 #include "projsurf/detection/outline_raster.hpp"
+#include "projsurf/detection/wall_height.hpp"
 
 namespace projsurf {
 

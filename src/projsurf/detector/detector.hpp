@@ -4,10 +4,10 @@
 #include <Eigen/Core>
 #include <memory>
 
-#include "projsurf/types/cloud.hpp"
-#include "projsurf/types/projector.hpp"
 #include "projsurf/detection/detection.hpp"
 #include "projsurf/detection/detector_config.hpp"
+#include "projsurf/types/cloud.hpp"
+#include "projsurf/types/projector.hpp"
 
 namespace projsurf {
 

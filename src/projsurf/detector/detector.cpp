@@ -1,4 +1,4 @@
-#include "projsurf/detection/detector.hpp"
+#include "projsurf/detector/detector.hpp"
 
 #include <algorithm>
 

@@ -1,0 +1,133 @@
+#!/usr/bin/env python3
+"""The folders of src/projsurf/ as a graph: folder A -> folder B when a file in A includes
+"projsurf/B/...". Fails (exit 1, one line per problem) when
+
+  - the graph has a cycle (two folders that include each other, directly or through others);
+  - a folder built by projsurf_folder() in src/projsurf/CMakeLists.txt does not link exactly
+    the folders its files include (an include it does not link, or a link it does not use);
+  - a folder's header includes a folder it links only PRIVATE.
+
+  python3 scripts/folder_graph.py [SOURCE_DIR]       (--dot prints the graph for Graphviz)
+"""
+import os
+import re
+import sys
+
+INCLUDE = re.compile(r'^\s*#\s*include\s+"projsurf/(.+)/[^/]+\.hpp"', re.M)
+FOLDER_CALL = re.compile(r"^projsurf_folder\(([^)]*)\)", re.M)
+
+
+def folders_of(root):
+    """Every folder under src/projsurf/ holding a source or header, as 'detection/default'."""
+    out = []
+    for dirpath, _, files in os.walk(root):
+        if any(f.endswith((".cpp", ".hpp")) for f in files):
+            out.append(os.path.relpath(dirpath, root))
+    return sorted(out)
+
+
+def includes_of(root, folder):
+    """{included folder: (the first header including it or None, the first file)} for the files in `folder`."""
+    found = {}
+    path = os.path.join(root, folder)
+    for name in sorted(os.listdir(path)):
+        if not name.endswith((".cpp", ".hpp")):
+            continue
+        with open(os.path.join(path, name), encoding="utf-8") as f:
+            text = f.read()
+        for target in INCLUDE.findall(text):
+            if target == folder:
+                continue
+            header, first = found.get(target, (None, name))
+            found[target] = (header or (name if name.endswith(".hpp") else None), first)
+    return found
+
+
+def declared_links(cmake_text, folders):
+    """{folder: {linked folder: 'PUBLIC'|'PRIVATE'}} from the projsurf_folder() calls."""
+    by_target = {"projsurf_" + f.replace("/", "_"): f for f in folders}
+    out = {}
+    for call in FOLDER_CALL.findall(cmake_text):
+        words = call.split()
+        folder, scope, links = words[0], "PUBLIC", {}
+        for w in words[1:]:
+            if w in ("PUBLIC", "PRIVATE", "INTERFACE"):
+                scope = w
+            elif w in by_target:
+                links[by_target[w]] = scope
+        out[folder] = links
+    return out
+
+
+def find_cycle(graph):
+    """One cycle as a list of folders, or None (depth-first search, three colours)."""
+    state, stack = {}, []
+
+    def visit(node):
+        state[node] = 1
+        stack.append(node)
+        for nxt in sorted(graph.get(node, ())):
+            if state.get(nxt) == 1:
+                return stack[stack.index(nxt):] + [nxt]
+            if state.get(nxt) is None:
+                cycle = visit(nxt)
+                if cycle:
+                    return cycle
+        stack.pop()
+        state[node] = 2
+        return None
+
+    for node in sorted(graph):
+        if state.get(node) is None:
+            cycle = visit(node)
+            if cycle:
+                return cycle
+    return None
+
+
+def main(argv):
+    source = next((a for a in argv[1:] if not a.startswith("--")), os.path.join(os.path.dirname(__file__), ".."))
+    root = os.path.join(source, "src", "projsurf")
+    folders = folders_of(root)
+    uses = {f: includes_of(root, f) for f in folders}
+    graph = {f: set(uses[f]) for f in folders}
+    if "--dot" in argv:
+        print("digraph projsurf {")
+        for f in folders:
+            for g in sorted(graph[f]):
+                print(f'  "{f}" -> "{g}";')
+        print("}")
+        return 0
+
+    problems = []
+    for f in folders:
+        for g in graph[f]:
+            if g not in folders:
+                problems.append(f"{f}: includes projsurf/{g}/, which is no folder of src/projsurf")
+    cycle = find_cycle(graph)
+    if cycle:
+        problems.append("cycle between folders: " + " -> ".join(cycle))
+
+    with open(os.path.join(root, "CMakeLists.txt"), encoding="utf-8") as f:
+        links = declared_links(f.read(), folders)
+    for folder, linked in sorted(links.items()):
+        for g, (header, first) in sorted(uses.get(folder, {}).items()):
+            target = "projsurf_" + g.replace("/", "_")
+            if g not in linked:
+                problems.append(f"{folder}: {first} includes projsurf/{g}/ but its library does not link {target}")
+            elif header and linked[g] == "PRIVATE":
+                problems.append(f"{folder}: the header {header} includes projsurf/{g}/, but {target} is linked PRIVATE")
+        for g in sorted(set(linked) - set(uses.get(folder, {}))):
+            problems.append(f"{folder}: links projsurf_{g.replace('/', '_')} but includes nothing of {g}/")
+
+    for p in problems:
+        print("folder_graph: " + p)
+    if problems:
+        return 1
+    print(f"folder_graph: {len(folders)} folders, {sum(len(g) for g in graph.values())} edges, no cycle; "
+          f"{len(links)} folder libraries link exactly what they include")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
