@@ -1,6 +1,6 @@
 #include "projsurf/detection/candidate.hpp"
 
-#include "projsurf/detection/default/observed_free_space.hpp"
+#include "projsurf/detection/outline_raster.hpp"
 
 namespace projsurf {
 

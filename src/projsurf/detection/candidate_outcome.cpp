@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "projsurf/detection/default/observed_free_space.hpp"
 #include "projsurf/types/formatted.hpp"
 
 namespace projsurf {
@@ -24,6 +23,7 @@ constexpr StateWords kStates[kCellStates] = {
     {"too_dark", "too dark (low albedo)"},
     {"textured", "unfit by their colour: textured (a picture, a pattern)"},
     {"saturated", "unfit by their colour: too saturated"},
+    {"proud", "standing proud of the wall (a frame, a switch, a screen)"},
 };
 
 const char *blockerWords(int state) { return kStates[state >= 0 && state < kCellStates ? state : 0].words; }
@@ -50,7 +50,7 @@ std::pair<std::string, std::string> sizes(const Rectangle &a, double area_a, con
 std::pair<int, double> mainColour(const CandidateOutcome &o) {
     int best = -1;
     double share = 0.0;
-    for (int s = static_cast<int>(CellState::Glare); s < kCellStates; ++s)
+    for (int s = static_cast<int>(CellState::Glare); s <= static_cast<int>(CellState::Saturated); ++s)
         if (o.beam_cells[s] > share) {
             best = s;
             share = o.beam_cells[s];

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "projsurf/detection/cell_state.hpp"
 #include "projsurf/detection/surface_check.hpp"
 #include "projsurf/types/cloud.hpp"
 #include "projsurf/types/plane.hpp"
@@ -27,9 +28,6 @@ enum class CandidateVerdict {
     CheckRejected,     ///< the surface check found too many points off the wall in its rectangle
 };
 
-/// The cell states a candidate's beam cells are counted by (detection/default/observed_free_space.hpp's
-/// CellState values 0-8: free, no reading, seen through, in front, edge, glare, dark, textured, saturated).
-constexpr int kCellStates = 9;
 
 struct CandidateOutcome {
     Plane plane;

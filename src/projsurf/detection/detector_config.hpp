@@ -128,8 +128,9 @@ struct FreeStandingRule {
     double min_height = 0.1;  ///< m
 };
 
-/// Default method, stage 2: faces that stand free in the room (furniture, boxes, people) are
-/// objects, not projection surfaces (detection/default/face_surround.hpp); depth images only.
+/// Default method, stage 2: faces that stand free in the room (furniture, boxes, people), stand
+/// before a larger wall seen above them, or are too low for a picture are objects, not
+/// projection surfaces (detection/default/face_surround.hpp); depth images only.
 struct ObjectFaceConfig {
     bool avoid = true;  ///< skip faces that stand free; false takes any vertical face (the paper's behaviour)
     FaceSurroundOptions surround;

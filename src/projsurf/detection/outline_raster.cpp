@@ -157,4 +157,12 @@ cv::Mat outlineMask(const RasterFrame &frame, const std::vector<Segment2> &edges
     return grid;
 }
 
+cv::Mat footprintCells(const RasterFrame &raster, const std::array<Eigen::Vector2d, 4> &footprint_uv) {
+    cv::Mat cells = cv::Mat::zeros(raster.rows, raster.cols, CV_8UC1);
+    // Whole cells inside: the footprint's edges moved in by half a cell diagonal.
+    fillPolygon(cells, raster, insetConvexPolygon({footprint_uv.begin(), footprint_uv.end()}, 0.7072 * raster.cell),
+                255);
+    return cells;
+}
+
 }  // namespace projsurf

@@ -2,6 +2,7 @@
 // Rasterising outlines on the plane (paper 3.2.2, Figs. 8-9): Bresenham edges and the
 // row-by-row fill of everything outside them.
 #include <Eigen/Core>
+#include <array>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -43,5 +44,8 @@ std::vector<Eigen::Vector2d> insetConvexPolygon(const std::vector<Eigen::Vector2
 
 /// The paper's M matrix: edges drawn with Bresenham, outside filled; 1 = not projectable.
 cv::Mat outlineMask(const RasterFrame &frame, const std::vector<Segment2> &edges);
+
+/// Cells of `raster` wholly inside the convex footprint (plane coordinates): 255, else 0.
+cv::Mat footprintCells(const RasterFrame &raster, const std::array<Eigen::Vector2d, 4> &footprint_uv);
 
 }  // namespace projsurf

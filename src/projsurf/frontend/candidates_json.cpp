@@ -14,8 +14,8 @@ nlohmann::json vec(const Eigen::Vector3d &v) {
 }
 
 /// The JSON names of the cell states, in CellState order.
-constexpr const char *kCellNames[kCellStates] = {"free",  "no_reading", "seen_through", "shadowed", "edge",
-                                                 "glare", "too_dark",   "textured",     "saturated"};
+constexpr const char *kCellNames[kCellStates] = {"free",  "no_reading", "seen_through", "shadowed",  "edge",
+                                                 "glare", "too_dark",   "textured",     "saturated", "proud"};
 
 nlohmann::json candidateJson(const CandidateOutcome &o, const Rectangle &winner) {
     nlohmann::json j;

@@ -44,6 +44,11 @@ FaceSurround faceSurround(const Cloud &cloud, const CameraIntrinsics &camera, co
 /// nor does a face of a wall's size (FreeStandingRule::wall_height, wall_width).
 bool standsFree(const FaceSurround &surround, const FreeStandingRule &rule = {});
 
+/// The face's top is open (the camera sees past its plane above it), and it is no wall-sized
+/// face: with a wall seen behind it (the caller checks), an object standing before that wall
+/// (a bin, a sofa's front between its arms, a cabinet below a counter).
+bool openAbove(const FaceSurround &surround, const FreeStandingRule &rule = {});
+
 /// The face is bounded in front of its plane above it and on both sides (a recess, or what is
 /// seen through a window or a door): each edge seen as FreeStandingRule::min_seen asks, and
 /// open behind on at most 1 - min_past of it.

@@ -6,26 +6,12 @@
 #include <array>
 #include <opencv2/core.hpp>
 
+#include "projsurf/detection/cell_state.hpp"
 #include "projsurf/detection/default/plane_observation.hpp"
 #include "projsurf/detection/detector_config.hpp"
 #include "projsurf/detection/outline_raster.hpp"
 
 namespace projsurf {
-
-/// Why a cell of the raster is not free (what an overlay shows).
-enum class CellState : uchar {
-    Free = 0,
-    NoReading = 1,    ///< no wall point seen there (missing depth, or off the wall)
-    SeenThrough = 2,  ///< points beyond the wall seen through it (a hole, a door, glass)
-    InFront = 3,      ///< something between the projector and the wall shadows it
-    Edge = 4,         ///< the cell along the edge of the observed wall (its true edge may be a cell in)
-    // Free by depth, but unfit by its colour (detection/colour/surface_suitability.hpp): 4 + its Unfit value.
-    Glare = 5,      ///< blown out: specular or emissive (glass, a lamp, a screen)
-    Dark = 6,       ///< too dark (low albedo)
-    Textured = 7,   ///< textured or edgy (a framed picture, a calendar, a busy pattern)
-    Saturated = 8,  ///< too saturated a colour
-    Proud = 9,      ///< the wall's readings there stand off its shape on average (a frame, a switch, a TV)
-};
 
 struct SurfaceCells {
     cv::Mat free;   ///< CV_8U, 255 = free surface (the footprint not applied)
@@ -45,8 +31,5 @@ SurfaceCells observedFreeSurface(const PlaneObservation &observation, int gap_ce
 /// than the spread of such means over the wall allows (ProudEvidence); empty when the
 /// observation has no offsets.
 cv::Mat proudCells(const PlaneObservation &observation, const ProudEvidence &proud, double cell);
-
-/// Cells of `raster` wholly inside the convex footprint (plane coordinates): 255, else 0.
-cv::Mat footprintCells(const RasterFrame &raster, const std::array<Eigen::Vector2d, 4> &footprint_uv);
 
 }  // namespace projsurf
