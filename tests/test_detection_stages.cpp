@@ -514,12 +514,15 @@ TEST(VirtualDepthImage, NotForOrganizedSparseOrStrayClouds) {
 }
 
 TEST(VirtualDepthImage, StrayPointsBeyondTheExtentAreLeftOutOfTheImageAndItsCoverage) {
-    // A wall 2 m away and 0.5 % of its points far to the upper left, more than the 0.1 % the
-    // extent leaves out: they lie beyond the extent on both axes. Before they were skipped, the
-    // coverage grid indexed them before its start (caught by UBSan on a real frame's cloud).
+    // A wall 2 m away scattered off any pixel lattice (so the image is laid out by the points'
+    // density) and three points far to the upper left, fewer than the 0.1 % the extent leaves
+    // out: they lie beyond the extent on both axes. Before the coverage grid clamped them, they
+    // indexed it before its start (caught by UBSan on a real frame's cloud).
     Cloud cloud;
-    for (int i = 0; i < 4000; ++i) cloud.points.emplace_back(0.001f * (i % 100), 0.001f * (i / 100), 2.0f);
-    for (int i = 0; i < 20; ++i) cloud.points.emplace_back(-3.0f - 0.01f * i, -3.0f, 2.0f);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> across(0.0f, 0.1f);
+    for (int i = 0; i < 4000; ++i) cloud.points.emplace_back(across(rng), across(rng), 2.0f);
+    for (int i = 0; i < 3; ++i) cloud.points.emplace_back(-3.0f - 0.0137f * i, -3.0f - 0.0071f * i, 2.0f);
     cloud.width = static_cast<int>(cloud.points.size());
     const auto image = virtualDepthImage(cloud, VirtualImageConfig{});
     ASSERT_TRUE(image);
@@ -529,6 +532,6 @@ TEST(VirtualDepthImage, StrayPointsBeyondTheExtentAreLeftOutOfTheImageAndItsCove
         ++filled;
         EXPECT_LT(image->source[i], 4000) << "a stray point was imaged";
     }
-    EXPECT_GT(filled, 3000);
+    EXPECT_GT(filled, 2000);  // random points share pixels: about 1 - 1/e of them find one of their own
     EXPECT_LE(static_cast<long>(image->cloud.points.size()), 2L * 4000);  // the strays do not spread it
 }
