@@ -118,6 +118,10 @@ TEST(MinimumSize, TheReasonsNumbersDifferAndTheCandidateIsTooSmall) {
     det.found = true;
     det.rectangle.width = 0.14996;
     det.rectangle.height = 0.0844;
+    // Rectangle leaves its corners uninitialised (Eigen): give them, as the detector does, since
+    // the winner is matched by its corners.
+    det.rectangle.corners = {Eigen::Vector3d(-0.075, -0.042, 2.0), Eigen::Vector3d(0.075, -0.042, 2.0),
+                             Eigen::Vector3d(0.075, 0.042, 2.0), Eigen::Vector3d(-0.075, 0.042, 2.0)};
     CandidateOutcome chosen;
     chosen.verdict = CandidateVerdict::Chosen;
     chosen.rectangle = det.rectangle;
