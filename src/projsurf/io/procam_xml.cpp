@@ -14,7 +14,19 @@ cv::Mat matrix(const cv::FileStorage &fs, const std::string &path, const std::st
     cv::Mat m;
     cv::FileNode n = fs[key];
     if (n.empty() && !alias.empty()) n = fs[alias];
-    if (!n.empty()) n >> m;
+    if (!n.empty()) {
+        // Its declared size checked before OpenCV allocates it (a flipped bit in `rows` asked
+        // for 48 GB); a vector may be stored as a row or a column.
+        const int want = rows * cols;
+        const bool sized = n.isMap() && n["rows"].isInt() && n["cols"].isInt() && static_cast<int>(n["rows"]) >= 1 &&
+                           static_cast<int>(n["rows"]) <= want && static_cast<int>(n["cols"]) >= 1 &&
+                           static_cast<int>(n["cols"]) <= want &&
+                           static_cast<int>(n["rows"]) * static_cast<int>(n["cols"]) == want;
+        if (!sized)
+            throw InputError(path,
+                             "lacks a " + std::to_string(rows) + "x" + std::to_string(cols) + " matrix '" + key + "'");
+        n >> m;
+    }
     if (m.empty() || static_cast<int>(m.total()) != rows * cols)
         throw InputError(path,
                          "lacks a " + std::to_string(rows) + "x" + std::to_string(cols) + " matrix '" + key + "'");
