@@ -638,6 +638,17 @@ TEST_F(Hostile, DeeplyNestedProcamXmlIsRefusedBeforeOpenCvParsesIt) {
     refused("eval --no-progress --procam " + at("procam") + " --out " + at("e"), path, "nested deeper than 64");
 }
 
+TEST_F(Hostile, ProcamXmlMatrixOfAHugeDeclaredSizeIsRefusedBeforeItIsAllocated) {
+    // A flipped bit in a matrix's rows asked OpenCV for 48 GB (found by fuzz_procam_xml).
+    fs::create_directories(dir_ / "procam");
+    writeBytes(dir_ / "procam" / "calibration_result.xml",
+               "<?xml version=\"1.0\"?>\n<opencv_storage>\n<cam_int type_id=\"opencv-matrix\">\n"
+               "<rows>1073741827</rows><cols>3</cols><dt>d</dt><data>1 0 0 0 1 0 0 0 1</data></cam_int>\n"
+               "</opencv_storage>\n");
+    const std::string path = (dir_ / "procam" / "calibration_result.xml").string();
+    refused("eval --no-progress --procam " + at("procam") + " --out " + at("e"), path, "matrix 'cam_int'");
+}
+
 TEST_F(Hostile, SequenceFramesAndBagFramesThatAreNoFilesAreNamed) {
     // A FIFO where a frame belongs ended the sequence there (a 1-frame video, exit 0) or was
     // skipped by bag; a missing number still ends a sequence.
