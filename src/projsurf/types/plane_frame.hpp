@@ -30,7 +30,8 @@ PlaneFrame makePlaneFrame(const Plane &plane, const Eigen::Vector3d &gravity, co
 /// An upright rectangle on a plane: corners top-left, top-right, bottom-right, bottom-left
 /// as seen facing the wall, in the camera frame.
 struct Rectangle {
-    std::array<Eigen::Vector3d, 4> corners;
+    std::array<Eigen::Vector3d, 4> corners{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                                           Eigen::Vector3d::Zero()};  ///< m, camera frame; zero until set
     double width = 0.0;   ///< m
     double height = 0.0;  ///< m
     double area() const { return width * height; }
