@@ -13,6 +13,7 @@
 #include "eval/label_reference.hpp"
 #include "eval/plot.hpp"
 #include "projsurf/detection/colour/colour_registration.hpp"
+#include "projsurf/frontend/minimum_size.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -100,6 +101,15 @@ ColourRun runWithColour(const LabelledFrame &f, const std::string &dir, const Ca
     return c;
 }
 
+/// At least `projsurf detect`'s default minimum picture size.
+bool atLeastMinimumSize(double width, double height) {
+    Rectangle r;
+    r.width = width;
+    r.height = height;
+    return frontend::belowMinimum(r, frontend::defaultMinimumSize(Method::Default), "", "--min-width", "--min-area")
+        .empty();
+}
+
 /// The detector with the example calibration's projector: validity against the label, and the
 /// reference search with the same projector to tell a miss from rightly nothing.
 ExampleRun runWithExampleProjector(const LabelledFrame &f, const std::string &dir, const CameraIntrinsics &camera,
@@ -116,6 +126,9 @@ ExampleRun runWithExampleProjector(const LabelledFrame &f, const std::string &di
     e.score = scoreRealRectangle(label, camera, e.detection.found, e.detection.rectangle);
     e.off_surface = e.detection.found && !e.score.valid;
     e.right = e.score.valid || (!e.detection.found && !e.reference.found);
+    e.shown = e.detection.found && atLeastMinimumSize(e.detection.width, e.detection.height);
+    e.reference_shown = e.reference.found && atLeastMinimumSize(e.reference.width, e.reference.height);
+    e.right_shown = e.shown ? e.score.valid : !e.reference_shown;
     cv::Mat img = renderLabelOverlay(background, label, camera, e.detection.found ? &e.detection.rectangle : nullptr);
     std::string caption = f.name + " (example calibration): ";
     if (!e.detection.found)
@@ -236,6 +249,11 @@ ExampleSummary summariseExample(const std::vector<LabelledFrame> &frames) {
         s.off_surface += e.off_surface;
         s.missed += !e.detection.found && e.reference.found;
         s.rightly_none += !e.detection.found && !e.reference.found;
+        s.right_shown += e.right_shown;
+        s.valid_shown += e.shown && e.score.valid;
+        s.off_shown += e.shown && !e.score.valid;
+        s.missed_shown += !e.shown && e.reference_shown;
+        s.none_shown += !e.shown && !e.reference_shown;
     }
     return s;
 }
@@ -248,6 +266,16 @@ std::string exampleSummaryLine(const ExampleSummary &s) {
            to_string(s.rightly_none) + " rightly nothing";
 }
 
+std::string exampleShownSummaryLine(const ExampleSummary &s) {
+    using std::to_string;
+    const frontend::MinimumSize m = frontend::defaultMinimumSize(Method::Default);
+    return "labelled real frames, example calibration, as detect shows them (at least " + formatted("%.2f", m.width) +
+           " m wide and " + formatted("%.3f", m.area) + " m^2): " + to_string(s.right_shown) + " of " +
+           to_string(s.frames) + " right; " + to_string(s.valid_shown) + " valid, " + to_string(s.off_shown) +
+           " off the labelled surfaces, " + to_string(s.missed_shown) + " missed, " + to_string(s.none_shown) +
+           " rightly nothing";
+}
+
 std::string exampleReportMarkdown(const std::vector<LabelledFrame> &frames, const std::string &pictures) {
     std::ostringstream md;
     md << "### With the example calibration\n\n"
@@ -257,8 +285,12 @@ std::string exampleReportMarkdown(const std::vector<LabelledFrame> &frames, cons
           "surfaces); nothing found is right where the reference search with this projector (blue) finds no usable "
           "surface either, a *miss* otherwise.\n\n";
     md << "**" << exampleSummaryLine(summariseExample(frames)) << ".**\n\n";
-    md << "| Frame | reference (m²) | detector (m²) | right | free % | surface | why not "
-          "|\n|---|---:|---:|---|---:|---|---|\n";
+    md << "`projsurf detect` does not show a picture below its minimum size (`--min-width`, `--min-area`): the "
+          "column *as shown* judges what it reports, where a smaller answer is found: false and a smaller reference "
+          "means no usable surface.\n\n**"
+       << exampleShownSummaryLine(summariseExample(frames)) << ".**\n\n";
+    md << "| Frame | reference (m²) | detector (m²) | right | as shown | free % | surface | why not "
+          "|\n|---|---:|---:|---|---|---:|---|---|\n";
     for (const auto &f : frames) {
         const ExampleRun &e = f.example;
         md << "| [" << f.name << "](" << pictures << "/" << f.name << "_example.png) | "
@@ -267,6 +299,10 @@ std::string exampleReportMarkdown(const std::vector<LabelledFrame> &frames, cons
            << (e.right         ? "yes"
                : e.off_surface ? "**no: off**"
                                : "**no: miss**")
+           << " | "
+           << (e.right_shown ? "yes"
+               : e.shown     ? "**no: off**"
+                             : "**no: miss**")
            << " | " << (e.detection.found ? formatted("%.0f", 100.0 * e.score.free_fraction) : "") << " | "
            << e.score.surface << " | " << (e.score.valid || !e.detection.found ? "" : e.score.why) << " |\n";
     }
@@ -277,13 +313,14 @@ std::string exampleReportMarkdown(const std::vector<LabelledFrame> &frames, cons
 
 std::string exampleCsv(const std::vector<LabelledFrame> &frames) {
     std::ostringstream csv;
-    csv << "frame,reference_m2,area_m2,right,off_surface,free,surface,why\n";
+    csv << "frame,reference_m2,area_m2,right,off_surface,free,surface,why,right_as_shown\n";
     for (const auto &f : frames) {
         const ExampleRun &e = f.example;
         csv << f.name << "," << (e.reference.found ? formatted("%.4f", e.reference.area()) : "") << ","
             << (e.detection.found ? formatted("%.4f", e.detection.area) : "") << "," << (e.right ? "yes" : "no") << ","
             << (e.off_surface ? "yes" : "no") << "," << formatted("%.3f", e.score.free_fraction) << ","
-            << e.score.surface << ",\"" << (e.score.valid ? "" : e.score.why) << "\"\n";
+            << e.score.surface << ",\"" << (e.score.valid ? "" : e.score.why) << "\"," << (e.right_shown ? "yes" : "no")
+            << "\n";
     }
     return csv.str();
 }

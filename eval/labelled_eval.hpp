@@ -49,8 +49,14 @@ struct ExampleRun {
     LabelBest reference;       ///< the reference search with the example projector
     bool right = false;        ///< valid, or nothing found where the reference finds nothing
     bool off_surface = false;  ///< found but not valid: the answer the target forbids
-    std::string command;       ///< the equivalent `projsurf detect` command line
-    cv::Mat overlay;           ///< BGR: label polygons, reference (blue), detector (magenta)
+    /// The same as `projsurf detect` reports it: its default minimum picture size
+    /// (frontend::defaultMinimumSize) turns a smaller answer into found: false, and a reference
+    /// below it means no usable surface at that size.
+    bool shown = false;            ///< found and at least the minimum size
+    bool reference_shown = false;  ///< the reference is at least the minimum size
+    bool right_shown = false;      ///< valid and shown, or nothing shown where no reference is
+    std::string command;           ///< the equivalent `projsurf detect` command line
+    cv::Mat overlay;               ///< BGR: label polygons, reference (blue), detector (magenta)
 };
 
 struct LabelledFrame {
@@ -89,6 +95,8 @@ struct ExampleSummary {
     int off_surface = 0;   ///< found and not valid (target: 0)
     int missed = 0;        ///< nothing found where the reference finds a surface
     int rightly_none = 0;  ///< nothing found and the reference finds nothing
+    /// The same, for what `detect` shows (ExampleRun::shown).
+    int right_shown = 0, valid_shown = 0, off_shown = 0, missed_shown = 0, none_shown = 0;
 };
 
 /// Over the frames judged on colour: how often each answer is right against the colour-aware
@@ -121,6 +129,9 @@ ExampleSummary summariseExample(const std::vector<LabelledFrame> &frames);
 /// "labelled real frames, example calibration: 25 of 30 right; 20 valid, 2 off the labelled
 /// surfaces, 3 missed, 5 rightly nothing".
 std::string exampleSummaryLine(const ExampleSummary &summary);
+/// "labelled real frames, example calibration, as detect shows them (at least 0.15 m wide and
+/// 0.012 m^2): 27 of 30 right; ...".
+std::string exampleShownSummaryLine(const ExampleSummary &summary);
 /// The example-calibration table (Markdown; part of labelledReportMarkdown).
 /// Frame, reference area, detector area, right, off surface, free share, surface, why (CSV).
 std::string exampleCsv(const std::vector<LabelledFrame> &frames);

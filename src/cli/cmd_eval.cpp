@@ -194,6 +194,7 @@ void printLabelledLines(const std::vector<eval::LabelledFrame> &labelled) {
     if (labelled.empty()) return;
     std::printf("%s\n", eval::labelledSummaryLine(eval::summariseLabelled(labelled)).c_str());
     std::printf("%s\n", eval::exampleSummaryLine(eval::summariseExample(labelled)).c_str());
+    std::printf("%s\n", eval::exampleShownSummaryLine(eval::summariseExample(labelled)).c_str());
     if (eval::summariseColour(labelled).judged > 0)
         std::printf("%s\n", eval::colourSummaryLine(summariseColour(labelled)).c_str());
 }
