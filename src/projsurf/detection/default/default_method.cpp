@@ -351,7 +351,7 @@ bool placeRectangle(double aspect, PlaneCandidate &c) {
     return true;
 }
 
-/// Issue 15: each free cell's fitness by the colour of the wall seen there, in its cell state.
+/// Each free cell's fitness by the colour of the wall seen there, in its cell state.
 void judgeColour(const Cloud &cloud, DefaultScratch &scratch, const DetectorConfig &cfg, std::size_t k,
                  PlaneCandidate &c) {
     CellSuitability &s = scratch.colour.at(k);
