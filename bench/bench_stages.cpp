@@ -157,7 +157,7 @@ const std::vector<BenchFrame> &colourFrames() {
     return out;
 }
 
-/// Surface suitability (issue 15): the default detection on the frames with registered
+/// Surface suitability: the default detection on the frames with registered
 /// colour, Arg 0 with --suitability off, 1 avoid, 2 prefer; its cost is the suitability_ms
 /// counter plus the difference of the totals.
 void BM_OursDefaultDetectColour(benchmark::State &state) {
