@@ -20,7 +20,7 @@ py::dict detectionToDict(const Detection &det, const DetectorConfig &config, boo
     py::dict d;
     d["found"] = det.found;
     d["reason"] = det.found ? py::object(py::none()) : py::object(py::str(det.reason));
-    d["method"] = frontend::methodName(config.method);
+    d["method"] = methodName(config.method);
     if (det.inliers > 0) {
         const Eigen::Vector4d c = det.plane.coefficients();
         d["plane"] = py::dict("coefficients"_a = py::array_t<double>(4, c.data()),

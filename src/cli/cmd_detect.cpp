@@ -64,7 +64,7 @@ void warnIfIgnored(const CLI::App &sub, Method method) {
         const std::string name = frontend::optionName(setting);
         if (sub.get_option(name)->count() > 0)
             std::fprintf(stderr, "projsurf: warning: %s is ignored by the %s method\n", name.c_str(),
-                         frontend::methodName(method));
+                         methodName(method));
     }
 }
 
