@@ -1,50 +1,41 @@
 #include "projsurf/detection/method_names.hpp"
 
+#include <cstddef>
+
 namespace projsurf {
 namespace {
 
-struct MethodWord {
-    Method method;
+template <typename E>
+struct Word {
+    E value;
     const char *word;
 };
-constexpr MethodWord kMethods[] = {{Method::Default, "default"}, {Method::Paper, "paper"}};
+constexpr Word<Method> kMethods[] = {{Method::Default, "default"}, {Method::Paper, "paper"}};
+constexpr Word<HullKind> kHulls[] = {{HullKind::Concave, "concave"}, {HullKind::Convex, "convex"}};
 
-struct HullWord {
-    HullKind hull;
-    const char *word;
-};
-constexpr HullWord kHulls[] = {{HullKind::Concave, "concave"}, {HullKind::Convex, "convex"}};
+/// The word of `value` (the first entry's for a value the table lacks).
+template <typename E, std::size_t N>
+const char *wordOf(const Word<E> (&table)[N], E value) {
+    for (const Word<E> &w : table)
+        if (w.value == value) return w.word;
+    return table[0].word;
+}
+
+template <typename E, std::size_t N>
+bool valueOf(const Word<E> (&table)[N], std::string_view word, E &out) {
+    for (const Word<E> &w : table)
+        if (word == w.word) {
+            out = w.value;
+            return true;
+        }
+    return false;
+}
 
 }  // namespace
 
-const char *methodName(Method method) {
-    for (const MethodWord &m : kMethods)
-        if (m.method == method) return m.word;
-    return kMethods[0].word;
-}
-
-const char *hullName(HullKind hull) {
-    for (const HullWord &h : kHulls)
-        if (h.hull == hull) return h.word;
-    return kHulls[0].word;
-}
-
-bool methodFromName(std::string_view word, Method &out) {
-    for (const MethodWord &m : kMethods)
-        if (word == m.word) {
-            out = m.method;
-            return true;
-        }
-    return false;
-}
-
-bool hullFromName(std::string_view word, HullKind &out) {
-    for (const HullWord &h : kHulls)
-        if (word == h.word) {
-            out = h.hull;
-            return true;
-        }
-    return false;
-}
+const char *methodName(Method method) { return wordOf(kMethods, method); }
+const char *hullName(HullKind hull) { return wordOf(kHulls, hull); }
+bool methodFromName(std::string_view word, Method &out) { return valueOf(kMethods, word, out); }
+bool hullFromName(std::string_view word, HullKind &out) { return valueOf(kHulls, word, out); }
 
 }  // namespace projsurf
