@@ -11,7 +11,7 @@
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 
-#include "../tests/bag_writer.hpp"
+#include "../tests/support/bag_writer.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/files.hpp"
 

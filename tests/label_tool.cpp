@@ -178,7 +178,7 @@ int main(int argc, char **argv) {
         if (std::string(argv[1]) == "baseline") {
             const double margin = argc > 4 ? std::stod(argv[4]) : 0.05;
             std::printf(
-                "# Regression floor of the labelled real-frame suite, checked by tests/test_real_labels.cpp.\n"
+                "# Regression floor of the labelled real-frame suite, checked by tests/eval/test_real_labels.cpp.\n"
                 "# Per frame: whether today's default detector is right (valid, or nothing found where the\n"
                 "# label has no usable surface) and its area ratio to the label's best minus %.2f\n"
                 "# (at most 0.90, the target: a valid answer may exceed the best, see labels/README.md).\n"

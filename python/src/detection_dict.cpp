@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "projsurf/frontend/candidates_json.hpp"
-#include "projsurf/frontend/method_words.hpp"
+#include "json_values.hpp"
+#include "projsurf/frontend/detection_document.hpp"
 #include "projsurf/io/errors.hpp"
 
 namespace py = pybind11;
@@ -16,40 +16,22 @@ using namespace pybind11::literals;
 
 namespace projsurf::python {
 
-py::dict detectionToDict(const Detection &det, const DetectorConfig &config, bool explain) {
-    py::dict d;
-    d["found"] = det.found;
-    d["reason"] = det.found ? py::object(py::none()) : py::object(py::str(det.reason));
-    d["method"] = frontend::methodName(config.method);
-    if (det.inliers > 0) {
-        const Eigen::Vector4d c = det.plane.coefficients();
-        d["plane"] = py::dict("coefficients"_a = py::array_t<double>(4, c.data()),
-                              "orientation_deg"_a = det.orientation_deg, "inliers"_a = det.inliers);
-    } else {
-        d["plane"] = py::none();
-    }
-    if (det.rectangle.area() > 0.0) {
-        py::array_t<double> corners({4, 3});
-        auto w = corners.mutable_unchecked<2>();
-        for (int i = 0; i < 4; ++i)
-            for (int k = 0; k < 3; ++k) w(i, k) = det.rectangle.corners[i][k];
-        d["rectangle"] = py::dict("corners"_a = corners, "width_m"_a = det.rectangle.width,
-                                  "height_m"_a = det.rectangle.height, "area_m2"_a = det.rectangle.area());
-    } else {
-        d["rectangle"] = py::none();
-    }
-    d["surface_check"] = py::dict("points"_a = det.surface_check.points, "outliers"_a = det.surface_check.outliers,
-                                  "accepted"_a = det.surface_check.accepted);
-    if (det.suitability.used)  // as the JSON: only when colour was used
-        d["suitability"] =
-            py::dict("mode"_a = det.suitability.mode, "mean_albedo"_a = det.suitability.mean_albedo,
-                     "texture"_a = det.suitability.texture, "unsuitable_share"_a = det.suitability.unsuitable_share,
-                     "wall_luminance"_a = det.suitability.wall_luminance);
-    d["timing_ms"] = py::cast(det.timing_ms);
-    const Eigen::Vector3d g = det.gravity;
-    d["gravity"] = py::array_t<double>(3, g.data());
-    if (explain)  // the JSON's own list, by its one serialiser
-        d["candidates"] = py::module_::import("json").attr("loads")(frontend::candidatesToJson(det).dump());
+namespace {
+
+/// d[key] (when it is a list) as a float64 numpy array of the same numbers.
+void numpyAt(py::dict d, const char *key) {
+    if (d.contains(key) && py::isinstance<py::list>(d[key]))
+        d[key] = py::module_::import("numpy").attr("asarray")(d[key], "dtype"_a = "float64");
+}
+
+}  // namespace
+
+py::dict detectionToDict(const Detection &det, const DetectorConfig &config, const Projector &projector, bool explain) {
+    py::dict d = pythonFromJson(frontend::detectionDocument(det, config, projector, explain));
+    // The vectors are numpy arrays (the module's promise since its first version).
+    numpyAt(d, "gravity");
+    if (py::isinstance<py::dict>(d["plane"])) numpyAt(d["plane"].cast<py::dict>(), "coefficients");
+    if (py::isinstance<py::dict>(d["rectangle"])) numpyAt(d["rectangle"].cast<py::dict>(), "corners");
     return d;
 }
 

@@ -136,7 +136,7 @@ DetectorOptions detectorOptions(const DetectorArguments &a) {
     if (!a.method.is_none()) o.config.method = frontend::parseMethod("method", wordArgument(a.method, "method"));
     if (!a.hull.is_none()) o.config.paper.hull = frontend::parseHull("hull", wordArgument(a.hull, "hull"));
     if (!a.seed.is_none()) o.config.seed = static_cast<unsigned>(wholeArgument(a.seed, "seed", 0, 4294967295LL));
-    const std::string method = frontend::methodName(o.config.method);
+    const std::string method = methodName(o.config.method);
     if (!a.suitability.is_none()) {
         o.config.suitability.mode =
             frontend::parseSuitabilityMode("suitability", wordArgument(a.suitability, "suitability"));

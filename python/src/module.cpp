@@ -114,7 +114,7 @@ public:
         }
         warnAll(warnings);
         frontend::enforceMinimumSize(det, options_.minimum, "min_width", "min_area");
-        py::dict d = detectionToDict(det, options_.config, explain.cast<bool>());
+        py::dict d = detectionToDict(det, options_.config, detector_.projector(), explain.cast<bool>());
         if (overlay.cast<bool>()) {  // `detect --overlay`'s picture, colour as its background when it was used
             py::object keep;
             const cv::Mat bgr =

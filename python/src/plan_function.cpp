@@ -4,6 +4,7 @@
 
 #include "argument_types.hpp"
 #include "detector_options.hpp"
+#include "json_values.hpp"
 #include "points_array.hpp"
 #include "projsurf/frontend/detect_answer.hpp"
 #include "projsurf/frontend/plan_json.hpp"
@@ -31,7 +32,7 @@ void addPlanFunction(py::module_ &m) {
             PlanOptions plan;
             plan.width = width;
             plan.max_move = max_move;
-            std::string text;
+            nlohmann::json answer;
             std::vector<std::string> warnings;
             {
                 py::gil_scoped_release unlocked;
@@ -42,10 +43,10 @@ void addPlanFunction(py::module_ &m) {
                 SurfaceDetector detector(projector, options.config);
                 const Detection today =
                     frontend::detectAnswer(detector, cloud, down, options.minimum, "points", "min_width", "min_area");
-                text = frontend::planToJson(planStand(cloud, projector, options.config, down, plan, today)).dump();
+                answer = frontend::planToJson(planStand(cloud, projector, options.config, down, plan, today));
             }
             warnAll(warnings);
-            return py::module_::import("json").attr("loads")(text);
+            return pythonFromJson(answer);
         },
         "points"_a, "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(), "width"_a = 0.0,
         "max_move"_a = 2.0, "min_width"_a = py::none(), "min_area"_a = py::none(), "config"_a = py::none(),

@@ -9,12 +9,11 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "conversions.hpp"
-#include "projsurf/frontend/candidates_json.hpp"
 #include "projsurf/frontend/detect_answer.hpp"
+#include "projsurf/frontend/detection_document.hpp"
 #include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/frontend/test_card.hpp"
-#include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 
@@ -305,8 +304,8 @@ ProjsurfNode::Outcome ProjsurfNode::detectOnValidCloud() {
     if (!tf_problem.empty()) ROS_WARN("projsurf_node: %s", tf_problem.c_str());
     Detection det = detector_.detect(cloud_, gravity);
     frontend::enforceMinimumSize(det, params_.minimum, "~min_width", "~min_area");
-    nlohmann::json result = detectionToJson(det, detector_.config(), &params_.projector);
-    if (params_.explain) result["candidates"] = frontend::candidatesToJson(det);
+    const nlohmann::json result =
+        frontend::detectionDocument(det, detector_.config(), params_.projector, params_.explain);
     std_msgs::String json;
     json.data = result.dump();
     result_pub_.publish(json);
@@ -401,8 +400,7 @@ void ProjsurfNode::runContinuous() {
     blanking_->apply(fb.image, cloud_, o.has_target ? &o.shown : nullptr, header);
     const double frame_ms = (ros::WallTime::now() - start).toSec() * 1e3 + colour_ms_;
 
-    nlohmann::json j = detectionToJson(det, detector_.config(), &params_.projector);
-    if (params_.explain) j["candidates"] = frontend::candidatesToJson(det);
+    nlohmann::json j = frontend::detectionDocument(det, detector_.config(), params_.projector, params_.explain);
     j["continuous"] = {{"event", toString(o.event)},
                        {"showing", o.has_target && fb.problem.empty()},
                        {"stamp", header.stamp.toSec()},

@@ -14,6 +14,7 @@
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/depth_range_check.hpp"
 #include "projsurf/frontend/detect_answer.hpp"
+#include "projsurf/frontend/detection_document.hpp"
 #include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/detector_config_file.hpp"
 #include "projsurf/frontend/detector_config_keys.hpp"
@@ -26,7 +27,6 @@
 #include "projsurf/frontend/stamp_pairing.hpp"
 #include "projsurf/frontend/suitability_mode.hpp"
 #include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/overlay.hpp"
@@ -64,7 +64,7 @@ void warnIfIgnored(const CLI::App &sub, Method method) {
         const std::string name = frontend::optionName(setting);
         if (sub.get_option(name)->count() > 0)
             std::fprintf(stderr, "projsurf: warning: %s is ignored by the %s method\n", name.c_str(),
-                         frontend::methodName(method));
+                         methodName(method));
     }
 }
 
@@ -138,8 +138,7 @@ void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &
         const Eigen::Vector3d down = frontend::resolveGravity(gravity, cloud).gravity;
         const Detection det = frontend::detectAnswer(detector, cloud, down, minimum,
                                                      o.bag + ":" + topic.topic + "#" + std::to_string(info.index));
-        nlohmann::json j = detectionToJson(det, cfg, &projector);
-        if (o.explain) j["candidates"] = frontend::candidatesToJson(det);
+        nlohmann::json j = frontend::detectionDocument(det, cfg, projector, o.explain);
         j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", topic.topic}};
         found += det.found ? 1 : 0;
         if (o.json.empty())
@@ -257,8 +256,7 @@ void run(const DetectOptions &o, const CLI::App &sub) {
         std::fprintf(stderr, "projsurf: warning: %s\n", w->c_str());
     SurfaceDetector detector(projector, cfg);
     const Detection det = frontend::detectAnswer(detector, cloud, gravity, minimum, o.cloud.empty() ? o.depth : o.cloud);
-    nlohmann::json j = detectionToJson(det, cfg, &projector);
-    if (o.explain) j["candidates"] = frontend::candidatesToJson(det);
+    const nlohmann::json j = frontend::detectionDocument(det, cfg, projector, o.explain);
     // Both outputs, or neither: written beside their targets, renamed once both are there.
     OutputGroup outputs;
     if (!o.json.empty()) outputs.addFile(o.json, j.dump(2) + "\n");

@@ -14,9 +14,9 @@
 #endif
 
 #include "projsurf/io/errors.hpp"
-#include "projsurf/io/utf8_text.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"
+#include "projsurf/io/utf8_text.hpp"
 
 namespace projsurf {
 namespace {
@@ -83,6 +83,100 @@ std::uint8_t opOf(const std::string &path, const std::map<std::string, std::stri
         throw InputError(path, "corrupt ROS bag: a record has no 'op' field");
     return static_cast<std::uint8_t>(it->second[0]);
 }
+
+/// The bag header record's index position, checked: a bag that was not closed or is cut short
+/// is refused here, before its records are read.
+void checkBagHeader(const std::string &path, const Record &r, std::uint64_t file_size) {
+    const auto &ip = fieldString(path, r, "index_pos");
+    if (ip.size() != 8) throw InputError(path, "corrupt ROS bag: index_pos is not 8 bytes");
+    const std::uint64_t index_pos = le32(ip.data()) | static_cast<std::uint64_t>(le32(ip.data() + 4)) << 32;
+    if (index_pos == 0) throw InputError(path, "ROS bag was not closed (no index; run `rosbag reindex`)");
+    if (index_pos >= file_size)
+        throw InputError(path, "ROS bag is truncated (its index lies beyond the end of the file)");
+}
+
+/// The record at `cpos` of a decompressed chunk, checked like the file's.
+Record chunkRecordAt(const std::string &path, const std::string &data, std::uint64_t cpos) {
+    if (data.size() - cpos < 4) throw InputError(path, "corrupt ROS bag: truncated record in a chunk");
+    const std::uint32_t hl = le32(data.data() + cpos);
+    if (hl > data.size() - cpos - 4)
+        throw InputError(path, "corrupt ROS bag: a record header in a chunk is longer than the chunk");
+    Record cr;
+    cr.fields = parseFields(path, data.data() + cpos + 4, hl, "a record header");
+    cr.op = opOf(path, cr.fields);
+    const std::uint64_t after = cpos + 4 + hl;
+    if (data.size() - after < 4) throw InputError(path, "corrupt ROS bag: truncated record in a chunk");
+    cr.data_len = le32(data.data() + after);
+    cr.data_pos = after + 4;
+    if (cr.data_len > data.size() - cr.data_pos)
+        throw InputError(path, "corrupt ROS bag: a record in a chunk is longer than the chunk");
+    return cr;
+}
+
+/// What the walk over the records collects: the connections and the messages of one topic.
+struct BagIndex {
+    const std::string &path;
+    const std::string &want_topic;
+    std::vector<BagConnection> &connections;
+    std::vector<BagMessageRef> &messages;
+    std::map<std::uint32_t, std::size_t> by_id;  // connection id -> index in connections
+
+    void addConnection(const Record &r, const char *data, std::size_t n) {
+        BagConnection c;
+        c.id = fieldU32(path, r, "conn");
+        c.topic = fieldString(path, r, "topic");
+        const auto h = parseFields(path, data, n, "a connection header");
+        const auto type = h.find("type");
+        if (type == h.end()) throw InputError(path, "corrupt ROS bag: a connection has no type");
+        c.type = type->second;
+        if (const auto md5 = h.find("md5sum"); md5 != h.end()) c.md5sum = md5->second;
+        if (by_id.count(c.id)) return;  // connections are repeated at the end of the file
+        if (connections.size() >= 100000) throw InputError(path, "ROS bag has more than 100000 connections");
+        by_id[c.id] = connections.size();
+        connections.push_back(c);
+    }
+
+    bool wanted(std::uint32_t conn) const {
+        const auto it = by_id.find(conn);
+        if (it == by_id.end()) throw InputError(path, "corrupt ROS bag: a message names an unknown connection");
+        return connections[it->second].topic == want_topic;
+    }
+
+    void addMessage(const Record &r, std::uint64_t chunk_pos) {
+        BagMessageRef m;
+        m.connection = fieldU32(path, r, "conn");
+        const auto &time = fieldString(path, r, "time");
+        if (time.size() != 8) throw InputError(path, "corrupt ROS bag: a message time is not 8 bytes");
+        m.sec = le32(time.data());
+        m.nsec = le32(time.data() + 4);
+        m.chunk_pos = chunk_pos;
+        m.offset = r.data_pos;
+        m.size = r.data_len;
+        if (m.size > limits::kMaxBagRecordBytes)
+            throw InputError(path, "ROS bag message of " + std::to_string(m.size) + " bytes exceeds the limit of " +
+                                       std::to_string(limits::kMaxBagRecordBytes) + " bytes");
+        if (!wanted(m.connection)) return;
+        if (messages.size() >= limits::kMaxBagMessages)
+            throw InputError(path, "more than " + std::to_string(limits::kMaxBagMessages) + " messages on '" +
+                                       want_topic + "' (the limit of one run; split the bag)");
+        messages.push_back(m);
+    }
+
+    /// The connections and messages inside the decompressed chunk that starts at `chunk_pos`.
+    void addChunk(const std::string &data, std::uint64_t chunk_pos) {
+        std::uint64_t cpos = 0;
+        while (cpos < data.size()) {
+            const Record cr = chunkRecordAt(path, data, cpos);
+            if (cr.op == kOpConnection)
+                addConnection(cr, data.data() + cr.data_pos, cr.data_len);
+            else if (cr.op == kOpMessage)
+                addMessage(cr, chunk_pos);
+            else
+                throw InputError(path, "corrupt ROS bag: unexpected record type inside a chunk");
+            cpos = cr.data_pos + cr.data_len;
+        }
+    }
+};
 
 }  // namespace
 
@@ -176,123 +270,50 @@ struct BagFile::Impl {
         cached_chunk = pos;
         return cached;
     }
-};
 
-BagFile::BagFile(const std::string &path, const std::string &want_topic) : impl_(new Impl) {
-    Impl &b = *impl_;
-    b.path = path;
-    try {
+    /// Opens the file and checks its format line.
+    void open() {
         requireReadable(path);
-        b.in.open(path, std::ios::binary);
-        b.in.seekg(0, std::ios::end);
-        const std::streamoff end = b.in.tellg();
-        if (!b.in || end < 0) throw InputError(path, "cannot read the file");
-        b.size = static_cast<std::uint64_t>(end);
+        in.open(path, std::ios::binary);
+        in.seekg(0, std::ios::end);
+        const std::streamoff end = in.tellg();
+        if (!in || end < 0) throw InputError(path, "cannot read the file");
+        size = static_cast<std::uint64_t>(end);
         char magic[kMagicSize];
-        if (b.size < kMagicSize) throw InputError(path, "not a ROS bag (too short)");
-        b.readAt(0, magic, kMagicSize);
+        if (size < kMagicSize) throw InputError(path, "not a ROS bag (too short)");
+        readAt(0, magic, kMagicSize);
         if (std::memcmp(magic, kMagic, kMagicSize) != 0) {
             if (std::memcmp(magic, "#ROSBAG V", 9) == 0)
                 throw InputError(path, "ROS bag format other than 2.0 (re-record it, or run `rosbag fix`)");
             throw InputError(path, "not a ROS bag (no '#ROSBAG V2.0' line)");
         }
+    }
 
-        std::map<std::uint32_t, std::size_t> by_id;  // connection id -> index in connections_
-        auto addConnection = [&](const Record &r, const char *data, std::size_t n) {
-            BagConnection c;
-            c.id = fieldU32(path, r, "conn");
-            c.topic = fieldString(path, r, "topic");
-            const auto h = parseFields(path, data, n, "a connection header");
-            const auto type = h.find("type");
-            if (type == h.end()) throw InputError(path, "corrupt ROS bag: a connection has no type");
-            c.type = type->second;
-            if (const auto md5 = h.find("md5sum"); md5 != h.end()) c.md5sum = md5->second;
-            if (by_id.count(c.id)) return;  // connections are repeated at the end of the file
-            if (connections_.size() >= 100000) throw InputError(path, "ROS bag has more than 100000 connections");
-            by_id[c.id] = connections_.size();
-            connections_.push_back(c);
-        };
-        auto wanted = [&](std::uint32_t conn) {
-            const auto it = by_id.find(conn);
-            if (it == by_id.end()) throw InputError(path, "corrupt ROS bag: a message names an unknown connection");
-            return connections_[it->second].topic == want_topic;
-        };
-        auto addMessage = [&](const Record &r, std::uint64_t chunk_pos) {
-            BagMessageRef m;
-            m.connection = fieldU32(path, r, "conn");
-            const auto &time = fieldString(path, r, "time");
-            if (time.size() != 8) throw InputError(path, "corrupt ROS bag: a message time is not 8 bytes");
-            m.sec = le32(time.data());
-            m.nsec = le32(time.data() + 4);
-            m.chunk_pos = chunk_pos;
-            m.offset = r.data_pos;
-            m.size = r.data_len;
-            if (m.size > limits::kMaxBagRecordBytes)
-                throw InputError(path, "ROS bag message of " + std::to_string(m.size) + " bytes exceeds the limit of " +
-                                           std::to_string(limits::kMaxBagRecordBytes) + " bytes");
-            if (!wanted(m.connection)) return;
-            if (messages_.size() >= limits::kMaxBagMessages)
-                throw InputError(path, "more than " + std::to_string(limits::kMaxBagMessages) + " messages on '" +
-                                           want_topic + "' (the limit of one run; split the bag)");
-            messages_.push_back(m);
-        };
-
+    /// Walks every record of the file in order, the bag header first, into `index`.
+    void indexRecords(BagIndex &index) {
         bool have_header = false;
         std::uint64_t pos = kMagicSize;
-        while (pos < b.size) {
+        while (pos < size) {
             std::uint64_t next = 0;
-            const Record r = b.recordAt(pos, next);
+            const Record r = recordAt(pos, next);
             if (!have_header && r.op != kOpBagHeader)
                 throw InputError(path, "corrupt ROS bag: the first record is not the bag header");
             switch (r.op) {
-            case kOpBagHeader: {
+            case kOpBagHeader:
                 if (have_header) throw InputError(path, "corrupt ROS bag: a second bag header");
                 have_header = true;
-                const auto &ip = fieldString(path, r, "index_pos");
-                if (ip.size() != 8) throw InputError(path, "corrupt ROS bag: index_pos is not 8 bytes");
-                const std::uint64_t index_pos = le32(ip.data()) | static_cast<std::uint64_t>(le32(ip.data() + 4)) << 32;
-                if (index_pos == 0) throw InputError(path, "ROS bag was not closed (no index; run `rosbag reindex`)");
-                if (index_pos >= b.size)
-                    throw InputError(path, "ROS bag is truncated (its index lies beyond the end of the file)");
+                checkBagHeader(path, r, size);
                 break;
-            }
             case kOpConnection: {
                 if (r.data_len > limits::kMaxBagHeaderBytes)
                     throw InputError(path, "corrupt ROS bag: connection header too long");
                 std::string data(r.data_len, '\0');
-                b.readAt(r.data_pos, data.data(), data.size());
-                addConnection(r, data.data(), data.size());
+                readAt(r.data_pos, data.data(), data.size());
+                index.addConnection(r, data.data(), data.size());
                 break;
             }
-            case kOpMessage: addMessage(r, 0); break;
-            case kOpChunk: {
-                const std::string &data = b.chunk(pos);
-                std::uint64_t cpos = 0;
-                while (cpos < data.size()) {
-                    // The records inside a chunk, checked like the file's.
-                    if (data.size() - cpos < 4) throw InputError(path, "corrupt ROS bag: truncated record in a chunk");
-                    const std::uint32_t hl = le32(data.data() + cpos);
-                    if (hl > data.size() - cpos - 4)
-                        throw InputError(path, "corrupt ROS bag: a record header in a chunk is longer than the chunk");
-                    Record cr;
-                    cr.fields = parseFields(path, data.data() + cpos + 4, hl, "a record header");
-                    cr.op = opOf(path, cr.fields);
-                    const std::uint64_t after = cpos + 4 + hl;
-                    if (data.size() - after < 4) throw InputError(path, "corrupt ROS bag: truncated record in a chunk");
-                    cr.data_len = le32(data.data() + after);
-                    cr.data_pos = after + 4;
-                    if (cr.data_len > data.size() - cr.data_pos)
-                        throw InputError(path, "corrupt ROS bag: a record in a chunk is longer than the chunk");
-                    if (cr.op == kOpConnection)
-                        addConnection(cr, data.data() + cr.data_pos, cr.data_len);
-                    else if (cr.op == kOpMessage)
-                        addMessage(cr, pos);
-                    else
-                        throw InputError(path, "corrupt ROS bag: unexpected record type inside a chunk");
-                    cpos = cr.data_pos + cr.data_len;
-                }
-                break;
-            }
+            case kOpMessage: index.addMessage(r, 0); break;
+            case kOpChunk: index.addChunk(chunk(pos), pos); break;
             case kOpIndex:
             case kOpChunkInfo: break;  // the index: not needed, the records were all read in order
             default: throw InputError(path, "corrupt ROS bag: unknown record type " + std::to_string(r.op));
@@ -300,6 +321,15 @@ BagFile::BagFile(const std::string &path, const std::string &want_topic) : impl_
             pos = next;
         }
         if (!have_header) throw InputError(path, "corrupt ROS bag: no bag header record");
+    }
+};
+
+BagFile::BagFile(const std::string &path, const std::string &want_topic) : impl_(new Impl) {
+    impl_->path = path;
+    try {
+        impl_->open();
+        BagIndex index{path, want_topic, connections_, messages_, {}};
+        impl_->indexRecords(index);
         std::stable_sort(messages_.begin(), messages_.end(), [](const BagMessageRef &a, const BagMessageRef &c) {
             return a.sec < c.sec || (a.sec == c.sec && a.nsec < c.nsec);
         });

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "projsurf/detection/method_names.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"
@@ -22,7 +23,7 @@ nlohmann::json detectionToJson(const Detection &det, const DetectorConfig &confi
     nlohmann::json j;
     j["found"] = det.found;
     j["reason"] = det.found ? nlohmann::json(nullptr) : nlohmann::json(det.reason);
-    j["method"] = config.method == Method::Paper ? "paper" : "default";
+    j["method"] = methodName(config.method);
     if (det.inliers > 0) {
         const auto c = det.plane.coefficients();
         j["plane"] = {{"coefficients", {c[0], c[1], c[2], c[3]}},

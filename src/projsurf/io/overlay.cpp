@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 #include <tuple>
 #include "projsurf/detection/default/observed_free_space.hpp"
+#include "projsurf/detection/method_names.hpp"
 
 #include "projsurf/io/limits.hpp"
 #include "projsurf/types/formatted.hpp"
@@ -268,8 +269,7 @@ std::vector<std::string> captionLines(const Detection &det, const DetectorConfig
         lines.emplace_back(line);
     }
     std::snprintf(line, sizeof line, "surface check: %d outliers / %d points; method %s; %.1f ms",
-                  det.surface_check.outliers, det.surface_check.points,
-                  config.method == Method::Paper ? "paper" : "default",
+                  det.surface_check.outliers, det.surface_check.points, methodName(config.method),
                   det.timing_ms.count("total") ? det.timing_ms.at("total") : 0.0);
     lines.emplace_back(line);
     return lines;

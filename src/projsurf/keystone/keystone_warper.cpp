@@ -313,14 +313,20 @@ KeystoneWarper::KeystoneWarper(const Keystone &keystone, bool plan_all) : keysto
 
 KeystoneWarper::KeystoneWarper(const Keystone &keystone) : KeystoneWarper(keystone, true) {}
 
-void KeystoneWarper::planRow(int y) {
-    const int W = keystone_.framebuffer.width;
-    const int w = source_.width, h = source_.height;
-    int x_first = 0, x_last = W - 1;
-    if (bounded_) {
-        if (y < quad_y_min_ - 2 || y > quad_y_max_ + 2) return;
-        const double yc = std::clamp(static_cast<double>(y), quad_y_min_, quad_y_max_);
-        const double *qx = quad_x_, *qy = quad_y_;
+/// One framebuffer row being planned: the columns [x_first, x_last] it visits and their source
+/// positions X, Y (1/32 px), against the size of the picture sampled.
+struct KeystoneWarper::RowPlanner {
+    KeystoneWarper &k;
+    int y, x_first, x_last;
+    const int *X, *Y;
+    int w, h;
+
+    /// Narrows the columns to where the row crosses the quad (2 px margin); false when it
+    /// misses the quad.
+    bool cropToQuad() {
+        if (y < k.quad_y_min_ - 2 || y > k.quad_y_max_ + 2) return false;
+        const double yc = std::clamp(static_cast<double>(y), k.quad_y_min_, k.quad_y_max_);
+        const double *qx = k.quad_x_, *qy = k.quad_y_;
         double xa = HUGE_VAL, xb = -HUGE_VAL;
         for (int i = 0; i < 4; ++i) {
             const int j = (i + 1) % 4;
@@ -330,34 +336,33 @@ void KeystoneWarper::planRow(int y) {
             xa = std::min({xa, x, x2});
             xb = std::max({xb, x, x2});
         }
-        if (!(xa <= xb)) return;
+        if (!(xa <= xb)) return false;
+        const int W = k.keystone_.framebuffer.width;
         x_first = static_cast<int>(std::clamp(std::floor(xa) - 2.0, 0.0, W - 1.0));
         x_last = static_cast<int>(std::clamp(std::ceil(xb) + 2.0, 0.0, W - 1.0));
+        return true;
     }
-    const int n = x_last - x_first + 1;
-    const int *X = row_x_.data(), *Y = row_y_.data();
-    rowPositions(inverse_, y, x_first, n, row_x_.data(), row_y_.data());
     // Lit: the bilinear footprint touches the picture (top-left neighbour in [-1, w-1]).
-    // Fast: all four neighbours inside (top-left in [0, w-2] x [0, h-2]).
-    auto lit = [&](int i) {
+    bool lit(int i) const {
         const int sx = X[i] >> kBits, sy = Y[i] >> kBits;  // arithmetic shift: floor
         return sx >= -1 && sx <= w - 1 && sy >= -1 && sy <= h - 1;
-    };
-    auto fast = [&](int i) {
+    }
+    // Fast: all four neighbours inside (top-left in [0, w-2] x [0, h-2]).
+    bool fast(int i) const {
         const int sx = X[i] >> kBits, sy = Y[i] >> kBits;
         return sx >= 0 && sx <= w - 2 && sy >= 0 && sy <= h - 2;
-    };
-    auto addSlow = [&](int i) {
-        slow_.push_back({y, x_first + i, X[i] >> kBits, Y[i] >> kBits, static_cast<std::uint8_t>(X[i] & (kSteps - 1)),
-                         static_cast<std::uint8_t>(Y[i] & (kSteps - 1))});
-    };
-    // Fast pixels [begin, end) as one run; false (and nothing added) if one is not fast.
-    auto addRun = [&](int begin, int end) {
-        const std::size_t at = fast_idx_.size();
-        fast_idx_.resize(at + (end - begin));
-        fast_w_.resize(at + (end - begin));
-        std::int32_t *idx = fast_idx_.data() + at;
-        std::uint32_t *wts = fast_w_.data() + at;
+    }
+    void addSlow(int i) {
+        k.slow_.push_back({y, x_first + i, X[i] >> kBits, Y[i] >> kBits, static_cast<std::uint8_t>(X[i] & (kSteps - 1)),
+                           static_cast<std::uint8_t>(Y[i] & (kSteps - 1))});
+    }
+    /// Fast pixels [begin, end) as one run; false (and nothing added) if one is not fast.
+    bool addRun(int begin, int end) {
+        const std::size_t at = k.fast_idx_.size();
+        k.fast_idx_.resize(at + (end - begin));
+        k.fast_w_.resize(at + (end - begin));
+        std::int32_t *idx = k.fast_idx_.data() + at;
+        std::uint32_t *wts = k.fast_w_.data() + at;
         unsigned outside = 0;
         for (int i = begin; i < end; ++i) {
             const int sx = X[i] >> kBits, sy = Y[i] >> kBits;
@@ -367,30 +372,16 @@ void KeystoneWarper::planRow(int y) {
             wts[i - begin] = packWeights(X[i] & (kSteps - 1), Y[i] & (kSteps - 1));
         }
         if (outside) {
-            fast_idx_.resize(at);
-            fast_w_.resize(at);
+            k.fast_idx_.resize(at);
+            k.fast_w_.resize(at);
             return false;
         }
-        runs_.push_back({y, x_first + begin, end - begin, static_cast<int>(at)});
+        k.runs_.push_back({y, x_first + begin, end - begin, static_cast<int>(at)});
         return true;
-    };
-    // The lit span from both ends, then the fast pixels inside it from both ends.
-    int lit_first = 0, lit_last = n - 1;
-    while (lit_first < n && !lit(lit_first)) ++lit_first;
-    if (lit_first == n) return;
-    while (!lit(lit_last)) --lit_last;
-    span_begin_[y] = x_first + lit_first;
-    span_end_[y] = x_first + lit_last + 1;
-    int fast_first = lit_first, fast_last = lit_last;
-    while (fast_first <= lit_last && !fast(fast_first)) ++fast_first;
-    while (fast_last >= fast_first && !fast(fast_last)) --fast_last;
-    if (fast_first > fast_last || addRun(fast_first, fast_last + 1)) {
-        // The usual row: edge pixels, one run of fast ones, edge pixels.
-        for (int i = lit_first; i < fast_first; ++i) addSlow(i);
-        for (int i = std::max(fast_first, fast_last + 1); i <= lit_last; ++i) addSlow(i);
-    } else {
-        // Fast pixels in several runs (not expected: the positions are monotonic along a
-        // row); everything else in the lit span on the slow path, black where unlit.
+    }
+    /// Fast pixels in several runs (not expected: the positions are monotonic along a row);
+    /// everything else in the lit span [lit_first, lit_last] on the slow path, black where unlit.
+    void addRuns(int lit_first, int lit_last) {
         int run_start = -1;
         for (int i = lit_first; i <= lit_last + 1; ++i) {
             const bool in_run = i <= lit_last && fast(i);
@@ -401,6 +392,31 @@ void KeystoneWarper::planRow(int y) {
             }
             if (!in_run && i <= lit_last) addSlow(i);
         }
+    }
+};
+
+void KeystoneWarper::planRow(int y) {
+    const int W = keystone_.framebuffer.width;
+    RowPlanner row{*this, y, 0, W - 1, row_x_.data(), row_y_.data(), source_.width, source_.height};
+    if (bounded_ && !row.cropToQuad()) return;
+    const int n = row.x_last - row.x_first + 1;
+    rowPositions(inverse_, y, row.x_first, n, row_x_.data(), row_y_.data());
+    // The lit span from both ends, then the fast pixels inside it from both ends.
+    int lit_first = 0, lit_last = n - 1;
+    while (lit_first < n && !row.lit(lit_first)) ++lit_first;
+    if (lit_first == n) return;
+    while (!row.lit(lit_last)) --lit_last;
+    span_begin_[y] = row.x_first + lit_first;
+    span_end_[y] = row.x_first + lit_last + 1;
+    int fast_first = lit_first, fast_last = lit_last;
+    while (fast_first <= lit_last && !row.fast(fast_first)) ++fast_first;
+    while (fast_last >= fast_first && !row.fast(fast_last)) --fast_last;
+    if (fast_first > fast_last || row.addRun(fast_first, fast_last + 1)) {
+        // The usual row: edge pixels, one run of fast ones, edge pixels.
+        for (int i = lit_first; i < fast_first; ++i) row.addSlow(i);
+        for (int i = std::max(fast_first, fast_last + 1); i <= lit_last; ++i) row.addSlow(i);
+    } else {
+        row.addRuns(lit_first, lit_last);
     }
 }
 

@@ -83,6 +83,7 @@ private:
 
     KeystoneWarper(const Keystone &keystone, bool plan_all);
     void planRow(int y);  ///< appends row y's span, run and edge pixels
+    struct RowPlanner;    ///< one row being planned (keystone_warper.cpp)
     /// Checks the picture, reduces it or makes it continuous if needed, (re)allocates the
     /// framebuffer; returns what to sample.
     const cv::Mat &prepare(const cv::Mat &picture, cv::Mat &framebuffer);

@@ -34,10 +34,10 @@ struct D435Model {
         75.0;  ///< deg, no reading beyond this ray-normal angle (our choice: stereo matching fails)
     /// m, total RMS depth error at 2 m (0.65 % of depth; Intel's <= 2 % is a bound), growing
     /// with z^2: set so that the median plane RMS of 24 px windows meets the D435 frame in
-    /// ../shared/data/real per depth band (tests/test_sensor_models.cpp).
+    /// ../shared/data/real per depth band (tests/sim/test_sensor_models.cpp).
     double rms_at_2m = 0.013;
     // The split of that error and the size of the other effects: our choices, with the
-    // shares set so that the bedroom frame's local noise is met (tests/test_sensor_models.cpp).
+    // shares set so that the bedroom frame's local noise is met (tests/sim/test_sensor_models.cpp).
     double share_correlated = 0.45;  ///< variance share of the per-frame correlated field
     double share_unit = 0.45;        ///< variance share of the per-unit smooth field
     /// The rest (1 - the two shares) is independent per pixel.

@@ -200,46 +200,47 @@ void refineUnfit(cv::Mat unfit, const cv::Mat &contrast, double cell, const Suit
     }
 }
 
-}  // namespace
-
-void cellSuitability(const PointGrid &grid, const cv::Rect &box,
-                     const std::vector<std::array<std::uint8_t, 3>> &colours, const Plane &plane,
-                     const PlaneFrame &frame, const RasterFrame &raster, const DepthTolerance &tolerance,
-                     const WallShape &shape, const SuitabilityOptions &opt, CellSuitability &out) {
-    out.rows = out.cols = 0;
-    if (raster.rows <= 0 || raster.cols <= 0 || colours.empty()) return;
-    // The wall is judged `context` beyond the raster on every side, so that a thing reaching
-    // into the raster is judged with the rest of it; out holds views of the raster's part.
-    const int margin = std::max(0, static_cast<int>(std::lround(opt.context / raster.cell)));
+/// The raster widened by `margin` cells on every side.
+RasterFrame widened(const RasterFrame &raster, int margin) {
     RasterFrame judged = raster;
     judged.top_left += Eigen::Vector2d(-margin * raster.cell, margin * raster.cell);
     judged.cols += 2 * margin;
     judged.rows += 2 * margin;
-    const int rows = judged.rows, cols = judged.cols;
-    std::vector<ColourSums> &sums = out.sums;
-    sums.assign(static_cast<std::size_t>(rows) * cols, ColourSums{});
-    // 1. Each wall sample's colour, summed in the cell under its foot. Float arithmetic, as in
-    // observePlane: raster column q . R + col0, row q . U + row0.
-    const Eigen::Vector3d R = frame.right / raster.cell, U = -frame.up / raster.cell;
-    const FootCells f{static_cast<float>(R.x()),
-                      static_cast<float>(R.y()),
-                      static_cast<float>(R.z()),
-                      static_cast<float>(U.x()),
-                      static_cast<float>(U.y()),
-                      static_cast<float>(U.z()),
-                      static_cast<float>(plane.normal.x()),
-                      static_cast<float>(plane.normal.y()),
-                      static_cast<float>(plane.normal.z()),
-                      static_cast<float>(plane.d),
-                      static_cast<float>(-frame.origin.dot(R) - judged.top_left.x() / raster.cell),
-                      static_cast<float>(-frame.origin.dot(U) + judged.top_left.y() / raster.cell),
-                      static_cast<float>(cols),
-                      static_cast<float>(rows),
-                      static_cast<float>(tolerance.sigmas * tolerance.noise_k),
-                      static_cast<float>(tolerance.min_band),
-                      static_cast<float>(tolerance.max_band),
-                      cols,
-                      RasterShape(shape, judged)};
+    return judged;
+}
+
+/// Where a wall sample's foot falls in `judged`, in float, as in observePlane: raster column
+/// q . R + col0, row q . U + row0.
+FootCells footCellsOf(const Plane &plane, const PlaneFrame &frame, const RasterFrame &judged,
+                      const DepthTolerance &tolerance, const WallShape &shape) {
+    const double cell = judged.cell;
+    const Eigen::Vector3d R = frame.right / cell, U = -frame.up / cell;
+    return FootCells{static_cast<float>(R.x()),
+                     static_cast<float>(R.y()),
+                     static_cast<float>(R.z()),
+                     static_cast<float>(U.x()),
+                     static_cast<float>(U.y()),
+                     static_cast<float>(U.z()),
+                     static_cast<float>(plane.normal.x()),
+                     static_cast<float>(plane.normal.y()),
+                     static_cast<float>(plane.normal.z()),
+                     static_cast<float>(plane.d),
+                     static_cast<float>(-frame.origin.dot(R) - judged.top_left.x() / cell),
+                     static_cast<float>(-frame.origin.dot(U) + judged.top_left.y() / cell),
+                     static_cast<float>(judged.cols),
+                     static_cast<float>(judged.rows),
+                     static_cast<float>(tolerance.sigmas * tolerance.noise_k),
+                     static_cast<float>(tolerance.min_band),
+                     static_cast<float>(tolerance.max_band),
+                     judged.cols,
+                     RasterShape(shape, judged)};
+}
+
+/// Each wall sample's colour (the grid rows of `box`, every opt.row_step-th) summed in the
+/// cell under its foot; returns the bin (0 ... 255) of the samples' median luminance, -1 when
+/// no sample fell on the raster.
+int sumColours(const PointGrid &grid, const cv::Rect &box, const std::vector<std::array<std::uint8_t, 3>> &colours,
+               const FootCells &f, const SuitabilityOptions &opt, std::vector<ColourSums> &sums) {
     const int glare = static_cast<int>(std::ceil(opt.glare_level * 255.0));
     std::vector<int> histogram(256, 0);
     const cv::Rect area = box & cv::Rect(0, 0, grid.cols, grid.rows);
@@ -263,14 +264,51 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
             ++histogram[std::min(255, luma)];
         }
     }
-    const int median = medianBin(histogram.data(), static_cast<int>(histogram.size()));
-    if (median < 0) return;
-    out.median_luminance = median / 255.0;
+    return medianBin(histogram.data(), static_cast<int>(histogram.size()));
+}
 
-    // 2. Window sums about each cell, and the verdicts: texture and glare over the window,
-    // tone (darkness, saturation) over the smaller tone window, so that a dark thing's edge
-    // is found to within a cell.
-    auto oddCells = [&](double metres) { return std::max(1, static_cast<int>(std::lround(metres / raster.cell)) | 1); };
+/// What a cell's sums are judged against (luminance in 0 ... 255).
+struct VerdictLimits {
+    float max_glare, dark, max_chroma, max_contrast, min_samples, min_tone;
+};
+
+VerdictLimits verdictLimits(const SuitabilityOptions &opt, double median_luminance) {
+    VerdictLimits v;
+    // A wall that is itself at the glare level is the camera's exposure clipping it, not glare.
+    v.max_glare = median_luminance < opt.glare_level * opt.glare_wall_share ? static_cast<float>(opt.max_glare_share)
+                                                                            : std::numeric_limits<float>::infinity();
+    v.dark = static_cast<float>(std::max(opt.dark_min, opt.dark_relative * median_luminance) * 255.0);
+    v.max_chroma = static_cast<float>(opt.max_chroma * 255.0);
+    v.max_contrast = static_cast<float>(opt.max_contrast);
+    v.min_samples = static_cast<float>(opt.min_samples);
+    v.min_tone = static_cast<float>(opt.min_tone_samples);
+    return v;
+}
+
+/// A cell's verdict from its window sums `s` (window contrast `contrast`) and its `tone` sums.
+Unfit verdict(const ColourSums &s, const ColourSums &tone, float contrast, const VerdictLimits &v) {
+    if (s.glare > v.max_glare * s.samples) return Unfit::Glare;
+    if (tone.luminance < v.dark * tone.samples) return Unfit::Dark;
+    if (contrast > v.max_contrast) return Unfit::Textured;
+    if (tone.chroma > v.max_chroma * tone.samples) return Unfit::Saturated;
+    return Unfit::None;
+}
+
+constexpr int kTextureBins = 200;  // of window contrast, 0 ... 1
+
+/// What the first verdicts leave for refinement: the box of the unfit cells (empty when none)
+/// and the histogram of window contrast over the cells with samples.
+struct FirstVerdicts {
+    cv::Rect unfit_box;
+    std::array<int, kTextureBins> texture_histogram{};
+};
+
+/// Window sums about each cell of the rows x cols raster (sums in out.sums), and the verdicts
+/// into out.judged_contrast and out.judged_unfit: texture and glare over the window, tone
+/// (darkness, saturation) over the smaller tone window, so that a dark thing's edge is found to
+/// within a cell. `cell` in m.
+FirstVerdicts judgeCells(CellSuitability &out, int rows, int cols, double cell, const SuitabilityOptions &opt) {
+    auto oddCells = [&](double metres) { return std::max(1, static_cast<int>(std::lround(metres / cell)) | 1); };
     RunningWindow window = startWindow(out.sums, rows, cols, oddCells(opt.window), out.window_rows);
     RunningWindow tone_window = startWindow(out.sums, rows, cols, oddCells(opt.tone_window), out.tone_rows);
     cv::Mat &contrast_all = out.judged_contrast, &unfit_all = out.judged_unfit;
@@ -278,16 +316,8 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
     contrast_all.setTo(0);
     unfit_all.create(rows, cols, CV_8U);
     unfit_all.setTo(0);
-    // A wall that is itself at the glare level is the camera's exposure clipping it, not glare.
-    const float max_glare = out.median_luminance < opt.glare_level * opt.glare_wall_share
-                                ? static_cast<float>(opt.max_glare_share)
-                                : std::numeric_limits<float>::infinity();
-    const float dark = static_cast<float>(std::max(opt.dark_min, opt.dark_relative * out.median_luminance) * 255.0);
-    const float max_chroma = static_cast<float>(opt.max_chroma * 255.0),
-                max_contrast = static_cast<float>(opt.max_contrast), min_samples = static_cast<float>(opt.min_samples),
-                min_tone = static_cast<float>(opt.min_tone_samples);
-    constexpr int kTextureBins = 200;  // of window contrast, 0 ... 1
-    std::array<int, kTextureBins> texture_histogram{};
+    const VerdictLimits limits = verdictLimits(opt, out.median_luminance);
+    FirstVerdicts first;
     int r0 = rows, r1 = -1, c0 = cols, c1 = -1;  // the unfit cells' box
     for (int r = 0; r < rows; ++r) {
         const ColourSums *w = windowRow(window, r), *t = windowRow(tone_window, r);
@@ -295,43 +325,60 @@ void cellSuitability(const PointGrid &grid, const cv::Rect &box,
         uchar *unfit = unfit_all.ptr<uchar>(r);
         for (int c = 0; c < cols; ++c) {
             const ColourSums &s = w[c];
-            if (s.samples < min_samples) continue;
+            if (s.samples < limits.min_samples) continue;
             const float mean = s.luminance / s.samples;
             const float var = std::max(0.0f, s.luminance_sq / s.samples - mean * mean);
             contrast[c] = std::sqrt(var) / std::max(mean, 8.0f);  // Weber-like; near black: its floor
-            ++texture_histogram[std::min(kTextureBins - 1, static_cast<int>(contrast[c] * kTextureBins))];
+            ++first.texture_histogram[std::min(kTextureBins - 1, static_cast<int>(contrast[c] * kTextureBins))];
             // Tone over the tone window when it has the samples, else over the window.
-            const ColourSums &tone = t[c].samples >= min_tone ? t[c] : s;
-            Unfit why = Unfit::None;
-            if (s.glare > max_glare * s.samples)
-                why = Unfit::Glare;
-            else if (tone.luminance < dark * tone.samples)
-                why = Unfit::Dark;
-            else if (contrast[c] > max_contrast)
-                why = Unfit::Textured;
-            else if (tone.chroma > max_chroma * tone.samples)
-                why = Unfit::Saturated;
+            const Unfit why = verdict(s, t[c].samples >= limits.min_tone ? t[c] : s, contrast[c], limits);
             unfit[c] = static_cast<uchar>(why);
             if (why != Unfit::None)
                 r0 = std::min(r0, r), r1 = std::max(r1, r), c0 = std::min(c0, c), c1 = std::max(c1, c);
         }
     }
-    // The rest looks at the unfit cells only: their box, with room for texture to grow.
-    if (r1 >= 0) {
+    if (r1 >= 0) first.unfit_box = cv::Rect(c0, r0, c1 - c0 + 1, r1 - r0 + 1);
+    return first;
+}
+
+}  // namespace
+
+void cellSuitability(const PointGrid &grid, const cv::Rect &box,
+                     const std::vector<std::array<std::uint8_t, 3>> &colours, const Plane &plane,
+                     const PlaneFrame &frame, const RasterFrame &raster, const DepthTolerance &tolerance,
+                     const WallShape &shape, const SuitabilityOptions &opt, CellSuitability &out) {
+    out.rows = out.cols = 0;
+    if (raster.rows <= 0 || raster.cols <= 0 || colours.empty()) return;
+    // The wall is judged `context` beyond the raster on every side, so that a thing reaching
+    // into the raster is judged with the rest of it; out holds views of the raster's part.
+    const int margin = std::max(0, static_cast<int>(std::lround(opt.context / raster.cell)));
+    const RasterFrame judged = widened(raster, margin);
+    const int rows = judged.rows, cols = judged.cols;
+    out.sums.assign(static_cast<std::size_t>(rows) * cols, ColourSums{});
+    // 1. Each wall sample's colour, summed in the cell under its foot.
+    const int median =
+        sumColours(grid, box, colours, footCellsOf(plane, frame, judged, tolerance, shape), opt, out.sums);
+    if (median < 0) return;
+    out.median_luminance = median / 255.0;
+    // 2. Window sums about each cell, and the verdicts.
+    const FirstVerdicts first = judgeCells(out, rows, cols, raster.cell, opt);
+    // 3. The rest looks at the unfit cells only: their box, with room for texture to grow.
+    if (!first.unfit_box.empty()) {
         const int ring = 1 + std::max(0, static_cast<int>(std::lround(opt.texture_growth / raster.cell)));
-        const cv::Rect box =
-            cv::Rect(c0 - ring, r0 - ring, c1 - c0 + 1 + 2 * ring, r1 - r0 + 1 + 2 * ring) & cv::Rect(0, 0, cols, rows);
+        const cv::Rect &u = first.unfit_box;
+        const cv::Rect refined =
+            cv::Rect(u.x - ring, u.y - ring, u.width + 2 * ring, u.height + 2 * ring) & cv::Rect(0, 0, cols, rows);
         // The wall's own texture: its median window contrast.
-        const double wall_texture = (medianBin(texture_histogram.data(), kTextureBins) + 0.5) / kTextureBins;
-        refineUnfit(unfit_all(box), contrast_all(box), raster.cell, opt, wall_texture);
+        const double wall_texture = (medianBin(first.texture_histogram.data(), kTextureBins) + 0.5) / kTextureBins;
+        refineUnfit(out.judged_unfit(refined), out.judged_contrast(refined), raster.cell, opt, wall_texture);
     }
     const cv::Rect inner(margin, margin, raster.cols, raster.rows);
     out.rows = raster.rows;
     out.cols = raster.cols;
     out.margin = margin;
     out.stride = cols;
-    out.contrast = contrast_all(inner);
-    out.unfit = unfit_all(inner);
+    out.contrast = out.judged_contrast(inner);
+    out.unfit = out.judged_unfit(inner);
 }
 
 RegionSuitability regionSuitability(const CellSuitability &s, const RasterFrame &raster, const Eigen::Vector2d &lo,

@@ -1,6 +1,6 @@
 #include "projsurf/detection/default/plane_observation.hpp"
-#include "projsurf/types/clamp_to_int.hpp"
 #include "projsurf/detection/raster_shape.hpp"
+#include "projsurf/types/clamp_to_int.hpp"
 #include "projsurf/types/target_clones.hpp"
 
 #include <algorithm>
@@ -10,32 +10,51 @@
 namespace projsurf {
 namespace {
 
+/// What the per-point pass reads besides the points, in float and as plain scalars so that its
+/// loop vectorises. Raster column of a point q of the plane: q . R + col0; row: q . U + row0.
+struct RowConstants {
+    float nx, ny, nz, d;           ///< the plane
+    float rx, ry, rz, ux, uy, uz;  ///< R and U
+    float col0, row0;
+    float proj_h, o_col, o_row;  ///< the projector lens: its height above the plane, its raster position (unclipped)
+    float band_k, band_min, band_max, obstacle_bands, obstacle_min;  ///< the tolerance
+    float cols, rows;
+    std::int32_t ncols, cells;
+};
+
+// Cloned as observeRows is, so that both compute with the same instructions (FMA or not).
 PROJSURF_CLONES
-void observeRows(const PointGrid &grid, const cv::Rect &area, const Plane &plane, const PlaneFrame &frame,
-                 const RasterFrame &raster, const Eigen::Vector3d &projector_origin, const DepthTolerance &tolerance,
-                 const RasterShape &shape, const std::uint8_t *exclude, std::int32_t *bins, std::int32_t *seen,
-                 std::int32_t *off_counts, std::int32_t *near_counts, float *offsets, int &support_points) {
-    // Everything in float and as plain scalars, so that the per-point loop vectorises.
-    // Raster column of a point q of the plane: q . R + cr; row: q . U + cu.
+RowConstants rowConstants(const Plane &plane, const PlaneFrame &frame, const RasterFrame &raster,
+                          const Eigen::Vector3d &projector_origin, const DepthTolerance &tolerance) {
     const Eigen::Vector3d R = frame.right / raster.cell, U = -frame.up / raster.cell;
     const double cr = -frame.origin.dot(R) - raster.top_left.x() / raster.cell;
     const double cu = -frame.origin.dot(U) + raster.top_left.y() / raster.cell;
-    const float nx = static_cast<float>(plane.normal.x()), ny = static_cast<float>(plane.normal.y()),
-                nz = static_cast<float>(plane.normal.z()), d = static_cast<float>(plane.d);
-    const float rx = static_cast<float>(R.x()), ry = static_cast<float>(R.y()), rz = static_cast<float>(R.z());
-    const float ux = static_cast<float>(U.x()), uy = static_cast<float>(U.y()), uz = static_cast<float>(U.z());
-    const float col0 = static_cast<float>(cr), row0 = static_cast<float>(cu);
-    // The projector lens: its height above the plane and its raster position (unclipped).
-    const float proj_h = static_cast<float>(plane.signedDistance(projector_origin));
-    const float o_col = static_cast<float>(projector_origin.dot(R)),
-                o_row = static_cast<float>(projector_origin.dot(U));
-    const float band_k = static_cast<float>(tolerance.sigmas * tolerance.noise_k),
-                band_min = static_cast<float>(tolerance.min_band), band_max = static_cast<float>(tolerance.max_band),
-                obstacle_bands = static_cast<float>(tolerance.obstacle_bands),
-                obstacle_min = static_cast<float>(tolerance.min_obstacle);
-    const float cols = static_cast<float>(raster.cols), rows = static_cast<float>(raster.rows);
-    const std::int32_t ncols = raster.cols, cells = raster.cols * raster.rows;
+    RowConstants k;
+    k.nx = static_cast<float>(plane.normal.x()), k.ny = static_cast<float>(plane.normal.y());
+    k.nz = static_cast<float>(plane.normal.z()), k.d = static_cast<float>(plane.d);
+    k.rx = static_cast<float>(R.x()), k.ry = static_cast<float>(R.y()), k.rz = static_cast<float>(R.z());
+    k.ux = static_cast<float>(U.x()), k.uy = static_cast<float>(U.y()), k.uz = static_cast<float>(U.z());
+    k.col0 = static_cast<float>(cr), k.row0 = static_cast<float>(cu);
+    k.proj_h = static_cast<float>(plane.signedDistance(projector_origin));
+    k.o_col = static_cast<float>(projector_origin.dot(R)), k.o_row = static_cast<float>(projector_origin.dot(U));
+    k.band_k = static_cast<float>(tolerance.sigmas * tolerance.noise_k);
+    k.band_min = static_cast<float>(tolerance.min_band), k.band_max = static_cast<float>(tolerance.max_band);
+    k.obstacle_bands = static_cast<float>(tolerance.obstacle_bands);
+    k.obstacle_min = static_cast<float>(tolerance.min_obstacle);
+    k.cols = static_cast<float>(raster.cols), k.rows = static_cast<float>(raster.rows);
+    k.ncols = raster.cols, k.cells = raster.cols * raster.rows;
+    return k;
+}
 
+PROJSURF_CLONES
+void observeRows(const PointGrid &grid, const cv::Rect &area, const RowConstants k, const RasterShape &shape,
+                 const std::uint8_t *exclude, std::int32_t *bins, std::int32_t *seen, std::int32_t *off_counts,
+                 std::int32_t *near_counts, float *offsets, int &support_points) {
+    const float nx = k.nx, ny = k.ny, nz = k.nz, d = k.d, rx = k.rx, ry = k.ry, rz = k.rz, ux = k.ux, uy = k.uy,
+                uz = k.uz, col0 = k.col0, row0 = k.row0, proj_h = k.proj_h, o_col = k.o_col, o_row = k.o_row,
+                band_k = k.band_k, band_min = k.band_min, band_max = k.band_max, obstacle_bands = k.obstacle_bands,
+                obstacle_min = k.obstacle_min, cols = k.cols, rows = k.rows;
+    const std::int32_t ncols = k.ncols, cells = k.cells;
     std::vector<std::int32_t> bin(area.width), ray(area.width), off(area.width), foot(area.width);
     std::vector<float> offset(area.width);
     std::int32_t on_plane = 0;
@@ -127,7 +146,7 @@ void observePlane(const PointGrid &grid, const cv::Rect &box, const Plane &plane
     const bool use = exclude && exclude->size() == grid.x.size();
     thread_local std::vector<std::uint8_t> zeros;
     if (!use && zeros.size() < grid.x.size()) zeros.assign(grid.x.size(), 0);
-    observeRows(grid, area, plane, frame, raster, projector_origin, tolerance, RasterShape(shape, raster),
+    observeRows(grid, area, rowConstants(plane, frame, raster, projector_origin, tolerance), RasterShape(shape, raster),
                 use ? exclude->data() : zeros.data(), bins, rays, rays + (rows + 1) * row_cells, near,
                 out.offsets.data(), out.support_points);
 }
