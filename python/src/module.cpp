@@ -11,11 +11,13 @@
 #include <optional>
 
 #include "argument_types.hpp"
+#include "bag_function.hpp"
 #include "detection_dict.hpp"
 #include "detector_options.hpp"
 #include "image_array.hpp"
 #include "plan_function.hpp"
 #include "points_array.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/frontend/registered_colour.hpp"
@@ -29,7 +31,6 @@
 #include "projsurf/keystone/keystone.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/lens_model_check.hpp"
-#include "projsurf/detector/detector.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -406,6 +407,7 @@ PYBIND11_MODULE(projsurf, m) {
         "read in place. detection: the dict of detect(), or (4, 3) corners. Raises InputError.");
 
     addPlanFunction(m);
+    addBagFunction(m);
 
     m.attr("__version__") = PROJSURF_VERSION;
 }
