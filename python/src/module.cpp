@@ -17,6 +17,7 @@
 #include "image_array.hpp"
 #include "plan_function.hpp"
 #include "points_array.hpp"
+#include "print_config_function.hpp"
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
@@ -250,12 +251,17 @@ PYBIND11_MODULE(projsurf, m) {
     m.def(
         "read_depth_cloud",
         [](const py::object &depth_png, const py::object &camera_yaml) {
-            return arrayFromCloud(
-                readDepthCloud(pathArgument(depth_png, "depth_png"), pathArgument(camera_yaml, "camera_yaml")));
+            const std::string camera = pathArgument(camera_yaml, "camera_yaml");
+            std::vector<std::string> warnings;  // unknown keys (a typo), as `detect --camera` warns
+            readCamera(camera, &warnings);
+            Cloud cloud = readDepthCloud(pathArgument(depth_png, "depth_png"), camera);
+            warnAll(warnings);
+            return arrayFromCloud(std::move(cloud));
         },
         "depth_png"_a, "camera_yaml"_a,
         "A 16-bit depth PNG and the camera YAML (projsurf's camera: block or a ROS camera_info YAML) as an\n"
-        "organized (H, W, 3) float32 cloud. Raises InputError.");
+        "organized (H, W, 3) float32 cloud. Unknown keys in the camera YAML (a typo) are a UserWarning, as\n"
+        "`projsurf detect --camera` warns. Raises InputError.");
 
     m.def(
         "depth_to_cloud",
@@ -407,6 +413,7 @@ PYBIND11_MODULE(projsurf, m) {
         "read in place. detection: the dict of detect(), or (4, 3) corners. Raises InputError.");
 
     addPlanFunction(m);
+    addPrintConfigFunction(m);
     addBagFunction(m);
 
     m.attr("__version__") = PROJSURF_VERSION;
