@@ -8,7 +8,8 @@ usage: explain_real_frames.py PROJSURF_CLI SOURCE_DIR SHARED_DIR [--table]
 Each frame runs with the example calibration (examples/calib/example_calib.yaml), with --rgb
 where the frame has registered colour (rgb.png). It passes when the detection either found a
 picture and exactly one candidate is `chosen`, or found none and says why in `reason`; and
-when every candidate has a verdict from the documented list and a reason in words. On
+when every candidate has a verdict from the documented list and a reason in words (a
+rectangle as large as the chosen one is not called smaller). On
 ufsec_livingroom_sofa_1 with colour, colour refuses part of the chosen wall as too dark (the
 larger area above the sofa): the chosen candidate must say so. --table prints each
 candidate's verdict and colour shares (what the colour rule does on the real frames).
@@ -62,6 +63,12 @@ def problems_of(det, lines):
             found.append("candidate %d: verdict %r is not a documented one" % (k, c.get("verdict")))
         if not (isinstance(c.get("reason"), str) and len(c["reason"].strip()) > 10):
             found.append("candidate %d: no reason in words" % k)
+    if chosen and chosen[0].get("rectangle"):
+        best = chosen[0]["rectangle"]["area_m2"]
+        for k, c in enumerate(candidates, 1):
+            r = c.get("rectangle")
+            if c.get("verdict") == "smaller_rectangle" and r and r["area_m2"] >= best and "smaller" in c["reason"]:
+                found.append("candidate %d: as large as the chosen one, but called smaller" % k)
     said = [l for l in lines if l.startswith("candidate ")]
     if len(said) != len(candidates):
         found.append("%d candidate lines on stdout for %d candidates" % (len(said), len(candidates)))

@@ -1,6 +1,7 @@
 // `--explain`'s words say what colour took from a plane: colour refuses only cells depth left
 // free, so a few of them can move the picture (ufsec_livingroom_sofa_1: the dark top of the
 // sofa's back cost the wall above it), and the reason must say so even when shadows cover more.
+// And a tie is no "smaller rectangle".
 #include <gtest/gtest.h>
 
 #include <string>
@@ -66,4 +67,13 @@ TEST(CandidateColourWords, ColourNamedAsTheBlockerIsNotSaidTwice) {
     EXPECT_TRUE(says(outcomeWords(shadowed, Rectangle{}),
                      "10 % of the beam's cells on it are unfit by their colour: "
                      "too saturated"));
+}
+
+TEST(CandidateColourWords, ARectangleAsLargeAsTheChosenOneLostATieAndIsNotCalledSmaller) {
+    const CandidateOutcome tie = outcome(CandidateVerdict::SmallerRectangle, 0.2, CellState::Dark, 0.0);
+    const std::string words = outcomeWords(tie, tie.rectangle);
+    EXPECT_EQ(words, "a rectangle as large as the chosen one, 0.240 x 0.150 m: a tie keeps the plane looked at first");
+    Rectangle larger = tie.rectangle;
+    larger.width = 0.25;
+    EXPECT_TRUE(says(outcomeWords(tie, larger), "a smaller rectangle, 0.240 x 0.150 m")) << outcomeWords(tie, larger);
 }

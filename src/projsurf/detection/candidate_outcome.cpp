@@ -61,6 +61,10 @@ std::pair<int, double> mainColour(const CandidateOutcome &o) {
     return {best, share};
 }
 
+/// Relative difference below which two rectangles are as large (rectangles grow by whole raster
+/// cells, so two walls often hold the very same size): the later one lost a tie, it is not smaller.
+constexpr double kSameArea = 1e-9;
+
 /// Colour takes only cells that depth left free, so even a few of them can cost the picture
 /// area (the dark top of a sofa's back above which the wall is free): said from 0.5 %.
 constexpr double kColourWorthSaying = 0.005;
@@ -190,6 +194,9 @@ std::string outcomeWords(const CandidateOutcome &o, const Rectangle &chosen) {
                "chosen " + y + " m^2";
     }
     case CandidateVerdict::SmallerRectangle: {
+        if (chosen.area() > 0.0 && o.rectangle.area() >= chosen.area() * (1.0 - kSameArea))
+            return "a rectangle as large as the chosen one, " + size(o.rectangle) +
+                   ": a tie keeps the plane looked at first" + colourClause(o, -1);
         const auto [mine, theirs] = sizes(o.rectangle, o.rectangle.area(), chosen);
         std::string words = chosen.area() > 0.0 ? "a smaller rectangle, " + mine + ", than the chosen " + theirs
                                                 : "held a rectangle, " + mine + ", none was chosen";
