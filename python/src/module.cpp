@@ -21,6 +21,7 @@
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
+#include "projsurf/frontend/rectangle_blanking.hpp"
 #include "projsurf/frontend/registered_colour.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
@@ -30,6 +31,7 @@
 #include "projsurf/io/utf8_text.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/keystone/keystone.hpp"
+#include "projsurf/people/beam_blanking.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/lens_model_check.hpp"
 
@@ -393,24 +395,31 @@ PYBIND11_MODULE(projsurf, m) {
 
     m.def(
         "correct",
-        [](const py::object &image, const py::object &projector, const py::object &detection,
-           const py::object &tolerance_px) {
+        [](const py::object &image, const py::object &projector_arg, const py::object &detection,
+           const py::object &tolerance_px, const py::object &cloud_arg) {
             py::object keep;
             const cv::Mat picture = matFromArray(arrayArgument(image, "image"), "image", keep);
-            const Keystone k =
-                keystoneFor(projectorArgument(projector, "projector"), detection, picture.size(), tolerance_px);
+            const Projector &projector = projectorArgument(projector_arg, "projector");
+            const Keystone k = keystoneFor(projector, detection, picture.size(), tolerance_px);
+            const std::optional<Cloud> cloud =
+                cloud_arg.is_none() ? std::nullopt : std::optional<Cloud>(cloudFromPoints(cloud_arg));
+            const Rectangle rect = rectangleFromDetection(detection);
             cv::Mat framebuffer;
             {
                 py::gil_scoped_release unlocked;
                 framebuffer = warpToFramebuffer(picture, k);
+                if (cloud) applyBlanking(framebuffer, frontend::blankingBefore(projector, rect, *cloud).mask);
             }
             return arrayFromMat(framebuffer);
         },
-        "image"_a, "projector"_a, "detection"_a, "tolerance_px"_a = kKeystoneTolerancePx,
+        "image"_a, "projector"_a, "detection"_a, "tolerance_px"_a = kKeystoneTolerancePx, py::kw_only(),
+        "cloud"_a = py::none(),
         "Keystone correction: the projector framebuffer (the calibration's resolution, black around) showing\n"
         "`image` ((H, W) or (H, W, C), uint8, uint16 or float32; channels kept in their order) whole and\n"
         "undistorted in the detected rectangle (letterboxed, never stretched; full lens model). The image is\n"
-        "read in place. detection: the dict of detect(), or (4, 3) corners. Raises InputError.");
+        "read in place. detection: the dict of detect(), or (4, 3) corners. cloud: None, or the current points\n"
+        "(as detect() takes them): the pixels whose rays meet something between the lens and the rectangle's\n"
+        "plane (a person walking in) are black, as `projsurf correct --cloud`. Raises InputError.");
 
     addPlanFunction(m);
     addPrintConfigFunction(m);

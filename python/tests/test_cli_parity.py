@@ -30,9 +30,9 @@ COUNTERPARTS = {
 }
 
 
-def cli_options():
-    """The long options of `projsurf detect --help`, in order."""
-    run = subprocess.run([CLI, "detect", "--help"], capture_output=True, text=True, timeout=60)
+def cli_options(command="detect"):
+    """The long options of `projsurf <command> --help`, in order."""
+    run = subprocess.run([CLI, command, "--help"], capture_output=True, text=True, timeout=60)
     assert run.returncode == 0, run.stderr
     options = re.findall(r"^\s+(?:-\w,)?(--[a-z][a-z0-9-]*)", run.stdout, re.MULTILINE)
     return [o for o in options if o != "--help"]
@@ -145,3 +145,42 @@ def test_read_depth_cloud_warns_of_unknown_camera_keys_as_the_cli_does(tmp_path)
                          capture_output=True, text=True, timeout=120)
     assert run.returncode == 0, run.stderr
     assert f"projsurf: warning: {caught[0].message}" in run.stderr.splitlines()
+
+
+# plan and correct: each option a keyword of plan() / correct() under its name, or this.
+OTHER_COUNTERPARTS = {
+    "plan": {
+        "--cloud": ("read_cloud", None),
+        "--depth": ("read_depth_cloud", "depth_png"),
+        "--camera": ("read_depth_cloud", "camera_yaml"),
+        "--calib": ("read_calibration", None),
+        "--json": ("plan", None),  # the dict it returns
+    },
+    "correct": {
+        "--calib": ("read_calibration", None),
+        "--out": ("write_image", None),  # correct() returns the framebuffer
+        "--json": ("keystone", None),  # the homography and the framebuffer corners
+        "--video": ("correct", None),  # on each frame the caller reads (or keystone() once)
+        "--fps": ("correct", None),  # the caller's video writer keeps its rate
+        "--depth": ("read_depth_cloud", "depth_png"),  # its array is correct()'s cloud
+        "--camera": ("read_depth_cloud", "camera_yaml"),
+    },
+}
+
+
+@pytest.mark.parametrize("command", sorted(OTHER_COUNTERPARTS))
+def test_plan_and_correct_options_have_python_counterparts(command):
+    function = getattr(projsurf, command)
+    keywords = signature_names(function)
+    readme = open(README).read()
+    missing = []
+    for option in cli_options(command):
+        if option in OTHER_COUNTERPARTS[command]:
+            name, argument = OTHER_COUNTERPARTS[command][option]
+            ok = hasattr(projsurf, name) and (argument is None or argument in signature_names(getattr(projsurf, name)))
+        else:
+            ok = option[2:].replace("-", "_") in keywords
+        if not ok:
+            missing.append(option)
+    assert not missing, f"projsurf {command} options without a Python counterpart: {missing}"
+    assert f"`{command}(" in readme
