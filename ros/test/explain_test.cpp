@@ -79,20 +79,10 @@ TEST_F(NodeTest, ExplainPutsEveryCandidateInTheResultOnDemand) {
     const std::string ns = env("PROJSURF_EXPLAIN_NS", "/explain");
     Results results;
     results.open(*nh_, ns + "/projsurf/result");
-    ros::Publisher pub = nh_->advertise<sensor_msgs::PointCloud2>(ns + "/points", 1, true);
-    const std::string service = ns + "/projsurf/detect";
-    ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(60.0))) << service << " never came up";
-    ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0)) << "the node never subscribed to points";
-    pub.publish(
-        ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", ros::Time::now())));
     std_srvs::Trigger call;
-    ASSERT_TRUE(waitFor(
-        [&] {
-            call = std_srvs::Trigger();
-            return ros::service::call(service, call) && call.response.success;
-        },
-        20.0))
-        << call.response.message;
+    ros::Publisher pub;
+    publishRoomAndDetect(*nh_, ns, call, pub);
+    if (HasFatalFailure()) return;
     nlohmann::json result;
     ASSERT_TRUE(results.wait([](const nlohmann::json &j) { return j.value("found", false); }, 20.0, result))
         << "no ~result with a surface after a successful ~detect";
