@@ -95,7 +95,8 @@ double &settingIn(DetectorConfig &c, const std::string &name) {
 }
 
 const char *const kNamedArguments =
-    "points, projector, aspect, gravity, method, hull, seed, min_width, min_area, suitability, colour, config";
+    "points, projector, aspect, gravity, method, hull, seed, min_width, min_area, suitability, colour, config, "
+    "explain, overlay";
 
 /// Puts the keyword settings into `o`; returns the names given.
 std::vector<std::string> applySettings(const py::dict &settings, DetectorOptions &o) {

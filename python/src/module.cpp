@@ -11,13 +11,17 @@
 #include <optional>
 
 #include "argument_types.hpp"
+#include "bag_function.hpp"
 #include "detection_dict.hpp"
 #include "detector_options.hpp"
 #include "image_array.hpp"
 #include "plan_function.hpp"
 #include "points_array.hpp"
+#include "print_config_function.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
+#include "projsurf/frontend/rectangle_blanking.hpp"
 #include "projsurf/frontend/registered_colour.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
@@ -27,9 +31,9 @@
 #include "projsurf/io/utf8_text.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/keystone/keystone.hpp"
+#include "projsurf/people/beam_blanking.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/lens_model_check.hpp"
-#include "projsurf/detector/detector.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -249,12 +253,17 @@ PYBIND11_MODULE(projsurf, m) {
     m.def(
         "read_depth_cloud",
         [](const py::object &depth_png, const py::object &camera_yaml) {
-            return arrayFromCloud(
-                readDepthCloud(pathArgument(depth_png, "depth_png"), pathArgument(camera_yaml, "camera_yaml")));
+            const std::string camera = pathArgument(camera_yaml, "camera_yaml");
+            std::vector<std::string> warnings;  // unknown keys (a typo), as `detect --camera` warns
+            readCamera(camera, &warnings);
+            Cloud cloud = readDepthCloud(pathArgument(depth_png, "depth_png"), camera);
+            warnAll(warnings);
+            return arrayFromCloud(std::move(cloud));
         },
         "depth_png"_a, "camera_yaml"_a,
         "A 16-bit depth PNG and the camera YAML (projsurf's camera: block or a ROS camera_info YAML) as an\n"
-        "organized (H, W, 3) float32 cloud. Raises InputError.");
+        "organized (H, W, 3) float32 cloud. Unknown keys in the camera YAML (a typo) are a UserWarning, as\n"
+        "`projsurf detect --camera` warns. Raises InputError.");
 
     m.def(
         "depth_to_cloud",
@@ -386,26 +395,35 @@ PYBIND11_MODULE(projsurf, m) {
 
     m.def(
         "correct",
-        [](const py::object &image, const py::object &projector, const py::object &detection,
-           const py::object &tolerance_px) {
+        [](const py::object &image, const py::object &projector_arg, const py::object &detection,
+           const py::object &tolerance_px, const py::object &cloud_arg) {
             py::object keep;
             const cv::Mat picture = matFromArray(arrayArgument(image, "image"), "image", keep);
-            const Keystone k =
-                keystoneFor(projectorArgument(projector, "projector"), detection, picture.size(), tolerance_px);
+            const Projector &projector = projectorArgument(projector_arg, "projector");
+            const Keystone k = keystoneFor(projector, detection, picture.size(), tolerance_px);
+            const std::optional<Cloud> cloud =
+                cloud_arg.is_none() ? std::nullopt : std::optional<Cloud>(cloudFromPoints(cloud_arg));
+            const Rectangle rect = rectangleFromDetection(detection);
             cv::Mat framebuffer;
             {
                 py::gil_scoped_release unlocked;
                 framebuffer = warpToFramebuffer(picture, k);
+                if (cloud) applyBlanking(framebuffer, frontend::blankingBefore(projector, rect, *cloud).mask);
             }
             return arrayFromMat(framebuffer);
         },
-        "image"_a, "projector"_a, "detection"_a, "tolerance_px"_a = kKeystoneTolerancePx,
+        "image"_a, "projector"_a, "detection"_a, "tolerance_px"_a = kKeystoneTolerancePx, py::kw_only(),
+        "cloud"_a = py::none(),
         "Keystone correction: the projector framebuffer (the calibration's resolution, black around) showing\n"
         "`image` ((H, W) or (H, W, C), uint8, uint16 or float32; channels kept in their order) whole and\n"
         "undistorted in the detected rectangle (letterboxed, never stretched; full lens model). The image is\n"
-        "read in place. detection: the dict of detect(), or (4, 3) corners. Raises InputError.");
+        "read in place. detection: the dict of detect(), or (4, 3) corners. cloud: None, or the current points\n"
+        "(as detect() takes them): the pixels whose rays meet something between the lens and the rectangle's\n"
+        "plane (a person walking in) are black, as `projsurf correct --cloud`. Raises InputError.");
 
     addPlanFunction(m);
+    addPrintConfigFunction(m);
+    addBagFunction(m);
 
     m.attr("__version__") = PROJSURF_VERSION;
 }

@@ -184,20 +184,11 @@ TEST_F(NodeTest, DetectServiceSaysWhyWhenThereIsNoWall) {
 
 TEST_F(NodeTest, DetectServiceSaysWhenTheLatestCloudWasRejected) {
     const std::string ns = env("PROJSURF_ONESHOT_NS", "/oneshot");
-    ros::Publisher pub = nh_->advertise<sensor_msgs::PointCloud2>(ns + "/points", 1, true);
     const std::string service = ns + "/projsurf/detect";
-    ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(60.0)));
-    ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0));
-    pub.publish(
-        ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", ros::Time::now())));
     std_srvs::Trigger call;
-    ASSERT_TRUE(waitFor(
-        [&] {
-            call = std_srvs::Trigger();
-            return ros::service::call(service, call) && call.response.success;
-        },
-        20.0))
-        << call.response.message;
+    ros::Publisher pub;
+    publishRoomAndDetect(*nh_, ns, call, pub);
+    if (HasFatalFailure()) return;
     // A hostile cloud: its z field is gone (renamed), so it cannot be used.
     sensor_msgs::PointCloud2 bad =
         ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", ros::Time(4242.5)));

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <sensor_msgs/Image.h>
+#include <sensor_msgs/PointCloud2.h>
+#include <std_srvs/Trigger.h>
 
 #include <Eigen/Core>
 #include <array>
@@ -14,6 +16,9 @@
 #include <memory>
 #include <mutex>
 #include <string>
+
+#include "conversions.hpp"
+#include "sim_wall.hpp"
 
 namespace projsurf::node_test {
 
@@ -80,6 +85,25 @@ inline std::array<Eigen::Vector3d, 4> corners(const geometry_msgs::PolygonStampe
 inline bool isBlack(const sensor_msgs::Image &img, int u, int v) {
     const std::uint8_t *p = &img.data[static_cast<std::size_t>(v) * img.step + 3 * u];
     return p[0] == 0 && p[1] == 0 && p[2] == 0;
+}
+
+/// Publishes the simulated room (sim_wall.hpp, the camera at the origin) on `ns`/points and
+/// calls `ns`/projsurf/detect until an answer succeeds (bounded waits); `call` keeps the last.
+inline void publishRoomAndDetect(ros::NodeHandle &nh, const std::string &ns, std_srvs::Trigger &call,
+                                 ros::Publisher &pub) {
+    pub = nh.advertise<sensor_msgs::PointCloud2>(ns + "/points", 1, true);
+    const std::string service = ns + "/projsurf/detect";
+    ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(60.0))) << service << " never came up";
+    ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0)) << "the node never subscribed to points";
+    pub.publish(ros_node::toPointCloud2(sim_test::renderScene(sim_test::cameraPose(0, 0, 0), {}),
+                                        header("camera_optical", ros::Time::now())));
+    ASSERT_TRUE(waitFor(
+        [&] {
+            call = std_srvs::Trigger();
+            return ros::service::call(service, call) && call.response.success;
+        },
+        20.0))
+        << call.response.message;
 }
 
 class NodeTest : public ::testing::Test {

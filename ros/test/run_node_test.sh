@@ -120,6 +120,15 @@ pids+=($!)
     >"$tmp/plain_node.log" 2>&1 &
 pids+=($!)
 
+# ~explain: ~result carries every candidate plane and why it lost, on demand and continuous.
+"$build/projsurf_node" __ns:=/explain __name:=projsurf _calib:="$tmp/calib.yaml" _explain:=true \
+    >"$tmp/explain_node.log" 2>&1 &
+pids+=($!)
+"$build/projsurf_node" __ns:=/explain_continuous __name:=projsurf _calib:="$tmp/calib.yaml" _continuous:=true \
+    _explain:=true >"$tmp/explain_continuous_node.log" 2>&1 &
+pids+=($!)
+
+export PROJSURF_EXPLAIN_NS=/explain PROJSURF_EXPLAIN_CONTINUOUS_NS=/explain_continuous
 export PROJSURF_ONESHOT_NS=/oneshot PROJSURF_MOVING_NS=/moving PROJSURF_STILL_NS=/still
 export PROJSURF_COLOUR_NS=/colour PROJSURF_PLAIN_NS=/plain
 timeout --signal=INT --kill-after=10 240 "$client" --gtest_filter='NodeTest.*:ColourNodeTest.*'

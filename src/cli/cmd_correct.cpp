@@ -12,6 +12,7 @@
 #include "cli/commands.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/frontend/progress.hpp"
+#include "projsurf/frontend/rectangle_blanking.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
@@ -42,23 +43,12 @@ nlohmann::json corners(const Corners2 &c) {
 }
 
 /// The blanking mask for the current cloud (contract "Blanking"), or empty without one.
-struct Blanking {
-    cv::Mat mask;  ///< CV_8U framebuffer size, 255 = blanked; empty = no current cloud
-    int pixels = 0;
-};
+using Blanking = frontend::RectangleBlanking;
 
 Blanking blankingFor(const CorrectOptions &o, const Projector &projector, const DetectionFile &det) {
-    Blanking b;
-    if (o.cloud.empty() && o.depth.empty()) return b;
+    if (o.cloud.empty() && o.depth.empty()) return {};
     const Cloud cloud = o.cloud.empty() ? readDepthCloud(o.depth, o.camera) : readCloud(o.cloud);
-    // The surface the picture was placed on: the plane through the detection's rectangle.
-    const auto &c = det.rectangle.corners;
-    const Eigen::Vector3d normal = (c[1] - c[0]).cross(c[3] - c[0]).normalized();
-    const Plane plane = makePlane(normal, -normal.dot(det.rectangle.center()));
-    BeamBlanker blanker(projector);
-    b.mask = blanker.compute(cloud, plane).clone();
-    b.pixels = blanker.blankedPixels();
-    return b;
+    return frontend::blankingBefore(projector, det.rectangle, cloud);
 }
 
 std::string keystoneJson(const Keystone &k, const std::string &method, const Blanking &blanking) {

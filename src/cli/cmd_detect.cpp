@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "projsurf/detection/gravity.hpp"
 #include "projsurf/frontend/aspect.hpp"
+#include "projsurf/frontend/bag_frames.hpp"
 #include "projsurf/frontend/candidates_json.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/depth_range_check.hpp"
@@ -24,14 +25,11 @@
 #include "projsurf/frontend/method_words.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
 #include "projsurf/frontend/registered_colour.hpp"
-#include "projsurf/frontend/stamp_pairing.hpp"
 #include "projsurf/frontend/suitability_mode.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/overlay.hpp"
-#include "projsurf/io/rosbag_clouds.hpp"
-#include "projsurf/io/rosbag_depth.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace projsurf::cli {
@@ -40,11 +38,10 @@ namespace {
 constexpr double kTiltWarningDeg = 5.0;  ///< deg, a floor this far from level means the camera is not level
 
 struct DetectOptions {
-    std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity, method = "default", hull = "concave",
-                                                                                  bag, topic, info_topic, suitability,
-        config_file;
+    std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity,
+        method = "default", hull = "concave", bag, topic, info_topic, suitability, config_file;
     bool print_config = false, explain = false;
-    DetectorConfig config;  ///< the pipeline flags' values (used where a flag was given)
+    DetectorConfig config;                     ///< the pipeline flags' values (used where a flag was given)
     double min_width = -1.0, min_area = -1.0;  ///< m, m^2; < 0: the method's default (frontend/minimum_size.hpp)
 };
 
@@ -87,101 +84,39 @@ DetectorConfig detectorConfig(const DetectOptions &o, const CLI::App &sub) {
     return cfg;
 }
 
-/// The topic --bag reads: --topic, else the bag's one usable topic (a PointCloud2, or a
-/// sensor_msgs/Image whose name says depth), else an error that lists them.
-BagConnection bagTopic(const DetectOptions &o) {
-    const std::vector<BagConnection> topics = bagTopics(o.bag);
-    std::vector<BagConnection> usable;
-    for (const BagConnection &c : topics) {
-        if (!o.topic.empty() && c.topic == o.topic) return c;
-        if (c.type == "sensor_msgs/PointCloud2" || (c.type == kImageType && c.topic.find("depth") != std::string::npos))
-            usable.push_back(c);
-    }
-    std::string list;
-    for (const BagConnection &c : usable) list += (list.empty() ? "" : ", ") + c.topic + " (" + c.type + ")";
-    if (!o.topic.empty())
-        throw InputError(
-            o.bag, "no topic '" + o.topic + "' in the bag (usable topics: " + (list.empty() ? "none" : list) + ")");
-    if (usable.size() == 1) return usable.front();
-    if (usable.empty())
-        throw InputError(o.bag, "has no sensor_msgs/PointCloud2 topic and no depth sensor_msgs/Image topic");
-    throw InputError(o.bag, "has " + std::to_string(usable.size()) + " usable topics, give one with --topic: " + list);
-}
-
-/// The camera_info topic of a depth topic: --camera-info-topic, else camera_info beside it
-/// (/camera/depth/image_rect -> /camera/depth/camera_info), else the bag's only CameraInfo topic.
-std::string cameraInfoTopic(const DetectOptions &o, const std::string &depth_topic) {
-    if (!o.info_topic.empty()) return o.info_topic;
-    const std::string beside = depth_topic.substr(0, depth_topic.find_last_of('/') + 1) + "camera_info";
-    std::vector<std::string> infos;
-    for (const BagConnection &c : bagTopics(o.bag)) {
-        if (c.type != kCameraInfoType) continue;
-        if (c.topic == beside) return beside;
-        infos.push_back(c.topic);
-    }
-    if (infos.size() == 1) return infos.front();
-    throw InputError(o.bag,
-                     "no camera_info for " + depth_topic + " (looked for " + beside + "; give --camera-info-topic)");
-}
-
-/// --bag: one detection per cloud (or depth image) of the topic, one JSON object per line
-/// (JSON Lines), each with a "bag" key (index, stamp, frame_id, topic). With --json the file
-/// is written once all messages were read (never a partial file); without, lines go to
-/// stdout as they come. A depth image goes with the camera_info of its stamp, as in the node.
+/// --bag: one detection per cloud (or depth image) of the topic (frontend/bag_frames.hpp), one
+/// JSON object per line (JSON Lines), each with a "bag" key (index, stamp, frame_id, topic).
+/// With --json the file is written once all messages were read (never a partial file);
+/// without, lines go to stdout as they come.
 void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &projector,
             const frontend::GravityChoice &gravity, const frontend::MinimumSize &minimum) {
-    const BagConnection topic = bagTopic(o);
     std::string lines;
     std::size_t found = 0;
     SurfaceDetector detector(projector, cfg);  // one for the whole bag: its buffers are reused
-    auto detectOne = [&](const Cloud &cloud, const BagCloudInfo &info) {
+    frontend::BagRequest request;
+    request.bag = o.bag;
+    request.topic = o.topic;
+    request.info_topic = o.info_topic;
+    auto detectOne = [&](const Cloud &cloud, const BagCloudInfo &info, const std::string &topic) {
         const Eigen::Vector3d down = frontend::resolveGravity(gravity, cloud).gravity;
         const Detection det = frontend::detectAnswer(detector, cloud, down, minimum,
-                                                     o.bag + ":" + topic.topic + "#" + std::to_string(info.index));
+                                                     o.bag + ":" + topic + "#" + std::to_string(info.index));
         nlohmann::json j = frontend::detectionDocument(det, cfg, projector, o.explain);
-        j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", topic.topic}};
+        j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", topic}};
         found += det.found ? 1 : 0;
         if (o.json.empty())
             std::cout << j.dump() << "\n" << std::flush;
         else
             lines += j.dump() + "\n";
     };
-    std::size_t n = 0;
-    const char *what = "clouds";
-    if (topic.type == kImageType) {
-        what = "depth images";
-        const std::string info_topic = cameraInfoTopic(o, topic.topic);
-        const std::vector<CameraInfoMessage> all = readBagCameraInfos(o.bag, info_topic);
-        frontend::StampedBuffer<CameraInfoMessage> infos(all.size() + 1);
-        for (const CameraInfoMessage &c : all) infos.add(c.header.stamp(), c);
-        std::size_t unpaired = 0;
-        n = forEachBagDepthImage(o.bag, topic.topic, [&](const DepthImageMessage &m, const BagCloudInfo &info) {
-            const std::string source = o.bag + ":" + topic.topic + "#" + std::to_string(info.index);
-            const CameraInfoMessage *k = infos.exact(info.stamp);
-            double at = 0.0;
-            if (!k) {
-                k = infos.nearest(info.stamp, at);
-                ++unpaired;
-            }
-            if (!k) throw InputError(o.bag, "no camera_info on " + info_topic);
-            const CameraIntrinsics cam = frontend::pinholeCamera(source + " (camera_info)", static_cast<int>(k->width),
-                                                                 static_cast<int>(k->height), k->K[0], k->K[4], k->K[2],
-                                                                 k->K[5], 1000.0);  // 16UC1 is in mm (REP 118)
-            detectOne(frontend::depthImageToCloud(source, m.depth, cam), info);
-        });
-        if (unpaired > 0)
-            std::fprintf(stderr,
-                         "projsurf: warning: %s: %zu of %zu depth images had no camera_info of their stamp on %s; "
-                         "the nearest was used\n",
-                         o.bag.c_str(), unpaired, n, info_topic.c_str());
-    } else {
-        n = forEachBagCloud(o.bag, topic.topic, detectOne);
-    }
+    const frontend::BagFrames read = frontend::forEachBagFrame(request, detectOne);
+    if (!read.warning.empty()) std::fprintf(stderr, "projsurf: warning: %s\n", read.warning.c_str());
     if (!o.json.empty()) {
         OutputGroup outputs;
         outputs.addFile(o.json, lines);
         outputs.commit();
-        std::printf("%zu %s on %s: %zu with a surface, %zu without\n", n, what, topic.topic.c_str(), found, n - found);
+        std::printf("%zu %s on %s: %zu with a surface, %zu without\n", read.count, read.what, read.topic.c_str(), found,
+                    read.count - found);
     }
 }
 
@@ -255,7 +190,8 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     if (const auto w = frontend::depthRangeWarning(cloud, o.depth.empty() ? o.cloud : o.camera, !o.depth.empty()))
         std::fprintf(stderr, "projsurf: warning: %s\n", w->c_str());
     SurfaceDetector detector(projector, cfg);
-    const Detection det = frontend::detectAnswer(detector, cloud, gravity, minimum, o.cloud.empty() ? o.depth : o.cloud);
+    const Detection det =
+        frontend::detectAnswer(detector, cloud, gravity, minimum, o.cloud.empty() ? o.depth : o.cloud);
     const nlohmann::json j = frontend::detectionDocument(det, cfg, projector, o.explain);
     // Both outputs, or neither: written beside their targets, renamed once both are there.
     OutputGroup outputs;

@@ -1,4 +1,4 @@
-// Issue 14's roughnesses, end to end through the CLI: a calibration to redo stops a script,
+// The first hour's roughnesses, end to end through the CLI: a calibration to redo stops a script,
 // pictures too small to use are not "found", the aspect ratio says how to write it, correct
 // says what it wrote, frame numbers survive, eval says when the real frames are missing.
 #include <gtest/gtest.h>

@@ -30,9 +30,12 @@ const char *blockerWords(int state) { return kStates[state >= 0 && state < kCell
 
 const char *blockerName(int state) { return kStates[state >= 0 && state < kCellStates ? state : 0].name; }
 
-/// "62 % of the beam's cells on it are shadowed by something in front of it".
+/// "62 % of the beam's cells on it are shadowed by something in front of it" (below 10 %, one
+/// decimal: "0.6 %", never "0 %").
 std::string blockedShare(int state, double share) {
-    return formatted("%.0f %% of the beam's cells on it are ", 100.0 * share) + blockerWords(state);
+    return formatted(share < 0.1 ? "%.1f %% of the beam's cells on it are " : "%.0f %% of the beam's cells on it are ",
+                     100.0 * share) +
+           blockerWords(state);
 }
 
 /// Share of a plane's points left out of its seen extent at each end of each axis.
@@ -56,6 +59,22 @@ std::pair<int, double> mainColour(const CandidateOutcome &o) {
             share = o.beam_cells[s];
         }
     return {best, share};
+}
+
+/// Relative difference below which two rectangles are as large (rectangles grow by whole raster
+/// cells, so two walls often hold the very same size): the later one lost a tie, it is not smaller.
+constexpr double kSameArea = 1e-9;
+
+/// Colour takes only cells that depth left free, so even a few of them can cost the picture
+/// area (the dark top of a sofa's back above which the wall is free): said from 0.5 %.
+constexpr double kColourWorthSaying = 0.005;
+
+/// "; 6 % of the beam's cells on it are too dark (low albedo)" for the colour state covering
+/// most of them, when colour took any; empty otherwise, or when `named` already said it.
+std::string colourClause(const CandidateOutcome &o, int named) {
+    const auto [colour, share] = mainColour(o);
+    if (colour < 0 || colour == named || share < kColourWorthSaying) return "";
+    return "; " + blockedShare(colour, share);
 }
 
 }  // namespace
@@ -144,11 +163,15 @@ std::string outcomeWords(const CandidateOutcome &o, const Rectangle &chosen) {
     switch (o.verdict) {
     case CandidateVerdict::Chosen: {
         std::string words = "chosen: the largest free rectangle, " + size(o.rectangle);
-        const int blocker = mainBlocker(o);
-        if (blocker >= 0 && o.beam_cells[blocker] >= 0.1) words += "; " + blockedShare(blocker, o.beam_cells[blocker]);
-        return words;
+        int blocker = mainBlocker(o);
+        if (blocker >= 0 && o.beam_cells[blocker] >= 0.1)
+            words += "; " + blockedShare(blocker, o.beam_cells[blocker]);
+        else
+            blocker = -1;
+        return words + colourClause(o, blocker);
     }
-    case CandidateVerdict::TooSmall: return o.detail.empty() ? "too small for a picture" : o.detail;
+    case CandidateVerdict::TooSmall:
+        return (o.detail.empty() ? "too small for a picture" : o.detail) + colourClause(o, -1);
     case CandidateVerdict::NotReached: return "the projector's beam does not reach where it was seen";
     case CandidateVerdict::BeyondOpening:
         return "seen through an opening of a nearer wall (a window, a door): the light would fall on the glass or "
@@ -162,7 +185,7 @@ std::string outcomeWords(const CandidateOutcome &o, const Rectangle &chosen) {
     case CandidateVerdict::NoFreeArea: {
         const int blocker = mainBlocker(o);
         if (blocker < 0) return "no room for the picture: no free area of its aspect in the beam";
-        return "no room for the picture: " + blockedShare(blocker, o.beam_cells[blocker]);
+        return "no room for the picture: " + blockedShare(blocker, o.beam_cells[blocker]) + colourClause(o, blocker);
     }
     case CandidateVerdict::NotExamined: {
         if (!(chosen.area() > 0.0)) return "not looked at closely";
@@ -171,12 +194,13 @@ std::string outcomeWords(const CandidateOutcome &o, const Rectangle &chosen) {
                "chosen " + y + " m^2";
     }
     case CandidateVerdict::SmallerRectangle: {
+        if (chosen.area() > 0.0 && o.rectangle.area() >= chosen.area() * (1.0 - kSameArea))
+            return "a rectangle as large as the chosen one, " + size(o.rectangle) +
+                   ": a tie keeps the plane looked at first" + colourClause(o, -1);
         const auto [mine, theirs] = sizes(o.rectangle, o.rectangle.area(), chosen);
         std::string words = chosen.area() > 0.0 ? "a smaller rectangle, " + mine + ", than the chosen " + theirs
                                                 : "held a rectangle, " + mine + ", none was chosen";
-        const auto [colour, share] = mainColour(o);
-        if (colour >= 0 && share >= 0.1) words += "; " + blockedShare(colour, share);
-        return words;
+        return words + colourClause(o, -1);
     }
     }
     return "";

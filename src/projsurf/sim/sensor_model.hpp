@@ -2,7 +2,7 @@
 // A Kinect v1 class RGB-D sensor: registered depth + colour pinhole, axial depth noise that
 // grows with the square of the distance, disparity quantisation, and missing readings.
 //
-// Sources (see /work/shared/notes/field-notes.md section 5):
+// Sources:
 //  - Noise: Khoshelham & Oude Elberink, "Accuracy and Resolution of Kinect Depth Data for
 //    Indoor Mapping Applications", Sensors 12(2):1437-1454, 2012, doi 10.3390/s120201437:
 //    sigma_z = (m / (f b)) z^2 sigma_d' ~= 1.425e-3 z^2 m (1.4 mm at 1 m, 12.8 mm at 3 m).
