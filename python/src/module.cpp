@@ -112,12 +112,11 @@ public:
         Detection det;
         {
             py::gil_scoped_release unlocked;
-            const ResolvedInput input = resolveInput(options_, cloud);
+            CheckedDetection input = detectChecked(detector_, options_, cloud);
             warnings.insert(warnings.end(), input.warnings.begin(), input.warnings.end());
-            det = detector_.detect(cloud, input.gravity);
+            det = std::move(input.detection);
         }
         warnAll(warnings);
-        frontend::enforceMinimumSize(det, options_.minimum, "min_width", "min_area");
         py::dict d = detectionToDict(det, options_.config, detector_.projector(), explain.cast<bool>());
         if (overlay.cast<bool>()) {  // `detect --overlay`'s picture, colour as its background when it was used
             py::object keep;

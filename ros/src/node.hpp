@@ -21,8 +21,8 @@
 #include "continuous.hpp"
 #include "params.hpp"
 #include "plan_service.hpp"
-#include "projsurf/frontend/stamp_pairing.hpp"
 #include "projsurf/detector/detector.hpp"
+#include "projsurf/frontend/stamp_pairing.hpp"
 
 namespace projsurf::ros_node {
 
@@ -67,9 +67,9 @@ private:
     /// ~detect's words on the colour: the chosen rectangle's suitability, or why colour was not used.
     std::string colourSummary(const Detection &det) const;
     void runContinuous();
-    /// Gravity for this cloud (camera frame): from tf2 when ~gravity_frame is set, from the
-    /// floor with ~gravity auto, else ~gravity.
-    Eigen::Vector3d gravityFor(const std_msgs::Header &header, std::string &problem);
+    /// How to find gravity for this cloud (frontend::detectWithGravity resolves it): from tf2
+    /// when ~gravity_frame is set, from the floor with ~gravity auto when tf gives none, else ~gravity.
+    frontend::GravityChoice gravityChoiceFor(const std_msgs::Header &header, std::string &problem);
     bool lookup(const std::string &target, const std::string &source, const ros::Time &stamp, Eigen::Isometry3d &pose,
                 std::string &problem);
     /// Warps the picture into `rect` (camera frame) and publishes it; empty string on success.
@@ -94,12 +94,12 @@ private:
     /// camera_info by stamp: each depth image is paired with the one of its own stamp.
     frontend::StampedBuffer<sensor_msgs::CameraInfoConstPtr> camera_infos_;
     sensor_msgs::ImageConstPtr pending_depth_;  ///< a depth image whose camera_info has not come yet
-    std::unique_ptr<ColourInput> colour_;  ///< ~use_colour (null without)
-    bool colour_wait_ = false;             ///< the latest cloud waits for the colour image of its stamp
-    std::string colour_note_;              ///< why the latest cloud has no colour ("" when it has)
-    double colour_ms_ = 0.0;               ///< ms spent putting the colour into the latest cloud
-    std::string depth_stream_;             ///< the depth stream's geometry (colour_input.hpp's `stream`)
-    int colourless_ = 0;                   ///< clouds in a row whose colour image never came
+    std::unique_ptr<ColourInput> colour_;       ///< ~use_colour (null without)
+    bool colour_wait_ = false;                  ///< the latest cloud waits for the colour image of its stamp
+    std::string colour_note_;                   ///< why the latest cloud has no colour ("" when it has)
+    double colour_ms_ = 0.0;                    ///< ms spent putting the colour into the latest cloud
+    std::string depth_stream_;                  ///< the depth stream's geometry (colour_input.hpp's `stream`)
+    int colourless_ = 0;                        ///< clouds in a row whose colour image never came
     SurfaceDetector detector_;                  ///< one for the stream: its buffers are reused frame to frame
     std::unique_ptr<ContinuousMode> continuous_;
     std::unique_ptr<NodeBlanking> blanking_;  ///< ~blanked, ~focus_distance

@@ -98,9 +98,9 @@ void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &
     request.topic = o.topic;
     request.info_topic = o.info_topic;
     auto detectOne = [&](const Cloud &cloud, const BagCloudInfo &info, const std::string &topic) {
-        const Eigen::Vector3d down = frontend::resolveGravity(gravity, cloud).gravity;
-        const Detection det = frontend::detectAnswer(detector, cloud, down, minimum,
-                                                     o.bag + ":" + topic + "#" + std::to_string(info.index));
+        const Detection det = frontend::detectWithGravity(detector, cloud, gravity, minimum,
+                                                          o.bag + ":" + topic + "#" + std::to_string(info.index))
+                                  .detection;
         nlohmann::json j = frontend::detectionDocument(det, cfg, projector, o.explain);
         j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", topic}};
         found += det.found ? 1 : 0;
@@ -178,9 +178,11 @@ void run(const DetectOptions &o, const CLI::App &sub) {
                      "depth only\n",
                      o.suitability.c_str());
 
-    const frontend::ResolvedGravity resolved = frontend::resolveGravity(gravity_choice, cloud);
-    const Eigen::Vector3d gravity = resolved.gravity;
-    if (gravity_choice.from_floor && !resolved.floor_found)
+    SurfaceDetector detector(projector, cfg);
+    const frontend::GravityDetection answer =
+        frontend::detectWithGravity(detector, cloud, gravity_choice, minimum, o.cloud.empty() ? o.depth : o.cloud);
+    const Detection &det = answer.detection;
+    if (gravity_choice.from_floor && !answer.gravity.floor_found)
         std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
     else if (o.gravity.empty())
         warnIfTilted(cloud);
@@ -189,9 +191,6 @@ void run(const DetectOptions &o, const CLI::App &sub) {
             std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
     if (const auto w = frontend::depthRangeWarning(cloud, o.depth.empty() ? o.cloud : o.camera, !o.depth.empty()))
         std::fprintf(stderr, "projsurf: warning: %s\n", w->c_str());
-    SurfaceDetector detector(projector, cfg);
-    const Detection det =
-        frontend::detectAnswer(detector, cloud, gravity, minimum, o.cloud.empty() ? o.depth : o.cloud);
     const nlohmann::json j = frontend::detectionDocument(det, cfg, projector, o.explain);
     // Both outputs, or neither: written beside their targets, renamed once both are there.
     OutputGroup outputs;
