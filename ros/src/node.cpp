@@ -40,7 +40,9 @@ ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams p
         tf_buffer_ = std::make_unique<tf2_ros::Buffer>(ros::Duration(30.0));
         tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, nh_);
     }
-    if (params_.continuous) continuous_ = std::make_unique<ContinuousMode>(params_);
+    if (params_.continuous)
+        continuous_ = std::make_unique<ContinuousTracker>(
+            ContinuousSettings{params_.projector, detector_.config(), params_.steady, params_.fit_margin_px});
 
     result_pub_ = pnh_.advertise<std_msgs::String>("result", 1, true);
     rectangle_pub_ = pnh_.advertise<geometry_msgs::PolygonStamped>("rectangle", 1, true);
@@ -393,7 +395,7 @@ void ProjsurfNode::runContinuous() {
         ROS_ERROR_THROTTLE(5.0, "projsurf_node: detection failed: %s", e.what());
         return;
     }
-    const ContinuousMode::Output o = continuous_->update(det, cloud_, fixed_from_camera, detector_.config());
+    const ContinuousFrame o = continuous_->update(det, cloud_, fixed_from_camera);
     // Re-warp every frame: the robot moved, so the same place on the wall has new pixels.
     frontend::FramebufferRender fb;
     if (o.has_target)
