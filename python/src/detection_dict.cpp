@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "json_values.hpp"
+#include "projsurf/frontend/continuous_json.hpp"
 #include "projsurf/frontend/detection_document.hpp"
 #include "projsurf/io/errors.hpp"
 
@@ -32,6 +33,18 @@ py::dict detectionToDict(const Detection &det, const DetectorConfig &config, con
     numpyAt(d, "gravity");
     if (py::isinstance<py::dict>(d["plane"])) numpyAt(d["plane"].cast<py::dict>(), "coefficients");
     if (py::isinstance<py::dict>(d["rectangle"])) numpyAt(d["rectangle"].cast<py::dict>(), "corners");
+    return d;
+}
+
+py::dict continuousFrameToDict(const Detection &det, const ContinuousFrame &frame, const DetectorConfig &config,
+                               const Projector &projector) {
+    py::dict d = detectionToDict(det, config, projector);
+    nlohmann::json words;
+    frontend::addContinuousFrame(words, frame);
+    const py::dict extra = pythonFromJson(words);
+    d["shown"] = extra["shown"];
+    d["event"] = extra["event"];
+    if (py::isinstance<py::dict>(d["shown"])) numpyAt(d["shown"].cast<py::dict>(), "corners");
     return d;
 }
 

@@ -4,6 +4,7 @@
 #include <pybind11/pybind11.h>
 
 #include "projsurf/detector/detector.hpp"
+#include "projsurf/tracking/continuous_tracker.hpp"
 
 namespace projsurf::python {
 
@@ -13,6 +14,11 @@ namespace projsurf::python {
 /// float64 numpy arrays.
 pybind11::dict detectionToDict(const Detection &detection, const DetectorConfig &config, const Projector &projector,
                                bool explain = false);
+
+/// detectionToDict plus continuous mode's `shown` (a rectangle dict as `rectangle`, corners a
+/// (4, 3) numpy array; None when nothing is held) and `event` (frontend/continuous_json.hpp).
+pybind11::dict continuousFrameToDict(const Detection &detection, const ContinuousFrame &frame,
+                                     const DetectorConfig &config, const Projector &projector);
 
 /// The rectangle of a detection dict (found must be true) or of a (4, 3) array of corners
 /// (TL, TR, BR, BL). Throws InputError("detection", problem) as `correct --detection` does for

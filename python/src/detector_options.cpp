@@ -9,6 +9,7 @@
 #include "argument_types.hpp"
 #include "projsurf/frontend/aspect.hpp"
 #include "projsurf/frontend/depth_range_check.hpp"
+#include "projsurf/frontend/detect_answer.hpp"
 #include "projsurf/frontend/detector_config_file.hpp"
 #include "projsurf/frontend/gravity_sanity.hpp"
 #include "projsurf/frontend/method_settings.hpp"
@@ -53,10 +54,10 @@ double minimumFrom(const char *name, const py::object &value, double fallback) {
     } catch (const InputError &) {
     }
     if (!(v >= 0.0 && std::isfinite(v)))
-        throw InputError(name, "expected a number >= 0 or None, got " +
-                                   (PyLong_Check(value.ptr()) || PyFloat_Check(value.ptr())
-                                        ? "'" + py::str(value).cast<std::string>() + "'"
-                                        : describe(value)));
+        throw InputError(
+            name, "expected a number >= 0 or None, got " + (PyLong_Check(value.ptr()) || PyFloat_Check(value.ptr())
+                                                                ? "'" + py::str(value).cast<std::string>() + "'"
+                                                                : describe(value)));
     return v;
 }
 
@@ -67,7 +68,8 @@ frontend::GravityChoice gravityFrom(const py::object &gravity) {
     try {
         g = vectorArgument(gravity, "gravity");
     } catch (const InputError &) {
-        throw InputError("gravity", "expected three numbers gx, gy, gz, 'gx,gy,gz' or 'auto', got " + describe(gravity));
+        throw InputError("gravity",
+                         "expected three numbers gx, gy, gz, 'gx,gy,gz' or 'auto', got " + describe(gravity));
     }
     return frontend::gravityChoiceFrom("gravity", g.data(), 3);
 }
@@ -79,8 +81,12 @@ struct Setting {
     bool whole;     ///< a count
 };
 constexpr Setting kSettings[] = {
-    {"max_tilt", 0.0, 1.5, false},        {"voxel_leaf", 0.001, 1.0, false}, {"ransac_distance", 0.001, 1.0, false},
-    {"max_outliers", 0.0, 1e9, true},     {"cell", 0.002, 0.5, false},       {"max_planes", 1.0, 20.0, true},
+    {"max_tilt", 0.0, 1.5, false},
+    {"voxel_leaf", 0.001, 1.0, false},
+    {"ransac_distance", 0.001, 1.0, false},
+    {"max_outliers", 0.0, 1e9, true},
+    {"cell", 0.002, 0.5, false},
+    {"max_planes", 1.0, 20.0, true},
     {"max_outlier_fraction", 0.0, 1.0, false},
 };
 
@@ -114,8 +120,8 @@ std::vector<std::string> applySettings(const py::dict &settings, DetectorOptions
         char range[80];
         std::snprintf(range, sizeof range, "between %g and %g", s->lo, s->hi);
         if (s->whole) {
-            const long long v = wholeArgument(item.second, s->name, static_cast<long long>(s->lo),
-                                              static_cast<long long>(s->hi));
+            const long long v =
+                wholeArgument(item.second, s->name, static_cast<long long>(s->lo), static_cast<long long>(s->hi));
             (name == "max_planes" ? o.config.planes.max_planes : o.config.paper.max_outliers) = static_cast<int>(v);
         } else {
             const double v = numberArgument(item.second, s->name);
@@ -159,11 +165,13 @@ DetectorOptions detectorOptions(const DetectorArguments &a) {
     return o;
 }
 
-ResolvedInput resolveInput(const DetectorOptions &options, const Cloud &cloud) {
-    ResolvedInput out;
-    const frontend::ResolvedGravity resolved = frontend::resolveGravity(options.gravity, cloud);
-    out.gravity = resolved.gravity;
-    if (options.gravity.from_floor && !resolved.floor_found)
+CheckedDetection detectChecked(SurfaceDetector &detector, const DetectorOptions &options, const Cloud &cloud) {
+    CheckedDetection out;
+    const frontend::GravityDetection answer = frontend::detectWithGravity(
+        detector, cloud, options.gravity, options.minimum, "points", "min_width", "min_area");
+    out.detection = answer.detection;
+    out.gravity = answer.gravity.gravity;
+    if (options.gravity.from_floor && !answer.gravity.floor_found)
         out.warnings.push_back("gravity='auto' found no floor; assuming a level camera");
     if (options.gravity_given)
         for (const std::string &w : frontend::gravityWarnings("gravity", options.gravity.gravity, cloud))

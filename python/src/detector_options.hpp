@@ -8,17 +8,17 @@
 
 #include <pybind11/pybind11.h>
 
-#include "projsurf/types/cloud.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
-#include "projsurf/detector/detector.hpp"
+#include "projsurf/types/cloud.hpp"
 
 namespace projsurf::python {
 
 struct DetectorOptions {
     DetectorConfig config;
     bool gravity_given = false;  ///< gravity= was a vector: checked against the cloud's floor (frontend/gravity_sanity)
-    bool suitability_given = false;  ///< suitability= was given: warned about without registered colour
+    bool suitability_given = false;   ///< suitability= was given: warned about without registered colour
     frontend::GravityChoice gravity;  ///< the given one, the level camera's, or "auto" (from the floor of each cloud)
     frontend::MinimumSize minimum;    ///< smaller rectangles are "not found" (frontend/minimum_size.hpp)
 };
@@ -35,22 +35,24 @@ struct DetectorArguments {
 };
 
 /// config: None or a settings YAML read first (frontend/detector_config_file.hpp); every other
-/// argument that is not None overrides its value. aspect: None (the framebuffer's), a number (width / height), "W:H" or a pair (16, 9);
-/// gravity: None (level camera), 3 numbers (camera frame, pointing down; any length but zero),
+/// argument that is not None overrides its value. aspect: None (the framebuffer's), a number (width / height), "W:H" or
+/// a pair (16, 9); gravity: None (level camera), 3 numbers (camera frame, pointing down; any length but zero),
 /// "gx,gy,gz" or "auto"; method: None ("default"), "default" | "paper"; hull: "concave" |
-/// "convex" (paper method); seed: None (42) or a RANSAC seed; min_width (m), min_area (m^2): None (the method's default) or a
-/// number >= 0; suitability: None, "off", "avoid" or "prefer" (detect --suitability). A
-/// setting the method ignores is a UserWarning, as the CLI's warning line.
+/// "convex" (paper method); seed: None (42) or a RANSAC seed; min_width (m), min_area (m^2): None (the method's
+/// default) or a number >= 0; suitability: None, "off", "avoid" or "prefer" (detect --suitability). A setting the
+/// method ignores is a UserWarning, as the CLI's warning line.
 DetectorOptions detectorOptions(const DetectorArguments &arguments);
 
-/// The gravity to detect `cloud` with (the options' own, or with "auto" the floor's, else the
-/// options' vector) and the warnings the CLI gives about it and the cloud (frontend's texts).
-/// Needs no GIL: the warnings are issued by warnAll.
-struct ResolvedInput {
+/// `cloud` detected by the options (frontend/detect_answer.hpp's detectWithGravity: the gravity
+/// choice resolved, the minimum size applied), the gravity it was detected with, and the
+/// warnings the CLI gives about it and the cloud (frontend's texts). Needs no GIL: the warnings
+/// are issued by warnAll. Throws InputError("points", ...) when the detector fails on it.
+struct CheckedDetection {
+    Detection detection;
     Eigen::Vector3d gravity;
     std::vector<std::string> warnings;
 };
-ResolvedInput resolveInput(const DetectorOptions &options, const Cloud &cloud);
+CheckedDetection detectChecked(SurfaceDetector &detector, const DetectorOptions &options, const Cloud &cloud);
 
 /// Each line as a Python UserWarning (the CLI's "projsurf: warning: " lines).
 void warnAll(const std::vector<std::string> &warnings);

@@ -15,6 +15,7 @@
 #include "detection_dict.hpp"
 #include "detector_options.hpp"
 #include "image_array.hpp"
+#include "options_constructor.hpp"
 #include "plan_function.hpp"
 #include "points_array.hpp"
 #include "print_config_function.hpp"
@@ -34,6 +35,7 @@
 #include "projsurf/people/beam_blanking.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/lens_model_check.hpp"
+#include "tracker_class.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -112,12 +114,11 @@ public:
         Detection det;
         {
             py::gil_scoped_release unlocked;
-            const ResolvedInput input = resolveInput(options_, cloud);
+            CheckedDetection input = detectChecked(detector_, options_, cloud);
             warnings.insert(warnings.end(), input.warnings.begin(), input.warnings.end());
-            det = detector_.detect(cloud, input.gravity);
+            det = std::move(input.detection);
         }
         warnAll(warnings);
-        frontend::enforceMinimumSize(det, options_.minimum, "min_width", "min_area");
         py::dict d = detectionToDict(det, options_.config, detector_.projector(), explain.cast<bool>());
         if (overlay.cast<bool>()) {  // `detect --overlay`'s picture, colour as its background when it was used
             py::object keep;
@@ -310,21 +311,12 @@ PYBIND11_MODULE(projsurf, m) {
         "argument given (not None) overrides it. The CLI's warnings (a gravity the floor contradicts, depths outside "
         "what RGB-D\n"
         "cameras read, colour not registered) come as UserWarnings.";
-    py::class_<Detector>(
+    py::class_<Detector> detector_class(
         m, "Detector",
         (std::string("Detection over a stream of clouds (reuses its buffers from frame to frame).\n") + options_doc)
-            .c_str())
-        .def(py::init([](const py::object &projector, const py::object &aspect, const py::object &gravity,
-                         const py::object &method, const py::object &hull, const py::object &seed,
-                         const py::object &min_width, const py::object &min_area, const py::object &suitability,
-                         const py::object &config, const py::kwargs &settings) {
-                 return Detector(projectorArgument(projector, "projector"),
-                                 detectorOptions({aspect, gravity, method, hull, seed, min_width, min_area, suitability,
-                                                  config, settings}));
-             }),
-             "projector"_a, py::kw_only(), "aspect"_a = py::none(), "gravity"_a = py::none(), "method"_a = py::none(),
-             "hull"_a = py::none(), "seed"_a = py::none(), "min_width"_a = py::none(), "min_area"_a = py::none(),
-             "suitability"_a = py::none(), "config"_a = py::none())
+            .c_str());
+    addOptionsConstructor(detector_class);
+    detector_class
         .def(
             "detect",
             [](Detector &d, const py::object &points, const py::object &colour, const py::object &explain,
@@ -421,6 +413,7 @@ PYBIND11_MODULE(projsurf, m) {
         "(as detect() takes them): the pixels whose rays meet something between the lens and the rectangle's\n"
         "plane (a person walking in) are black, as `projsurf correct --cloud`. Raises InputError.");
 
+    addTrackerClass(m, options_doc);
     addPlanFunction(m);
     addPrintConfigFunction(m);
     addBagFunction(m);

@@ -43,13 +43,12 @@ void addPlanFunction(py::module_ &m) {
             std::vector<std::string> warnings;
             {
                 py::gil_scoped_release unlocked;
-                const ResolvedInput input = resolveInput(options, cloud);
-                warnings = input.warnings;
-                const Eigen::Vector3d down = input.gravity;
                 // Today's answer is detect()'s, by the same call.
                 SurfaceDetector detector(projector, options.config);
-                const Detection today =
-                    frontend::detectAnswer(detector, cloud, down, options.minimum, "points", "min_width", "min_area");
+                const CheckedDetection input = detectChecked(detector, options, cloud);
+                warnings = input.warnings;
+                const Eigen::Vector3d &down = input.gravity;
+                const Detection &today = input.detection;
                 const PlanResult r = planStand(cloud, projector, options.config, down, plan, today);
                 answer = frontend::planToJson(r);
                 if (want_overlay)

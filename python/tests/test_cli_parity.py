@@ -27,6 +27,7 @@ COUNTERPARTS = {
     "--rgb": ("detect", "colour"),
     "--json": ("detect", None),  # the dict it returns (json.dumps of it)
     "--print-config": ("print_config", None),
+    "--steady": ("Tracker", None),  # Tracker(...).update() on each cloud read_bag() gives
 }
 
 

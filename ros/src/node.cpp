@@ -40,7 +40,9 @@ ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams p
         tf_buffer_ = std::make_unique<tf2_ros::Buffer>(ros::Duration(30.0));
         tf_listener_ = std::make_unique<tf2_ros::TransformListener>(*tf_buffer_, nh_);
     }
-    if (params_.continuous) continuous_ = std::make_unique<ContinuousMode>(params_);
+    if (params_.continuous)
+        continuous_ = std::make_unique<ContinuousTracker>(
+            ContinuousSettings{params_.projector, detector_.config(), params_.steady, params_.fit_margin_px});
 
     result_pub_ = pnh_.advertise<std_msgs::String>("result", 1, true);
     rectangle_pub_ = pnh_.advertise<geometry_msgs::PolygonStamped>("rectangle", 1, true);
@@ -65,7 +67,8 @@ ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams p
         ROS_INFO("projsurf_node: colour from %s (suitability %s)", colour_sub_.getTopic().c_str(),
                  suitabilityModeName(params_.detector.suitability.mode));
     } else if (params_.suitability_given && params_.detector.suitability.mode != SuitabilityMode::Off) {
-        ROS_WARN("projsurf_node: ~suitability needs registered colour (~use_colour); the surface is judged by depth only");
+        ROS_WARN(
+            "projsurf_node: ~suitability needs registered colour (~use_colour); the surface is judged by depth only");
     }
     ROS_INFO("projsurf_node: projector %dx%d from %s; %s mode; listening on %s (or %s + %s)", params_.projector.width,
              params_.projector.height, params_.calib.c_str(), params_.continuous ? "continuous" : "on-demand (~detect)",
@@ -85,8 +88,7 @@ void ProjsurfNode::onColour(const sensor_msgs::ImageConstPtr &msg) {
     colour_->add(msg);
     colourless_ = 0;
     // The latest cloud came first and waits for this one.
-    if (colour_wait_ &&
-        std::abs(msg->header.stamp.toSec() - cloud_header_.stamp.toSec()) <= frontend::kSameStampS) {
+    if (colour_wait_ && std::abs(msg->header.stamp.toSec() - cloud_header_.stamp.toSec()) <= frontend::kSameStampS) {
         colour_wait_ = false;
         useColour(*msg);
         if (continuous_) runContinuous();
@@ -104,7 +106,8 @@ void ProjsurfNode::settleColourWait() {
     colour_wait_ = false;
     double offset = 0.0;
     if (const sensor_msgs::ImageConstPtr near = colour_->near(cloud_header_.stamp, offset)) {
-        ROS_WARN_THROTTLE(5.0, "projsurf_node: no colour image with the depth's stamp %.3f on %s; using one %.3f s away",
+        ROS_WARN_THROTTLE(5.0,
+                          "projsurf_node: no colour image with the depth's stamp %.3f on %s; using one %.3f s away",
                           cloud_header_.stamp.toSec(), colour_sub_.getTopic().c_str(), offset);
         useColour(*near);
         return;
@@ -166,8 +169,9 @@ void ProjsurfNode::takeDepth(const sensor_msgs::Image &depth, const sensor_msgs:
 
 void ProjsurfNode::onCloud(const sensor_msgs::PointCloud2ConstPtr &msg) {
     try {
-        takeCloud(toCloud(*msg), msg->header,
-                  "cloud " + std::to_string(msg->width) + "x" + std::to_string(msg->height) + " " + msg->header.frame_id);
+        takeCloud(
+            toCloud(*msg), msg->header,
+            "cloud " + std::to_string(msg->width) + "x" + std::to_string(msg->height) + " " + msg->header.frame_id);
     } catch (const InputError &e) {
         rejectCloud("cloud", e.what(), msg->header);
     }
@@ -201,7 +205,8 @@ void ProjsurfNode::takeCloud(Cloud cloud, const std_msgs::Header &header, const 
             return;
         } else {
             colour_note_ = "no colour image has come on " + colour_sub_.getTopic() + " lately";
-            ROS_WARN_THROTTLE(5.0, "projsurf_node: %s; detecting without colour until some comes", colour_note_.c_str());
+            ROS_WARN_THROTTLE(5.0, "projsurf_node: %s; detecting without colour until some comes",
+                              colour_note_.c_str());
         }
     }
     if (continuous_) runContinuous();
@@ -223,21 +228,19 @@ bool ProjsurfNode::lookup(const std::string &target, const std::string &source, 
     }
 }
 
-Eigen::Vector3d ProjsurfNode::gravityFor(const std_msgs::Header &header, std::string &problem) {
-    Eigen::Vector3d gravity = params_.gravity.gravity;
+frontend::GravityChoice ProjsurfNode::gravityChoiceFor(const std_msgs::Header &header, std::string &problem) {
+    frontend::GravityChoice choice = params_.gravity;
     if (!params_.gravity_frame.empty()) {
         Eigen::Isometry3d camera_from_gravity;
         if (lookup(header.frame_id, params_.gravity_frame, header.stamp, camera_from_gravity, problem)) {
-            gravity = camera_from_gravity.linear() * Eigen::Vector3d(0.0, 0.0, -1.0);  // -z of a z-up frame
+            choice.gravity = camera_from_gravity.linear() * Eigen::Vector3d(0.0, 0.0, -1.0);  // -z of a z-up frame
+            choice.from_floor = false;
         } else {
             problem += " (using ~gravity instead)";
         }
     }
-    if (params_.gravity.from_floor && (params_.gravity_frame.empty() || !problem.empty())) {
-        // No IMU and no tf: "down" from the floor when one is in view, else a level camera.
-        gravity = frontend::resolveGravity(params_.gravity, cloud_).gravity;
-    }
-    return gravity;
+    // With ~gravity auto and no tf: "down" from the floor when one is in view, else a level camera.
+    return choice;
 }
 
 void ProjsurfNode::publishBlack(const std_msgs::Header &header) {
@@ -300,10 +303,11 @@ ProjsurfNode::Outcome ProjsurfNode::detectOnce() {
 ProjsurfNode::Outcome ProjsurfNode::detectOnValidCloud() {
     Outcome out;
     std::string tf_problem;
-    const Eigen::Vector3d gravity = gravityFor(cloud_header_, tf_problem);
+    const frontend::GravityChoice choice = gravityChoiceFor(cloud_header_, tf_problem);
     if (!tf_problem.empty()) ROS_WARN("projsurf_node: %s", tf_problem.c_str());
-    Detection det = detector_.detect(cloud_, gravity);
-    frontend::enforceMinimumSize(det, params_.minimum, "~min_width", "~min_area");
+    const Detection det = frontend::detectWithGravity(detector_, cloud_, choice, params_.minimum, "the latest cloud",
+                                                      "~min_width", "~min_area")
+                              .detection;
     const nlohmann::json result =
         frontend::detectionDocument(det, detector_.config(), params_.projector, params_.explain);
     std_msgs::String json;
@@ -349,17 +353,17 @@ bool ProjsurfNode::onPlan(std_srvs::Trigger::Request &, std_srvs::Trigger::Respo
     }
     try {
         std::string problem;
-        const Eigen::Vector3d gravity = gravityFor(cloud_header_, problem);
+        const frontend::GravityChoice choice = gravityChoiceFor(cloud_header_, problem);
         Eigen::Isometry3d fixed_from_camera = Eigen::Isometry3d::Identity();
         std::string frame = cloud_header_.frame_id;
         if (!params_.fixed_frame.empty() &&
             lookup(params_.fixed_frame, cloud_header_.frame_id, cloud_header_.stamp, fixed_from_camera, problem))
             frame = params_.fixed_frame;
         // Today's answer is ~detect's, by the same call.
-        const Detection today = frontend::detectAnswer(detector_, cloud_, gravity, params_.minimum, "the latest cloud",
-                                                       "~min_width", "~min_area");
-        const NodePlanner::Answer a =
-            planner_->plan(cloud_, gravity, today, fixed_from_camera, frame, cloud_header_.stamp);
+        const frontend::GravityDetection today = frontend::detectWithGravity(
+            detector_, cloud_, choice, params_.minimum, "the latest cloud", "~min_width", "~min_area");
+        const NodePlanner::Answer a = planner_->plan(cloud_, today.gravity.gravity, today.detection, fixed_from_camera,
+                                                     frame, cloud_header_.stamp);
         res.success = a.found;
         res.message = a.message;
     } catch (const std::exception &e) {  // never take the node down for one bad frame
@@ -380,17 +384,18 @@ void ProjsurfNode::runContinuous() {
         return;
     }
     std::string tf_problem;
-    const Eigen::Vector3d gravity = gravityFor(header, tf_problem);
+    const frontend::GravityChoice choice = gravityChoiceFor(header, tf_problem);
     if (!tf_problem.empty()) ROS_WARN_THROTTLE(5.0, "projsurf_node: %s", tf_problem.c_str());
     Detection det;
     try {
-        det = detector_.detect(cloud_, gravity);
-        frontend::enforceMinimumSize(det, params_.minimum, "~min_width", "~min_area");
+        det = frontend::detectWithGravity(detector_, cloud_, choice, params_.minimum, "the latest cloud", "~min_width",
+                                          "~min_area")
+                  .detection;
     } catch (const std::exception &e) {
         ROS_ERROR_THROTTLE(5.0, "projsurf_node: detection failed: %s", e.what());
         return;
     }
-    const ContinuousMode::Output o = continuous_->update(det, cloud_, fixed_from_camera, detector_.config());
+    const ContinuousFrame o = continuous_->update(det, cloud_, fixed_from_camera);
     // Re-warp every frame: the robot moved, so the same place on the wall has new pixels.
     frontend::FramebufferRender fb;
     if (o.has_target)

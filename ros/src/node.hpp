@@ -18,11 +18,10 @@
 
 #include "blanking.hpp"
 #include "colour_input.hpp"
-#include "continuous.hpp"
 #include "params.hpp"
 #include "plan_service.hpp"
-#include "projsurf/frontend/stamp_pairing.hpp"
 #include "projsurf/detector/detector.hpp"
+#include "projsurf/frontend/stamp_pairing.hpp"
 
 namespace projsurf::ros_node {
 
@@ -67,9 +66,9 @@ private:
     /// ~detect's words on the colour: the chosen rectangle's suitability, or why colour was not used.
     std::string colourSummary(const Detection &det) const;
     void runContinuous();
-    /// Gravity for this cloud (camera frame): from tf2 when ~gravity_frame is set, from the
-    /// floor with ~gravity auto, else ~gravity.
-    Eigen::Vector3d gravityFor(const std_msgs::Header &header, std::string &problem);
+    /// How to find gravity for this cloud (frontend::detectWithGravity resolves it): from tf2
+    /// when ~gravity_frame is set, from the floor with ~gravity auto when tf gives none, else ~gravity.
+    frontend::GravityChoice gravityChoiceFor(const std_msgs::Header &header, std::string &problem);
     bool lookup(const std::string &target, const std::string &source, const ros::Time &stamp, Eigen::Isometry3d &pose,
                 std::string &problem);
     /// Warps the picture into `rect` (camera frame) and publishes it; empty string on success.
@@ -93,17 +92,17 @@ private:
     std::string rejected_;  ///< why the latest cloud was rejected; empty when it was used
     /// camera_info by stamp: each depth image is paired with the one of its own stamp.
     frontend::StampedBuffer<sensor_msgs::CameraInfoConstPtr> camera_infos_;
-    sensor_msgs::ImageConstPtr pending_depth_;  ///< a depth image whose camera_info has not come yet
-    std::unique_ptr<ColourInput> colour_;  ///< ~use_colour (null without)
-    bool colour_wait_ = false;             ///< the latest cloud waits for the colour image of its stamp
-    std::string colour_note_;              ///< why the latest cloud has no colour ("" when it has)
-    double colour_ms_ = 0.0;               ///< ms spent putting the colour into the latest cloud
-    std::string depth_stream_;             ///< the depth stream's geometry (colour_input.hpp's `stream`)
-    int colourless_ = 0;                   ///< clouds in a row whose colour image never came
-    SurfaceDetector detector_;                  ///< one for the stream: its buffers are reused frame to frame
-    std::unique_ptr<ContinuousMode> continuous_;
-    std::unique_ptr<NodeBlanking> blanking_;  ///< ~blanked, ~focus_distance
-    std::unique_ptr<NodePlanner> planner_;    ///< ~plan
+    sensor_msgs::ImageConstPtr pending_depth_;       ///< a depth image whose camera_info has not come yet
+    std::unique_ptr<ColourInput> colour_;            ///< ~use_colour (null without)
+    bool colour_wait_ = false;                       ///< the latest cloud waits for the colour image of its stamp
+    std::string colour_note_;                        ///< why the latest cloud has no colour ("" when it has)
+    double colour_ms_ = 0.0;                         ///< ms spent putting the colour into the latest cloud
+    std::string depth_stream_;                       ///< the depth stream's geometry (colour_input.hpp's `stream`)
+    int colourless_ = 0;                             ///< clouds in a row whose colour image never came
+    SurfaceDetector detector_;                       ///< one for the stream: its buffers are reused frame to frame
+    std::unique_ptr<ContinuousTracker> continuous_;  ///< ~continuous (null without)
+    std::unique_ptr<NodeBlanking> blanking_;         ///< ~blanked, ~focus_distance
+    std::unique_ptr<NodePlanner> planner_;           ///< ~plan
     ros::WallTime last_file_write_;
     double rate_hz_ = 0.0;  ///< running estimate of the continuous-mode frame rate
     ros::WallTime last_frame_;

@@ -6,12 +6,13 @@
 
 #include <string>
 
-#include "projsurf/types/projector.hpp"
-#include "projsurf/tracking/steady_tracker.hpp"
+#include "projsurf/detector/detector.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
-#include "projsurf/detector/detector.hpp"
 #include "projsurf/planning/stand_planner.hpp"
+#include "projsurf/tracking/continuous_tracker.hpp"
+#include "projsurf/tracking/steady_tracker.hpp"
+#include "projsurf/types/projector.hpp"
 
 namespace projsurf::ros_node {
 
@@ -26,9 +27,9 @@ struct NodeParams {
     /// ~suitability was given (off | avoid | prefer, the CLI's --suitability; stored in
     /// detector.suitability.mode, default avoid).
     bool suitability_given = false;
-    bool blank = true;        ///< ~blank: continuous mode blacks out what stands in the beam (contract "Blanking")
-    PlanOptions plan;         ///< ~plan_width, ~plan_max_move: the ~plan service (contract "Where to stand")
-    Projector projector;      ///< read from ~calib
+    bool blank = true;    ///< ~blank: continuous mode blacks out what stands in the beam (contract "Blanking")
+    PlanOptions plan;     ///< ~plan_width, ~plan_max_move: the ~plan service (contract "Where to stand")
+    Projector projector;  ///< read from ~calib
     /// ~config (a detector settings YAML, as `detect --config`), then over it ~aspect,
     /// ~gravity, ~method, ~hull and the CLI's pipeline options: ~max_tilt, ~seed, ~voxel_leaf,
     /// ~ransac_distance, ~max_outliers, ~cell, ~max_planes, ~max_outlier_fraction (defaults:
@@ -52,7 +53,8 @@ struct NodeParams {
     /// ~keystone_tolerance_px: a rectangle may leave the framebuffer by this much and still be
     /// shown (its edge clipped); the detector's raster puts corners up to a few px outside.
     double keystone_tolerance_px = 4.0;
-    double fit_margin_px = 2.0;  ///< ~fit_margin_px: the held picture must stay this far inside the framebuffer
+    /// ~fit_margin_px: the held picture must stay this far inside the framebuffer (px)
+    double fit_margin_px = ContinuousSettings{}.fit_margin_px;
     std::string
         framebuffer_file;  ///< ~framebuffer_file: also write each new framebuffer PNG here (for `projsurf show`)
     std::string marker_ns = "projsurf";  ///< ~marker_ns: namespace of the RViz markers

@@ -12,6 +12,7 @@
 #include "projsurf/frontend/aspect.hpp"
 #include "projsurf/frontend/bag_frames.hpp"
 #include "projsurf/frontend/candidates_json.hpp"
+#include "projsurf/frontend/continuous_json.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/depth_range_check.hpp"
 #include "projsurf/frontend/detect_answer.hpp"
@@ -40,7 +41,7 @@ constexpr double kTiltWarningDeg = 5.0;  ///< deg, a floor this far from level m
 struct DetectOptions {
     std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity,
         method = "default", hull = "concave", bag, topic, info_topic, suitability, config_file;
-    bool print_config = false, explain = false;
+    bool print_config = false, explain = false, steady = false;
     DetectorConfig config;                     ///< the pipeline flags' values (used where a flag was given)
     double min_width = -1.0, min_area = -1.0;  ///< m, m^2; < 0: the method's default (frontend/minimum_size.hpp)
 };
@@ -87,21 +88,25 @@ DetectorConfig detectorConfig(const DetectOptions &o, const CLI::App &sub) {
 /// --bag: one detection per cloud (or depth image) of the topic (frontend/bag_frames.hpp), one
 /// JSON object per line (JSON Lines), each with a "bag" key (index, stamp, frame_id, topic).
 /// With --json the file is written once all messages were read (never a partial file);
-/// without, lines go to stdout as they come.
+/// without, lines go to stdout as they come. --steady: continuous mode over the messages
+/// (tracking/continuous_tracker.hpp), each line with `shown` and `event`; the camera is taken
+/// to stand still (its pose the identity), as a bag of the camera alone gives nothing better.
 void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &projector,
             const frontend::GravityChoice &gravity, const frontend::MinimumSize &minimum) {
     std::string lines;
     std::size_t found = 0;
     SurfaceDetector detector(projector, cfg);  // one for the whole bag: its buffers are reused
+    ContinuousTracker steady(continuousSettings(projector, cfg));
     frontend::BagRequest request;
     request.bag = o.bag;
     request.topic = o.topic;
     request.info_topic = o.info_topic;
     auto detectOne = [&](const Cloud &cloud, const BagCloudInfo &info, const std::string &topic) {
-        const Eigen::Vector3d down = frontend::resolveGravity(gravity, cloud).gravity;
-        const Detection det = frontend::detectAnswer(detector, cloud, down, minimum,
-                                                     o.bag + ":" + topic + "#" + std::to_string(info.index));
+        const Detection det = frontend::detectWithGravity(detector, cloud, gravity, minimum,
+                                                          o.bag + ":" + topic + "#" + std::to_string(info.index))
+                                  .detection;
         nlohmann::json j = frontend::detectionDocument(det, cfg, projector, o.explain);
+        if (o.steady) frontend::addContinuousFrame(j, steady.update(det, cloud, Eigen::Isometry3d::Identity()));
         j["bag"] = {{"index", info.index}, {"stamp", info.stamp}, {"frame_id", info.frame_id}, {"topic", topic}};
         found += det.found ? 1 : 0;
         if (o.json.empty())
@@ -134,6 +139,8 @@ void run(const DetectOptions &o, const CLI::App &sub) {
             throw InputError("arguments", "--overlay and --rgb are for one cloud, not --bag");
     } else if (!o.topic.empty() || !o.info_topic.empty()) {
         throw InputError("arguments", "--topic and --camera-info-topic go with --bag");
+    } else if (o.steady) {
+        throw InputError("arguments", "--steady goes with --bag (a stream of frames); one cloud has nothing to hold");
     } else if (o.cloud.empty() == o.depth.empty()) {
         throw InputError("arguments", "give exactly one of --cloud FILE, --depth FILE or --bag FILE");
     }
@@ -178,9 +185,11 @@ void run(const DetectOptions &o, const CLI::App &sub) {
                      "depth only\n",
                      o.suitability.c_str());
 
-    const frontend::ResolvedGravity resolved = frontend::resolveGravity(gravity_choice, cloud);
-    const Eigen::Vector3d gravity = resolved.gravity;
-    if (gravity_choice.from_floor && !resolved.floor_found)
+    SurfaceDetector detector(projector, cfg);
+    const frontend::GravityDetection answer =
+        frontend::detectWithGravity(detector, cloud, gravity_choice, minimum, o.cloud.empty() ? o.depth : o.cloud);
+    const Detection &det = answer.detection;
+    if (gravity_choice.from_floor && !answer.gravity.floor_found)
         std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
     else if (o.gravity.empty())
         warnIfTilted(cloud);
@@ -189,9 +198,6 @@ void run(const DetectOptions &o, const CLI::App &sub) {
             std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
     if (const auto w = frontend::depthRangeWarning(cloud, o.depth.empty() ? o.cloud : o.camera, !o.depth.empty()))
         std::fprintf(stderr, "projsurf: warning: %s\n", w->c_str());
-    SurfaceDetector detector(projector, cfg);
-    const Detection det =
-        frontend::detectAnswer(detector, cloud, gravity, minimum, o.cloud.empty() ? o.depth : o.cloud);
     const nlohmann::json j = frontend::detectionDocument(det, cfg, projector, o.explain);
     // Both outputs, or neither: written beside their targets, renamed once both are there.
     OutputGroup outputs;
@@ -232,6 +238,9 @@ void addDetectCommand(CLI::App &app) {
     sub->add_option("--aspect", o->aspect, "Picture aspect ratio W:H (default: the framebuffer's)");
     sub->add_option("--json", o->json, "Write the detection JSON here (else it goes to stdout)");
     sub->add_option("--overlay", o->overlay, "Write a picture of what was detected here (PNG)");
+    sub->add_flag("--steady", o->steady,
+                  "With --bag: continuous mode over its messages, each line with `shown` (the rectangle to show, "
+                  "kept steady) and `event`; the camera is taken to stand still");
     sub->add_flag("--explain", o->explain,
                   "Say why the picture is where it is: every vertical plane considered, its distance and size, and "
                   "why it lost (JSON key candidates, one line each after the summary, outlined on the overlay)");

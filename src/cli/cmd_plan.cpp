@@ -48,14 +48,14 @@ void run(const PlanCliOptions &o) {
     std::unique_ptr<CameraIntrinsics> camera;
     if (!o.depth.empty()) camera = std::make_unique<CameraIntrinsics>(readCamera(o.camera));
     const Cloud cloud = o.cloud.empty() ? readDepthCloud(o.depth, o.camera) : readCloud(o.cloud);
-    const frontend::ResolvedGravity resolved = frontend::resolveGravity(choice, cloud);
-    if (choice.from_floor && !resolved.floor_found)
-        std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
-    const Eigen::Vector3d gravity = resolved.gravity;
     // Today's answer is detect's, by the same call.
     SurfaceDetector detector(projector, cfg);
-    const Detection today = frontend::detectAnswer(detector, cloud, gravity, frontend::defaultMinimumSize(cfg.method),
-                                                   o.cloud.empty() ? o.depth : o.cloud);
+    const frontend::GravityDetection answer = frontend::detectWithGravity(
+        detector, cloud, choice, frontend::defaultMinimumSize(cfg.method), o.cloud.empty() ? o.depth : o.cloud);
+    if (choice.from_floor && !answer.gravity.floor_found)
+        std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
+    const Eigen::Vector3d gravity = answer.gravity.gravity;
+    const Detection &today = answer.detection;
     const PlanResult r = planStand(cloud, projector, cfg, gravity, o.plan, today);
     const nlohmann::json j = frontend::planToJson(r);
     OutputGroup outputs;

@@ -3,6 +3,8 @@
 // image with the camera_info of its stamp), picking the topic itself when there is one.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -43,22 +45,28 @@ std::vector<nlohmann::json> jsonLines(const std::string &text) {
     return out;
 }
 
-}  // namespace
-
-TEST(CliBag, PngFramesToABagThatDetectReadsLikeTheFrames) {
-    const fs::path dir = freshDir("cli_bag");
+/// dir/frames.bag by `projsurf bag` from 320x240 depth PNGs (dir/depth/0001.png, ...) of a
+/// wall at each (distance m, angle deg), 10 frames a second; dir/camera.yaml is their camera.
+CliRun wallBag(const fs::path &dir, const std::vector<std::pair<double, double>> &walls) {
     CameraIntrinsics cam;
     cam.width = 320, cam.height = 240, cam.fx = cam.fy = 262.5, cam.cx = 159.5, cam.cy = 119.5;
     writeCamera((dir / "camera.yaml").string(), cam);
     fs::create_directories(dir / "depth");
-    const double angles[3] = {0.0, 10.0, 20.0};
-    for (int i = 0; i < 3; ++i)
+    for (std::size_t i = 0; i < walls.size(); ++i)
         cv::imwrite((dir / "depth" / ("000" + std::to_string(i + 1) + ".png")).string(),
-                    wallDepth(cam, 2.0, angles[i]));
+                    wallDepth(cam, walls[i].first, walls[i].second));
+    return cli("bag --depth-dir " + (dir / "depth").string() + " --camera " + (dir / "camera.yaml").string() +
+                   " --out " + (dir / "frames.bag").string() + " --fps 10",
+               dir);
+}
+
+}  // namespace
+
+TEST(CliBag, PngFramesToABagThatDetectReadsLikeTheFrames) {
+    const fs::path dir = freshDir("cli_bag");
+    const double angles[3] = {0.0, 10.0, 20.0};
+    CliRun r = wallBag(dir, {{2.0, angles[0]}, {2.0, angles[1]}, {2.0, angles[2]}});
     const std::string bag = (dir / "frames.bag").string();
-    CliRun r = cli("bag --depth-dir " + (dir / "depth").string() + " --camera " + (dir / "camera.yaml").string() +
-                       " --out " + bag + " --fps 10",
-                   dir);
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("projsurf bag: 3 depth frames"), std::string::npos) << r.out;
 
@@ -139,5 +147,61 @@ TEST(CliBag, TwoUsableTopicsNeedTopicAndEachDepthImageTakesTheCameraInfoOfItsSta
     // /b has no camera_info beside it, and the bag's only one is /a's: taken.
     r = cli("detect --bag " + bag + " --topic /b/depth/image --calib " + kCalib, dir);
     EXPECT_EQ(r.status, 0) << r.err;
+    fs::remove_all(dir);
+}
+
+namespace {
+
+/// Largest distance of a corner of `a` from the same corner of `b` (rectangle JSON), m.
+double cornerMove(const nlohmann::json &a, const nlohmann::json &b) {
+    double worst = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        double d2 = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            const double d = a["corners"][i][k].get<double>() - b["corners"][i][k].get<double>();
+            d2 += d * d;
+        }
+        worst = std::max(worst, std::sqrt(d2));
+    }
+    return worst;
+}
+
+}  // namespace
+
+TEST(CliBag, SteadyKeepsTheShownRectangleWhileTheDetectionOfTheSameWallMoves) {
+    const fs::path dir = freshDir("cli_bag_steady");
+    // One wall, its distance read 1 cm off either way from frame to frame (a noisy sensor).
+    CliRun r = wallBag(dir, {{2.0, 0.0}, {2.01, 0.0}, {1.99, 0.0}, {2.01, 0.0}, {1.99, 0.0}, {2.0, 0.0}});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string bag = (dir / "frames.bag").string();
+
+    r = cli("detect --bag " + bag + " --calib " + kCalib + " --steady", dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    const auto lines = jsonLines(r.out);
+    ASSERT_EQ(lines.size(), 6u) << r.out;
+    double raw_moved = 0.0, shown_moved = 0.0;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        ASSERT_TRUE(lines[i]["found"].get<bool>()) << lines[i].dump();
+        EXPECT_EQ(lines[i]["event"], i == 0 ? "acquired" : "kept") << i;
+        ASSERT_TRUE(lines[i]["shown"].is_object()) << lines[i].dump();
+        raw_moved = std::max(raw_moved, cornerMove(lines[i]["rectangle"], lines[0]["rectangle"]));
+        shown_moved = std::max(shown_moved, cornerMove(lines[i]["shown"], lines[0]["shown"]));
+    }
+    EXPECT_GT(raw_moved, 0.009);    // the detection follows each frame's wall
+    EXPECT_LT(shown_moved, 0.004);  // the shown picture only follows the smoothed plane
+    EXPECT_LT(lines[0]["shown"]["width_m"].get<double>(), lines[0]["rectangle"]["width_m"].get<double>());
+
+    // Without --steady the lines are detect's alone; --steady needs a stream.
+    r = cli("detect --bag " + bag + " --calib " + kCalib, dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_FALSE(jsonLines(r.out)[0].contains("shown"));
+    r = cli("detect --depth " + (dir / "depth" / "0001.png").string() + " --camera " + (dir / "camera.yaml").string() +
+                " --calib " + kCalib + " --steady",
+            dir);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_EQ(r.err,
+              "projsurf: error: arguments: --steady goes with --bag (a stream of frames); one cloud has nothing "
+              "to hold\n");
     fs::remove_all(dir);
 }

@@ -19,4 +19,13 @@ Detection detectAnswer(SurfaceDetector &detector, const Cloud &cloud, const Eige
     return det;
 }
 
+GravityDetection detectWithGravity(SurfaceDetector &detector, const Cloud &cloud, const GravityChoice &choice,
+                                   const MinimumSize &minimum, const std::string &source,
+                                   const std::string &width_option, const std::string &area_option) {
+    GravityDetection out;
+    out.gravity = resolveGravity(choice, cloud);
+    out.detection = detectAnswer(detector, cloud, out.gravity.gravity, minimum, source, width_option, area_option);
+    return out;
+}
+
 }  // namespace projsurf::frontend

@@ -19,6 +19,16 @@ double round6(double v) { return std::round(v * 1e6) / 1e6; }
 
 }  // namespace
 
+nlohmann::json rectangleToJson(const Rectangle &rect) {
+    if (!(rect.area() > 0.0)) return nullptr;
+    nlohmann::json corners = nlohmann::json::array();
+    for (const auto &c : rect.corners) corners.push_back(vec(c));
+    return {{"corners", corners},
+            {"width_m", round6(rect.width)},
+            {"height_m", round6(rect.height)},
+            {"area_m2", round6(rect.area())}};
+}
+
 nlohmann::json detectionToJson(const Detection &det, const DetectorConfig &config, const Projector *projector) {
     nlohmann::json j;
     j["found"] = det.found;
@@ -32,16 +42,7 @@ nlohmann::json detectionToJson(const Detection &det, const DetectorConfig &confi
     } else {
         j["plane"] = nullptr;
     }
-    if (det.rectangle.area() > 0.0) {
-        nlohmann::json corners = nlohmann::json::array();
-        for (const auto &c : det.rectangle.corners) corners.push_back(vec(c));
-        j["rectangle"] = {{"corners", corners},
-                          {"width_m", round6(det.rectangle.width)},
-                          {"height_m", round6(det.rectangle.height)},
-                          {"area_m2", round6(det.rectangle.area())}};
-    } else {
-        j["rectangle"] = nullptr;
-    }
+    j["rectangle"] = rectangleToJson(det.rectangle);
     j["surface_check"] = {{"points", det.surface_check.points},
                           {"outliers", det.surface_check.outliers},
                           {"accepted", det.surface_check.accepted}};

@@ -13,6 +13,10 @@ namespace projsurf {
 nlohmann::json detectionToJson(const Detection &detection, const DetectorConfig &config,
                                const Projector *projector = nullptr);
 
+/// A rectangle as the contract writes `rectangle`: corners (TL, TR, BR, BL; camera frame, m),
+/// width_m, height_m, area_m2; null when it has no area.
+nlohmann::json rectangleToJson(const Rectangle &rect);
+
 /// What `correct` needs from a detection file.
 struct DetectionFile {
     bool found = false;
