@@ -28,7 +28,7 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"
-#include "projsurf/io/overlay.hpp"
+#include "projsurf/frontend/overlay.hpp"
 #include "projsurf/io/utf8_text.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/keystone/keystone.hpp"

@@ -10,7 +10,7 @@
 #include "projsurf/frontend/detect_answer.hpp"
 #include "projsurf/frontend/plan_json.hpp"
 #include "projsurf/io/errors.hpp"
-#include "projsurf/io/plan_overlay.hpp"
+#include "projsurf/frontend/plan_overlay.hpp"
 #include "projsurf/planning/stand_planner.hpp"
 
 namespace py = pybind11;

@@ -146,7 +146,7 @@ visualization_msgs::Marker outline(const std_msgs::Header &header, const std::st
 }
 
 /// Cells free by depth but unfit by their colour (surface suitability), one square point per
-/// cell, coloured by reason as in the CLI's overlay (io/overlay.cpp's legend, RGB here).
+/// cell, coloured by reason as in the CLI's overlay (frontend/overlay.cpp's legend, RGB here).
 visualization_msgs::Marker unfitCells(const DetectionDebug &g, const std_msgs::Header &header, const std::string &ns) {
     auto m = marker(header, ns, 5, visualization_msgs::Marker::POINTS, 1.0f, 1.0f, 1.0f, 0.8f);
     if (g.cell_state.empty() || g.grid_cell <= 0.0) return m;

@@ -18,7 +18,7 @@
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
-#include "projsurf/io/overlay.hpp"
+#include "projsurf/frontend/overlay.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace fs = std::filesystem;

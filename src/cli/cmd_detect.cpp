@@ -30,7 +30,7 @@
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
-#include "projsurf/io/overlay.hpp"
+#include "projsurf/frontend/overlay.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace projsurf::cli {

@@ -14,7 +14,7 @@
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
-#include "projsurf/io/plan_overlay.hpp"
+#include "projsurf/frontend/plan_overlay.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/planning/stand_planner.hpp"
 

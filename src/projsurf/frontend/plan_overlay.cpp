@@ -1,4 +1,4 @@
-#include "projsurf/io/plan_overlay.hpp"
+#include "projsurf/frontend/plan_overlay.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
-#include "projsurf/io/overlay.hpp"
+#include "projsurf/frontend/overlay.hpp"
 
 namespace projsurf {
 namespace {

@@ -1,4 +1,4 @@
-#include "projsurf/io/overlay.hpp"
+#include "projsurf/frontend/overlay.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
