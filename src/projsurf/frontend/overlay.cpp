@@ -276,7 +276,8 @@ std::vector<std::string> captionLines(const Detection &det, const DetectorConfig
 }
 
 /// The legend: what each colour means (the cells' states only when there are cells).
-std::vector<std::pair<cv::Scalar, std::string>> legendKey(const Detection &det, const DetectorConfig &config, bool explain) {
+std::vector<std::pair<cv::Scalar, std::string>> legendKey(const Detection &det, const DetectorConfig &config,
+                                                          bool explain) {
     std::vector<std::pair<cv::Scalar, std::string>> key{
         {kInlier, "wall points (on the wall as fitted)"},
         {kFree, config.method == Method::Paper ? "plane hull" : "free space on the wall"},

@@ -32,12 +32,13 @@ struct TopView {
     double mpp = 0.01;
     cv::Point2f origin;
     cv::Point2f operator()(const Eigen::Vector3d &p) const {
-        return {static_cast<float>(origin.x - p.dot(f.left) / mpp), static_cast<float>(origin.y - p.dot(f.forward) / mpp)};
+        return {static_cast<float>(origin.x - p.dot(f.left) / mpp),
+                static_cast<float>(origin.y - p.dot(f.forward) / mpp)};
     }
 };
 
-void drawRobot(cv::Mat &img, const TopView &v, const Eigen::Vector3d &at, const Eigen::Vector3d &forward,
-               double radius, const cv::Scalar &colour, const char *label) {
+void drawRobot(cv::Mat &img, const TopView &v, const Eigen::Vector3d &at, const Eigen::Vector3d &forward, double radius,
+               const cv::Scalar &colour, const char *label) {
     const cv::Point2f c = v(at);
     cv::circle(img, c, static_cast<int>(std::lround(radius / v.mpp)), colour, 2, cv::LINE_AA);
     cv::arrowedLine(img, c, v(at + 1.5 * radius * forward), colour, 2, cv::LINE_AA, 0, 0.25);
