@@ -26,10 +26,10 @@
 #include "bench_common.hpp"
 #include "bench_plan.hpp"
 #include "pcl_reference.hpp"
-#include "projsurf/types/projector.hpp"
-#include "projsurf/io/errors.hpp"
 #include "projsurf/detector/detector.hpp"
+#include "projsurf/io/errors.hpp"
 #include "projsurf/sim/scenarios.hpp"
+#include "projsurf/types/projector.hpp"
 
 namespace {
 
@@ -177,10 +177,10 @@ int moduleIndex(const std::string &key);
 
 /// Pipeline order: by paper module, then by the known order of the stage names.
 void sortStages(std::vector<std::string> &stages) {
-    static const std::vector<std::string> known = {"sample",       "voxel_grid",  "normals",          "ransac",
-                                                   "planes",       "plane",       "extract_project",  "hull",
-                                                   "concave_hull", "convex_hull", "workspace_raster", "free_space",
-                                                   "rectangle",    "crop",        "outliers",         "surface_check"};
+    static const std::vector<std::string> known = {
+        "sample",          "voxel_grid", "normals",      "ransac",      "planes",           "plane",
+        "extract_project", "hull",       "concave_hull", "convex_hull", "workspace_raster", "framing",
+        "free_space",      "rectangle",  "crop",         "outliers",    "surface_check"};
     auto rank = [&](const std::string &k) {
         const auto it = std::find(known.begin(), known.end(), k);
         return std::make_tuple(moduleIndex(k), static_cast<int>(it - known.begin()), k);
@@ -220,8 +220,8 @@ std::string moduleOf(const std::string &key) {
     if (has("check") || has("crop") || has("outlier")) return kModules[2];
     if (has("voxel") || has("sampl") || has("ransac") || has("plane") || has("normal") || has("segment"))
         return kModules[0];
-    if (has("hull") || has("free") || has("raster") || has("workspace") || has("rect") || has("extract") ||
-        has("project") || has("grid") || has("occup"))
+    if (has("hull") || has("fram") || has("free") || has("raster") || has("workspace") || has("rect") ||
+        has("extract") || has("project") || has("grid") || has("occup"))
         return kModules[1];
     return kModules[3];
 }

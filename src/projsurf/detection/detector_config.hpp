@@ -41,7 +41,7 @@ struct PlanarRegionOptions {
         0.15;  ///< rad, regions this parallel whose points lie within the obstacle margin of each other's plane are one
 };
 
-/// Default method, stage 1: the vertical planes in view: on depth images, planar regions of the
+/// Default method, stage 2 (`planes`): the vertical planes in view: on depth images, planar regions of the
 /// image (deterministic); on unorganized clouds, sequential RANSAC on a sample.
 struct PlaneSearchConfig {
     bool image_regions = true;  ///< organized clouds: planar regions instead of RANSAC
@@ -86,7 +86,7 @@ struct WallShapeOptions {
     WallReliefOptions relief;
 };
 
-/// Default method, stage 2: how each wall departs from its plane (detection/default/wall_shape.hpp).
+/// Default method, stage 4 (`wall_shape`): how each wall departs from its plane (detection/default/wall_shape.hpp).
 struct WallConfig {
     bool fit_shape = true;  ///< follow the smooth bend real depth cameras give a flat wall
     WallShapeOptions shape;
@@ -128,7 +128,7 @@ struct FreeStandingRule {
     double min_height = 0.1;  ///< m
 };
 
-/// Default method, stage 2: faces that stand free in the room (furniture, boxes, people), stand
+/// Default method, stage 4 (`wall_shape`): faces that stand free in the room (furniture, boxes, people), stand
 /// before a larger wall seen above them, or are too low for a picture are objects, not
 /// projection surfaces (detection/default/face_surround.hpp); depth images only.
 struct ObjectFaceConfig {
@@ -141,7 +141,7 @@ struct ObjectFaceConfig {
     double opening_depth = 0.8;
 };
 
-/// Default method, stage 3: where on a plane the camera saw free wall (paper 3.2.2).
+/// Default method, stage 4 (`free_space`): where on a plane the camera saw free wall (paper 3.2.2).
 /// Obstacle evidence over an area: what stands a centimetre or two proud of a wall (a picture
 /// frame, a switch) lies within the band of a noisy sensor point by point, but the mean of the
 /// readings over a few centimetres moves with it. The noise of such a mean is measured on the
@@ -170,7 +170,7 @@ struct FreeSpaceConfig {
     ProudEvidence proud;                  ///< what stands off the wall's shape on average over a window
 };
 
-/// Default method, stage 5: the surface check on the rectangle (paper 3.2.3).
+/// Default method, stage 4 (`surface_check`): the surface check on the rectangle (paper 3.2.3).
 struct SurfaceCheckConfig {
     double max_outlier_fraction = 0.03;  ///< share of checked points off the wall that rejects an area, measured
 };
@@ -230,7 +230,7 @@ struct SuitabilityOptions {
                                       ///< docs/tuning.md)
 };
 
-/// Default method, stage 4b: the surface's suitability from its colour, only when
+/// Default method, stage 4 (`suitability`): the surface's suitability from its colour, only when
 /// the cloud carries colour (without colour it is off whatever the mode).
 struct SuitabilityConfig {
     SuitabilityMode mode = SuitabilityMode::Avoid;

@@ -512,8 +512,9 @@ Choice chooseCandidate(const Cloud &cloud, const CloudSample &s, const Projector
         // shape its points may reach further, so the raster is laid again.
         shapeWall(cloud, s, cfg, gravity, c);
         const bool object = objectFace(cloud, s, cfg, c, candidates);
-        const bool framed = !object && frameCandidate(cloud, s, projector, cfg, aspect, c);
         time.lap("wall_shape");
+        const bool framed = !object && frameCandidate(cloud, s, projector, cfg, aspect, c);
+        time.lap("framing");
         if (object) r.objects.push_back(k);
         c.verdict = object ? CandidateVerdict::Object : CandidateVerdict::NotReached;
         if (!framed) continue;
@@ -612,7 +613,7 @@ Detection detectDefault(const Cloud &cloud, const Projector &projector, const De
 
     // 3. Those the projector reaches, the largest rectangle they could hold first.
     const std::vector<int> usable = frameCandidates(cloud, sample, projector, cfg, aspect, candidates, scratch);
-    time.lap("free_space");
+    time.lap("framing");
 
     // 4. Shape, free space, colour, rectangle and check of each, until none could beat the best.
     Choice choice = chooseCandidate(cloud, sample, projector, cfg, gravity, aspect, usable, candidates, scratch, time);
