@@ -25,10 +25,11 @@ def test_plan_overlay_is_the_clis_picture(projector, tmp_path):
     ours, theirs = plan["overlay"], projsurf.read_image(png)
     assert ours.shape == theirs.shape
     # The same picture but for the detection's time in its caption ("method default; 3.2 ms"):
-    # what differs fits in the box of one number.
+    # what differs lies on one line of text (a time with more digits, under load, moves the rest
+    # of its line).
     differ = np.argwhere((ours != theirs).any(axis=2))
     if len(differ):
-        assert (differ.max(axis=0) - differ.min(axis=0) <= [20, 40]).all(), differ.max(axis=0) - differ.min(axis=0)
+        assert differ[:, 0].max() - differ[:, 0].min() <= 20, (differ.min(axis=0), differ.max(axis=0))
     assert "overlay" not in projsurf.plan(cloud, projector)
     with pytest.raises(projsurf.InputError, match="^overlay: must be True or False$"):
         projsurf.plan(cloud, projector, overlay="yes")
