@@ -5,6 +5,7 @@
 
 #include "projsurf/detection/virtual_depth_image.hpp"
 #include "projsurf/types/depth_tolerance.hpp"
+#include "projsurf/types/plane.hpp"
 
 namespace projsurf {
 
@@ -33,7 +34,7 @@ struct PlanarRegionOptions {
     double min_fill = 0.5;         ///< share of a cell's points that must be readings
     double thickness_bands = 0.5;  ///< a flat cell is thinner (RMS off its plane) than this many inlier bands
     double seed_tilt = 0.5;        ///< rad, a region starts from a cell whose normal is within this of horizontal
-    double max_tilt = 0.1;         ///< rad, a region's plane within this of horizontal (contract)
+    double max_tilt = kVerticalTolerance;  ///< rad, a region's plane within this of horizontal (contract)
     double join_bands =
         0.6;  ///< a neighbour cell joins when its points' RMS distance to the region's plane is below this many bands
     int min_cells = 6;  ///< smaller regions are not surfaces
@@ -240,9 +241,9 @@ struct SuitabilityConfig {
 
 struct DetectorConfig {
     Method method = Method::Default;
-    double aspect = 0.0;    ///< picture width / height; 0 = the projector framebuffer's
-    double max_tilt = 0.1;  ///< rad, normal vs horizontal (contract; paper 3.2.1)
-    unsigned seed = 42;     ///< RANSAC random seed (runs are deterministic)
+    double aspect = 0.0;                   ///< picture width / height; 0 = the projector framebuffer's
+    double max_tilt = kVerticalTolerance;  ///< rad, normal vs horizontal (contract; paper 3.2.1)
+    unsigned seed = 42;                    ///< RANSAC random seed (runs are deterministic)
 
     DepthTolerance tolerance;        ///< how far off a plane a reading may be (default method)
     VirtualImageConfig unorganized;  ///< default method: unorganized clouds as a pinhole's depth image

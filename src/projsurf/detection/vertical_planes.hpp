@@ -6,17 +6,20 @@
 #include <random>
 #include <vector>
 
-#include "projsurf/types/depth_tolerance.hpp"
+#include "projsurf/detection/detector_config.hpp"
 #include "projsurf/detection/vertical_ransac.hpp"
+#include "projsurf/types/depth_tolerance.hpp"
 
 namespace projsurf {
 
 struct VerticalPlaneOptions {
-    RansacOptions ransac;       ///< per plane (max_tilt is the vertical tolerance)
-    int max_planes = 4;         ///< planes returned at most
-    int min_points = 150;       ///< inliers for a plane to count
-    int refine_rounds = 2;      ///< least-squares refits on the inliers
-    double merge_angle = 0.05;  ///< rad, normals this parallel (and offsets within the margin) merge
+    RansacOptions ransac;  ///< per plane (max_tilt is the vertical tolerance)
+    // The defaults are the detector's (PlaneSearchConfig), written there once.
+    int max_planes = PlaneSearchConfig{}.max_planes;        ///< planes returned at most
+    int min_points = PlaneSearchConfig{}.min_plane_points;  ///< inliers for a plane to count
+    int refine_rounds = PlaneSearchConfig{}.refine_rounds;  ///< least-squares refits on the inliers
+    double merge_angle =
+        PlaneSearchConfig{}.merge_angle;  ///< rad, normals this parallel (and offsets within the margin) merge
 };
 
 /// `band[i]` is the inlier distance of points[i]; `tolerance` gives the margin within which two

@@ -12,11 +12,11 @@
 namespace projsurf {
 
 struct RansacOptions {
-    double max_tilt = 0.1;         ///< rad, normal vs horizontal (paper 3.2.1)
-    int max_iterations = 1000;     ///< upper bound on hypotheses (PCL's default)
-    double probability = 0.99;     ///< stop when an all-inlier sample was drawn with this probability
-    int score_subset = 0;          ///< score hypotheses on this many points (0 = all)
-    double max_sample_span = 0.0;  ///< m; > 0 draws the 2nd and 3rd point within this of the 1st
+    double max_tilt = kVerticalTolerance;  ///< rad, normal vs horizontal (paper 3.2.1)
+    int max_iterations = 1000;             ///< upper bound on hypotheses (PCL's default)
+    double probability = 0.99;             ///< stop when an all-inlier sample was drawn with this probability
+    int score_subset = 0;                  ///< score hypotheses on this many points (0 = all)
+    double max_sample_span = 0.0;          ///< m; > 0 draws the 2nd and 3rd point within this of the 1st
 };
 
 struct PlaneInliers {

@@ -18,19 +18,19 @@
 #include <string>
 #include <vector>
 
+#include "projsurf/sim/scene.hpp"
+#include "projsurf/sim/sensor_model.hpp"
 #include "projsurf/types/plane.hpp"
 #include "projsurf/types/plane_frame.hpp"
 #include "projsurf/types/projector.hpp"
-#include "projsurf/sim/scene.hpp"
-#include "projsurf/sim/sensor_model.hpp"
 
 namespace projsurf::sim {
 
 struct TruthOptions {
-    double aspect = 0.0;      ///< width / height; 0 = the projector framebuffer's
-    double cell = 0.005;      ///< m, raster cell on the surface
-    double max_tilt = 0.1;    ///< rad, a surface is vertical within this (contract, paper 3.2.1)
-    double tolerance = 0.01;  ///< m, a hit this close in front of a cell does not hide it (posters)
+    double aspect = 0.0;                   ///< width / height; 0 = the projector framebuffer's
+    double cell = 0.005;                   ///< m, raster cell on the surface
+    double max_tilt = kVerticalTolerance;  ///< rad, a surface is vertical within this (contract, paper 3.2.1)
+    double tolerance = 0.01;               ///< m, a hit this close in front of a cell does not hide it (posters)
     /// Also require a depth reading to be possible: when the sensor models the IR emitter's
     /// shadow, cells the emitter's pattern cannot reach (beside foreground edges) are not
     /// free. Off by default: those cells are free wall, only unmeasured.

@@ -8,6 +8,11 @@
 
 namespace projsurf {
 
+/// rad: a plane is vertical when its normal is within this of horizontal (perpendicular to
+/// gravity): the contract's `--max-tilt` default (paper 3.2.1). Every default that says
+/// "vertical" is this one.
+constexpr double kVerticalTolerance = 0.1;
+
 /// n . x + d = 0 with |n| = 1. Oriented so that the camera (origin) is on the positive
 /// side (d > 0): the normal points from the wall towards the camera.
 struct Plane {
