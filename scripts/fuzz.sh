@@ -5,7 +5,8 @@
 # (build-sanitize, configured by scripts/sanitize.sh). Seeds are made here from the simulator
 # (`projsurf simulate`, `projsurf detect`): nothing binary is committed. Each reader must run
 # at least FUZZ_RUNS inputs (default 10000; structured, which writes a folder and decodes it
-# for each, a fifth; plan, which searches stances for each, a tenth) within FUZZ_SECONDS (default 60) with no finding;
+# for each, a fifth; plan, which searches stances for each, a tenth) within FUZZ_SECONDS (default 60;
+# those two three times as long) with no finding;
 # the memory target (2 GiB) is libFuzzer's -rss_limit_mb and -malloc_limit_mb.
 # Findings (crash-*, oom-*, timeout-*) are kept in build-sanitize/fuzz/artifacts.
 set -euo pipefail
