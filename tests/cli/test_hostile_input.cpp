@@ -649,6 +649,18 @@ TEST_F(Hostile, ProcamXmlMatrixOfAHugeDeclaredSizeIsRefusedBeforeItIsAllocated) 
     refused("eval --no-progress --procam " + at("procam") + " --out " + at("e"), path, "matrix 'cam_int'");
 }
 
+TEST_F(Hostile, ProcamXmlCutShortOrWithoutItsStorageElementIsRefusedBeforeOpenCvReadsIt) {
+    // OpenCV's XML reader read through a null pointer on a header cut short (found by
+    // fuzz_procam_xml): only a whole document reaches it.
+    fs::create_directories(dir_ / "procam");
+    const std::string path = (dir_ / "procam" / "calibration_result.xml").string();
+    writeBytes(dir_ / "procam" / "calibration_result.xml", "<?xml versi=");
+    refused("eval --no-progress --procam " + at("procam") + " --out " + at("e"), path, "<?xml ...?> header");
+    writeBytes(dir_ / "procam" / "calibration_result.xml",
+               "<?xml version=\"1.0\"?>\n<opencv_storage>\n<cam_int type_id=\"opencv-matrix\">\n");
+    refused("eval --no-progress --procam " + at("procam") + " --out " + at("e"), path, "<opencv_storage> element");
+}
+
 TEST_F(Hostile, SequenceFramesAndBagFramesThatAreNoFilesAreNamed) {
     // A FIFO where a frame belongs ended the sequence there (a 1-frame video, exit 0) or was
     // skipped by bag; a missing number still ends a sequence.

@@ -34,11 +34,30 @@ cv::Mat matrix(const cv::FileStorage &fs, const std::string &path, const std::st
     return m.reshape(1, rows);
 }
 
+/// OpenCV's XML reader is handed only a whole document: its `<?xml ...?>` header closed on the
+/// first line and one `<opencv_storage>` element closed at the end (OpenCV 4.6's reader reads
+/// through a null pointer on a header cut short, `<?xml versi=`: found by fuzz_procam_xml).
+void checkXmlDocument(const std::string &path, const std::string &text) {
+    const std::size_t start = text.find_first_not_of(" \t\r\n");
+    const std::size_t eol = text.find('\n', start == std::string::npos ? 0 : start);
+    const std::string first = start == std::string::npos ? "" : text.substr(start, eol - start);
+    if (first.rfind("<?xml", 0) != 0 || first.find("?>") == std::string::npos)
+        throw InputError(path, "not an OpenCV XML file (its first line is not an <?xml ...?> header)");
+    const std::size_t open = text.find("<opencv_storage>");
+    const std::size_t close = text.rfind("</opencv_storage>");
+    const std::size_t end = text.find_last_not_of(" \t\r\n");
+    if (open == std::string::npos || close == std::string::npos || close < open ||
+        close + std::string("</opencv_storage>").size() != end + 1)
+        throw InputError(path, "not an OpenCV XML file (no <opencv_storage> element from after the header to the end)");
+}
+
 }  // namespace
 
 PublishedProcam readProcamXml(const std::string &path) {
-    // Read and checked first (size, nesting): OpenCV's parser recurses once per element.
+    // Read and checked first (size, nesting, a whole document): OpenCV's parser recurses once
+    // per element and trusts its input's shape.
     const std::string text = readSmallTextFile(path, limits::kMaxJsonBytes, "XML");
+    checkXmlDocument(path, text);
     cv::FileStorage fs;
     try {
         fs.open(text, cv::FileStorage::READ | cv::FileStorage::MEMORY);
