@@ -284,11 +284,12 @@ std::string exampleReportMarkdown(const std::vector<LabelledFrame> &frames, cons
           "surface as above (so not on furniture, a person or an obstacle: the target is none off the labelled "
           "surfaces); nothing found is right where the reference search with this projector (blue) finds no usable "
           "surface either, a *miss* otherwise.\n\n";
-    md << "**" << exampleSummaryLine(summariseExample(frames)) << ".**\n\n";
+    const ExampleSummary summary = summariseExample(frames);
+    md << "**" << exampleSummaryLine(summary) << ".**\n\n";
     md << "`projsurf detect` does not show a picture below its minimum size (`--min-width`, `--min-area`): the "
           "column *as shown* judges what it reports, where a smaller answer is found: false and a smaller reference "
           "means no usable surface.\n\n**"
-       << exampleShownSummaryLine(summariseExample(frames)) << ".**\n\n";
+       << exampleShownSummaryLine(summary) << ".**\n\n";
     md << "| Frame | reference (m²) | detector (m²) | right | as shown | free % | surface | why not "
           "|\n|---|---:|---:|---|---|---:|---|---|\n";
     for (const auto &f : frames) {

@@ -193,8 +193,9 @@ std::vector<eval::LabelledFrame> runLabelled(const std::vector<std::string> &lab
 void printLabelledLines(const std::vector<eval::LabelledFrame> &labelled) {
     if (labelled.empty()) return;
     std::printf("%s\n", eval::labelledSummaryLine(eval::summariseLabelled(labelled)).c_str());
-    std::printf("%s\n", eval::exampleSummaryLine(eval::summariseExample(labelled)).c_str());
-    std::printf("%s\n", eval::exampleShownSummaryLine(eval::summariseExample(labelled)).c_str());
+    const eval::ExampleSummary example = eval::summariseExample(labelled);
+    std::printf("%s\n", eval::exampleSummaryLine(example).c_str());
+    std::printf("%s\n", eval::exampleShownSummaryLine(example).c_str());
     if (eval::summariseColour(labelled).judged > 0)
         std::printf("%s\n", eval::colourSummaryLine(summariseColour(labelled)).c_str());
 }

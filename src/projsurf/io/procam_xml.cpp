@@ -43,11 +43,11 @@ void checkXmlDocument(const std::string &path, const std::string &text) {
     const std::string first = start == std::string::npos ? "" : text.substr(start, eol - start);
     if (first.rfind("<?xml", 0) != 0 || first.find("?>") == std::string::npos)
         throw InputError(path, "not an OpenCV XML file (its first line is not an <?xml ...?> header)");
+    const std::string closing = "</opencv_storage>";
     const std::size_t open = text.find("<opencv_storage>");
-    const std::size_t close = text.rfind("</opencv_storage>");
+    const std::size_t close = text.rfind(closing);
     const std::size_t end = text.find_last_not_of(" \t\r\n");
-    if (open == std::string::npos || close == std::string::npos || close < open ||
-        close + std::string("</opencv_storage>").size() != end + 1)
+    if (open == std::string::npos || close == std::string::npos || close < open || close + closing.size() != end + 1)
         throw InputError(path, "not an OpenCV XML file (no <opencv_storage> element from after the header to the end)");
 }
 
