@@ -154,6 +154,7 @@ DetectorOptions detectorOptions(const DetectorArguments &a) {
     o.minimum.area = minimumFrom("min_area", a.min_area, defaults.area);
     o.gravity = gravityFrom(a.gravity);
     o.gravity_given = !a.gravity.is_none() && !o.gravity.from_floor;
+    o.gravity_level_assumed = a.gravity.is_none();
     std::vector<std::string> given = a.settings ? applySettings(a.settings, o) : std::vector<std::string>{};
     if (!a.hull.is_none()) given.push_back("hull");
     if (!a.suitability.is_none()) given.push_back("suitability");
@@ -173,6 +174,8 @@ CheckedDetection detectChecked(SurfaceDetector &detector, const DetectorOptions 
     out.gravity = answer.gravity.gravity;
     if (options.gravity.from_floor && !answer.gravity.floor_found)
         out.warnings.push_back("gravity='auto' found no floor; assuming a level camera");
+    else if (options.gravity_level_assumed)
+        if (const auto w = frontend::levelCameraWarning("gravity='auto'", cloud)) out.warnings.push_back(*w);
     if (options.gravity_given)
         for (const std::string &w : frontend::gravityWarnings("gravity", options.gravity.gravity, cloud))
             out.warnings.push_back(w);

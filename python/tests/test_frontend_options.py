@@ -3,6 +3,7 @@ min_width / min_area as `detect --min-width/--min-area`, aspect and gravity as t
 import json
 import os
 import subprocess
+import warnings
 
 import numpy as np
 import pytest
@@ -126,6 +127,14 @@ def test_the_clis_input_warnings_are_user_warnings(projector):
     cloud = wall_and_floor_cloud()
     with pytest.warns(UserWarning, match="^gravity 0,-1,0 puts the floor above the camera"):
         projsurf.detect(cloud, projector, gravity=[0, -1, 0])
+    # No gravity given and a camera pitched 20 deg: the CLI's "give --gravity auto", in Python's words.
+    pitched = wall_and_floor_cloud(pitch_deg=20.0)
+    with pytest.warns(UserWarning, match=r"^the floor says the camera is tilted 20 deg from level; give gravity='auto'"):
+        projsurf.detect(pitched, projector)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        projsurf.detect(pitched, projector, gravity="auto")  # asked for: no warning
+        projsurf.detect(cloud, projector)  # a level camera: none either
     # A cloud in millimetres.
     with pytest.warns(UserWarning, match="millimetres"):
         projsurf.detect(cloud * 1000.0, projector)

@@ -25,18 +25,16 @@
 #include "projsurf/frontend/method_settings.hpp"
 #include "projsurf/frontend/method_words.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
+#include "projsurf/frontend/overlay.hpp"
 #include "projsurf/frontend/registered_colour.hpp"
 #include "projsurf/frontend/suitability_mode.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
-#include "projsurf/frontend/overlay.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace projsurf::cli {
 namespace {
-
-constexpr double kTiltWarningDeg = 5.0;  ///< deg, a floor this far from level means the camera is not level
 
 struct DetectOptions {
     std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity,
@@ -45,16 +43,6 @@ struct DetectOptions {
     DetectorConfig config;                     ///< the pipeline flags' values (used where a flag was given)
     double min_width = -1.0, min_area = -1.0;  ///< m, m^2; < 0: the method's default (frontend/minimum_size.hpp)
 };
-
-/// A level camera is assumed (no --gravity), but the floor says the camera is tilted.
-void warnIfTilted(const Cloud &cloud) {
-    const auto deg = frontend::floorTiltFromLevelDeg(cloud);
-    if (deg && *deg > kTiltWarningDeg)
-        std::fprintf(stderr,
-                     "projsurf: warning: the floor says the camera is tilted %.0f deg from level; give --gravity auto "
-                     "(or the robot's gravity) so that the picture stands upright\n",
-                     *deg);
-}
 
 /// Options the chosen method does not use (frontend/method_settings.hpp).
 void warnIfIgnored(const CLI::App &sub, Method method) {
@@ -192,7 +180,8 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     if (gravity_choice.from_floor && !answer.gravity.floor_found)
         std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
     else if (o.gravity.empty())
-        warnIfTilted(cloud);
+        if (const auto w = frontend::levelCameraWarning("--gravity auto", cloud))
+            std::fprintf(stderr, "projsurf: warning: %s\n", w->c_str());
     if (!o.gravity.empty() && !gravity_choice.from_floor)
         for (const std::string &w : frontend::gravityWarnings("--gravity", gravity_choice.gravity, cloud))
             std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "projsurf/detection/gravity.hpp"
+#include "projsurf/frontend/gravity_choice.hpp"
 
 namespace projsurf::frontend {
 namespace {
@@ -35,8 +36,18 @@ std::vector<std::string> gravityWarnings(const std::string &what, const Eigen::V
     if (against && (!along || against->floor_points > 2 * along->floor_points))
         out.push_back(what + " " + vec(gravity) +
                       " puts the floor above the camera: gravity points down, towards the floor (a raw "
-                      "accelerometer reading points up; give " + vec(-gravity) + ", or auto)");
+                      "accelerometer reading points up; give " +
+                      vec(-gravity) + ", or auto)");
     return out;
+}
+
+std::optional<std::string> levelCameraWarning(const std::string &how_auto, const Cloud &cloud) {
+    const auto deg = floorTiltFromLevelDeg(cloud);
+    if (!deg || !(*deg > kTiltWarningDeg)) return std::nullopt;
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.0f", *deg);
+    return std::string("the floor says the camera is tilted ") + buf + " deg from level; give " + how_auto +
+           " (or the robot's gravity) so that the picture stands upright";
 }
 
 }  // namespace projsurf::frontend
