@@ -22,13 +22,13 @@
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/frontend/depth_image_cloud.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
+#include "projsurf/frontend/overlay.hpp"
 #include "projsurf/frontend/rectangle_blanking.hpp"
 #include "projsurf/frontend/registered_colour.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"
-#include "projsurf/frontend/overlay.hpp"
 #include "projsurf/io/utf8_text.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/keystone/keystone.hpp"
@@ -235,11 +235,18 @@ PYBIND11_MODULE(projsurf, m) {
         });
 
     m.def(
-        "read_calibration", [](const py::object &path) { return readCalibration(pathArgument(path, "path")); },
+        "read_calibration",
+        [](const py::object &path) {
+            std::vector<std::string> warnings;  // unknown keys under projector: (a typo), as the CLI warns
+            Projector projector = readCalibration(pathArgument(path, "path"), &warnings);
+            warnAll(warnings);
+            return projector;
+        },
         "path"_a,
         "Reads a calibration YAML (docs/interface.md): projector.resolution, fov_deg and axis (origin,\n"
         "direction), and the full model's optional intrinsics, distortion and rotation when present.\n"
-        "Other keys (calibrate's fit report) are not read. Raises InputError.");
+        "Other keys (calibrate's fit report) are not read; an unknown key under projector: (a typo)\n"
+        "gives a UserWarning. Raises InputError.");
     m.def(
         "write_calibration",
         [](const py::object &path, const py::object &projector) {

@@ -122,7 +122,7 @@ def test_colour_is_checked_by_the_clis_policy(projector, tmp_path):
         projsurf.detect(points, projector, colour=np.ascontiguousarray(rgb[::2, ::2]))
 
 
-def test_the_clis_input_warnings_are_user_warnings(projector):
+def test_the_clis_input_warnings_are_user_warnings(projector, tmp_path):
     # An "up" vector (a raw accelerometer reading) given as gravity: the floor contradicts it.
     cloud = wall_and_floor_cloud()
     with pytest.warns(UserWarning, match="^gravity 0,-1,0 puts the floor above the camera"):
@@ -135,6 +135,11 @@ def test_the_clis_input_warnings_are_user_warnings(projector):
         warnings.simplefilter("error")
         projsurf.detect(pitched, projector, gravity="auto")  # asked for: no warning
         projsurf.detect(cloud, projector)  # a level camera: none either
+    # A typo under the calibration's projector: (its distortion would be lost).
+    typo = tmp_path / "calib_typo.yaml"
+    typo.write_text(open(EXAMPLE_CALIB).read() + "  distorsion: [0.1, 0, 0, 0, 0]\n")
+    with pytest.warns(UserWarning, match=r"calib_typo.yaml: unknown key 'projector.distorsion' is ignored"):
+        projsurf.read_calibration(str(typo))
     # A cloud in millimetres.
     with pytest.warns(UserWarning, match="millimetres"):
         projsurf.detect(cloud * 1000.0, projector)

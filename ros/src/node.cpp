@@ -70,6 +70,7 @@ ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams p
         ROS_WARN(
             "projsurf_node: ~suitability needs registered colour (~use_colour); the surface is judged by depth only");
     }
+    for (const std::string &w : params_.calib_warnings) ROS_WARN("projsurf_node: %s", w.c_str());
     ROS_INFO("projsurf_node: projector %dx%d from %s; %s mode; listening on %s (or %s + %s)", params_.projector.width,
              params_.projector.height, params_.calib.c_str(), params_.continuous ? "continuous" : "on-demand (~detect)",
              cloud_sub_.getTopic().c_str(), depth_sub_.getTopic().c_str(), info_sub_.getTopic().c_str());

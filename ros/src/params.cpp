@@ -62,7 +62,7 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
     NodeParams p;
     if (!pnh.getParam("calib", p.calib) || p.calib.empty())
         throw InputError(name(pnh, "calib"), "is required: the path of the projector calibration YAML");
-    p.projector = readCalibration(p.calib);
+    p.projector = readCalibration(p.calib, &p.calib_warnings);
     get(pnh, "image", p.image);
     get(pnh, "continuous", p.continuous);
     get(pnh, "blank", p.blank);

@@ -5,6 +5,7 @@
 #include <ros/node_handle.h>
 
 #include <string>
+#include <vector>
 
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
@@ -17,9 +18,10 @@
 namespace projsurf::ros_node {
 
 struct NodeParams {
-    std::string calib;        ///< ~calib: projector calibration YAML (required)
-    std::string image;        ///< ~image: picture to show (optional; the `image` topic overrides it)
-    bool continuous = false;  ///< ~continuous: detect on every cloud and keep the picture steady
+    std::string calib;                        ///< ~calib: projector calibration YAML (required)
+    std::vector<std::string> calib_warnings;  ///< unknown keys in ~calib's `projector:` (the node logs them)
+    std::string image;                        ///< ~image: picture to show (optional; the `image` topic overrides it)
+    bool continuous = false;                  ///< ~continuous: detect on every cloud and keep the picture steady
     /// ~use_colour: pair each cloud with the registered colour image of its stamp (topic
     /// `rgb/image_rect_color`) for the surface suitability; false = depth only.
     bool use_colour = false;

@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "cli/calibration_input.hpp"
 #include "cli/commands.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/frontend/progress.hpp"
@@ -153,7 +154,7 @@ void run(const CorrectOptions &o) {
     if (input.empty()) throw InputError("correct", "--image (a picture, video or image-sequence pattern) is required");
     const bool video = !o.video.empty() || isVideoPath(input) || isFramePattern(input);
     // Validate every input and output location before any work.
-    const Projector projector = readCalibration(o.calib);
+    const Projector projector = readCalibrationWarned(o.calib);
     const DetectionFile det = readDetectionJson(o.detection);
     if (!o.cloud.empty() && !o.depth.empty()) throw InputError("arguments", "give --cloud or --depth, not both");
     if (!o.depth.empty() && o.camera.empty()) throw InputError("arguments", "--depth needs --camera camera.yaml");

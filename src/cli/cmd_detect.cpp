@@ -7,6 +7,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "cli/calibration_input.hpp"
 #include "cli/commands.hpp"
 #include "projsurf/detection/gravity.hpp"
 #include "projsurf/frontend/aspect.hpp"
@@ -140,7 +141,7 @@ void run(const DetectOptions &o, const CLI::App &sub) {
         if (!out.empty()) requireWritableFile(out);
     if (!o.overlay.empty()) requireImageWriter(o.overlay);
 
-    const Projector projector = readCalibration(o.calib);
+    const Projector projector = readCalibrationWarned(o.calib);
     if (readCalibrationVerdict(o.calib) == "redo")
         std::fprintf(stderr,
                      "projsurf: warning: %s: its captures disagree (fit verdict redo); the picture may land "

@@ -5,16 +5,17 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "cli/calibration_input.hpp"
 #include "cli/commands.hpp"
 #include "projsurf/frontend/aspect.hpp"
 #include "projsurf/frontend/detect_answer.hpp"
 #include "projsurf/frontend/detector_config_file.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/frontend/plan_json.hpp"
+#include "projsurf/frontend/plan_overlay.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
-#include "projsurf/frontend/plan_overlay.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/planning/stand_planner.hpp"
 
@@ -44,7 +45,7 @@ void run(const PlanCliOptions &o) {
     if (!o.config_file.empty()) frontend::readDetectorConfig(o.config_file, cfg);
     if (!o.aspect.empty()) cfg.aspect = frontend::parseAspect("--aspect", o.aspect);
     const frontend::GravityChoice choice = frontend::parseGravityChoice("--gravity", o.gravity);
-    const Projector projector = readCalibration(o.calib);
+    const Projector projector = readCalibrationWarned(o.calib);
     std::unique_ptr<CameraIntrinsics> camera;
     if (!o.depth.empty()) camera = std::make_unique<CameraIntrinsics>(readCamera(o.camera));
     const Cloud cloud = o.cloud.empty() ? readDepthCloud(o.depth, o.camera) : readCloud(o.cloud);

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "cli/calibration_input.hpp"
 #include "cli/commands.hpp"
 #include "eval/truth_json.hpp"
 #include "projsurf/frontend/aspect.hpp"
@@ -93,7 +94,7 @@ void run(const SimulateOptions &o) {
         throw InputError("--roll-deg", "must be within +-45 degrees");
     if (!std::isfinite(o.pitch_deg) || std::abs(o.pitch_deg) > 30.0)
         throw InputError("--pitch-deg", "must be within +-30 degrees");
-    const Projector projector = o.calib.empty() ? sim::exampleProjector() : readCalibration(o.calib);
+    const Projector projector = o.calib.empty() ? sim::exampleProjector() : readCalibrationWarned(o.calib);
     const double aspect = o.aspect.empty() ? projector.aspect() : frontend::parseAspect("--aspect", o.aspect);
     std::optional<sim::Projection> projection;
     if (!o.picture.empty()) {

@@ -7,14 +7,15 @@
 #include <iostream>
 #include <opencv2/imgcodecs.hpp>
 
+#include "cli/calibration_input.hpp"
 #include "cli/commands.hpp"
-#include "projsurf/keystone/keystone.hpp"
 #include "projsurf/calibration/projected_picture.hpp"
 #include "projsurf/frontend/resolution.hpp"
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/yaml_files.hpp"
+#include "projsurf/keystone/keystone.hpp"
 
 namespace fs = std::filesystem;
 
@@ -49,7 +50,7 @@ void run(const VerifyOptions &o) {
         if (value.empty()) throw CLI::RequiredError(name);
     if (!(o.tolerance > 0 && o.tolerance < 1)) throw InputError("--tolerance", "must be between 0 and 1 m");
     if (!o.json.empty()) requireWritableFile(o.json);
-    const Projector projector = readCalibration(o.calib);
+    const Projector projector = readCalibrationWarned(o.calib);
     const DetectionFile det = readDetectionJson(o.detection);
     const cv::Mat fb =
         readImageOfSize(o.framebuffer, cv::IMREAD_COLOR, projector.width, projector.height, "the calibration");
@@ -101,14 +102,15 @@ void run(const VerifyOptions &o) {
         const ShapeErrors eq8 = shapeErrors(found.corners);
         // Every number written is finite, or nothing is written (a degenerate camera.yaml or
         // depth can leave the found corners at NaN or infinity, and NaN compares as passing).
-        bool finite = std::isfinite(eq8.horizontal_pct) && std::isfinite(eq8.vertical_pct) &&
-                      std::isfinite(eq8.diagonal_pct);
+        bool finite =
+            std::isfinite(eq8.horizontal_pct) && std::isfinite(eq8.vertical_pct) && std::isfinite(eq8.diagonal_pct);
         for (int i = 0; i < 4; ++i)
             finite = finite && found.corners[i].allFinite() && meant.corners[i].allFinite() &&
                      std::isfinite((found.corners[i] - meant.corners[i]).norm());
         if (!finite)
-            throw InputError(o.captures, "the picture's corners measured in rgb.png and depth.png are not finite "
-                                         "numbers (check camera.yaml's intrinsics and depth_scale)");
+            throw InputError(o.captures,
+                             "the picture's corners measured in rgb.png and depth.png are not finite "
+                             "numbers (check camera.yaml's intrinsics and depth_scale)");
         passed = worst <= o.tolerance;
         char buf[600];
         std::snprintf(

@@ -86,9 +86,9 @@ TEST(CliWarnings, DepthScaleFiveTimesOffEitherWayOrACloudInMillimetresIsNamed) {
     const fs::path dir = freshDir("warnings_range");
     // 5000 -> 1000: the median depth is 5 times too far (about 12 m).
     writeEdited(kFrame / "camera.yaml", dir / "camera.yaml", "depth_scale: *[0-9.]+", "depth_scale: 1000");
-    auto r = cli(depthArgs(dir / "camera.yaml") + " --calib " + kCalib + " --gravity auto --json " +
-                     (dir / "a.json").string(),
-                 dir);
+    auto r = cli(
+        depthArgs(dir / "camera.yaml") + " --calib " + kCalib + " --gravity auto --json " + (dir / "a.json").string(),
+        dir);
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("projsurf: warning: " + (dir / "camera.yaml").string() + ": the median depth is"),
               std::string::npos)
@@ -118,14 +118,17 @@ TEST(CliWarnings, DepthScaleFiveTimesOffEitherWayOrACloudInMillimetresIsNamed) {
     // A cloud written in millimetres (an ASCII PCD, z about 2000).
     {
         std::ofstream pcd(dir / "mm.pcd");
-        pcd << "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 400\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 "
+        pcd << "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 400\nHEIGHT 1\nVIEWPOINT 0 0 0 1 "
+               "0 0 "
                "0\nPOINTS 400\nDATA ascii\n";
         for (int i = 0; i < 400; ++i) pcd << (i % 20) * 50 - 500 << " " << (i / 20) * 50 - 500 << " 2000\n";
     }
-    r = cli("detect --cloud " + (dir / "mm.pcd").string() + " --calib " + kCalib + " --json " + (dir / "d.json").string(),
-            dir);
+    r = cli(
+        "detect --cloud " + (dir / "mm.pcd").string() + " --calib " + kCalib + " --json " + (dir / "d.json").string(),
+        dir);
     EXPECT_EQ(r.status, 0) << r.err;
-    EXPECT_NE(r.err.find("projsurf: warning: " + (dir / "mm.pcd").string() + ": the median depth is 2000 m; the "
+    EXPECT_NE(r.err.find("projsurf: warning: " + (dir / "mm.pcd").string() +
+                         ": the median depth is 2000 m; the "
                          "cloud looks like millimetres"),
               std::string::npos)
         << r.err;
@@ -157,9 +160,9 @@ TEST(CliWarnings, ColourThatIsNotEightBitBgrIsRefusedAsPythonDoes) {
     cv::imwrite((dir / "grey.png").string(), cv::Mat(480, 640, CV_8UC1, cv::Scalar(128)));
     for (const auto &[file, what] : {std::pair<fs::path, std::string>{kFrame / "depth.png", "16-bit with 1 channel"},
                                      {dir / "grey.png", "8-bit with 1 channel"}}) {
-        const auto r = cli(depthArgs() + " --calib " + kCalib + " --rgb " + file.string() + " --json " +
-                               (dir / "a.json").string(),
-                           dir);
+        const auto r =
+            cli(depthArgs() + " --calib " + kCalib + " --rgb " + file.string() + " --json " + (dir / "a.json").string(),
+                dir);
         EXPECT_EQ(r.status, 2) << r.err;
         EXPECT_EQ(lines(r.err), 1) << r.err;
         EXPECT_NE(r.err.find("projsurf: error: " + file.string() + ": expected 8-bit 3-channel colour"),
@@ -184,6 +187,17 @@ TEST(CliWarnings, SwappedFilesRosCameraInfoUnknownKeysAndImagesAsJsonAreNamed) {
             dir);
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("unknown key 'camera.depth_scal' is ignored"), std::string::npos) << r.err;
+    // A typo under the calibration's projector: (its distortion would be lost): warned, once per key.
+    std::ofstream(dir / "calib_typo.yaml") << slurp(kCalib) << "  distorsion: [0.1, 0, 0, 0, 0]\n";
+    r = cli(depthArgs() + " --calib " + (dir / "calib_typo.yaml").string() + " --gravity auto --json " +
+                (dir / "b2.json").string(),
+            dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("projsurf: warning: " + (dir / "calib_typo.yaml").string() +
+                         ": unknown key 'projector.distorsion' is ignored"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
     // A ROS camera_info YAML: read (depth in mm, so the TUM frame is 5 times too far: warned);
     // with distortion: refused.
     const std::string info =
@@ -254,4 +268,3 @@ TEST(CliWarnings, VersionAndUsageMistakesCarryTheErrorPrefix) {
         << r.err;
     fs::remove_all(dir);
 }
-

@@ -1,5 +1,5 @@
-#include "projsurf/types/lens_model_check.hpp"
 #include "projsurf/io/yaml_files.hpp"
+#include "projsurf/types/lens_model_check.hpp"
 
 #include <yaml-cpp/yaml.h>
 #include <Eigen/SVD>
@@ -47,6 +47,20 @@ std::vector<double> numbers(const std::string &path, const YAML::Node &node, con
     std::vector<double> out;
     for (std::size_t i = 0; i < n; ++i) out.push_back(number(path, node[i], what));
     return out;
+}
+
+void noteUnknownKeys(const std::string &path, const YAML::Node &node, const std::string &where,
+                     const std::vector<std::string> &known, std::vector<std::string> *warnings) {
+    if (!warnings || !node.IsMap()) return;
+    for (const auto &kv : node) {
+        const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
+        if (std::find(known.begin(), known.end(), key) == known.end())
+            warnings->push_back(path + ": unknown key '" + where + key + "' is ignored (known: " + [&] {
+                std::string list;
+                for (const auto &k : known) list += (list.empty() ? "" : ", ") + k;
+                return list;
+            }() + ")");
+    }
 }
 
 /// The contract's optional full-model keys (intrinsics, distortion, rotation), when present.
@@ -103,11 +117,12 @@ std::string readCalibrationVerdict(const std::string &path) {
     return v.as<std::string>();
 }
 
-Projector readCalibration(const std::string &path) {
+Projector readCalibration(const std::string &path, std::vector<std::string> *warnings) {
     const YAML::Node root = loadYaml(path);
     if (!root["projector"] && (root["camera"] || root["camera_matrix"]))
-        throw InputError(path, "is camera intrinsics, not a projector calibration (projector:); --camera and --calib "
-                               "swapped?");
+        throw InputError(path,
+                         "is camera intrinsics, not a projector calibration (projector:); --camera and --calib "
+                         "swapped?");
     const YAML::Node p = child(path, root, "projector", "");
     const auto res = numbers(path, child(path, p, "resolution", "projector."), "projector.resolution", 2);
     const auto fov = numbers(path, child(path, p, "fov_deg", "projector."), "projector.fov_deg", 2);
@@ -142,6 +157,14 @@ Projector readCalibration(const std::string &path) {
     if (dir.norm() < 1e-9) throw InputError(path, "projector.axis.direction is the zero vector");
     proj.direction = dir.normalized();
     readFullModel(path, p, proj);
+    // What the contract and `projsurf calibrate` write under `projector:`.
+    noteUnknownKeys(path, p, "projector.",
+                    {"resolution", "fov_deg", "axis", "intrinsics", "distortion", "rotation", "corner_rays",
+                     "residuals", "camera", "captures", "created_utc"},
+                    warnings);
+    noteUnknownKeys(path, axis, "projector.axis.", {"origin", "direction"}, warnings);
+    if (p["intrinsics"])
+        noteUnknownKeys(path, p["intrinsics"], "projector.intrinsics.", {"fx", "fy", "cx", "cy"}, warnings);
     if (const std::string problem = lensModelProblem(proj); !problem.empty()) throw InputError(path, problem);
     if (!isValidProjector(proj))
         throw InputError(path,
@@ -217,26 +240,13 @@ CameraIntrinsics rosCameraInfo(const std::string &path, const YAML::Node &root) 
         if (!d.IsSequence()) throw InputError(path, "'distortion_coefficients.data' must be a list of numbers");
         for (std::size_t i = 0; i < d.size(); ++i)
             if (number(path, d[i], "distortion_coefficients.data") != 0.0)
-                throw InputError(path, "camera_info has non-zero distortion_coefficients; projsurf reads rectified "
-                                       "(pinhole) depth: give the camera_info of the rectified image (image_rect, "
-                                       "all-zero D) or rectify first");
+                throw InputError(path,
+                                 "camera_info has non-zero distortion_coefficients; projsurf reads rectified "
+                                 "(pinhole) depth: give the camera_info of the rectified image (image_rect, "
+                                 "all-zero D) or rectify first");
     }
     cam.depth_scale = 1000.0;  // 16UC1 depth is in millimetres (REP 118)
     return cam;
-}
-
-void noteUnknownKeys(const std::string &path, const YAML::Node &node, const std::string &where,
-                     const std::vector<std::string> &known, std::vector<std::string> *warnings) {
-    if (!warnings || !node.IsMap()) return;
-    for (const auto &kv : node) {
-        const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
-        if (std::find(known.begin(), known.end(), key) == known.end())
-            warnings->push_back(path + ": unknown key '" + where + key + "' is ignored (known: " + [&] {
-                std::string list;
-                for (const auto &k : known) list += (list.empty() ? "" : ", ") + k;
-                return list;
-            }() + ")");
-    }
 }
 
 }  // namespace
@@ -252,8 +262,9 @@ CameraIntrinsics readCamera(const std::string &path, std::vector<std::string> *w
                         warnings);
     } else {
         if (!root["camera"] && root["projector"])
-            throw InputError(path, "is a projector calibration (projector:), not camera intrinsics (camera:); "
-                                   "--camera and --calib swapped?");
+            throw InputError(path,
+                             "is a projector calibration (projector:), not camera intrinsics (camera:); "
+                             "--camera and --calib swapped?");
         const YAML::Node c = child(path, root, "camera", "");
         const double w = number(path, child(path, c, "width", "camera."), "camera.width");
         const double h = number(path, child(path, c, "height", "camera."), "camera.height");

@@ -12,9 +12,11 @@ class Node;
 
 namespace projsurf {
 
-/// Reads the projector calibration (required keys only; unknown keys are ignored).
+/// Reads the projector calibration (required keys, and the contract's optional full model).
 /// Throws InputError naming the file and the key on any problem, including a degenerate axis.
-Projector readCalibration(const std::string &path);
+/// Unknown keys are ignored; with `warnings`, those inside `projector:` (a typo such as
+/// `distorsion`, whose value would be lost) are added there, one line each.
+Projector readCalibration(const std::string &path, std::vector<std::string> *warnings = nullptr);
 /// The `calibration.fit.verdict` that `projsurf calibrate` wrote (good, acceptable, redo);
 /// "" when the file has none (a calibration written by hand). Throws InputError like readCalibration.
 std::string readCalibrationVerdict(const std::string &path);
