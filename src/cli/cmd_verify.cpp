@@ -62,6 +62,10 @@ void run(const VerifyOptions &o) {
     if (depth.type() != CV_16UC1) throw InputError(depth_path, "expected a 16-bit single-channel depth PNG");
     const auto lit = litFramebufferCorners(fb);
     if (!lit) throw InputError(o.framebuffer, "is all black: nothing was projected");
+    // The detection must fit this calibration, as `correct` requires (a detection made with
+    // another projector can lie behind this one, or beyond its framebuffer).
+    if (const KeystoneResult fits = computeKeystone(projector, det.rectangle, fb.size()); !fits.keystone)
+        throw InputError(o.detection, fits.problem);
 
     // Where the picture was meant to land: the detection's rectangle, letterboxed to the
     // picture's aspect (the lit framebuffer corners cast onto the detected plane).

@@ -625,6 +625,18 @@ TEST_F(Hostile, DetectionCornersFarOffOrBehindTheCameraAreRefused) {
     refused("verify --calib " + sim("calib.yaml") + " --detection " + at("behind.json") + " --framebuffer " +
                 sim("rgb.png") + " --captures " + at("caps") + " --json " + at("v.json"),
             at("behind.json"), "behind the camera", {at("v.json")});
+    // Made with another projector: this one, turned 60 deg to the left, cannot light it.
+    ASSERT_EQ(cli("correct --calib " + sim("calib.yaml") + " --detection " + at("det.json") + " --image " +
+                      sim("rgb.png") + " --out " + at("fb.png"),
+                  dir_)
+                  .status,
+              0);
+    writeBytes(at("turned.yaml"),
+               "projector:\n  resolution: [1280, 800]\n  fov_deg: [39.3, 24.0]\n  axis:\n"
+               "    origin: [0.0, 0.12, 0.0]\n    direction: [-0.866, 0.0, 0.5]\n");
+    refused("verify --calib " + at("turned.yaml") + " --detection " + at("det.json") + " --framebuffer " +
+                at("fb.png") + " --captures " + at("caps") + " --json " + at("v.json"),
+            at("det.json"), "does not fit this calibration", {at("v.json")});
 }
 
 TEST_F(Hostile, DeeplyNestedProcamXmlIsRefusedBeforeOpenCvParsesIt) {
@@ -706,8 +718,8 @@ TEST_F(Hostile, LabelFramesArePlainNamesAndPolygonsNearTheImage) {
     bad.replace(bad.find(frame), frame.size(), "frame: ../../../../etc");
     writeBytes(path, bad);
     fs::create_directories(dir_ / "real");  // the label is refused before any frame is looked for (no ../shared)
-    const std::string eval =
-        "eval --no-progress --labelled-only --labels " + at("labels") + " --real-dir " + at("real") + " --out " + at("e");
+    const std::string eval = "eval --no-progress --labelled-only --labels " + at("labels") + " --real-dir " +
+                             at("real") + " --out " + at("e");
     refused(eval, path, "not a path");
     bad = label;
     const std::size_t poly = bad.find("polygon: [[0, 0]");
