@@ -4,16 +4,16 @@
 #include <algorithm>
 #include <random>
 
-#include "projsurf/detection/default/planar_regions.hpp"
-#include "projsurf/detection/gravity.hpp"
-#include "projsurf/types/camera.hpp"
-#include "projsurf/types/point_grid.hpp"
 #include <opencv2/imgproc.hpp>
 #include "eval/scoring.hpp"
+#include "projsurf/detection/default/planar_regions.hpp"
+#include "projsurf/detection/gravity.hpp"
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/types/point_grid.hpp"
 
 using namespace projsurf::eval;  // the evaluation under test
 
@@ -163,6 +163,24 @@ TEST(Gravity, FromTheFloorOfARolledAndPitchedCamera) {
         for (int j = 0; j < 60; ++j) wall_only.points.emplace_back(-1.0f + 0.025f * i, -0.7f + 0.025f * j, 2.0f);
     wall_only.width = static_cast<int>(wall_only.points.size());
     EXPECT_FALSE(estimateGravityFromFloor(wall_only, Eigen::Vector3d::UnitY()).has_value());
+}
+
+TEST(Gravity, NoFloorFromASlantedPlaneThroughAPersonAndTheWall) {
+    // A level camera 2 m from the wall sees no floor (it begins 2.5 m out); a person stands
+    // between. A plane slanted 32 deg held stripes of the person and the wall, more than the
+    // 3 % a floor needs: gravity auto tilted the picture and detect warned of a tilted camera.
+    const sim::Scenario sc = sim::makeScenario("person", 2.0, 0.0);
+    const sim::RgbdFrame frame = sim::renderFrame(sc.scene, sim::SensorModel{}, 1);
+    const auto g = estimateGravityFromFloor(frame.cloud, Eigen::Vector3d::UnitY());
+    if (g)
+        EXPECT_LT(std::acos(std::min(1.0, g->gravity.dot(sc.gravity))), 2.0 * M_PI / 180.0) << g->gravity.transpose();
+    // Back at 4 m, where the floor shows: found, level.
+    const sim::Scenario far = sim::makeScenario("person", 4.0, 0.0);
+    const auto floor =
+        estimateGravityFromFloor(sim::renderFrame(far.scene, sim::SensorModel{}, 1).cloud, Eigen::Vector3d::UnitY());
+    ASSERT_TRUE(floor.has_value());
+    EXPECT_LT(std::acos(std::min(1.0, floor->gravity.dot(far.gravity))), 1.0 * M_PI / 180.0)
+        << floor->gravity.transpose();
 }
 
 TEST(Detection, UnorganizedCloudGivesTheSameAnswer) {

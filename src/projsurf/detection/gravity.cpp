@@ -25,6 +25,59 @@ std::vector<int> inliersOf(const std::vector<Point> &pts, const Eigen::Vector3f 
     return in;
 }
 
+/// px: the half-baseline of a reading's normal, from its neighbours this far left/right and
+/// up/down: 8 px span 9 cm at 3 m, several times a Kinect v1's depth noise there (1.3 cm).
+constexpr int kNormalReach = 8;
+/// rad (30 deg): how far a floor reading's normal may stray from the floor's own (noise, carpet).
+constexpr double kNormalSlack = 0.52;
+
+/// The surface normal at reading i of an organized cloud, or zero when a neighbour is missing.
+Eigen::Vector3f normalAt(const Cloud &cloud, std::size_t i) {
+    const int w = cloud.width, r = static_cast<int>(i / w), c = static_cast<int>(i % w), k = kNormalReach;
+    if (r < k || c < k || r + k >= cloud.height || c + k >= w) return Eigen::Vector3f::Zero();
+    const std::size_t down = static_cast<std::size_t>(k) * w;
+    const Point &left = cloud.points[i - k], &right = cloud.points[i + k], &above = cloud.points[i - down],
+                &below = cloud.points[i + down];
+    if (!isFinite(left) || !isFinite(right) || !isFinite(above) || !isFinite(below)) return Eigen::Vector3f::Zero();
+    const Eigen::Vector3f n = (right - left).cross(below - above);
+    const float norm = n.norm();
+    return norm > 0.0f ? Eigen::Vector3f(n / norm) : Eigen::Vector3f::Zero();
+}
+
+/// About 6000 finite readings of the cloud, with the surface's normal at each where the cloud
+/// is organized and the neighbours give one (else zero).
+struct FloorSample {
+    std::vector<Point> points;
+    std::vector<Eigen::Vector3f> normals;
+};
+
+FloorSample floorSample(const Cloud &cloud) {
+    FloorSample out;
+    const std::size_t step = std::max<std::size_t>(1, cloud.points.size() / 6000);
+    const bool organized = cloud.organized();
+    for (std::size_t i = 0; i < cloud.points.size(); i += step) {
+        if (!isFinite(cloud.points[i])) continue;
+        out.points.push_back(cloud.points[i]);
+        out.normals.push_back(organized ? normalAt(cloud, i) : Eigen::Vector3f::Zero());
+    }
+    return out;
+}
+
+/// Whether the readings within `band` of (n, d) face along n, as a floor's do: at least half of
+/// those with a normal within kNormalSlack of it. A slanted plane that cuts through walls, a
+/// person or a box holds stripes of their readings, which face sideways. True when no normal is
+/// known (an unorganized cloud).
+bool facesLikeAFloor(const FloorSample &sample, const Eigen::Vector3f &n, float d, float band) {
+    const float cos_slack = static_cast<float>(std::cos(kNormalSlack));
+    int known = 0, along = 0;
+    for (std::size_t i = 0; i < sample.points.size(); ++i) {
+        if (sample.normals[i].isZero() || std::abs(n.dot(sample.points[i]) + d) > band) continue;
+        ++known;
+        along += std::abs(sample.normals[i].dot(n)) >= cos_slack;
+    }
+    return known == 0 || 2 * along >= known;
+}
+
 /// The floor plane (n, d) refitted by least squares reweighted `rounds` times over the points
 /// within `band` of it and nearer than `max_depth`: Tukey weights on the residual (scale: the
 /// median absolute residual), each point also weighted by 1/z^2: far readings are noisier and
@@ -76,15 +129,13 @@ void reweightedFloorFit(const std::vector<Point> &pts, float band, float max_dep
 
 std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, const Eigen::Vector3d &prior,
                                                         double max_angle, double min_share, unsigned seed) {
-    std::vector<Point> pts;
-    const std::size_t step = std::max<std::size_t>(1, cloud.points.size() / 6000);
-    for (std::size_t i = 0; i < cloud.points.size(); i += step)
-        if (isFinite(cloud.points[i])) pts.push_back(cloud.points[i]);
-    if (pts.size() < 50) return std::nullopt;
     const Eigen::Vector3f g = prior.normalized().cast<float>();
+    const FloorSample sample = floorSample(cloud);
+    const std::vector<Point> &pts = sample.points;
+    if (pts.size() < 50) return std::nullopt;
     const float cos_max = static_cast<float>(std::cos(max_angle));
     const float band = 0.03f;  // m: floors are flat; Kinect noise at 1-3 m is below this
-    const int min_score = static_cast<int>(std::ceil(min_share * pts.size()));
+    const int min_score = std::max(50, static_cast<int>(std::ceil(min_share * pts.size())));
     std::mt19937 rng(seed);
     std::uniform_int_distribution<std::size_t> pick(0, pts.size() - 1);
     // Every large plane in the cone below the camera.
@@ -100,7 +151,7 @@ std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, cons
         if (d >= 0.0f) continue;  // camera must be above it: n.0 + d < 0 means the plane is below
         int score = 0;
         for (const auto &p : pts) score += std::abs(n.dot(p) + d) <= band;
-        if (score >= min_score) large.push_back({n, d, score});
+        if (score >= min_score && facesLikeAFloor(sample, n, d, band)) large.push_back({n, d, score});
     }
     if (large.empty()) return std::nullopt;
     const int biggest =
@@ -138,6 +189,7 @@ std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, cons
     }
     // The least-squares fit gives every reading the same say, the far ones too (noisier, bent).
     reweightedFloorFit(pts, band, 5.0f, 5, n, d);
+    if (!facesLikeAFloor(sample, n, d, band)) return std::nullopt;  // the refits slid onto stripes
     inliers = inliersOf(pts, n, d, band);
     GravityEstimate out;
     out.gravity = n.cast<double>().normalized();
