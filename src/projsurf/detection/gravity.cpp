@@ -45,20 +45,31 @@ Eigen::Vector3f normalAt(const Cloud &cloud, std::size_t i) {
 }
 
 /// About 6000 finite readings of the cloud, with the surface's normal at each where the cloud
-/// is organized and the neighbours give one (else zero).
+/// is organized and the neighbours give one (else zero), and the readings to draw a floor's
+/// three points from: of an organized cloud, those whose normal lies within `max_angle` +
+/// kNormalSlack of `down` (a floor seen at 3 m holds a tenth of a frame, so three readings drawn
+/// from all of them are all on it once in 700 draws), else all.
 struct FloorSample {
     std::vector<Point> points;
     std::vector<Eigen::Vector3f> normals;
+    std::vector<int> seeds;
 };
 
-FloorSample floorSample(const Cloud &cloud) {
+FloorSample floorSample(const Cloud &cloud, const Eigen::Vector3f &down, double max_angle) {
     FloorSample out;
     const std::size_t step = std::max<std::size_t>(1, cloud.points.size() / 6000);
     const bool organized = cloud.organized();
+    const float cos_max = static_cast<float>(std::cos(std::min(M_PI / 2, max_angle + kNormalSlack)));
     for (std::size_t i = 0; i < cloud.points.size(); i += step) {
         if (!isFinite(cloud.points[i])) continue;
+        const Eigen::Vector3f n = organized ? normalAt(cloud, i) : Eigen::Vector3f::Zero();
+        if (!organized || std::abs(n.dot(down)) >= cos_max) out.seeds.push_back(static_cast<int>(out.points.size()));
         out.points.push_back(cloud.points[i]);
-        out.normals.push_back(organized ? normalAt(cloud, i) : Eigen::Vector3f::Zero());
+        out.normals.push_back(n);
+    }
+    if (out.seeds.size() < 3) {
+        out.seeds.resize(out.points.size());
+        for (std::size_t i = 0; i < out.points.size(); ++i) out.seeds[i] = static_cast<int>(i);
     }
     return out;
 }
@@ -130,18 +141,19 @@ void reweightedFloorFit(const std::vector<Point> &pts, float band, float max_dep
 std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, const Eigen::Vector3d &prior,
                                                         double max_angle, double min_share, unsigned seed) {
     const Eigen::Vector3f g = prior.normalized().cast<float>();
-    const FloorSample sample = floorSample(cloud);
+    const FloorSample sample = floorSample(cloud, g, max_angle);
     const std::vector<Point> &pts = sample.points;
     if (pts.size() < 50) return std::nullopt;
     const float cos_max = static_cast<float>(std::cos(max_angle));
     const float band = 0.03f;  // m: floors are flat; Kinect noise at 1-3 m is below this
     const int min_score = std::max(50, static_cast<int>(std::ceil(min_share * pts.size())));
     std::mt19937 rng(seed);
-    std::uniform_int_distribution<std::size_t> pick(0, pts.size() - 1);
+    std::uniform_int_distribution<std::size_t> pick(0, sample.seeds.size() - 1);
     // Every large plane in the cone below the camera.
     std::vector<Candidate> large;
     for (int it = 0; it < 300; ++it) {
-        const Point &a = pts[pick(rng)], &b = pts[pick(rng)], &c = pts[pick(rng)];
+        const Point &a = pts[sample.seeds[pick(rng)]], &b = pts[sample.seeds[pick(rng)]],
+                    &c = pts[sample.seeds[pick(rng)]];
         Eigen::Vector3f n = (b - a).cross(c - a);
         if (n.norm() < 1e-6f) continue;
         n.normalize();
