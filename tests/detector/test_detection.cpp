@@ -9,6 +9,7 @@
 #include "projsurf/detection/default/planar_regions.hpp"
 #include "projsurf/detection/gravity.hpp"
 #include "projsurf/detector/detector.hpp"
+#include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
@@ -166,22 +167,27 @@ TEST(Gravity, FromTheFloorOfARolledAndPitchedCamera) {
 }
 
 TEST(Gravity, NoFloorFromASlantedPlaneThroughAPersonAndTheWall) {
-    // A level camera 2 m from the wall sees no floor (it begins 2.5 m out); a person stands
-    // between. A plane slanted 32 deg held stripes of the person and the wall, more than the
-    // 3 % a floor needs: gravity auto tilted the picture and detect warned of a tilted camera.
-    const sim::Scenario sc = sim::makeScenario("person", 2.0, 0.0);
-    const sim::RgbdFrame frame = sim::renderFrame(sc.scene, sim::SensorModel{}, 1);
-    const auto g = estimateGravityFromFloor(frame.cloud, Eigen::Vector3d::UnitY());
-    if (g)
-        EXPECT_LT(std::acos(std::min(1.0, g->gravity.dot(sc.gravity))), 2.0 * M_PI / 180.0) << g->gravity.transpose();
-    // Back at 3 and 4 m, where a strip of floor shows (a tenth of the frame at 3 m, where three
-    // readings drawn from all of them rarely all fell on it): found, level.
+    // `projsurf simulate --scenario person --distance D`: a Kinect v1 (unit 0, seed 0), level,
+    // 1 m above the floor, a person between it and the wall.
+    const sim::DepthSensor kinect = sim::makeDepthSensor(sim::SensorKind::Kinect1, 0);
+    auto floorAt = [&](double distance) {
+        const sim::Scenario sc = sim::makeScenario("person", distance, 0.0);
+        return estimateGravityFromFloor(sim::renderSensorFrame(sc.scene, kinect, 0, std::nullopt, false).cloud,
+                                        Eigen::Vector3d::UnitY());
+    };
+    const Eigen::Vector3d level = Eigen::Vector3d::UnitY();
+    // At 2 m no floor is in view (it begins 2.5 m out). A plane slanted 32 deg held stripes of
+    // the person and the wall, more than the 3 % a floor needs: gravity auto tilted the
+    // picture, and detect warned of a tilted camera.
+    if (const auto g = floorAt(2.0))
+        EXPECT_LT(std::acos(std::min(1.0, g->gravity.dot(level))), 2.0 * M_PI / 180.0) << g->gravity.transpose();
+    // At 3 and 4 m a strip of floor shows (a tenth of the frame at 3 m, where three readings
+    // drawn from all of them rarely all fell on it, and a plane slanted 13 deg through the
+    // floor's edge won): found, level.
     for (double distance : {3.0, 4.0}) {
-        const sim::Scenario far = sim::makeScenario("person", distance, 0.0);
-        const auto floor = estimateGravityFromFloor(sim::renderFrame(far.scene, sim::SensorModel{}, 1).cloud,
-                                                    Eigen::Vector3d::UnitY());
+        const auto floor = floorAt(distance);
         ASSERT_TRUE(floor.has_value()) << distance;
-        EXPECT_LT(std::acos(std::min(1.0, floor->gravity.dot(far.gravity))), 1.0 * M_PI / 180.0)
+        EXPECT_LT(std::acos(std::min(1.0, floor->gravity.dot(level))), 1.0 * M_PI / 180.0)
             << distance << " m: " << floor->gravity.transpose();
     }
 }
