@@ -145,9 +145,12 @@ visualization_msgs::Marker outline(const std_msgs::Header &header, const std::st
     return m;
 }
 
-/// Cells free by depth but unfit by their colour (surface suitability), one square point per
-/// cell, coloured by reason as in the CLI's overlay (frontend/overlay.cpp's legend, RGB here).
-visualization_msgs::Marker unfitCells(const DetectionDebug &g, const std_msgs::Header &header, const std::string &ns) {
+/// Cells the picture must not cover, one square point per cell, coloured by reason as in the
+/// CLI's overlay (frontend/overlay.cpp's legend, RGB here): what stands in front of or proud of
+/// the wall, the wall seen through, and (with colour) what is unfit to project on. Cells
+/// without a reading are left out (beyond the wall's edge there are many).
+visualization_msgs::Marker notFreeCells(const DetectionDebug &g, const std_msgs::Header &header,
+                                        const std::string &ns) {
     auto m = marker(header, ns, 5, visualization_msgs::Marker::POINTS, 1.0f, 1.0f, 1.0f, 0.8f);
     if (g.cell_state.empty() || g.grid_cell <= 0.0) return m;
     m.scale.x = m.scale.y = g.grid_cell;  // point size, m
@@ -161,11 +164,14 @@ visualization_msgs::Marker unfitCells(const DetectionDebug &g, const std_msgs::H
             const auto state = static_cast<CellState>(g.cell_state.at<uchar>(r, c));
             std_msgs::ColorRGBA colour;
             switch (state) {
-                case CellState::Glare: colour = rgba(160, 255, 255); break;    // pale cyan: glare
-                case CellState::Dark: colour = rgba(20, 40, 90); break;        // dark blue: too dark
-                case CellState::Textured: colour = rgba(160, 60, 0); break;    // brown: textured
-                case CellState::Saturated: colour = rgba(90, 0, 160); break;   // purple: saturated
-                default: continue;
+            case CellState::InFront: colour = rgba(255, 130, 0); break;       // orange: in front (its shadow)
+            case CellState::SeenThrough: colour = rgba(200, 80, 220); break;  // violet: seen through
+            case CellState::Proud: colour = rgba(140, 0, 0); break;           // dark red: proud of the wall
+            case CellState::Glare: colour = rgba(160, 255, 255); break;       // pale cyan: glare
+            case CellState::Dark: colour = rgba(20, 40, 90); break;           // dark blue: too dark
+            case CellState::Textured: colour = rgba(160, 60, 0); break;       // brown: textured
+            case CellState::Saturated: colour = rgba(90, 0, 160); break;      // purple: saturated
+            default: continue;
             }
             const Eigen::Vector2d uv(g.grid_origin.x() + (c + 0.5) * g.grid_cell,
                                      g.grid_origin.y() - (r + 0.5) * g.grid_cell);
@@ -207,10 +213,8 @@ visualization_msgs::MarkerArray toMarkers(const Detection &det, const Rectangle 
         if (f.right.norm() > 0.5) out.markers.push_back(plane);
         if (det.debug.has_workspace)
             out.markers.push_back(outline(header, ns, 2, det.debug.workspace, 0.1f, 0.9f, 0.1f));
-        if (det.suitability.used) {
-            auto unfit = unfitCells(det.debug, header, ns);
-            if (!unfit.points.empty()) out.markers.push_back(unfit);
-        }
+        auto blocked = notFreeCells(det.debug, header, ns);
+        if (!blocked.points.empty()) out.markers.push_back(blocked);
     }
     const Rectangle *rect = shown != nullptr ? shown : (det.found ? &det.rectangle : nullptr);
     if (rect != nullptr) {

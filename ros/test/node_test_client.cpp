@@ -32,9 +32,9 @@
 #include <thread>
 
 #include "conversions.hpp"
+#include "node_test_support.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/rosbag_clouds.hpp"
-#include "node_test_support.hpp"
 #include "sim_wall.hpp"
 
 using namespace projsurf;
@@ -141,15 +141,44 @@ TEST_F(NodeTest, DetectServiceFindsTheWallAndPublishesRectangleAndFramebuffer) {
             return !results.empty() && !markers.empty();
         },
         10.0));
-    std::lock_guard<std::mutex> lock(mutex);
-    const auto j = nlohmann::json::parse(results.back());
-    EXPECT_TRUE(j.at("found").get<bool>());
-    for (int i = 0; i < 4; ++i)
-        for (int k = 0; k < 3; ++k)
-            EXPECT_NEAR(j.at("rectangle").at("corners").at(i).at(k).get<double>(), c[i][k], 1e-4);
-    bool has_rect_marker = false;
-    for (const auto &m : markers.back().markers) has_rect_marker |= m.id == 3 && m.points.size() == 5;
-    EXPECT_TRUE(has_rect_marker);
+    std::size_t shown = 0;
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        const auto j = nlohmann::json::parse(results.back());
+        EXPECT_TRUE(j.at("found").get<bool>());
+        for (int i = 0; i < 4; ++i)
+            for (int k = 0; k < 3; ++k)
+                EXPECT_NEAR(j.at("rectangle").at("corners").at(i).at(k).get<double>(), c[i][k], 1e-4);
+        bool has_rect_marker = false;
+        for (const auto &m : markers.back().markers) has_rect_marker |= m.id == 3 && m.points.size() == 5;
+        EXPECT_TRUE(has_rect_marker);
+        shown = markers.size();
+    }
+
+    // A person at one side of the beam: the picture stays on the wall, and the cells in their
+    // shadow there are drawn (marker 5, orange), as the CLI's overlay draws them.
+    SceneOptions person;
+    person.person = true;
+    person.person_y = 0.45;
+    pub.publish(
+        ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), person), header("camera_optical", ros::Time::now())));
+    std::string last;
+    EXPECT_TRUE(waitFor(
+        [&] {
+            call = std_srvs::Trigger();
+            if (!ros::service::call(service, call)) return false;
+            last = call.response.message;
+            std::lock_guard<std::mutex> again(mutex);
+            if (markers.size() <= shown) return false;
+            for (const auto &m : markers.back().markers)
+                if (m.id == 5 && std::count_if(m.colors.begin(), m.colors.end(), [](const std_msgs::ColorRGBA &col) {
+                                     return col.r > 0.9f && col.g > 0.4f && col.g < 0.6f && col.b < 0.1f;
+                                 }) >= 100)
+                    return true;
+            return false;
+        },
+        20.0))
+        << "no marker of the cells in the person's shadow; last answer: " << last;
 }
 
 TEST_F(NodeTest, DetectServiceSaysWhyWhenThereIsNoWall) {
