@@ -179,6 +179,22 @@ TEST_F(NodeTest, DetectServiceFindsTheWallAndPublishesRectangleAndFramebuffer) {
         },
         20.0))
         << "no marker of the cells in the person's shadow; last answer: " << last;
+
+    // The person straight ahead, 1.2 m away, filling the view's height (a flat slab here): a
+    // face narrower than a wall with the wall seen past it on both sides stands in the room.
+    // The picture goes on the wall beside them, or nowhere; never on the person.
+    person.person_y = 0.0;
+    const ros::Time ahead = ros::Time::now();
+    pub.publish(ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), person), header("camera_optical", ahead)));
+    geometry_msgs::PolygonStamped on;
+    ASSERT_TRUE(waitFor(
+        [&] {
+            call = std_srvs::Trigger();
+            return ros::service::call(service, call) && rects.waitStamp(ahead, 0.5, on);
+        },
+        20.0))
+        << "no answer for the cloud with the person ahead: " << call.response.message;
+    for (const auto &p : corners(on)) EXPECT_GT(p.z(), 1.6) << call.response.message;
 }
 
 TEST_F(NodeTest, DetectServiceSaysWhyWhenThereIsNoWall) {

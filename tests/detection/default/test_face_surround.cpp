@@ -83,6 +83,28 @@ TEST(FaceSurround, PersonBeforeTheWallStandsFree) {
     EXPECT_TRUE(standsFree(surroundOf(f, camera)));
 }
 
+TEST(FaceSurround, ANarrowFaceOpenOnBothSidesStandsFreeWithItsTopOutOfView) {
+    // A person 1.2 m from the camera fills the view's height: nothing is seen above them, the
+    // wall is seen past them on both sides.
+    FaceSurround s;
+    s.width = 0.44;
+    s.height = 0.9;
+    s.top.unseen = 20;
+    s.left.past = s.right.past = 20;
+    EXPECT_TRUE(standsFree(s));
+    FaceSurround one_side = s;  // a wall's end beside a doorway: open on one side only
+    one_side.right = EdgeView{};
+    one_side.right.front = 20;
+    EXPECT_FALSE(standsFree(one_side));
+    FaceSurround wide = s;  // as wide as a wall
+    wide.width = 1.2;
+    EXPECT_FALSE(standsFree(wide));
+    FaceSurround ceiling = s;  // a narrow wall between two doorways, the ceiling seen above it
+    ceiling.top = EdgeView{};
+    ceiling.top.front = 20;
+    EXPECT_FALSE(standsFree(ceiling));
+}
+
 TEST(FaceSurround, WallToTheViewsBorderDoesNot) {
     // Nothing beyond its top (the view ends, or no reading), the image's border beside it.
     const CameraIntrinsics camera;
