@@ -5,17 +5,48 @@
 #include <cmath>
 
 #include "projsurf/detection/default/wall_relief.hpp"
+#include "projsurf/types/target_clones.hpp"
 
 namespace projsurf {
+namespace {
+
+struct Sample {
+    Eigen::Vector2d uv;
+    double h, band, z;
+};
+
+/// The Tukey-weighted normal equations of the quadratic about `shape` (its relief empty) over
+/// `near`, summed flat: the lower triangle row by row in `a`, the right side in `b`. The same
+/// sums in the same order as the matrix form (no fused multiply-add in either build).
+PROJSURF_CLONES void accumulateRound(const std::vector<Sample> &near, const WallShape &shape, double tukey_bands,
+                                     double a[21], double b[6]) {
+    const double cx = shape.centre.x(), cy = shape.centre.y();
+    const double c0 = shape.c[0], c1 = shape.c[1], c2 = shape.c[2], c3 = shape.c[3], c4 = shape.c[4], c5 = shape.c[5];
+    for (int m = 0; m < 21; ++m) a[m] = 0.0;
+    for (int i = 0; i < 6; ++i) b[i] = 0.0;
+    for (const Sample &s : near) {
+        const double x = s.uv.x() - cx, y = s.uv.y() - cy;
+        const double q = c0 + c1 * x + c2 * y + c3 * x * x + c4 * x * y + c5 * y * y;
+        const double r = (s.h - q) / (tukey_bands * s.band);
+        if (std::abs(r) >= 1.0) continue;
+        const double w = (1.0 - r * r) * (1.0 - r * r);
+        const double phi[6] = {1.0, x, y, x * x, x * y, y * y};
+        double wphi[6];
+        for (int i = 0; i < 6; ++i) wphi[i] = w * phi[i];
+        int m = 0;
+        for (int i = 0; i < 6; ++i)
+            for (int j = 0; j <= i; ++j) a[m++] += wphi[i] * phi[j];
+        for (int i = 0; i < 6; ++i) b[i] += wphi[i] * s.h;
+    }
+}
+
+}  // namespace
 
 std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const std::vector<float> &band,
                                       const Plane &plane, const PlaneFrame &frame, const WallShapeOptions &options,
                                       double focal_px) {
-    struct Sample {
-        Eigen::Vector2d uv;
-        double h, band, z;
-    };
     std::vector<Sample> near;
+    near.reserve(points.size());
     Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e30), hi = Eigen::Vector2d::Constant(-1e30);
     for (std::size_t i = 0; i < points.size(); ++i) {
         const Eigen::Vector3d p = points[i].cast<double>();
@@ -35,23 +66,13 @@ std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const st
     }
     WallShape shape;
     shape.centre = 0.5 * (lo + hi);
-    auto basis = [&](const Eigen::Vector2d &uv) {
-        const double x = uv.x() - shape.centre.x(), y = uv.y() - shape.centre.y();
-        return (Eigen::Matrix<double, 6, 1>() << 1.0, x, y, x * x, x * y, y * y).finished();
-    };
     for (int it = 0; it < options.iterations; ++it) {
+        double a[21], sums[6];
+        accumulateRound(near, shape, options.tukey_bands, a, sums);
         Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
-        Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
-        for (const Sample &s : near) {
-            const double r = (s.h - shape.height(s.uv)) / (options.tukey_bands * s.band);
-            if (std::abs(r) >= 1.0) continue;
-            const double w = (1.0 - r * r) * (1.0 - r * r);
-            const Eigen::Matrix<double, 6, 1> phi = basis(s.uv);
-            const Eigen::Matrix<double, 6, 1> wphi = w * phi;
-            for (int i = 0; i < 6; ++i)
-                for (int j = 0; j <= i; ++j) A(i, j) += wphi[i] * phi[j];
-            b += wphi * s.h;
-        }
+        const Eigen::Matrix<double, 6, 1> b(sums);
+        for (int i = 0, m = 0; i < 6; ++i)
+            for (int j = 0; j <= i; ++j) A(i, j) = a[m++];
         const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(A.selfadjointView<Eigen::Lower>());
         if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-12)) return std::nullopt;
         shape.c = ldlt.solve(b);
