@@ -45,16 +45,21 @@ PROJSURF_CLONES void accumulateRound(const std::vector<Sample> &near, const Wall
 std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const std::vector<float> &band,
                                       const Plane &plane, const PlaneFrame &frame, const WallShapeOptions &options,
                                       double focal_px) {
+    // Every point in plane coordinates once (the quadratic's and the relief's passes read them).
+    std::vector<Sample> seen;
+    seen.reserve(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const Eigen::Vector3d p = points[i].cast<double>();
+        seen.push_back({frame.toPlane(p), plane.signedDistance(p), band[i], p.z()});
+    }
     std::vector<Sample> near;
     near.reserve(points.size());
     Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e30), hi = Eigen::Vector2d::Constant(-1e30);
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const Eigen::Vector3d p = points[i].cast<double>();
-        const double h = plane.signedDistance(p);
-        if (!(std::abs(h) <= options.capture_bands * band[i])) continue;
-        near.push_back({frame.toPlane(p), h, band[i], p.z()});
-        lo = lo.cwiseMin(near.back().uv);
-        hi = hi.cwiseMax(near.back().uv);
+    for (const Sample &s : seen) {
+        if (!(std::abs(s.h) <= options.capture_bands * s.band)) continue;
+        near.push_back(s);
+        lo = lo.cwiseMin(s.uv);
+        hi = hi.cwiseMax(s.uv);
     }
     if (static_cast<int>(near.size()) < options.min_points) return std::nullopt;
     // A few thousand points pin six coefficients down; keep every k-th of the rest.
@@ -89,12 +94,10 @@ std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const st
         // The relief on every point near the quadratic (the distortion may carry a point
         // further from the plane than the capture above).
         std::vector<ReliefSample> relief;
-        relief.reserve(points.size());
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            const Eigen::Vector3d p = points[i].cast<double>();
-            const Eigen::Vector2d uv = frame.toPlane(p);
-            const double r = plane.signedDistance(p) - shape.quadratic(uv);
-            if (std::abs(r) <= options.capture_bands * band[i]) relief.push_back({uv, r, band[i], p.z()});
+        relief.reserve(seen.size());
+        for (const Sample &s : seen) {
+            const double r = s.h - shape.quadratic(s.uv);
+            if (std::abs(r) <= options.capture_bands * s.band) relief.push_back({s.uv, r, s.band, s.z});
         }
         shape.relief = fitWallRelief(relief, focal_px, options.relief);
     }
