@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "projsurf/detection/default/wall_relief.hpp"
 #include "projsurf/types/target_clones.hpp"
@@ -40,22 +41,41 @@ PROJSURF_CLONES void accumulateRound(const std::vector<Sample> &near, const Wall
     }
 }
 
+/// Each point's plane coordinates, height above the plane, band and depth: PlaneFrame::toPlane
+/// and Plane::signedDistance written out on plain doubles, so that the pass vectorises.
+PROJSURF_CLONES void planeSamples(const std::vector<Point> &points, const std::vector<float> &band, const Plane &plane,
+                                  const PlaneFrame &frame, Sample *out) {
+    const double nx = plane.normal.x(), ny = plane.normal.y(), nz = plane.normal.z(), d = plane.d;
+    const double ox = frame.origin.x(), oy = frame.origin.y(), oz = frame.origin.z();
+    const double rx = frame.right.x(), ry = frame.right.y(), rz = frame.right.z();
+    const double ux = frame.up.x(), uy = frame.up.y(), uz = frame.up.z();
+    const Point *P = points.data();
+    const float *B = band.data();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const double px = P[i].x(), py = P[i].y(), pz = P[i].z();
+        const double qx = px - ox, qy = py - oy, qz = pz - oz;
+        out[i].uv[0] = qx * rx + qy * ry + qz * rz;
+        out[i].uv[1] = qx * ux + qy * uy + qz * uz;
+        out[i].h = nx * px + ny * py + nz * pz + d;
+        out[i].band = B[i];
+        out[i].z = pz;
+    }
+}
+
 }  // namespace
 
 std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const std::vector<float> &band,
                                       const Plane &plane, const PlaneFrame &frame, const WallShapeOptions &options,
                                       double focal_px) {
     // Every point in plane coordinates once (the quadratic's and the relief's passes read them).
-    std::vector<Sample> seen;
-    seen.reserve(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const Eigen::Vector3d p = points[i].cast<double>();
-        seen.push_back({frame.toPlane(p), plane.signedDistance(p), band[i], p.z()});
-    }
+    const std::size_t n = points.size();
+    const std::unique_ptr<Sample[]> seen(new Sample[n]);  // each written below: no zero-filling
+    planeSamples(points, band, plane, frame, seen.get());
     std::vector<Sample> near;
-    near.reserve(points.size());
+    near.reserve(n);
     Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e30), hi = Eigen::Vector2d::Constant(-1e30);
-    for (const Sample &s : seen) {
+    for (const Sample *s_ = seen.get(); s_ != seen.get() + n; ++s_) {
+        const Sample &s = *s_;
         if (!(std::abs(s.h) <= options.capture_bands * s.band)) continue;
         near.push_back(s);
         lo = lo.cwiseMin(s.uv);
@@ -94,8 +114,9 @@ std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const st
         // The relief on every point near the quadratic (the distortion may carry a point
         // further from the plane than the capture above).
         std::vector<ReliefSample> relief;
-        relief.reserve(seen.size());
-        for (const Sample &s : seen) {
+        relief.reserve(n);
+        for (const Sample *s_ = seen.get(); s_ != seen.get() + n; ++s_) {
+            const Sample &s = *s_;
             const double r = s.h - shape.quadratic(s.uv);
             if (std::abs(r) <= options.capture_bands * s.band) relief.push_back({s.uv, r, s.band, s.z});
         }
