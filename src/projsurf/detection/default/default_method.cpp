@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <opencv2/imgproc.hpp>
 #include <optional>
 #include <random>
@@ -195,9 +196,10 @@ std::vector<int> onShape(const CloudSample &s, const PlaneCandidate &c) {
     float relief_max = 0.0f;
     for (float h : c.shape.relief.h) relief_max = std::max(relief_max, std::abs(h));
     const double reach = relief_max + 1e-9;  // m; the margin covers rounding
-    std::vector<double> off_quadratic(s.points.size());
-    std::vector<float> band(s.points.size());
-    offQuadratic(s.points, c.plane, c.frame, c.shape, c.tolerance, off_quadratic.data(), band.data());
+    // Each written by offQuadratic: no zero-filling.
+    const std::unique_ptr<double[]> off_quadratic(new double[s.points.size()]);
+    const std::unique_ptr<float[]> band(new float[s.points.size()]);
+    offQuadratic(s.points, c.plane, c.frame, c.shape, c.tolerance, off_quadratic.get(), band.get());
     std::vector<int> out;
     for (std::size_t i = 0; i < s.points.size(); ++i) {
         if (off_quadratic[i] > band[i] + reach) continue;
