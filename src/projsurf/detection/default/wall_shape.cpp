@@ -23,8 +23,7 @@ PROJSURF_CLONES void accumulateRound(const std::vector<Sample> &near, const Wall
                                      double a[21], double b[6]) {
     const double cx = shape.centre.x(), cy = shape.centre.y();
     const double c0 = shape.c[0], c1 = shape.c[1], c2 = shape.c[2], c3 = shape.c[3], c4 = shape.c[4], c5 = shape.c[5];
-    for (int m = 0; m < 21; ++m) a[m] = 0.0;
-    for (int i = 0; i < 6; ++i) b[i] = 0.0;
+    double sa[21] = {}, sb[6] = {};  // local: no store through a and b per sample
     for (const Sample &s : near) {
         const double x = s.uv.x() - cx, y = s.uv.y() - cy;
         const double q = c0 + c1 * x + c2 * y + c3 * x * x + c4 * x * y + c5 * y * y;
@@ -36,9 +35,11 @@ PROJSURF_CLONES void accumulateRound(const std::vector<Sample> &near, const Wall
         for (int i = 0; i < 6; ++i) wphi[i] = w * phi[i];
         int m = 0;
         for (int i = 0; i < 6; ++i)
-            for (int j = 0; j <= i; ++j) a[m++] += wphi[i] * phi[j];
-        for (int i = 0; i < 6; ++i) b[i] += wphi[i] * s.h;
+            for (int j = 0; j <= i; ++j) sa[m++] += wphi[i] * phi[j];
+        for (int i = 0; i < 6; ++i) sb[i] += wphi[i] * s.h;
     }
+    std::copy(sa, sa + 21, a);
+    std::copy(sb, sb + 6, b);
 }
 
 /// Each point's plane coordinates, height above the plane, band and depth: PlaneFrame::toPlane
