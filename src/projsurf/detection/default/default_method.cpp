@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <opencv2/imgproc.hpp>
 #include <optional>
 #include <random>
@@ -19,6 +20,7 @@
 #include "projsurf/detection/stage_timer.hpp"
 #include "projsurf/detection/vertical_planes.hpp"
 #include "projsurf/types/camera.hpp"
+#include "projsurf/types/target_clones.hpp"
 
 namespace projsurf {
 namespace {
@@ -160,6 +162,32 @@ std::vector<PlaneCandidate> findPlanes(const Cloud &cloud, const CloudSample &s,
     return out;
 }
 
+/// Each point's distance from the quadratic of `shape` about `plane` (m) and its band: the
+/// expressions of Plane::signedDistance, PlaneFrame::toPlane, WallShape::quadratic and
+/// DepthTolerance::band written out on plain scalars, so that the pass vectorises.
+PROJSURF_CLONES void offQuadratic(const std::vector<Point> &points, const Plane &plane, const PlaneFrame &frame,
+                                  const WallShape &shape, const DepthTolerance &tolerance, double *off, float *band) {
+    const double nx = plane.normal.x(), ny = plane.normal.y(), nz = plane.normal.z(), d = plane.d;
+    const double ox = frame.origin.x(), oy = frame.origin.y(), oz = frame.origin.z();
+    const double rx = frame.right.x(), ry = frame.right.y(), rz = frame.right.z();
+    const double ux = frame.up.x(), uy = frame.up.y(), uz = frame.up.z();
+    const double cx = shape.centre.x(), cy = shape.centre.y();
+    const double c0 = shape.c[0], c1 = shape.c[1], c2 = shape.c[2], c3 = shape.c[3], c4 = shape.c[4], c5 = shape.c[5];
+    const double k = tolerance.sigmas * tolerance.noise_k, lo = tolerance.min_band, hi = tolerance.max_band;
+    const Point *P = points.data();
+    const std::size_t n = points.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const float fz = P[i].z();
+        const double px = P[i].x(), py = P[i].y(), pz = fz;
+        const double sd = nx * px + ny * py + nz * pz + d;
+        const double qx = px - ox, qy = py - oy, qz = pz - oz;
+        const double x = (qx * rx + qy * ry + qz * rz) - cx, y = (qx * ux + qy * uy + qz * uz) - cy;
+        off[i] = std::abs(sd - (c0 + c1 * x + c2 * y + c3 * x * x + c4 * x * y + c5 * y * y));
+        const double b = k * pz * fz;
+        band[i] = static_cast<float>(b < lo ? lo : (b > hi ? hi : b));
+    }
+}
+
 /// Cloud indices of the sampled points within the band of the candidate's shape (the plane's
 /// band misses where the camera bends the wall). The relief is bilinear between its nodes, so it
 /// reaches no further than its largest node: a point that far beyond the band about the
@@ -168,15 +196,20 @@ std::vector<int> onShape(const CloudSample &s, const PlaneCandidate &c) {
     float relief_max = 0.0f;
     for (float h : c.shape.relief.h) relief_max = std::max(relief_max, std::abs(h));
     const double reach = relief_max + 1e-9;  // m; the margin covers rounding
+    // Each written by offQuadratic: no zero-filling.
+    const std::unique_ptr<double[]> off_quadratic(new double[s.points.size()]);
+    const std::unique_ptr<float[]> band(new float[s.points.size()]);
+    offQuadratic(s.points, c.plane, c.frame, c.shape, c.tolerance, off_quadratic.get(), band.get());
     std::vector<int> out;
     for (std::size_t i = 0; i < s.points.size(); ++i) {
+        if (off_quadratic[i] > band[i] + reach) continue;
+        if (off_quadratic[i] + reach < band[i]) {
+            out.push_back(s.indices[i]);
+            continue;
+        }
         const Eigen::Vector3d p = s.points[i].cast<double>();
-        const double sd = c.plane.signedDistance(p);
-        const Eigen::Vector2d uv = c.frame.toPlane(p);
-        const double off_quadratic = std::abs(sd - c.shape.quadratic(uv));
-        const float band = c.tolerance.band(s.points[i].z());
-        if (off_quadratic > band + reach) continue;
-        if (off_quadratic + reach < band || std::abs(sd - c.shape.height(uv)) <= band) out.push_back(s.indices[i]);
+        if (std::abs(c.plane.signedDistance(p) - c.shape.height(c.frame.toPlane(p))) <= band[i])
+            out.push_back(s.indices[i]);
     }
     return out;
 }

@@ -35,11 +35,10 @@ WallRelief fitWallRelief(const std::vector<ReliefSample> &samples, double focal_
     g.nv = std::max(2, static_cast<int>(std::ceil((hi.y() - lo.y()) / spacing)) + 1);
     const double sigma = std::max(0.5, opt.sigma_px / opt.node_px);  // in nodes
 
-    cv::Mat num(g.nv, g.nu, CV_64F), den(g.nv, g.nu, CV_64F);
+    cv::Mat sums(g.nv, g.nu, CV_64FC2);  // per node: the weighted residuals, the weights
     std::vector<float> heights;
     for (int round = 0; round < opt.rounds; ++round) {
-        num.setTo(0.0);
-        den.setTo(0.0);
+        sums.setTo(cv::Scalar::all(0.0));
         for (const ReliefSample &s : samples) {
             const WallRelief::Axis u = g.uAxis(s.uv.x()), v = g.vAxis(s.uv.y());
             const double t = (s.r - (g.empty() ? 0.0 : g.at(u, v))) / (opt.tukey_bands * s.band);
@@ -48,24 +47,25 @@ WallRelief fitWallRelief(const std::vector<ReliefSample> &samples, double focal_
             const double wn[4] = {(1 - u.a) * (1 - v.a), u.a * (1 - v.a), (1 - u.a) * v.a, u.a * v.a};
             const int di[4] = {0, 1, 0, 1}, dj[4] = {0, 0, 1, 1};
             for (int k = 0; k < 4; ++k) {
-                num.at<double>(v.i + dj[k], u.i + di[k]) += wn[k] * w * s.r;
-                den.at<double>(v.i + dj[k], u.i + di[k]) += wn[k] * w;
+                cv::Vec2d &node = sums.at<cv::Vec2d>(v.i + dj[k], u.i + di[k]);
+                node[0] += wn[k] * w * s.r;
+                node[1] += wn[k] * w;
             }
         }
-        // Normalised convolution: zeros beyond the grid carry no weight.
-        cv::GaussianBlur(num, num, cv::Size(), sigma, sigma, cv::BORDER_CONSTANT);
-        cv::GaussianBlur(den, den, cv::Size(), sigma, sigma, cv::BORDER_CONSTANT);
+        // Normalised convolution: zeros beyond the grid carry no weight. Both sums in one pass
+        // (each channel filtered on its own, as two single-channel blurs would).
+        cv::GaussianBlur(sums, sums, cv::Size(), sigma, sigma, cv::BORDER_CONSTANT);
         std::vector<double> weights;
         for (int j = 0; j < g.nv; ++j)
             for (int i = 0; i < g.nu; ++i)
-                if (den.at<double>(j, i) > 0.0) weights.push_back(den.at<double>(j, i));
+                if (sums.at<cv::Vec2d>(j, i)[1] > 0.0) weights.push_back(sums.at<cv::Vec2d>(j, i)[1]);
         const double floor = opt.min_weight_share * median(weights);
         if (!(floor > 0.0)) return WallRelief{};
         heights.assign(static_cast<std::size_t>(g.nu) * g.nv, 0.0f);
         for (int j = 0; j < g.nv; ++j)
             for (int i = 0; i < g.nu; ++i)
                 heights[static_cast<std::size_t>(j) * g.nu + i] =
-                    static_cast<float>(num.at<double>(j, i) / std::max(den.at<double>(j, i), floor));
+                    static_cast<float>(sums.at<cv::Vec2d>(j, i)[0] / std::max(sums.at<cv::Vec2d>(j, i)[1], floor));
         g.h = heights;
     }
     return g;

@@ -3,27 +3,84 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "projsurf/detection/default/wall_relief.hpp"
+#include "projsurf/types/target_clones.hpp"
 
 namespace projsurf {
+namespace {
+
+struct Sample {
+    Eigen::Vector2d uv;
+    double h, band, z;
+};
+
+/// The Tukey-weighted normal equations of the quadratic about `shape` (its relief empty) over
+/// `near`, summed flat: the lower triangle row by row in `a`, the right side in `b`. The same
+/// sums in the same order as the matrix form (no fused multiply-add in either build).
+PROJSURF_CLONES void accumulateRound(const std::vector<Sample> &near, const WallShape &shape, double tukey_bands,
+                                     double a[21], double b[6]) {
+    const double cx = shape.centre.x(), cy = shape.centre.y();
+    const double c0 = shape.c[0], c1 = shape.c[1], c2 = shape.c[2], c3 = shape.c[3], c4 = shape.c[4], c5 = shape.c[5];
+    double sa[21] = {}, sb[6] = {};  // local: no store through a and b per sample
+    for (const Sample &s : near) {
+        const double x = s.uv.x() - cx, y = s.uv.y() - cy;
+        const double q = c0 + c1 * x + c2 * y + c3 * x * x + c4 * x * y + c5 * y * y;
+        const double r = (s.h - q) / (tukey_bands * s.band);
+        if (std::abs(r) >= 1.0) continue;
+        const double w = (1.0 - r * r) * (1.0 - r * r);
+        const double phi[6] = {1.0, x, y, x * x, x * y, y * y};
+        double wphi[6];
+        for (int i = 0; i < 6; ++i) wphi[i] = w * phi[i];
+        int m = 0;
+        for (int i = 0; i < 6; ++i)
+            for (int j = 0; j <= i; ++j) sa[m++] += wphi[i] * phi[j];
+        for (int i = 0; i < 6; ++i) sb[i] += wphi[i] * s.h;
+    }
+    std::copy(sa, sa + 21, a);
+    std::copy(sb, sb + 6, b);
+}
+
+/// Each point's plane coordinates, height above the plane, band and depth: PlaneFrame::toPlane
+/// and Plane::signedDistance written out on plain doubles, so that the pass vectorises.
+PROJSURF_CLONES void planeSamples(const std::vector<Point> &points, const std::vector<float> &band, const Plane &plane,
+                                  const PlaneFrame &frame, Sample *out) {
+    const double nx = plane.normal.x(), ny = plane.normal.y(), nz = plane.normal.z(), d = plane.d;
+    const double ox = frame.origin.x(), oy = frame.origin.y(), oz = frame.origin.z();
+    const double rx = frame.right.x(), ry = frame.right.y(), rz = frame.right.z();
+    const double ux = frame.up.x(), uy = frame.up.y(), uz = frame.up.z();
+    const Point *P = points.data();
+    const float *B = band.data();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const double px = P[i].x(), py = P[i].y(), pz = P[i].z();
+        const double qx = px - ox, qy = py - oy, qz = pz - oz;
+        out[i].uv[0] = qx * rx + qy * ry + qz * rz;
+        out[i].uv[1] = qx * ux + qy * uy + qz * uz;
+        out[i].h = nx * px + ny * py + nz * pz + d;
+        out[i].band = B[i];
+        out[i].z = pz;
+    }
+}
+
+}  // namespace
 
 std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const std::vector<float> &band,
                                       const Plane &plane, const PlaneFrame &frame, const WallShapeOptions &options,
                                       double focal_px) {
-    struct Sample {
-        Eigen::Vector2d uv;
-        double h, band, z;
-    };
+    // Every point in plane coordinates once (the quadratic's and the relief's passes read them).
+    const std::size_t n = points.size();
+    const std::unique_ptr<Sample[]> seen(new Sample[n]);  // each written below: no zero-filling
+    planeSamples(points, band, plane, frame, seen.get());
     std::vector<Sample> near;
+    near.reserve(n);
     Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e30), hi = Eigen::Vector2d::Constant(-1e30);
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const Eigen::Vector3d p = points[i].cast<double>();
-        const double h = plane.signedDistance(p);
-        if (!(std::abs(h) <= options.capture_bands * band[i])) continue;
-        near.push_back({frame.toPlane(p), h, band[i], p.z()});
-        lo = lo.cwiseMin(near.back().uv);
-        hi = hi.cwiseMax(near.back().uv);
+    for (const Sample *s_ = seen.get(); s_ != seen.get() + n; ++s_) {
+        const Sample &s = *s_;
+        if (!(std::abs(s.h) <= options.capture_bands * s.band)) continue;
+        near.push_back(s);
+        lo = lo.cwiseMin(s.uv);
+        hi = hi.cwiseMax(s.uv);
     }
     if (static_cast<int>(near.size()) < options.min_points) return std::nullopt;
     // A few thousand points pin six coefficients down; keep every k-th of the rest.
@@ -35,23 +92,13 @@ std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const st
     }
     WallShape shape;
     shape.centre = 0.5 * (lo + hi);
-    auto basis = [&](const Eigen::Vector2d &uv) {
-        const double x = uv.x() - shape.centre.x(), y = uv.y() - shape.centre.y();
-        return (Eigen::Matrix<double, 6, 1>() << 1.0, x, y, x * x, x * y, y * y).finished();
-    };
     for (int it = 0; it < options.iterations; ++it) {
+        double a[21], sums[6];
+        accumulateRound(near, shape, options.tukey_bands, a, sums);
         Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
-        Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
-        for (const Sample &s : near) {
-            const double r = (s.h - shape.height(s.uv)) / (options.tukey_bands * s.band);
-            if (std::abs(r) >= 1.0) continue;
-            const double w = (1.0 - r * r) * (1.0 - r * r);
-            const Eigen::Matrix<double, 6, 1> phi = basis(s.uv);
-            const Eigen::Matrix<double, 6, 1> wphi = w * phi;
-            for (int i = 0; i < 6; ++i)
-                for (int j = 0; j <= i; ++j) A(i, j) += wphi[i] * phi[j];
-            b += wphi * s.h;
-        }
+        const Eigen::Matrix<double, 6, 1> b(sums);
+        for (int i = 0, m = 0; i < 6; ++i)
+            for (int j = 0; j <= i; ++j) A(i, j) = a[m++];
         const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(A.selfadjointView<Eigen::Lower>());
         if (ldlt.info() != Eigen::Success || !(ldlt.rcond() > 1e-12)) return std::nullopt;
         shape.c = ldlt.solve(b);
@@ -68,12 +115,11 @@ std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const st
         // The relief on every point near the quadratic (the distortion may carry a point
         // further from the plane than the capture above).
         std::vector<ReliefSample> relief;
-        relief.reserve(points.size());
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            const Eigen::Vector3d p = points[i].cast<double>();
-            const Eigen::Vector2d uv = frame.toPlane(p);
-            const double r = plane.signedDistance(p) - shape.quadratic(uv);
-            if (std::abs(r) <= options.capture_bands * band[i]) relief.push_back({uv, r, band[i], p.z()});
+        relief.reserve(n);
+        for (const Sample *s_ = seen.get(); s_ != seen.get() + n; ++s_) {
+            const Sample &s = *s_;
+            const double r = s.h - shape.quadratic(s.uv);
+            if (std::abs(r) <= options.capture_bands * s.band) relief.push_back({s.uv, r, s.band, s.z});
         }
         shape.relief = fitWallRelief(relief, focal_px, options.relief);
     }
