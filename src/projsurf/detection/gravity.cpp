@@ -136,6 +136,38 @@ void reweightedFloorFit(const std::vector<Point> &pts, float band, float max_dep
     }
 }
 
+/// m: how far below a level plane a parallel one must lie to be another surface (a table top
+/// is 0.4-1.1 m above the floor).
+constexpr float kBelowTop = 0.3f;
+
+/// A table or a counter top is level too, and may hold more readings than the floor below it:
+/// the lowest plane parallel to `top` holding `min_score` readings within `band`, at least
+/// kBelowTop below it, is the floor; `top` when there is none.
+Candidate lowestParallelPlane(const FloorSample &sample, const Candidate &top, float band, int min_score) {
+    // How far below the camera along top.n the readings that face along it lie (-d of a parallel
+    // plane through them); a slice of a wall would hold many of any (an unorganized cloud's
+    // readings have no normal: its top stands).
+    const float cos_slack = static_cast<float>(std::cos(kNormalSlack));
+    std::vector<float> below;
+    for (std::size_t i = 0; i < sample.points.size(); ++i)
+        if (std::abs(sample.normals[i].dot(top.n)) >= cos_slack) below.push_back(top.n.dot(sample.points[i]));
+    std::sort(below.begin(), below.end());
+    Candidate out = top;
+    // Windows of 2 band slid over the sorted heights, deepest first.
+    std::size_t lo = below.size();
+    for (std::size_t hi = below.size(); hi-- > 0;) {
+        while (lo > 0 && below[lo - 1] >= below[hi] - 2.0f * band) --lo;
+        const float centre = below[hi] - band;
+        if (centre < -top.d + kBelowTop) break;
+        if (static_cast<int>(hi - lo + 1) >= min_score) {
+            out.d = -centre;
+            out.score = static_cast<int>(hi - lo + 1);
+            break;
+        }
+    }
+    return out;
+}
+
 }  // namespace
 
 std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, const Eigen::Vector3d &prior,
@@ -175,6 +207,8 @@ std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, cons
             floor = &c;
             break;
         }
+    Candidate lowest = lowestParallelPlane(sample, *floor, band, min_score);
+    floor = &lowest;
     // Least squares on the floor's inliers, twice: the RANSAC normal from three points is only
     // a seed (a few degrees off on noisy depth); each refit re-selects the inliers within the band.
     Eigen::Vector3f n = floor->n;
