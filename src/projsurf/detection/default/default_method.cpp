@@ -339,7 +339,7 @@ void observeFreeSpace(const Cloud &cloud, DefaultScratch &scratch, const Project
     const int gap_cells =
         std::isfinite(gap) ? static_cast<int>(std::clamp(gap, 1.0, double(cfg.free_space.max_gap_cells))) : 1;
     SurfaceCells cells = observedFreeSurface(*c.observed, gap_cells, cfg.free_space.min_blocked_neighbours,
-                                             cfg.free_space.proud, c.raster.cell);
+                                             cfg.free_space.proud, c.raster.cell, cfg.free_space.steps);
     c.surface = cells.free;
     c.cell_state = cells.state;
     c.free = c.surface & footprintCells(c.raster, c.footprint.uv);
