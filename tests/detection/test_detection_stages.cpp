@@ -11,6 +11,7 @@
 
 #include "projsurf/detection/default/observed_free_space.hpp"
 #include "projsurf/detection/default/planar_regions.hpp"
+#include "projsurf/detection/default/step_edges.hpp"
 #include "projsurf/detection/default/wall_shape.hpp"
 #include "projsurf/detection/image_boxes.hpp"
 #include "projsurf/detection/point_sampling.hpp"
@@ -172,6 +173,46 @@ TEST(ObservedFreeSurface, TheNoiseOfAWindowMeanIsMeasuredOnTheWallNotAssumedInde
     proud.min_offset = 0.01;
     const SurfaceCells cells = observedFreeSurface(o, 1, 2, proud, 0.01);
     EXPECT_EQ(cv::countNonZero(cells.state == static_cast<int>(CellState::Proud)), 0);
+}
+
+TEST(StepEdges, AFrameOnABentWallIsBoundedByItsStepsWhereItsMeanIsNot) {
+    // 1 cm cells, 13 mm of noise per reading and a smooth bend of +-2.5 cm over 1.1 m (a
+    // Kinect v1 at 3 m: its distortion at that depth), a frame 3 cm proud: the window means over
+    // the wall spread as far as the frame stands, but the frame's border is a sharp step.
+    constexpr double kPi = 3.14159265358979;
+    const auto wall = [&](int r, int c) {
+        const double bend = 0.025 * std::sin(2 * kPi * c / 110.0) * std::cos(2 * kPi * r / 110.0);
+        if (r >= 40 && r < 80 && c >= 60 && c < 110) return bend + 0.03;    // a frame 50 x 40 cm
+        if (r >= 40 && r < 80 && c >= 150 && c < 200) return bend + 0.003;  // a poster
+        return bend;
+    };
+    const PlaneObservation o = offsetObservation(120, 240, 0.013, wall);
+    const cv::Mat edges = stepEdgeCells(o, StepEvidence{}, 0.01);
+    ASSERT_FALSE(edges.empty());
+    // Along each side of the frame (away from its corners), the border is marked within a cell.
+    auto marked = [&](int r, int c) {
+        for (int dr = -1; dr <= 1; ++dr)
+            for (int dc = -1; dc <= 1; ++dc)
+                if (edges.at<uchar>(r + dr, c + dc)) return true;
+        return false;
+    };
+    int top = 0, bottom = 0, left = 0, right = 0;
+    for (int c = 70; c < 100; ++c) top += marked(40, c), bottom += marked(79, c);
+    for (int r = 50; r < 70; ++r) left += marked(r, 60), right += marked(r, 109);
+    EXPECT_GE(top, 27);
+    EXPECT_GE(bottom, 27);
+    EXPECT_GE(left, 18);
+    EXPECT_GE(right, 18);
+    // Nothing on the poster's border or on the bent wall away from the frame.
+    cv::Mat away = edges.clone();
+    away(cv::Rect(55, 35, 60, 50)).setTo(0);
+    EXPECT_EQ(cv::countNonZero(away), 0);
+    // So a rectangle over part of the frame is not free; off, the same readings are.
+    const SurfaceCells cells = observedFreeSurface(o, 1, 2, ProudEvidence{}, 0.01, StepEvidence{});
+    EXPECT_EQ(cells.free.at<uchar>(40, 85), 0);
+    StepEvidence off;
+    off.enabled = false;
+    EXPECT_EQ(observedFreeSurface(o, 1, 2, ProudEvidence{}, 0.01, off).free.at<uchar>(40, 85), 255);
 }
 
 TEST(RectangleGrowth, GrowsAgainstTheExactFootprintAndStopsAtWhatIsNotFree) {

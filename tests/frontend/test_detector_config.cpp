@@ -94,7 +94,7 @@ std::string refusal(const fs::path &dir, const std::string &text) {
 
 TEST(DetectorConfigKeys, EveryKeyIsUniqueDocumentedAndReachesItsOwnField) {
     const std::vector<ConfigKey> &keys = detectorConfigKeys();
-    EXPECT_EQ(keys.size(), 114u);  // every field of DetectorConfig and the structs it nests
+    EXPECT_EQ(keys.size(), 120u);  // every field of DetectorConfig and the structs it nests
     std::set<std::string> names;
     for (const ConfigKey &k : keys) {
         EXPECT_TRUE(names.insert(k.key).second) << k.key << " twice";
@@ -278,18 +278,18 @@ TEST(DetectorConfigKeys, AFieldAddedToTheConfigIsNoticed) {
     // and config/detector.yaml follow from --print-config), then its new size here.
     if (sizeof(void *) != 8 || sizeof(std::vector<double>) != 24) GTEST_SKIP() << "sizes recorded for 64-bit only";
     const std::vector<std::pair<std::size_t, std::size_t>> sizes = {
-        {sizeof(DetectorConfig), 840},     {sizeof(DepthTolerance), 48},      {sizeof(VirtualImageConfig), 32},
+        {sizeof(DetectorConfig), 888},     {sizeof(DepthTolerance), 48},      {sizeof(VirtualImageConfig), 32},
         {sizeof(PlaneSearchConfig), 128},  {sizeof(PlanarRegionOptions), 64}, {sizeof(WallConfig), 160},
         {sizeof(WallShapeOptions), 104},   {sizeof(WallReliefOptions), 56},   {sizeof(ObjectFaceConfig), 120},
-        {sizeof(FaceSurroundOptions), 64}, {sizeof(FreeStandingRule), 40},    {sizeof(FreeSpaceConfig), 88},
+        {sizeof(FaceSurroundOptions), 64}, {sizeof(FreeStandingRule), 40},    {sizeof(FreeSpaceConfig), 136},
         {sizeof(SurfaceCheckConfig), 8},   {sizeof(SuitabilityConfig), 160},  {sizeof(SuitabilityOptions), 144},
-        {sizeof(PaperConfig), 64},         {sizeof(ProudEvidence), 48},
+        {sizeof(PaperConfig), 64},         {sizeof(ProudEvidence), 48},       {sizeof(StepEvidence), 48},
     };
     const char *names[] = {"DetectorConfig",      "DepthTolerance",      "VirtualImageConfig", "PlaneSearchConfig",
                            "PlanarRegionOptions", "WallConfig",          "WallShapeOptions",   "WallReliefOptions",
                            "ObjectFaceConfig",    "FaceSurroundOptions", "FreeStandingRule",   "FreeSpaceConfig",
                            "SurfaceCheckConfig",  "SuitabilityConfig",   "SuitabilityOptions", "PaperConfig",
-                           "ProudEvidence"};
+                           "ProudEvidence",       "StepEvidence"};
     for (std::size_t i = 0; i < sizes.size(); ++i)
         EXPECT_EQ(sizes[i].first, sizes[i].second)
             << names[i] << " changed size: a field added or removed needs its key in the table";

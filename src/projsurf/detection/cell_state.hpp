@@ -17,7 +17,7 @@ enum class CellState : uchar {
     Dark = 6,       ///< too dark (low albedo)
     Textured = 7,   ///< textured or edgy (a framed picture, a calendar, a busy pattern)
     Saturated = 8,  ///< too saturated a colour
-    Proud = 9,      ///< the wall's readings there stand off its shape on average (a frame, a switch, a TV)
+    Proud = 9,      ///< the wall's readings there stand off its shape on average, or step at its border (a frame, a TV)
 };
 
 /// How many CellState values there are (one past the largest).

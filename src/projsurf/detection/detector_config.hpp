@@ -158,6 +158,18 @@ struct ProudEvidence {
     double min_extent = 0.10;   ///< m, proud areas narrower than this are dropped (a few windows: the sensor's)
 };
 
+/// A depth step along the wall (a picture frame's or a TV's border): the mean offset from the
+/// wall's shape jumps between two strips side by side, beyond what the wall's own bend and the
+/// sensor's correlated error make such jumps over the wall (detection/default/step_edges).
+struct StepEvidence {
+    bool enabled = true;
+    double width = 0.05;     ///< m, width of each strip either side of the edge (our choice: about a frame's border)
+    double length = 0.20;    ///< m, strips' length along the edge (half the suite's smallest frame side, 40 cm)
+    int min_points = 16;     ///< a strip with fewer readings says nothing
+    double spreads = 6.0;    ///< a step beyond this many robust spreads of the wall's steps is an edge (measured),
+    double min_step = 0.02;  ///< m, and beyond this (measured; posters, whiteboards: a few mm, stay free)
+};
+
 struct FreeSpaceConfig {
     double cell = 0.01;  ///< m, raster cell (area error < 0.05 m^2 at 3 m, measured)
     int stride = 2;      ///< pixel step of the pass on organized clouds (3 lost 7 % of the area behind a person)
@@ -169,6 +181,7 @@ struct FreeSpaceConfig {
         1.0 / 64;  ///< of the image width: margin around where a plane is seen (mixed pixels, grazing angles)
     double inlier_box_margin = 1.0 / 16;  ///< of the image width, when the cloud has no fitted intrinsics
     ProudEvidence proud;                  ///< what stands off the wall's shape on average over a window
+    StepEvidence steps;                   ///< where the wall's readings step along a line
 };
 
 /// Default method, stage 4 (`surface_check`): the surface check on the rectangle (paper 3.2.3).

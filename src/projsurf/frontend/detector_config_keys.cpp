@@ -193,6 +193,15 @@ std::vector<ConfigKey> freeSpaceKeys() {
                      "m, and beyond this (posters, whiteboards stay free)"),
         PROJSURF_KEY(double, free_space.proud.min_extent, kNonNegative,
                      "m, proud areas narrower than this are dropped (a few windows: the sensor's)"),
+        PROJSURF_KEY(bool, free_space.steps.enabled, kAny,
+                     "cells where the wall's readings step along a line (a frame's border) are not free"),
+        PROJSURF_KEY(double, free_space.steps.width, kPositive, "m, width of each strip either side of a step"),
+        PROJSURF_KEY(double, free_space.steps.length, kPositive, "m, the strips' length along the step"),
+        PROJSURF_KEY(int, free_space.steps.min_points, from(1, 100000), "a strip with fewer readings says nothing"),
+        PROJSURF_KEY(double, free_space.steps.spreads, kNonNegative,
+                     "a step beyond this many robust spreads of the wall's steps is an edge"),
+        PROJSURF_KEY(double, free_space.steps.min_step, kNonNegative,
+                     "m, and beyond this (posters, whiteboards stay free)"),
         PROJSURF_KEY(double, check.max_outlier_fraction, kShare, "share of checked points off the wall that rejects"),
     };
 }

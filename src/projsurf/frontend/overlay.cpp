@@ -289,7 +289,7 @@ std::vector<std::pair<cv::Scalar, std::string>> legendKey(const Detection &det, 
         key.push_back({kSeenThrough, "not free: seen through (hole, door, glass)"});
         key.push_back({kNoReading, "not free: no wall reading"});
         if (cv::countNonZero(det.debug.cell_state == static_cast<int>(CellState::Proud)) > 0)
-            key.push_back({kProud, "not free: stands proud of the wall on average (frame, switch)"});
+            key.push_back({kProud, "not free: stands proud of the wall (frame, switch)"});
         for (const auto &[state, colour, text] : unfitStates())
             if (cv::countNonZero(det.debug.cell_state == static_cast<int>(state)) > 0) key.push_back({colour, text});
     }

@@ -327,14 +327,18 @@ bool frameCandidate(const Cloud &cloud, const CloudSample &s, const Projector &p
         lo = lo.cwiseMin(w);
         hi = hi.cwiseMax(w);
     }
+    const Eigen::Vector2d footprint_lo = lo, footprint_hi = hi;
     // Only where the plane was seen can the picture go: clip to its inliers' extent.
     Eigen::Vector2d ilo, ihi;
     inlierExtent(cloud, c, ilo, ihi);
-    const double cell = cfg.free_space.cell;
-    lo = lo.cwiseMax(ilo - Eigen::Vector2d::Constant(cell));
-    hi = hi.cwiseMin(ihi + Eigen::Vector2d::Constant(cell));
+    const Eigen::Vector2d pad = Eigen::Vector2d::Constant(cfg.free_space.cell);
+    lo = lo.cwiseMax(ilo - pad);
+    hi = hi.cwiseMin(ihi + pad);
     if (!(lo.array() < hi.array()).all()) return false;
-    c.raster = makeRasterFrame(lo, hi, cell);
+    // The raster reaches a cell past the footprint where the wall was seen there: the free
+    // surface loses a cell at the raster's edge (taken for the wall's edge), and the
+    // footprint's edge is not the wall's.
+    c.raster = makeRasterFrame(footprint_lo.cwiseMax(ilo) - pad, footprint_hi.cwiseMin(ihi) + pad, cfg.free_space.cell);
     // Organized clouds: only where the raster and the beam towards it are seen, with a margin
     // for points off the plane at grazing angles and mixed pixels at edges; without
     // intrinsics, around where the plane's points are.
@@ -368,7 +372,7 @@ void observeFreeSpace(const Cloud &cloud, DefaultScratch &scratch, const Project
     const int gap_cells =
         std::isfinite(gap) ? static_cast<int>(std::clamp(gap, 1.0, double(cfg.free_space.max_gap_cells))) : 1;
     SurfaceCells cells = observedFreeSurface(*c.observed, gap_cells, cfg.free_space.min_blocked_neighbours,
-                                             cfg.free_space.proud, c.raster.cell);
+                                             cfg.free_space.proud, c.raster.cell, cfg.free_space.steps);
     c.surface = cells.free;
     c.cell_state = cells.state;
     c.free = c.surface & footprintCells(c.raster, c.footprint.uv);

@@ -1,5 +1,7 @@
 #include "projsurf/detection/default/observed_free_space.hpp"
 
+#include "projsurf/detection/default/step_edges.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
@@ -56,7 +58,7 @@ cv::Mat proudCells(const PlaneObservation &observation, const ProudEvidence &pro
 }
 
 SurfaceCells observedFreeSurface(const PlaneObservation &observation, int gap_cells, int min_blocked_neighbours,
-                                 const ProudEvidence &proud, double cell) {
+                                 const ProudEvidence &proud, double cell, const StepEvidence &steps) {
     const cv::Mat &support = observation.support, &behind = observation.behind, &shadow = observation.shadow;
     const int gap = std::max(1, gap_cells);
     cv::Mat supported = support > 0;
@@ -65,6 +67,8 @@ SurfaceCells observedFreeSurface(const PlaneObservation &observation, int gap_ce
     const cv::Mat through = behind > support, in_front = shadow > 0;
     cv::Mat off_shape = proudCells(observation, proud, cell);
     if (off_shape.empty()) off_shape = cv::Mat::zeros(support.size(), CV_8U);
+    const cv::Mat step = stepEdgeCells(observation, steps, cell);
+    if (!step.empty()) off_shape |= step;
     cv::Mat blocked = through | in_front | off_shape;
     cv::Mat neighbours;
     cv::boxFilter(blocked / 255, neighbours, CV_16U, {3, 3}, {-1, -1}, false, cv::BORDER_CONSTANT);

@@ -22,10 +22,11 @@ struct SurfaceCells {
 /// blocked where more points were seen through than on the wall, or shadowed, ignoring blocked
 /// cells with fewer than `min_blocked_neighbours` blocked cells in their 3x3 (sensor noise);
 /// blocked also where the readings' mean offset from the wall's shape over a window stands out
-/// (`proud`, `cell` the raster's cell in m); one cell trimmed off every edge so the picture
-/// never hangs over the wall's true edge.
+/// (`proud`, `cell` the raster's cell in m) and where they step along a line (`steps`, a
+/// frame's border: step_edges); one cell trimmed off every edge so the picture never hangs
+/// over the wall's true edge.
 SurfaceCells observedFreeSurface(const PlaneObservation &observation, int gap_cells, int min_blocked_neighbours,
-                                 const ProudEvidence &proud = {}, double cell = 0.01);
+                                 const ProudEvidence &proud = {}, double cell = 0.01, const StepEvidence &steps = {});
 
 /// The cells (255) whose window of readings stands off the wall's shape on average by more
 /// than the spread of such means over the wall allows (ProudEvidence); empty when the
