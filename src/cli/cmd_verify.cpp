@@ -65,7 +65,7 @@ void run(const VerifyOptions &o) {
     // The detection must fit this calibration, as `correct` requires (a detection made with
     // another projector can lie behind this one, or beyond its framebuffer).
     if (const KeystoneResult fits = computeKeystone(projector, det.rectangle, fb.size()); !fits.keystone)
-        throw InputError(o.detection, fits.problem);
+        throw InputError(o.calib, "cannot light the detection in " + o.detection + ": " + fits.problem);
 
     // Where the picture was meant to land: the detection's rectangle, letterboxed to the
     // picture's aspect (the lit framebuffer corners cast onto the detected plane).
