@@ -333,7 +333,7 @@ TEST(WallShape, FollowsASmoothBendButNotWhatStandsProudOfTheWall) {
     const auto shape = fitWallShape(pts, band, wall, frame);
     ASSERT_TRUE(shape.has_value());
     // Plane coordinates: u = x (right), v = -y (up).
-    for (const Eigen::Vector2d uv : {Eigen::Vector2d(0, 0), Eigen::Vector2d(0.9, 0.6), Eigen::Vector2d(-1.0, -0.6)})
+    for (const Eigen::Vector2d &uv : {Eigen::Vector2d(0, 0), Eigen::Vector2d(0.9, 0.6), Eigen::Vector2d(-1.0, -0.6)})
         EXPECT_NEAR(shape->height(uv), bend(uv.x(), -uv.y()), 0.004) << uv.transpose();
     // The noise about the shape is the sensor's, not the box's.
     EXPECT_NEAR(shape->noise_k * 2.5 * 2.5, 0.004, 0.0015);
@@ -351,7 +351,7 @@ TEST(WallShape, AFarWallMayBendAsMuchAsTheSensorsDisparityErrorGrows) {
     const auto &[cloud, sample, pts, band, wall, frame] = w;
     const auto shape = fitWallShape(pts, band, wall, frame);
     ASSERT_TRUE(shape.has_value());
-    for (const Eigen::Vector2d uv : {Eigen::Vector2d(0, 0), Eigen::Vector2d(2.0, 1.4), Eigen::Vector2d(-2.0, -1.4)})
+    for (const Eigen::Vector2d &uv : {Eigen::Vector2d(0, 0), Eigen::Vector2d(2.0, 1.4), Eigen::Vector2d(-2.0, -1.4)})
         EXPECT_NEAR(shape->height(uv), bend(uv.x(), -uv.y()), 0.01) << uv.transpose();
     // With the bend held to 8 cm at every depth, the same wall gets no shape.
     WallShapeOptions flat_limit;

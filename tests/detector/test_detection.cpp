@@ -179,8 +179,9 @@ TEST(Gravity, NoFloorFromASlantedPlaneThroughAPersonAndTheWall) {
     // At 2 m no floor is in view (it begins 2.5 m out). A plane slanted 32 deg held stripes of
     // the person and the wall, more than the 3 % a floor needs: gravity auto tilted the
     // picture, and detect warned of a tilted camera.
-    if (const auto g = floorAt(2.0))
+    if (const auto g = floorAt(2.0)) {
         EXPECT_LT(std::acos(std::min(1.0, g->gravity.dot(level))), 2.0 * M_PI / 180.0) << g->gravity.transpose();
+    }
     // At 3 and 4 m a strip of floor shows (a tenth of the frame at 3 m, where three readings
     // drawn from all of them rarely all fell on it, and a plane slanted 13 deg through the
     // floor's edge won): found, level.

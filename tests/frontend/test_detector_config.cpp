@@ -104,9 +104,11 @@ TEST(DetectorConfigKeys, EveryKeyIsUniqueDocumentedAndReachesItsOwnField) {
         const SettingText other = otherValue(c, k);
         setConfigValue(c, k, other, k.key);
         EXPECT_NE(valueOf(c, k.key), valueOf(DetectorConfig{}, k.key)) << k.key;
-        for (const ConfigKey &o : keys)
-            if (o.key != k.key)
+        for (const ConfigKey &o : keys) {
+            if (o.key != k.key) {
                 EXPECT_EQ(valueOf(c, o.key), valueOf(DetectorConfig{}, o.key)) << k.key << " moved " << o.key;
+            }
+        }
     }
     for (const char *key :
          {"method", "aspect", "max_tilt", "seed", "planes.max_planes", "planes.regions.min_fill",
