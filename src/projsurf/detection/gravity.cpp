@@ -31,6 +31,11 @@ constexpr int kNormalReach = 8;
 /// rad (30 deg): how far a floor reading's normal may stray from the floor's own (noise, carpet).
 constexpr double kNormalSlack = 0.52;
 
+/// Whether a reading's normal (zero when unknown) lies within kNormalSlack of the plane normal n.
+bool facesAlong(const Eigen::Vector3f &normal, const Eigen::Vector3f &n) {
+    return std::abs(normal.dot(n)) >= static_cast<float>(std::cos(kNormalSlack));
+}
+
 /// The surface normal at reading i of an organized cloud, or zero when a neighbour is missing.
 Eigen::Vector3f normalAt(const Cloud &cloud, std::size_t i) {
     const int w = cloud.width, r = static_cast<int>(i / w), c = static_cast<int>(i % w), k = kNormalReach;
@@ -79,12 +84,11 @@ FloorSample floorSample(const Cloud &cloud, const Eigen::Vector3f &down, double 
 /// person or a box holds stripes of their readings, which face sideways. True when no normal is
 /// known (an unorganized cloud).
 bool facesLikeAFloor(const FloorSample &sample, const Eigen::Vector3f &n, float d, float band) {
-    const float cos_slack = static_cast<float>(std::cos(kNormalSlack));
     int known = 0, along = 0;
     for (std::size_t i = 0; i < sample.points.size(); ++i) {
         if (sample.normals[i].isZero() || std::abs(n.dot(sample.points[i]) + d) > band) continue;
         ++known;
-        along += std::abs(sample.normals[i].dot(n)) >= cos_slack;
+        along += facesAlong(sample.normals[i], n);
     }
     return known == 0 || 2 * along >= known;
 }
@@ -147,10 +151,9 @@ Candidate lowestParallelPlane(const FloorSample &sample, const Candidate &top, f
     // How far below the camera along top.n the readings that face along it lie (-d of a parallel
     // plane through them); a slice of a wall would hold many of any (an unorganized cloud's
     // readings have no normal: its top stands).
-    const float cos_slack = static_cast<float>(std::cos(kNormalSlack));
     std::vector<float> below;
     for (std::size_t i = 0; i < sample.points.size(); ++i)
-        if (std::abs(sample.normals[i].dot(top.n)) >= cos_slack) below.push_back(top.n.dot(sample.points[i]));
+        if (facesAlong(sample.normals[i], top.n)) below.push_back(top.n.dot(sample.points[i]));
     std::sort(below.begin(), below.end());
     Candidate out = top;
     // Windows of 2 band slid over the sorted heights, deepest first.
@@ -161,7 +164,6 @@ Candidate lowestParallelPlane(const FloorSample &sample, const Candidate &top, f
         if (centre < -top.d + kBelowTop) break;
         if (static_cast<int>(hi - lo + 1) >= min_score) {
             out.d = -centre;
-            out.score = static_cast<int>(hi - lo + 1);
             break;
         }
     }
@@ -178,7 +180,7 @@ std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, cons
     if (pts.size() < 50) return std::nullopt;
     const float cos_max = static_cast<float>(std::cos(max_angle));
     const float band = 0.03f;  // m: floors are flat; Kinect noise at 1-3 m is below this
-    const int min_score = std::max(50, static_cast<int>(std::ceil(min_share * pts.size())));
+    const int min_score = static_cast<int>(std::ceil(min_share * pts.size()));
     std::mt19937 rng(seed);
     std::uniform_int_distribution<std::size_t> pick(0, sample.seeds.size() - 1);
     // Every large plane in the cone below the camera.
@@ -198,21 +200,15 @@ std::optional<GravityEstimate> estimateGravityFromFloor(const Cloud &cloud, cons
         if (score >= min_score && facesLikeAFloor(sample, n, d, band)) large.push_back({n, d, score});
     }
     if (large.empty()) return std::nullopt;
-    const int biggest =
-        std::max_element(large.begin(), large.end(), [](auto &x, auto &y) { return x.score < y.score; })->score;
-    // The biggest of them (choosing the lowest instead picks planes tilted through the far floor).
-    const Candidate *floor = nullptr;
-    for (const auto &c : large)
-        if (c.score == biggest) {
-            floor = &c;
-            break;
-        }
-    Candidate lowest = lowestParallelPlane(sample, *floor, band, min_score);
-    floor = &lowest;
+    // The biggest of them (the lowest of them would pick planes tilted through the far floor),
+    // then the lowest plane parallel to it (a counter top is bigger than the floor at times).
+    const Candidate &biggest =
+        *std::max_element(large.begin(), large.end(), [](auto &x, auto &y) { return x.score < y.score; });
+    const Candidate floor = lowestParallelPlane(sample, biggest, band, min_score);
     // Least squares on the floor's inliers, twice: the RANSAC normal from three points is only
     // a seed (a few degrees off on noisy depth); each refit re-selects the inliers within the band.
-    Eigen::Vector3f n = floor->n;
-    float d = floor->d;
+    Eigen::Vector3f n = floor.n;
+    float d = floor.d;
     std::vector<int> inliers = inliersOf(pts, n, d, band);
     for (int round = 0; round < 3; ++round) {
         const auto refined = fitPlane(pts, inliers);
