@@ -1,5 +1,6 @@
 #include "projsurf/detection/default/observed_free_space.hpp"
 
+#include "projsurf/detection/default/median_spread.hpp"
 #include "projsurf/detection/default/step_edges.hpp"
 
 #include <algorithm>
@@ -9,21 +10,6 @@
 #include <vector>
 
 namespace projsurf {
-
-namespace {
-
-/// Median and robust spread (1.4826 MAD) of `v` (reordered).
-std::pair<float, float> medianSpread(std::vector<float> &v) {
-    if (v.empty()) return {0.0f, 0.0f};
-    const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-    std::nth_element(v.begin(), mid, v.end());
-    const float m = *mid;
-    for (float &x : v) x = std::abs(x - m);
-    std::nth_element(v.begin(), mid, v.end());
-    return {m, 1.4826f * *mid};
-}
-
-}  // namespace
 
 cv::Mat proudCells(const PlaneObservation &observation, const ProudEvidence &proud, double cell) {
     if (!proud.enabled || observation.offset.empty() || observation.near.empty() || !(cell > 0.0)) return {};

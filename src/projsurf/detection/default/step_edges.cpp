@@ -1,5 +1,7 @@
 #include "projsurf/detection/default/step_edges.hpp"
 
+#include "projsurf/detection/default/median_spread.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -52,13 +54,7 @@ float robustSpread(const cv::Mat &a, int every) {
         for (int c = 0; c < a.cols; c += every)
             if (std::isfinite(row[c])) v.push_back(row[c]);
     }
-    if (v.empty()) return 0.0f;
-    const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-    std::nth_element(v.begin(), mid, v.end());
-    const float median = *mid;
-    for (float &x : v) x = std::abs(x - median);
-    std::nth_element(v.begin(), mid, v.end());
-    return 1.4826f * *mid;
+    return medianSpread(v).second;
 }
 
 /// Marks, at every step beyond max(min_step, spreads x the steps' robust spread) that is the
