@@ -5,26 +5,22 @@
 #include <cmath>
 #include <memory>
 
+#include "projsurf/detection/default/plane_samples.hpp"
 #include "projsurf/detection/default/wall_relief.hpp"
 #include "projsurf/types/target_clones.hpp"
 
 namespace projsurf {
 namespace {
 
-struct Sample {
-    Eigen::Vector2d uv;
-    double h, band, z;
-};
-
 /// The Tukey-weighted normal equations of the quadratic about `shape` (its relief empty) over
 /// `near`, summed flat: the lower triangle row by row in `a`, the right side in `b`. The same
 /// sums in the same order as the matrix form (no fused multiply-add in either build).
-PROJSURF_CLONES void accumulateRound(const std::vector<Sample> &near, const WallShape &shape, double tukey_bands,
+PROJSURF_CLONES void accumulateRound(const std::vector<PlaneSample> &near, const WallShape &shape, double tukey_bands,
                                      double a[21], double b[6]) {
     const double cx = shape.centre.x(), cy = shape.centre.y();
     const double c0 = shape.c[0], c1 = shape.c[1], c2 = shape.c[2], c3 = shape.c[3], c4 = shape.c[4], c5 = shape.c[5];
     double sa[21] = {}, sb[6] = {};  // local: no store through a and b per sample
-    for (const Sample &s : near) {
+    for (const PlaneSample &s : near) {
         const double x = s.uv.x() - cx, y = s.uv.y() - cy;
         const double q = c0 + c1 * x + c2 * y + c3 * x * x + c4 * x * y + c5 * y * y;
         const double r = (s.h - q) / (tukey_bands * s.band);
@@ -42,27 +38,6 @@ PROJSURF_CLONES void accumulateRound(const std::vector<Sample> &near, const Wall
     std::copy(sb, sb + 6, b);
 }
 
-/// Each point's plane coordinates, height above the plane, band and depth: PlaneFrame::toPlane
-/// and Plane::signedDistance written out on plain doubles, so that the pass vectorises.
-PROJSURF_CLONES void planeSamples(const std::vector<Point> &points, const std::vector<float> &band, const Plane &plane,
-                                  const PlaneFrame &frame, Sample *out) {
-    const double nx = plane.normal.x(), ny = plane.normal.y(), nz = plane.normal.z(), d = plane.d;
-    const double ox = frame.origin.x(), oy = frame.origin.y(), oz = frame.origin.z();
-    const double rx = frame.right.x(), ry = frame.right.y(), rz = frame.right.z();
-    const double ux = frame.up.x(), uy = frame.up.y(), uz = frame.up.z();
-    const Point *P = points.data();
-    const float *B = band.data();
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const double px = P[i].x(), py = P[i].y(), pz = P[i].z();
-        const double qx = px - ox, qy = py - oy, qz = pz - oz;
-        out[i].uv[0] = qx * rx + qy * ry + qz * rz;
-        out[i].uv[1] = qx * ux + qy * uy + qz * uz;
-        out[i].h = nx * px + ny * py + nz * pz + d;
-        out[i].band = B[i];
-        out[i].z = pz;
-    }
-}
-
 }  // namespace
 
 std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const std::vector<float> &band,
@@ -70,13 +45,13 @@ std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const st
                                       double focal_px) {
     // Every point in plane coordinates once (the quadratic's and the relief's passes read them).
     const std::size_t n = points.size();
-    const std::unique_ptr<Sample[]> seen(new Sample[n]);  // each written below: no zero-filling
+    const std::unique_ptr<PlaneSample[]> seen(new PlaneSample[n]);  // each written below: no zero-filling
     planeSamples(points, band, plane, frame, seen.get());
-    std::vector<Sample> near;
+    std::vector<PlaneSample> near;
     near.reserve(n);
     Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e30), hi = Eigen::Vector2d::Constant(-1e30);
-    for (const Sample *s_ = seen.get(); s_ != seen.get() + n; ++s_) {
-        const Sample &s = *s_;
+    for (std::size_t i = 0; i < n; ++i) {
+        const PlaneSample &s = seen[i];
         if (!(std::abs(s.h) <= options.capture_bands * s.band)) continue;
         near.push_back(s);
         lo = lo.cwiseMin(s.uv);
@@ -116,8 +91,8 @@ std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const st
         // further from the plane than the capture above).
         std::vector<ReliefSample> relief;
         relief.reserve(n);
-        for (const Sample *s_ = seen.get(); s_ != seen.get() + n; ++s_) {
-            const Sample &s = *s_;
+        for (std::size_t i = 0; i < n; ++i) {
+            const PlaneSample &s = seen[i];
             const double r = s.h - shape.quadratic(s.uv);
             if (std::abs(r) <= options.capture_bands * s.band) relief.push_back({s.uv, r, s.band, s.z});
         }
@@ -125,7 +100,7 @@ std::optional<WallShape> fitWallShape(const std::vector<Point> &points, const st
     }
     std::vector<double> scaled;
     scaled.reserve(near.size());
-    for (const Sample &s : near) scaled.push_back(std::abs(s.h - shape.height(s.uv)) / (s.z * s.z));
+    for (const PlaneSample &s : near) scaled.push_back(std::abs(s.h - shape.height(s.uv)) / (s.z * s.z));
     std::nth_element(scaled.begin(), scaled.begin() + scaled.size() / 2, scaled.end());
     shape.noise_k = 1.4826 * scaled[scaled.size() / 2];
     return shape;
