@@ -166,7 +166,8 @@ DetectorOptions detectorOptions(const DetectorArguments &a) {
     return o;
 }
 
-CheckedDetection detectChecked(SurfaceDetector &detector, const DetectorOptions &options, const Cloud &cloud) {
+CheckedDetection detectChecked(SurfaceDetector &detector, const DetectorOptions &options, const Cloud &cloud,
+                               bool check_gravity) {
     CheckedDetection out;
     const frontend::GravityDetection answer = frontend::detectWithGravity(
         detector, cloud, options.gravity, options.minimum, "points", "min_width", "min_area");
@@ -174,9 +175,9 @@ CheckedDetection detectChecked(SurfaceDetector &detector, const DetectorOptions 
     out.gravity = answer.gravity.gravity;
     if (options.gravity.from_floor && !answer.gravity.floor_found)
         out.warnings.push_back("gravity='auto' found no floor; assuming a level camera");
-    else if (options.gravity_level_assumed)
+    else if (check_gravity && options.gravity_level_assumed)
         if (const auto w = frontend::levelCameraWarning("gravity='auto'", cloud)) out.warnings.push_back(*w);
-    if (options.gravity_given)
+    if (check_gravity && options.gravity_given)
         for (const std::string &w : frontend::gravityWarnings("gravity", options.gravity.gravity, cloud))
             out.warnings.push_back(w);
     if (const auto w = frontend::depthRangeWarning(cloud, "points", false)) out.warnings.push_back(*w);

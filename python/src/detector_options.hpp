@@ -46,14 +46,17 @@ DetectorOptions detectorOptions(const DetectorArguments &arguments);
 
 /// `cloud` detected by the options (frontend/detect_answer.hpp's detectWithGravity: the gravity
 /// choice resolved, the minimum size applied), the gravity it was detected with, and the
-/// warnings the CLI gives about it and the cloud (frontend's texts). Needs no GIL: the warnings
-/// are issued by warnAll. Throws InputError("points", ...) when the detector fails on it.
+/// warnings the CLI gives about it and the cloud (frontend's texts). `check_gravity`: also look
+/// for the floor to check the gravity given or assumed (a search of its own: a stream checks
+/// its first cloud only, the camera's mount does not change). Needs no GIL: the warnings are
+/// issued by warnAll. Throws InputError("points", ...) when the detector fails on it.
 struct CheckedDetection {
     Detection detection;
     Eigen::Vector3d gravity;
     std::vector<std::string> warnings;
 };
-CheckedDetection detectChecked(SurfaceDetector &detector, const DetectorOptions &options, const Cloud &cloud);
+CheckedDetection detectChecked(SurfaceDetector &detector, const DetectorOptions &options, const Cloud &cloud,
+                               bool check_gravity = true);
 
 /// Each line as a Python UserWarning (the CLI's "projsurf: warning: " lines).
 void warnAll(const std::vector<std::string> &warnings);

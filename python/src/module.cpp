@@ -114,7 +114,8 @@ public:
         Detection det;
         {
             py::gil_scoped_release unlocked;
-            CheckedDetection input = detectChecked(detector_, options_, cloud);
+            CheckedDetection input = detectChecked(detector_, options_, cloud, !gravity_checked_);
+            gravity_checked_ = true;
             warnings.insert(warnings.end(), input.warnings.begin(), input.warnings.end());
             det = std::move(input.detection);
         }
@@ -133,6 +134,7 @@ public:
 private:
     DetectorOptions options_;
     SurfaceDetector detector_;
+    bool gravity_checked_ = false;  ///< the gravity was checked against the first cloud's floor
 };
 
 }  // namespace

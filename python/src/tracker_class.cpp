@@ -34,7 +34,8 @@ public:
         ContinuousFrame frame;
         {
             py::gil_scoped_release unlocked;
-            input = detectChecked(detector_, options_, cloud);
+            input = detectChecked(detector_, options_, cloud, !gravity_checked_);
+            gravity_checked_ = true;
             frame = steady_.update(input.detection, cloud, fixed_from_camera);
         }
         warnAll(input.warnings);
@@ -47,6 +48,7 @@ private:
     DetectorOptions options_;
     SurfaceDetector detector_;
     ContinuousTracker steady_;
+    bool gravity_checked_ = false;  ///< the gravity was checked against the first cloud's floor
 };
 
 }  // namespace

@@ -131,8 +131,14 @@ def test_the_clis_input_warnings_are_user_warnings(projector, tmp_path):
     pitched = wall_and_floor_cloud(pitch_deg=20.0)
     with pytest.warns(UserWarning, match=r"^the floor says the camera is tilted 20 deg from level; give gravity='auto'"):
         projsurf.detect(pitched, projector)
+    # A stream checks its first cloud only (the camera's mount does not change; the floor
+    # search is a detection's worth of work).
+    stream = projsurf.Detector(projector)
+    with pytest.warns(UserWarning, match="tilted 20 deg"):
+        stream.detect(pitched)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
+        stream.detect(pitched)
         projsurf.detect(pitched, projector, gravity="auto")  # asked for: no warning
         projsurf.detect(cloud, projector)  # a level camera: none either
     # A typo under the calibration's projector: (its distortion would be lost).
