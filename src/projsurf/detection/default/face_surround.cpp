@@ -151,8 +151,9 @@ bool wallSized(const FaceSurround &s, const FreeStandingRule &rule) {
     return s.height >= rule.wall_height && s.width >= rule.wall_width;
 }
 
-/// The camera sees a surface in front of the face's plane above it (a ceiling, a soffit).
-bool closedAbove(const EdgeView &e, const FreeStandingRule &rule) {
+/// The camera sees a surface in front of the face's plane beyond the edge (above it: a ceiling,
+/// a soffit; beside it: a wall at a corner, a recess's side).
+bool boundedInFront(const EdgeView &e, const FreeStandingRule &rule) {
     return e.positions() > 0 && e.past + e.front >= rule.min_seen * e.positions() &&
            e.pastShare() <= 1.0 - rule.min_past;
 }
@@ -164,17 +165,13 @@ bool standsFree(const FaceSurround &s, const FreeStandingRule &rule) {
     if (open(s.top, rule) && (open(s.left, rule) || open(s.right, rule))) return true;
     // Narrower than a wall, open on both sides, its top out of view (a person close by, a
     // door leaf, a pillar): it stands in the room, whatever is above it.
-    return s.width < rule.wall_width && open(s.left, rule) && open(s.right, rule) && !closedAbove(s.top, rule);
+    return s.width < rule.wall_width && open(s.left, rule) && open(s.right, rule) && !boundedInFront(s.top, rule);
 }
 
 bool openAbove(const FaceSurround &s, const FreeStandingRule &rule) { return !wallSized(s, rule) && open(s.top, rule); }
 
 bool enclosedInFront(const FaceSurround &s, const FreeStandingRule &rule) {
-    const auto bounded = [&](const EdgeView &e) {
-        return e.positions() > 0 && e.past + e.front >= rule.min_seen * e.positions() &&
-               e.pastShare() <= 1.0 - rule.min_past;
-    };
-    return bounded(s.top) && bounded(s.left) && bounded(s.right);
+    return boundedInFront(s.top, rule) && boundedInFront(s.left, rule) && boundedInFront(s.right, rule);
 }
 
 }  // namespace projsurf
