@@ -10,6 +10,8 @@ Drawing lines:  N <note>
                 C <colour note>                   (judged on the registered rgb.png: writes a colour section)
                 U <name>|<why>|x,y x,y ...        (unsuitable by its colour although depth calls it free;
                                                    why: textured, dark, saturated or glare)
+                K <obstacle>;<obstacle>           (obstacles kept as drawn, not shrunk to the depth by the
+                                                   label tool's --refine: read by remake.sh, not here)
 usage: apply_drawn.py <drawn.txt> <label.yaml>
 """
 import re
@@ -36,6 +38,8 @@ def main(drawn, label):
             gravity = rest
         elif kind == 'C':
             colour_note = rest
+        elif kind == 'K':
+            continue
         elif kind == 'U':
             name, why, points = rest.split('|')
             unsuitable.append((name, why, polygon(points)))
