@@ -125,6 +125,10 @@ LabelledSummary summariseLabelled(const std::vector<LabelledFrame> &frames);
 /// rectangle); seed-stable 19 of 23".
 std::string labelledSummaryLine(const LabelledSummary &summary);
 
+/// Every figure of the summary lines for all frames and for each half of the split (the label's
+/// `split`: tune, check), side by side: a Markdown table. Frames with no side count in "all" only.
+std::string halvesTable(const std::vector<LabelledFrame> &frames);
+
 ExampleSummary summariseExample(const std::vector<LabelledFrame> &frames);
 /// "labelled real frames, example calibration: 25 of 30 right; 20 valid, 2 off the labelled
 /// surfaces, 3 missed, 5 rightly nothing".

@@ -126,6 +126,16 @@ const std::vector<std::string> &unsuitableReasons() {
     return reasons;
 }
 
+const std::vector<std::string> &splitSides() {
+    static const std::vector<std::string> sides{"tune", "check"};
+    return sides;
+}
+
+const std::vector<std::string> &sensorFamilies() {
+    static const std::vector<std::string> families{"structured_light", "time_of_flight", "stereo"};
+    return families;
+}
+
 RealLabel readRealLabel(const std::string &path) {
     requireReadable(path);
     YAML::Node root;
@@ -142,6 +152,19 @@ RealLabel readRealLabel(const std::string &path) {
     if (l.frame.find('/') != std::string::npos || l.frame == "." || l.frame == "..")
         r.fail("'frame' must be the name of one folder of the real frames, not a path");
     if (root["note"]) l.note = r.text(root["note"], "note");
+    if (root["split"]) {
+        l.split = r.text(root["split"], "split");
+        const auto &sides = splitSides();
+        if (std::find(sides.begin(), sides.end(), l.split) == sides.end())
+            r.fail("'split' must be tune or check (got '" + l.split + "')");
+    }
+    if (root["scene"]) l.scene = r.text(root["scene"], "scene");
+    if (root["sensor"]) {
+        l.sensor = r.text(root["sensor"], "sensor");
+        const auto &families = sensorFamilies();
+        if (std::find(families.begin(), families.end(), l.sensor) == families.end())
+            r.fail("'sensor' must be structured_light, time_of_flight or stereo (got '" + l.sensor + "')");
+    }
 
     const YAML::Node g = r.need(root, "gravity", "");
     readGravity(r, g, "gravity", {"auto", "stated"}, l.gravity_source, l.gravity);
@@ -206,6 +229,9 @@ RealLabel readRealLabel(const std::string &path) {
 void writeRealLabel(const std::string &path, const RealLabel &l) {
     YAML::Node root;
     root["frame"] = l.frame;
+    if (!l.split.empty()) root["split"] = l.split;
+    if (!l.scene.empty()) root["scene"] = l.scene;
+    if (!l.sensor.empty()) root["sensor"] = l.sensor;
     if (!l.note.empty()) root["note"] = l.note;
     root["gravity"]["source"] = l.gravity_source.empty() ? std::string("stated") : l.gravity_source;
     root["gravity"]["vector"] = flow({l.gravity.x(), l.gravity.y(), l.gravity.z()});

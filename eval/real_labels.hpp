@@ -55,6 +55,15 @@ struct LabelColour {
 struct RealLabel {
     std::string frame;                 ///< folder name under the real-frame directory
     std::string note;                  ///< what was judged and why
+    /// "tune" or "check" (labels/README.md, "The two halves"): a detection change is chosen on the
+    /// tune half and kept only if the check half does not get worse. Empty: not assigned.
+    std::string split;
+    /// The scene or recorded sequence the frame comes from ("7scenes/redkitchen"): every frame of
+    /// one scene is on the same side of the split. Empty: not stated.
+    std::string scene;
+    /// The depth sensor's family: "structured_light" (Kinect v1, Xtion, Structure), "time_of_flight"
+    /// (Kinect v2, Azure Kinect) or "stereo" (RealSense D4xx). Empty: not stated.
+    std::string sensor;
     std::string gravity_source;        ///< "auto" (the floor, as --gravity auto) or "stated"
     Eigen::Vector3d gravity{0, 1, 0};  ///< unit, camera frame, down
     /// Gravity from a source independent of the detector (labels/floor_gravity.py): "floor_fit"
@@ -67,6 +76,11 @@ struct RealLabel {
     LabelBest best;
     LabelColour colour;  ///< not judged when the file has no `colour:` section
 };
+
+/// The sides a label's `split` may name: "tune" and "check".
+const std::vector<std::string> &splitSides();
+/// The families a label's `sensor` may name.
+const std::vector<std::string> &sensorFamilies();
 
 /// The reasons a `colour.unsuitable[].why` may give.
 const std::vector<std::string> &unsuitableReasons();

@@ -86,6 +86,9 @@ void runProcam(const EvalOptions &o) {
     }
 }
 
+/// The repository's own real frames (relative to its root): those whose licence lets them ship.
+const char *const kRepoFrames = "data/real";
+
 /// The 1-minute load average (Linux), NaN when unknown.
 double loadAverage() {
     double load = std::nan("");
@@ -170,20 +173,34 @@ void runPlanTable(const EvalOptions &o) {
     writeSuiteTable(o, "plan.md", eval::planSuiteMarkdown(rows), eval::planSuiteSummary(rows));
 }
 
+/// Where a label's frame is: the real-frame folder (--real-dir), else the repository's own
+/// data/real (the frames whose licence lets them ship) or data/ (the quick start's two frames);
+/// "" when in none.
+std::string frameParent(const std::string &frame, const std::string &real_dir, const std::string &repo_frames) {
+    std::error_code ec;
+    const std::string quick_start = repo_frames.empty() ? "" : fs::path(repo_frames).parent_path().string();
+    for (const std::string &dir : {real_dir, repo_frames, quick_start})
+        if (!dir.empty() && fs::is_directory(fs::path(dir) / frame, ec)) return dir;
+    return "";
+}
+
 /// The labelled real frames, each with the label's projector and gravity and again with the
 /// example calibration.
 std::vector<eval::LabelledFrame> runLabelled(const std::vector<std::string> &labels,
                                              const std::vector<std::string> &label_frames, const std::string &real_dir,
-                                             bool labels_dir_given, const eval::Progress &progress) {
+                                             const std::string &repo_frames, bool labels_dir_given,
+                                             const eval::Progress &progress) {
     std::vector<eval::LabelledFrame> labelled;
-    std::error_code ec;
     for (std::size_t i = 0; i < labels.size(); ++i) {
-        // The default labels go with the default frames: a --real-dir of other frames skips them.
-        if (!labels_dir_given && !fs::is_directory(fs::path(real_dir) / label_frames[i], ec)) continue;
+        // The default labels go with the default frames: a frame in neither folder is skipped
+        // (a label folder given with --labels must have all of its frames).
+        std::string parent = frameParent(label_frames[i], real_dir, repo_frames);
+        if (parent.empty() && !labels_dir_given) continue;
+        if (parent.empty()) parent = real_dir;
         if (progress)
             progress(static_cast<int>(i), static_cast<int>(labels.size()),
                      "labelled " + fs::path(labels[i]).stem().string());
-        labelled.push_back(eval::evaluateLabelledFrame(labels[i], real_dir, DetectorConfig{}, eval::stabilitySeeds()));
+        labelled.push_back(eval::evaluateLabelledFrame(labels[i], parent, DetectorConfig{}, eval::stabilitySeeds()));
     }
     if (progress && !labelled.empty())
         progress(static_cast<int>(labels.size()), static_cast<int>(labels.size()), "labelled frames");
@@ -198,13 +215,17 @@ void printLabelledLines(const std::vector<eval::LabelledFrame> &labelled) {
     std::printf("%s\n", eval::exampleShownSummaryLine(example).c_str());
     if (eval::summariseColour(labelled).judged > 0)
         std::printf("%s\n", eval::colourSummaryLine(summariseColour(labelled)).c_str());
+    std::printf("labelled real frames by half (labels/README.md, \"The two halves\"):\n%s",
+                eval::halvesTable(labelled).c_str());
 }
 
 /// The labelled real frames alone: DIR/labelled.md, DIR/labels/ and the summary lines.
 void runLabelledTable(const EvalOptions &o, const std::vector<std::string> &labels,
                       const std::vector<std::string> &label_frames, const std::string &labels_dir) {
     std::error_code ec;
-    if (o.real_dir.empty() || !fs::is_directory(o.real_dir, ec))
+    const std::string repo_frames = o.real_dir_given ? "" : defaultLabelsDir(kRepoFrames);
+    const bool have_real = !o.real_dir.empty() && fs::is_directory(o.real_dir, ec);
+    if (!have_real && !fs::is_directory(repo_frames, ec))
         throw InputError(o.real_dir.empty() ? std::string("--real-dir") : o.real_dir,
                          "no folder of real frames (--labelled-only needs them)");
     if (labels.empty()) throw InputError(labels_dir.empty() ? std::string("--labels") : labels_dir, "no label files");
@@ -214,7 +235,7 @@ void runLabelledTable(const EvalOptions &o, const std::vector<std::string> &labe
         !bar ? eval::Progress()
              : eval::Progress([&bar](int done, int total, const std::string &what) { bar->update(done, total, what); });
     const std::vector<eval::LabelledFrame> labelled =
-        runLabelled(labels, label_frames, o.real_dir, o.labels_dir_given, progress);
+        runLabelled(labels, label_frames, have_real ? o.real_dir : "", repo_frames, o.labels_dir_given, progress);
     if (bar) bar->endLine();
     fs::create_directories(o.out, ec);
     if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
@@ -283,8 +304,12 @@ void run(const EvalOptions &o, const std::string &command) {
     info.realistic_markdown = eval::realisticSuiteMarkdown(realistic);
     const auto t0 = std::chrono::steady_clock::now();
     const std::string &real_dir = o.real_dir;
-    const std::vector<std::string> frames =
-        real_dir.empty() ? std::vector<std::string>{} : eval::listFrameFolders(real_dir);
+    // The repository's own frames (data/real) join the default folder's; a --real-dir stands alone.
+    const std::string repo_frames = o.real_dir_given ? "" : defaultLabelsDir(kRepoFrames);
+    std::vector<std::string> frames = real_dir.empty() ? std::vector<std::string>{} : eval::listFrameFolders(real_dir);
+    if (!repo_frames.empty() && fs::is_directory(repo_frames, ec))
+        for (const std::string &f : eval::listFrameFolders(repo_frames))
+            if (frameParent(fs::path(f).filename().string(), real_dir, "").empty()) frames.push_back(f);
     for (std::size_t i = 0; i < frames.size(); ++i) {
         if (progress)
             progress(static_cast<int>(i), static_cast<int>(frames.size()),
@@ -299,7 +324,7 @@ void run(const EvalOptions &o, const std::string &command) {
     // Labelled real frames: each label's projector and gravity, scored against the label.
     const std::vector<eval::LabelledFrame> labelled =
         frames.empty() ? std::vector<eval::LabelledFrame>{}
-                       : runLabelled(labels, label_frames, real_dir, o.labels_dir_given, progress);
+                       : runLabelled(labels, label_frames, real_dir, repo_frames, o.labels_dir_given, progress);
     if (bar && !labelled.empty()) bar->endLine();
     if (!labelled.empty()) {
         info.labelled = &labelled;
