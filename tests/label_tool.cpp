@@ -11,7 +11,8 @@
 //          then fits the surfaces, recomputes the reference best rectangle (and, when the label has a
 //          colour section, the colour-aware best: the unsuitable polygons as further obstacles) and
 //          writes the label.
-//   baseline <real_dir> <labels_dir> [margin]  prints the regression baseline (labels/baseline.yaml):
+//   baseline <real_dir> <labels_dir> [margin]  prints the regression baseline (labels/baseline.yaml); a frame
+//          not in real_dir is looked for in data/real (run from the repository root):
 //          today's detector per frame, right or not, and its area ratio minus `margin` (default 0.05),
 //          at most 0.90 (the target)
 #include <algorithm>
@@ -186,7 +187,12 @@ int main(int argc, char **argv) {
                 "# Raise it as the detector improves.\nframes:\n",
                 margin, argv[2], argv[3], margin);
             for (const auto &path : listLabelFiles(argv[3])) {
-                const LabelledFrame f = evaluateLabelledFrame(path, argv[2], DetectorConfig{}, {});
+                // The frame is in real_dir, else in the repository's data/real (run from its root).
+                const std::string frame = readRealLabel(path).frame;
+                std::string parent = argv[2];
+                if (!fs::is_directory(fs::path(parent) / frame) && fs::is_directory(fs::path("data/real") / frame))
+                    parent = "data/real";
+                const LabelledFrame f = evaluateLabelledFrame(path, parent, DetectorConfig{}, {});
                 std::printf("  %s: {right: %s, min_ratio: %.2f}  # ratio %.3f\n", f.name.c_str(),
                             f.score.right ? "true" : "false",
                             std::clamp(std::floor((f.score.ratio - margin) * 100) / 100, 0.0, 0.9), f.score.ratio);

@@ -258,15 +258,6 @@ std::map<std::string, Baseline> readBaseline(const std::string &path) {
 
 }  // namespace
 
-/// Where a labelled frame is: ../shared/data/real/<frame>, else the repository's data/real/<frame>
-/// (the frames that ship) or data/<frame> (the quick start's); "" when in none.
-static std::string labelledFrameDir(const std::string &frame) {
-    for (const std::string &root : {std::string(PROJSURF_SHARED_DIR) + "/data/real",
-                                     std::string(PROJSURF_SOURCE_DIR) + "/data/real", std::string(PROJSURF_SOURCE_DIR) + "/data"})
-        if (fs::is_directory(root + "/" + frame)) return root + "/" + frame;
-    return "";
-}
-
 // Every label is on one side of the split (labels/README.md, "The two halves"): the frames of one
 // scene on the same side, the halves about equal, each holding every sensor family of the set.
 TEST(RealLabelSplit, EveryLabelHasASideAndAScenesFramesStayTogether) {

@@ -1,7 +1,7 @@
 #pragma once
 // Shared by the label tests (test_real_labels.cpp, test_colour_labels.cpp): a label file
-// written to a folder, the reader's error for a text, a one-place text edit, and a frontal
-// synthetic wall.
+// written to a folder, the reader's error for a text, a one-place text edit, a frontal
+// synthetic wall, and where a labelled real frame is.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -53,5 +53,14 @@ struct SyntheticWall {
             for (int u = 0; u < camera.width; ++u) cloud.points.push_back(camera.backProject(u, v, z).cast<float>());
     }
 };
+
+/// Where a labelled real frame is: ../shared/data/real/<frame>, else the repository's
+/// data/real/<frame> (the frames that ship) or data/<frame> (the quick start's); "" when in none.
+inline std::string labelledFrameDir(const std::string &frame) {
+    for (const std::string &root : {std::string(PROJSURF_SHARED_DIR) + "/data/real",
+                                     std::string(PROJSURF_SOURCE_DIR) + "/data/real", std::string(PROJSURF_SOURCE_DIR) + "/data"})
+        if (std::filesystem::is_directory(root + "/" + frame)) return root + "/" + frame;
+    return "";
+}
 
 }  // namespace projsurf::test
