@@ -11,6 +11,7 @@
 #include <string>
 
 #include "eval/real_labels.hpp"
+#include "label_fixtures.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
 #include "projsurf/io/cloud_io.hpp"
 
@@ -29,6 +30,7 @@ double angleDeg(const Eigen::Vector3d &a, const Eigen::Vector3d &b) {
 TEST(GravityRealFloor, AutoMatchesTheLabelsReferenceWhereTheFloorIsSeen) {
     const std::string real = std::string(PROJSURF_SHARED_DIR) + "/data/real";
     if (!fs::is_directory(real)) GTEST_SKIP() << real << " is not here (the real frames stay in ../shared)";
+    // Frames are in ../shared/data/real or, for those that ship, in the repository's data/real.
     const auto choice = frontend::parseGravityChoice("--gravity", "auto");
     std::printf("| frame | reference | auto vs reference, deg |\n|---|---|---:|\n");
     int frames = 0, within_1deg = 0;
@@ -36,7 +38,8 @@ TEST(GravityRealFloor, AutoMatchesTheLabelsReferenceWhereTheFloorIsSeen) {
     for (const std::string &file : listLabelFiles(std::string(PROJSURF_SOURCE_DIR) + "/labels/real")) {
         const RealLabel label = readRealLabel(file);
         if (label.reference_gravity_source != "floor_fit") continue;
-        const std::string dir = real + "/" + label.frame;
+        const std::string dir = test::labelledFrameDir(label.frame);
+        ASSERT_FALSE(dir.empty()) << label.frame << ": no frame for this label";
         const Cloud cloud = readDepthCloud(dir + "/depth.png", dir + "/camera.yaml");
         const auto g = frontend::resolveGravity(choice, cloud);
         const double off = g.floor_found ? angleDeg(g.gravity, label.reference_gravity) : 180.0;
