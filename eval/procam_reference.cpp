@@ -149,9 +149,8 @@ StereoFit referenceFit(const std::vector<ReferencePose> &poses, cv::Size camera,
     return fit;
 }
 
-}  // namespace
-
-PublishedMethodRun runPublishedMethod(const ProcamFolder &folder, const PublishedMethodConfig &cfg) {
+/// The work of runPublishedMethod; OpenCV's exceptions pass through.
+PublishedMethodRun runPublishedMethodOrThrow(const ProcamFolder &folder, const PublishedMethodConfig &cfg) {
     PublishedMethodRun run;
 #ifdef PROJSURF_HAVE_STRUCTURED_LIGHT
     run.opencv_decoder = true;
@@ -187,6 +186,18 @@ PublishedMethodRun runPublishedMethod(const ProcamFolder &folder, const Publishe
     run.fit.spread = poseSpread(projectorEstimate(stereoProjector(run.fit, folder.width, folder.height)), loo);
     run.fit.spread.on_cap = on_cap;
     return run;
+}
+
+}  // namespace
+
+PublishedMethodRun runPublishedMethod(const ProcamFolder &folder, const PublishedMethodConfig &cfg) {
+    try {
+        return runPublishedMethodOrThrow(folder, cfg);
+    } catch (const cv::Exception &e) {
+        throw InputError(folder.poses.empty() ? std::string(".") : folder.poses.front().dir,
+                         std::string("the published method (eval --procam's reference) fails on these captures: ") +
+                             e.what());
+    }
 }
 
 }  // namespace projsurf::eval
