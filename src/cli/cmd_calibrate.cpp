@@ -107,26 +107,29 @@ void runStructured(const CalibrateOptions &o, int res_w, int res_h) {
     // One pose in memory at a time (listPoseFolders checked what that takes); the lifted
     // points of every pose are kept for the fit.
     const std::vector<std::string> poses = listPoseFolders(o.captures, list, camera.width, camera.height);
-    std::vector<ProjectorCorrespondence> pairs;
-    pairs.reserve(poses.size() * static_cast<std::size_t>(camera.width) * camera.height);
+    // Kept per pose: the projector is fitted again with each left out once (the spread).
+    std::vector<std::vector<ProjectorCorrespondence>> pairs_per_pose;
+    std::size_t pair_count = 0;
     std::vector<int> decoded;
     for (const auto &pose_dir : poses) {
         PoseCaptures pose = readPoseCaptures(pose_dir, list, camera.width, camera.height);
         const GrayDecoding d = decodeGray(pose.colour, list.width, list.height);
         pose.colour.clear();
-        liftDecoding(d, pose.depth, camera, pairs);
+        pairs_per_pose.emplace_back();
+        liftDecoding(d, pose.depth, camera, pairs_per_pose.back());
+        pair_count += pairs_per_pose.back().size();
         decoded.push_back(d.decoded);
     }
     ProjectorFitConfig cfg;
     cfg.width = list.width;
     cfg.height = list.height;
-    const ProjectorFit fit = fitProjector(pairs, cfg);
+    const ProjectorFit fit = fitProjectorPoses(pairs_per_pose, cfg);
     if (!fit.ok) throw InputError(o.captures, fit.problem);
 
     writeStructuredCalibration(o.out, fit, o.captures, static_cast<int>(poses.size()), utcNow());
 
     const Projector &p = fit.projector;
-    std::cout << "projsurf calibrate: structured light, " << poses.size() << " pose(s), " << pairs.size()
+    std::cout << "projsurf calibrate: structured light, " << poses.size() << " pose(s), " << pair_count
               << " decoded pixels with depth -> " << o.out << "\n";
     for (std::size_t k = 0; k < poses.size(); ++k)
         std::cout << "  " << poses[k] << ": " << decoded[k] << " camera pixels decoded\n";
@@ -137,6 +140,9 @@ void runStructured(const CalibrateOptions &o, int res_w, int res_h) {
               << fmt("  reprojection rms %.3f px, max %.2f px over %.0f inliers", fit.rms_px, fit.max_px,
                      static_cast<double>(fit.inliers))
               << fmt(" (framebuffer coverage %.0f %%, relief %.0f mm)\n", fit.coverage * 100, fit.relief_m * 1000);
+    for (const auto &c : fit.convergence) std::cout << "  fit " << describeConvergence(c) << "\n";
+    std::cout << "  spread: " << describeSpread(fit.spread) << "\n";
+    for (const auto &w : projectorFitWarnings(fit)) std::cerr << "projsurf: warning: " << w << "\n";
 }
 
 /// Chessboard mode: procam-style poses (capture_<k>/graycode_<NN>.png), no depth.
@@ -170,6 +176,9 @@ void runChessboard(const CalibrateOptions &o, int res_w, int res_h) {
               << fmt("  translation [%.4f, %.4f, %.4f] m", f.translation[0], f.translation[1], f.translation[2])
               << fmt(" (P_proj = R P_cam + t); reprojection rms %.3f px (camera %.3f, projector %.3f)\n", f.rms_px,
                      f.camera.rms_px, f.projector.rms_px);
+    for (const auto &c : f.convergence) std::cout << "  fit " << describeConvergence(c) << "\n";
+    std::cout << "  spread: " << describeSpread(f.spread) << "\n";
+    for (const auto &w : stereoWarnings(f)) std::cerr << "projsurf: warning: " << w << "\n";
 }
 
 void run(const CalibrateOptions &o) {

@@ -17,6 +17,7 @@
 #include "eval/labelled_eval.hpp"
 #include "eval/plan_suite.hpp"
 #include "eval/procam_comparison.hpp"
+#include "eval/procam_reference.hpp"
 #include "eval/projector_eval.hpp"
 #include "eval/real_gallery.hpp"
 #include "eval/real_labels.hpp"
@@ -59,7 +60,8 @@ struct EvalOptions {
     bool labelled_only = false;  // only the labelled real frames
 };
 
-/// Our chessboard calibration of a procam-calibration folder beside its calibration_result.xml.
+/// Our chessboard calibration of a procam-calibration folder beside the published method run
+/// to convergence on the same captures, and beside its calibration_result.xml (information).
 void runProcam(const EvalOptions &o) {
     if (!(o.square_m > 0 && o.square_m < 10)) throw InputError("--square-m", "must be between 0 and 10 m");
     if (!o.json.empty()) requireWritableFile(o.json);
@@ -68,21 +70,37 @@ void runProcam(const EvalOptions &o) {
     const PublishedProcam published = readProcamXml(xml);
     const ProcamFolder folder = readProcamFolder(o.procam, std::nullopt);
     const frontend::ChessboardCalibration cal = frontend::calibrateChessboard(folder, o.square_m);
-    const double unit_m = o.square_m / o.published_square;
-    const eval::ProcamComparison c = eval::compareProcam(cal.fit, published, unit_m);
+    eval::PublishedMethodConfig ref_cfg;
+    ref_cfg.square_m = o.square_m;
+    ref_cfg.board = cal.inner;
+    const eval::PublishedMethodRun ref = eval::runPublishedMethod(folder, ref_cfg);
+    const StereoFit pub = eval::publishedFit(published, o.square_m / o.published_square);
+    eval::ProcamTableInput in;
+    in.ours = &cal.fit;
+    in.reference = &ref.fit;
+    in.published = &pub;
+    in.reference_defaults = &ref.opencv_defaults;
+    in.vs_reference = eval::compareProcam(cal.fit, ref.fit);
+    in.vs_published = eval::compareProcam(cal.fit, pub);
+    in.square_m = o.square_m;
+    in.decoded_board_share = cal.decoded_board_share;
+    in.opencv_decoder = ref.opencv_decoder;
     std::printf("eval --procam %s: %zu poses, board %dx%d inner corners, projector %dx%d; published: %s\n",
                 o.procam.c_str(), folder.poses.size(), cal.inner.width, cal.inner.height, cal.width, cal.height,
                 xml.c_str());
     for (const auto &p : cal.poses)
         std::printf("  %s: %s, %d/%d corners carried, board %.1f %% decoded\n", p.dir.c_str(),
                     p.board ? "board" : "no board", p.carried, p.corners, 100 * p.board_share);
-    std::printf("\n%s", eval::procamTable(cal.fit, published, c, unit_m, o.square_m, cal.decoded_board_share).c_str());
+    std::printf("\n%s", eval::procamTable(in).c_str());
+    for (const auto &w : stereoWarnings(cal.fit)) std::fprintf(stderr, "projsurf: warning: ours: %s\n", w.c_str());
+    for (const auto &c : ref.fit.convergence)
+        if (c.on_cap)
+            std::fprintf(stderr, "projsurf: warning: reference: %s\n", convergenceWarning(c).c_str());
     if (!o.json.empty()) {
         std::vector<double> shares;
         for (const auto &p : cal.poses)
             if (p.board) shares.push_back(p.board_share);
-        writeFileAtomic(o.json,
-                        eval::procamJson(cal.fit, published, c, unit_m, o.square_m, cal.decoded_board_share, shares));
+        writeFileAtomic(o.json, eval::procamJson(in, shares));
     }
 }
 
@@ -387,10 +405,11 @@ void addEvalCommand(CLI::App &app) {
     sub->add_option("--procam", o->procam,
                     "Only the real projector-camera check: calibrate a procam-calibration sample_data folder "
                     "(capture_k/graycode_NN.png, calibration_result.xml) with the chessboard mode and print it "
-                    "beside its published calibration");
+                    "beside the published method re-run to convergence on the same captures (OpenCV's Gray-code "
+                    "decoder) and beside its published calibration (information)");
     sub->add_option("--json", o->json, "with --procam: write the comparison as JSON");
     sub->add_option("--published", o->published,
-                    "with --procam: the published calibration to compare with (OpenCV XML; default "
+                    "with --procam: the published calibration shown for information (OpenCV XML; default "
                     "DIR/calibration_result.xml)");
     sub->add_option("--square-m", o->square_m, "with --procam: the board's square, m (default 0.075: its README's 75)");
     sub->add_flag("--plan-only", o->plan_only,

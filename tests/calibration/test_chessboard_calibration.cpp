@@ -283,6 +283,23 @@ TEST(ChessboardCalibrateReal, ProcamSampleDataBesideItsPublishedCalibration) {
     // The projector's principal point comes with its standard deviation, the share per pose.
     EXPECT_GT(j["projector"]["sigma"]["cx"].get<double>(), 0.0);
     ASSERT_EQ(j["decoded_board_share_per_pose"].size(), 5u);
+    // Issue 37: every fit converged (not on its cap), ours and the published method re-run to
+    // convergence from the same captures (OpenCV's own decoder); it reaches the numbers the
+    // issue found (fx 1895.4, cy 849.8, stereo RMS 0.311 px), and ours agrees with it within
+    // the targets; the leave-one-pose-out spread is reported.
+    for (const auto &c : j["convergence"]) EXPECT_FALSE(c["on_cap"].get<bool>()) << c.dump();
+    for (const auto &c : j["reference"]["convergence"]) EXPECT_FALSE(c["on_cap"].get<bool>()) << c.dump();
+    EXPECT_EQ(j["reference"]["decoder"], "opencv_structured_light");
+    EXPECT_NEAR(j["reference"]["projector"]["fx"].get<double>(), 1895.4, 0.5);
+    EXPECT_NEAR(j["reference"]["projector"]["cy"].get<double>(), 849.8, 0.5);
+    EXPECT_NEAR(j["reference"]["reprojection_rms_px"].get<double>(), 0.311, 0.001);
+    EXPECT_TRUE(j["targets_hold"].get<bool>()) << j["difference"].dump();
+    // The same method stopped as the script stops it (OpenCV's default 30 iterations): its
+    // projector fit is reported as stopped on its cap, far from the converged one.
+    EXPECT_TRUE(j["reference_opencv_defaults"]["convergence"][1]["on_cap"].get<bool>());
+    EXPECT_GT(std::abs(j["reference_opencv_defaults"]["projector"]["cy"].get<double>() - 849.8), 50.0);
+    EXPECT_EQ(j["spread"]["poses"].get<int>(), 5);
+    EXPECT_GT(j["spread"]["cy_px"].get<double>(), 0.0);
     // A published XML that is not there: one line naming it, exit 2, no JSON written.
     const auto bad = test::cli("eval --procam " + data.string() + " --published " + (dir / "none.xml").string() +
                                    " --json " + (dir / "q.json").string(),

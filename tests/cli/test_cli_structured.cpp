@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
+#include <yaml-cpp/yaml.h>
 
 #include "cli_run.hpp"
 #include "projsurf/calibration/gray_code.hpp"
@@ -50,6 +51,19 @@ TEST(CliStructured, CalibratesAnOffsetProjectorFromThreeFlatPoses) {
     EXPECT_LT((p.origin - truth.origin).norm(), 0.005);
     EXPECT_NEAR(p.cy(), truth.cy(), 4.0);
     EXPECT_LT(std::acos(std::min(1.0, p.axis().dot(truth.axis()))) * 180 / M_PI, 0.2);
+    // Each fit stage converged and says in how many iterations; each pose left out once moves
+    // the projector little (issue 37), and the report says so.
+    const YAML::Node res = YAML::LoadFile(out)["projector"]["residuals"];
+    ASSERT_EQ(res["convergence"].size(), 3u);
+    for (const auto &c : res["convergence"]) {
+        EXPECT_GT(c["iterations"].as<int>(), 0);
+        EXPECT_FALSE(c["on_cap"].as<bool>());
+    }
+    EXPECT_EQ(res["spread"]["poses"].as<int>(), 3);
+    EXPECT_LT(res["spread"]["cy_px"].as<double>(), 4.0);
+    EXPECT_LT(res["spread"]["rotation_deg"].as<double>(), 0.2);
+    EXPECT_NE(r.out.find("spread: fx"), std::string::npos) << r.out;
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
     // --resolution that disagrees with the patterns: one line, exit 2.
     const auto bad = test::cli(
         "calibrate --captures " + dir.string() + " --out " + (dir / "x.yaml").string() + " --resolution 1024,768", dir);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include <Eigen/Dense>
 #include <Eigen/Geometry>
@@ -123,25 +124,34 @@ struct Stats {
     std::size_t inliers = 0;
 };
 
+/// The Huber cost of the reprojection errors (points behind the projector: 1e6 each).
+double huberCost(const std::vector<ProjectorCorrespondence> &pts, const std::vector<char> &use, const Model &m,
+                 double huber) {
+    double c = 0;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+        if (!use[i]) continue;
+        Eigen::Vector2d px;
+        if (!m.project(pts[i].point, px)) {
+            c += 1e6;
+            continue;
+        }
+        const double e = (px - pts[i].pixel).norm();
+        c += e <= huber ? 0.5 * e * e : huber * (e - 0.5 * huber);
+    }
+    return c;
+}
+
 /// Weighted LM; `active[j]` says which parameters move; points with weight 0 are skipped.
-void levenbergMarquardt(const std::vector<ProjectorCorrespondence> &pts, const std::vector<char> &use, Model &m,
-                        const std::array<bool, kParams> &active, double huber, int iterations) {
+/// Runs until no step lowers the cost by more than `cost_eps` of it, or `iterations` steps.
+FitConvergence levenbergMarquardt(const std::vector<ProjectorCorrespondence> &pts, const std::vector<char> &use,
+                                  Model &m, const std::array<bool, kParams> &active, double huber, int iterations,
+                                  double cost_eps, const char *name) {
+    FitConvergence conv;
+    conv.fit = name;
+    conv.cap = iterations;
     const double steps[kParams] = {1e-3, 1e-3, 1e-3, 1e-3, 1e-6, 1e-6, 1e-7, 1e-7, 1e-7, 1e-7, 1e-7, 1e-7};
     double lambda = 1e-3;
-    auto cost = [&](const Model &mm) {
-        double c = 0;
-        for (std::size_t i = 0; i < pts.size(); ++i) {
-            if (!use[i]) continue;
-            Eigen::Vector2d px;
-            if (!mm.project(pts[i].point, px)) {
-                c += 1e6;
-                continue;
-            }
-            const double e = (px - pts[i].pixel).norm();
-            c += e <= huber ? 0.5 * e * e : huber * (e - 0.5 * huber);
-        }
-        return c;
-    };
+    auto cost = [&](const Model &mm) { return huberCost(pts, use, mm, huber); };
     double current = cost(m);
     for (int it = 0; it < iterations; ++it) {
         Eigen::Matrix<double, kParams, kParams> JtJ = Eigen::Matrix<double, kParams, kParams>::Zero();
@@ -183,16 +193,23 @@ void levenbergMarquardt(const std::vector<ProjectorCorrespondence> &pts, const s
             const double c = cost(trial);
             if (c < current) {
                 const double gain = (current - c) / std::max(current, 1e-30);
+                conv.last_step = gain;
+                conv.last_step_px = std::max({std::abs(trial.fx - m.fx), std::abs(trial.fy - m.fy),
+                                              std::abs(trial.cx - m.cx), std::abs(trial.cy - m.cy)});
                 m = trial;
                 current = c;
                 lambda = std::max(lambda / 3, 1e-9);
-                improved = gain > 1e-10;
+                improved = gain > cost_eps;
                 break;
             }
             lambda *= 4;
         }
-        if (!improved) break;
+        conv.iterations = it + 1;
+        if (!improved) return conv;
     }
+    // Every step still lowered the cost by more than cost_eps: stopped on the cap.
+    conv.on_cap = iterations > 0;
+    return conv;
 }
 
 Stats residuals(const std::vector<ProjectorCorrespondence> &pts, const std::vector<char> &use, const Model &m) {
@@ -265,17 +282,18 @@ ProjectorFit fitProjector(const std::vector<ProjectorCorrespondence> &all, const
     active.fill(true);
     active[4] = active[5] = false;  // distortion after the pinhole has settled
     std::vector<char> use(pts.size(), 1);
-    levenbergMarquardt(pts, use, m, active, cfg.huber_px, 30);
+    const int cap = std::max(1, cfg.max_iterations);
+    fit.convergence.push_back(levenbergMarquardt(pts, use, m, active, cfg.huber_px, cap, cfg.cost_eps, "pinhole"));
     fit.distortion_terms = fit.coverage >= cfg.coverage_k2 ? 2 : (fit.coverage >= cfg.coverage_k1 ? 1 : 0);
     active[4] = fit.distortion_terms >= 1;
     active[5] = fit.distortion_terms >= 2;
-    levenbergMarquardt(pts, use, m, active, cfg.huber_px, 50);
+    fit.convergence.push_back(levenbergMarquardt(pts, use, m, active, cfg.huber_px, cap, cfg.cost_eps, "distortion"));
     // Trim gross outliers (misdecoded pixels, mixed depth at edges) and refit.
     for (std::size_t i = 0; i < pts.size(); ++i) {
         Eigen::Vector2d px;
         use[i] = m.project(pts[i].point, px) && (px - pts[i].pixel).norm() <= cfg.trim_px;
     }
-    levenbergMarquardt(pts, use, m, active, cfg.huber_px, 50);
+    fit.convergence.push_back(levenbergMarquardt(pts, use, m, active, cfg.huber_px, cap, cfg.cost_eps, "trimmed"));
     const Stats s = residuals(pts, use, m);
     fit.rms_px = s.rms;
     fit.max_px = s.max;
@@ -289,6 +307,50 @@ ProjectorFit fitProjector(const std::vector<ProjectorCorrespondence> &all, const
     }
     fit.ok = true;
     return fit;
+}
+
+ProjectorFit fitProjectorPoses(const std::vector<std::vector<ProjectorCorrespondence>> &poses,
+                               const ProjectorFitConfig &cfg) {
+    auto joined = [&](std::size_t skip) {
+        std::vector<ProjectorCorrespondence> all;
+        for (std::size_t k = 0; k < poses.size(); ++k)
+            if (k != skip) all.insert(all.end(), poses[k].begin(), poses[k].end());
+        return all;
+    };
+    ProjectorFit fit = fitProjector(joined(poses.size()), cfg);
+    if (!fit.ok || poses.size() < 3) return fit;
+    std::vector<std::optional<ProjectorEstimate>> loo;
+    int on_cap = 0;
+    for (std::size_t k = 0; k < poses.size(); ++k) {
+        const ProjectorFit f = fitProjector(joined(k), cfg);
+        if (f.ok)
+            loo.emplace_back(projectorEstimate(f.projector));
+        else
+            loo.emplace_back();
+        for (const auto &c : f.convergence) on_cap += c.on_cap ? 1 : 0;
+    }
+    fit.spread = poseSpread(projectorEstimate(fit.projector), loo);
+    fit.spread.on_cap = on_cap;
+    return fit;
+}
+
+std::vector<std::string> projectorFitWarnings(const ProjectorFit &fit, const SpreadLimits &limits) {
+    std::vector<std::string> out;
+    for (const auto &c : fit.convergence)
+        if (c.on_cap) {
+            char buf[300];
+            std::snprintf(buf, sizeof buf,
+                          "the projector fit's %s stage stopped on its iteration cap (%d) still moving (last step "
+                          "lowered the cost by %.1e, moved the intrinsics %.2g px): not converged",
+                          c.fit.c_str(), c.cap, c.last_step, c.last_step_px);
+            out.push_back(buf);
+        }
+    if (fit.spread.on_cap > 0)
+        out.push_back(std::to_string(fit.spread.on_cap) +
+                      " stage(s) of the leave-one-pose-out fits stopped on their iteration cap: the spread is uncertain");
+    const std::string s = spreadWarning(fit.spread, limits);
+    if (!s.empty()) out.push_back(s);
+    return out;
 }
 
 }  // namespace projsurf

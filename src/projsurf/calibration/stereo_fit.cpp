@@ -1,6 +1,7 @@
 #include "projsurf/calibration/stereo_fit.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include <opencv2/calib3d.hpp>
 
@@ -41,7 +42,11 @@ Projector stereoProjector(const StereoFit &fit, int width, int height) {
     return p;
 }
 
-StereoFit fitStereo(const std::vector<StereoView> &views, cv::Size camera_size, cv::Size projector_size) {
+namespace {
+
+/// One fit on these views, every step to convergence.
+StereoFit fitOnce(const std::vector<StereoView> &views, cv::Size camera_size, cv::Size projector_size,
+                  const StereoFitConfig &cfg) {
     StereoFit fit;
     fit.views = views.size();
     if (views.size() < 2) {
@@ -62,27 +67,67 @@ StereoFit fitStereo(const std::vector<StereoView> &views, cv::Size camera_size, 
         fit.points += v.board.size();
     }
     try {
-        cv::Mat kc, dc, kp, dp, r, t, e, f;
-        std::vector<cv::Mat> rv, tv;
-        cv::Mat sc, sp, extrinsic_sigma, per_view;
-        // Tangential distortion held at zero: over a few board poses seen through narrow lenses
-        // it trades against the principal point and the pose instead of measuring the lens.
-        const int flags = cv::CALIB_ZERO_TANGENT_DIST;
-        const double rms_c =
-            cv::calibrateCamera(board, cam, camera_size, kc, dc, rv, tv, sc, extrinsic_sigma, per_view, flags);
-        const double rms_p =
-            cv::calibrateCamera(board, proj, projector_size, kp, dp, rv, tv, sp, extrinsic_sigma, per_view, flags);
-        fit.rms_px = cv::stereoCalibrate(board, cam, proj, kc, dc, kp, dp, camera_size, r, t, e, f,
-                                         cv::CALIB_FIX_INTRINSIC);
-        fit.camera = fromCv(kc, dc, sc, rms_c);
-        fit.projector = fromCv(kp, dp, sp, rms_p);
-        fit.rotation = cv::Matx33d(r);
-        fit.translation = cv::Vec3d(t.at<double>(0), t.at<double>(1), t.at<double>(2));
+        const CameraCalibration c = calibrateCameraConverged(board, cam, camera_size, cfg.flags, cfg.criteria, "camera");
+        const CameraCalibration p =
+            calibrateCameraConverged(board, proj, projector_size, cfg.flags, cfg.criteria, "projector");
+        const StereoCalibration s =
+            stereoCalibrateConverged(board, cam, proj, c.camera_matrix, c.distortion, p.camera_matrix, p.distortion,
+                                     camera_size, cv::CALIB_FIX_INTRINSIC, cfg.criteria);
+        fit.rms_px = s.rms_px;
+        fit.camera = fromCv(c.camera_matrix, c.distortion, c.sigma, c.rms_px);
+        fit.projector = fromCv(p.camera_matrix, p.distortion, p.sigma, p.rms_px);
+        fit.rotation = cv::Matx33d(s.rotation);
+        fit.translation = cv::Vec3d(s.translation.at<double>(0), s.translation.at<double>(1), s.translation.at<double>(2));
+        fit.convergence = {c.convergence, p.convergence, s.convergence};
         fit.ok = true;
     } catch (const cv::Exception &ex) {
         fit.problem = std::string("the calibration did not converge: ") + ex.what();
     }
     return fit;
+}
+
+}  // namespace
+
+StereoFit fitStereo(const std::vector<StereoView> &views, cv::Size camera_size, cv::Size projector_size,
+                    const StereoFitConfig &cfg) {
+    StereoFit fit = fitOnce(views, camera_size, projector_size, cfg);
+    if (!fit.ok || !cfg.jackknife || views.size() < 3) return fit;
+    // Leave each pose out once; these fits only tell whether they stopped on their cap.
+    StereoFitConfig quick = cfg;
+    quick.criteria.count = false;
+    const int w = projector_size.width, h = projector_size.height;
+    std::vector<std::optional<ProjectorEstimate>> loo;
+    for (std::size_t i = 0; i < views.size(); ++i) {
+        std::vector<StereoView> rest;
+        for (std::size_t j = 0; j < views.size(); ++j)
+            if (j != i) rest.push_back(views[j]);
+        const StereoFit f = fitOnce(rest, camera_size, projector_size, quick);
+        if (!f.ok) {
+            loo.emplace_back();
+            continue;
+        }
+        loo.emplace_back(projectorEstimate(stereoProjector(f, w, h)));
+        for (const auto &c : f.convergence) fit.spread.on_cap += c.on_cap ? 1 : 0;
+    }
+    const int on_cap = fit.spread.on_cap;
+    fit.spread = poseSpread(projectorEstimate(stereoProjector(fit, w, h)), loo);
+    fit.spread.on_cap = on_cap;
+    return fit;
+}
+
+std::vector<std::string> stereoWarnings(const StereoFit &fit, const SpreadLimits &limits) {
+    std::vector<std::string> out;
+    for (const auto &c : fit.convergence) {
+        const std::string w = convergenceWarning(c);
+        if (!w.empty()) out.push_back(w);
+    }
+    if (fit.spread.on_cap > 0)
+        out.push_back(std::to_string(fit.spread.on_cap) +
+                      " step(s) of the leave-one-pose-out fits stopped on their iteration cap: the spread is "
+                      "uncertain");
+    const std::string s = spreadWarning(fit.spread, limits);
+    if (!s.empty()) out.push_back(s);
+    return out;
 }
 
 }  // namespace projsurf

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/fit_quality_yaml.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace projsurf {
@@ -19,6 +20,8 @@ void writeChessboardCalibration(const std::string &path, const StereoFit &fit, i
     r["views"] = static_cast<int>(fit.views);
     r["corners"] = static_cast<int>(fit.points);
     r["decoded_board_share"] = report.decoded_board_share;
+    r["convergence"] = convergenceNode(fit.convergence);
+    r["spread"] = spreadNode(fit.spread);
     YAML::Node cam = root["projector"]["camera"];
     cam["fx"] = fit.camera.fx;
     cam["fy"] = fit.camera.fy;

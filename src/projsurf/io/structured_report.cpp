@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/fit_quality_yaml.hpp"
 #include "projsurf/io/yaml_files.hpp"
 
 namespace projsurf {
@@ -20,6 +21,8 @@ void writeStructuredCalibration(const std::string &path, const ProjectorFit &fit
     r["framebuffer_coverage"] = fit.coverage;
     r["relief_m"] = fit.relief_m;
     r["distortion_terms"] = fit.distortion_terms;
+    r["convergence"] = convergenceNode(fit.convergence);
+    r["spread"] = spreadNode(fit.spread);
     root["projector"]["captures"]["dir"] = captures_dir;
     root["projector"]["captures"]["poses"] = poses;
     root["projector"]["created_utc"] = created_utc;
