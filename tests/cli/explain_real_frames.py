@@ -106,12 +106,19 @@ def main(argv):
         print("explain_real_frames: %s not found (a plain clone has no ../shared): the frames of data/" % real)
         real = os.path.join(source, "data")
     calib = os.path.join(source, "examples", "calib", "example_calib.yaml")
-    frames = sorted(d for d in os.listdir(real) if os.path.exists(os.path.join(real, d, "depth.png")))
+    # The frames that ship in data/real join either set.
+    dirs = {d: os.path.join(real, d) for d in os.listdir(real) if os.path.exists(os.path.join(real, d, "depth.png"))}
+    shipped = os.path.join(source, "data", "real")
+    if os.path.isdir(shipped):
+        for d in os.listdir(shipped):
+            if d not in dirs and os.path.exists(os.path.join(shipped, d, "depth.png")):
+                dirs[d] = os.path.join(shipped, d)
+    frames = sorted(dirs)
     failures = []
     checked = set()  # the frames with a check of their own
     with tempfile.TemporaryDirectory(prefix="projsurf-explain-") as tmp:
         for name in frames:
-            det, lines, errors = detect(cli, os.path.join(real, name), calib, os.path.join(tmp, name + ".json"))
+            det, lines, errors = detect(cli, dirs[name], calib, os.path.join(tmp, name + ".json"))
             problems = errors or problems_of(det, lines)
             if not errors and name == "ufsec_livingroom_sofa_1":
                 problems += sofa_problems(det)
