@@ -2,6 +2,7 @@
 
 #include "projsurf/frontend/detector_config_keys.hpp"
 #include "projsurf/io/errors.hpp"
+#include "projsurf/io/utf8_text.hpp"
 #include "projsurf/io/yaml_settings.hpp"
 
 namespace projsurf::frontend {
@@ -14,9 +15,9 @@ std::string unknownKeyProblem(const std::string &key) {
         if (k.key.rfind(key + ".", 0) == 0) section += (section.empty() ? "" : ", ") + k.key;
     if (!section.empty()) {
         if (section.size() > 80) section = section.substr(0, section.rfind(", ", 80)) + ", ...";
-        return "key '" + key + "' holds settings (" + section + "), not a value";
+        return "key '" + shownText(key) + "' holds settings (" + section + "), not a value";
     }
-    std::string problem = "unknown key '" + key + "'";
+    std::string problem = "unknown key '" + shownText(key) + "'";
     const std::string first = key.substr(0, key.find('.'));
     if (first == "projector" || first == "camera" || first == "image_width")
         return problem + " (a calibration or camera file, not a detector configuration?)";
@@ -42,7 +43,7 @@ void readDetectorConfig(const std::string &path, DetectorConfig &config) {
     for (const SettingText &s : readYamlSettings(path)) {
         const ConfigKey *key = findConfigKey(s.key);
         if (!key) throw InputError(path, unknownKeyProblem(s.key));
-        setConfigValue(read, *key, s, path + ": key '" + s.key + "'");
+        setConfigValue(read, *key, s, path + ": key '" + shownText(s.key) + "'");
     }
     checkTogether(path, read);
     config = read;

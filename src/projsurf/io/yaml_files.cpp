@@ -9,6 +9,8 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"
+#include "projsurf/io/utf8_text.hpp"
+#include "projsurf/io/yaml_tree.hpp"
 
 namespace projsurf {
 namespace {
@@ -17,13 +19,9 @@ constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 YAML::Node loadYaml(const std::string &path) {
     const std::string text = readSmallTextFile(path, limits::kMaxYamlBytes, "YAML");
-    try {
-        YAML::Node root = YAML::Load(text);
-        if (!root.IsMap()) throw InputError(path, "expected a YAML mapping at the top level");
-        return root;
-    } catch (const YAML::Exception &e) {
-        throw InputError(path, std::string("malformed YAML: ") + e.what());
-    }
+    YAML::Node root = loadCheckedYaml(path, text);
+    if (!root.IsMap()) throw InputError(path, "expected a YAML mapping at the top level");
+    return root;
 }
 
 YAML::Node child(const std::string &path, const YAML::Node &node, const std::string &key, const std::string &where) {
@@ -49,19 +47,43 @@ std::vector<double> numbers(const std::string &path, const YAML::Node &node, con
     return out;
 }
 
-void noteUnknownKeys(const std::string &path, const YAML::Node &node, const std::string &where,
-                     const std::vector<std::string> &known, std::vector<std::string> *warnings) {
-    if (!warnings || !node.IsMap()) return;
-    for (const auto &kv : node) {
-        const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
-        if (std::find(known.begin(), known.end(), key) == known.end())
-            warnings->push_back(path + ": unknown key '" + where + key + "' is ignored (known: " + [&] {
-                std::string list;
-                for (const auto &k : known) list += (list.empty() ? "" : ", ") + k;
-                return list;
-            }() + ")");
+/// Unknown keys named at most in the one warning line of a file: a file of 1000 typos is one
+/// problem, not 1000 lines.
+constexpr std::size_t kMaxUnknownKeysNamed = 3;
+
+/// Unknown keys of one file, noted as they are found and told as one warning line (each key
+/// escaped by shownText, at most kMaxUnknownKeysNamed of them, then "and N more").
+struct UnknownKeys {
+    UnknownKeys(const std::string &p, std::vector<std::string> *w) : path(p), warnings(w) {}
+    const std::string &path;
+    std::vector<std::string> *warnings;
+    std::size_t count = 0;
+    std::vector<std::string> named;
+    std::string known;  // of the first unknown key's mapping
+
+    void note(const YAML::Node &node, const std::string &where, const std::vector<std::string> &keys) {
+        if (!warnings || !node.IsMap()) return;
+        for (const auto &kv : node) {
+            const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
+            if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
+            if (count++ == 0)
+                for (const auto &k : keys) known += (known.empty() ? "" : ", ") + k;
+            if (named.size() < kMaxUnknownKeysNamed) named.push_back("'" + shownText(where + key) + "'");
+        }
     }
-}
+    /// The warning line, when a key was unknown.
+    void finish() {
+        if (!warnings || count == 0) return;
+        if (count == 1) {
+            warnings->push_back(path + ": unknown key " + named.front() + " is ignored (known: " + known + ")");
+            return;
+        }
+        std::string list;
+        for (const auto &k : named) list += (list.empty() ? "" : ", ") + k;
+        if (count > named.size()) list += " and " + std::to_string(count - named.size()) + " more";
+        warnings->push_back(path + ": unknown keys " + list + " are ignored (typos? docs/interface.md lists the keys)");
+    }
+};
 
 /// The contract's optional full-model keys (intrinsics, distortion, rotation), when present.
 void readFullModel(const std::string &path, const YAML::Node &p, Projector &proj) {
@@ -158,13 +180,13 @@ Projector readCalibration(const std::string &path, std::vector<std::string> *war
     proj.direction = dir.normalized();
     readFullModel(path, p, proj);
     // What the contract and `projsurf calibrate` write under `projector:`.
-    noteUnknownKeys(path, p, "projector.",
-                    {"resolution", "fov_deg", "axis", "intrinsics", "distortion", "rotation", "corner_rays",
-                     "residuals", "camera", "captures", "created_utc"},
-                    warnings);
-    noteUnknownKeys(path, axis, "projector.axis.", {"origin", "direction"}, warnings);
-    if (p["intrinsics"])
-        noteUnknownKeys(path, p["intrinsics"], "projector.intrinsics.", {"fx", "fy", "cx", "cy"}, warnings);
+    UnknownKeys unknown{path, warnings};
+    unknown.note(p, "projector.",
+                 {"resolution", "fov_deg", "axis", "intrinsics", "distortion", "rotation", "corner_rays", "residuals",
+                  "camera", "captures", "created_utc"});
+    unknown.note(axis, "projector.axis.", {"origin", "direction"});
+    if (p["intrinsics"]) unknown.note(p["intrinsics"], "projector.intrinsics.", {"fx", "fy", "cx", "cy"});
+    unknown.finish();
     if (const std::string problem = lensModelProblem(proj); !problem.empty()) throw InputError(path, problem);
     if (!isValidProjector(proj))
         throw InputError(path,
@@ -256,10 +278,11 @@ CameraIntrinsics readCamera(const std::string &path, std::vector<std::string> *w
     CameraIntrinsics cam;
     if (!root["camera"] && root["camera_matrix"]) {
         cam = rosCameraInfo(path, root);
-        noteUnknownKeys(path, root, "",
-                        {"image_width", "image_height", "camera_name", "camera_matrix", "distortion_model",
-                         "distortion_coefficients", "rectification_matrix", "projection_matrix"},
-                        warnings);
+        UnknownKeys unknown{path, warnings};
+        unknown.note(root, "",
+                     {"image_width", "image_height", "camera_name", "camera_matrix", "distortion_model",
+                      "distortion_coefficients", "rectification_matrix", "projection_matrix"});
+        unknown.finish();
     } else {
         if (!root["camera"] && root["projector"])
             throw InputError(path,
@@ -277,8 +300,10 @@ CameraIntrinsics readCamera(const std::string &path, std::vector<std::string> *w
         cam.cx = number(path, child(path, c, "cx", "camera."), "camera.cx");
         cam.cy = number(path, child(path, c, "cy", "camera."), "camera.cy");
         cam.depth_scale = c["depth_scale"] ? number(path, c["depth_scale"], "camera.depth_scale") : 1000.0;
-        noteUnknownKeys(path, root, "", {"camera"}, warnings);
-        noteUnknownKeys(path, c, "camera.", {"width", "height", "fx", "fy", "cx", "cy", "depth_scale"}, warnings);
+        UnknownKeys unknown{path, warnings};
+        unknown.note(root, "", {"camera"});
+        unknown.note(c, "camera.", {"width", "height", "fx", "fy", "cx", "cy", "depth_scale"});
+        unknown.finish();
     }
     if (static_cast<double>(cam.width) * cam.height > static_cast<double>(limits::kMaxDepthPixels))
         throw InputError(path, "camera image of " + std::to_string(cam.width) + " x " + std::to_string(cam.height) +
