@@ -31,6 +31,13 @@ constexpr std::uint64_t kMaxSequenceFrames = 100000;
 constexpr std::uint64_t kMaxBagMessages = 100000;
 constexpr std::uint64_t kMaxBagRecordBytes = std::uint64_t{512} << 20;
 constexpr std::uint64_t kMaxBagHeaderBytes = std::uint64_t{1} << 20;
+/// Decompression of a bag's chunks (bz2 turns 574 bytes of zeros into 512 MiB): a chunk above
+/// 64 MiB may announce at most 1000 times its compressed size, and all the chunks of one bag
+/// (every decompression counted) above 1 GiB at most 100 times theirs.
+constexpr std::uint64_t kMaxBagChunkFreeBytes = std::uint64_t{64} << 20;
+constexpr std::uint64_t kMaxBagChunkRatio = 1000;
+constexpr std::uint64_t kMaxBagFreeBytes = std::uint64_t{1} << 30;
+constexpr std::uint64_t kMaxBagRatio = 100;
 /// Calibration captures: numbered 0..99, at most 2^26 pixels in all (about 5 bytes each
 /// once decoded: 64 captures of 1280 x 720, 32 of 1920 x 1080).
 constexpr std::uint64_t kMaxCaptures = 100;
