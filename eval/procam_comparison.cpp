@@ -6,6 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "projsurf/io/detection_json.hpp"
+#include "projsurf/io/errors.hpp"
+
 namespace projsurf::eval {
 namespace {
 
@@ -79,8 +82,9 @@ std::string procamTable(const StereoFit &o, const PublishedProcam &p, const Proc
     return s;
 }
 
-std::string procamJson(const StereoFit &o, const PublishedProcam &p, const ProcamComparison &c, double unit_m,
-                       double square_m, double share, const std::vector<double> &pose_shares) {
+std::string procamJson(const std::string &path, const StereoFit &o, const PublishedProcam &p,
+                       const ProcamComparison &c, double unit_m, double square_m, double share,
+                       const std::vector<double> &pose_shares) {
     nlohmann::json j;
     j["projector"] = {{"fx", o.projector.fx},
                       {"fy", o.projector.fy},
@@ -125,6 +129,10 @@ std::string procamJson(const StereoFit &o, const PublishedProcam &p, const Proca
                        {"rotation_deg", c.rotation_deg},
                        {"translation_direction_deg", c.translation_dir_deg},
                        {"translation_length_ratio", c.translation_ratio}};
+    // Never a null where a number belongs (a fit or a comparison that came out NaN).
+    if (const std::string key = nonFiniteJsonKey(j); !key.empty())
+        throw InputError(path, "'" + key + "' is not finite (the fit or the published calibration is degenerate): "
+                                           "nothing written");
     return j.dump(2) + "\n";
 }
 

@@ -28,7 +28,9 @@ std::string procamTable(const StereoFit &ours, const PublishedProcam &published,
 /// "cy"}, "rotation": 3x3, "translation": [3] (m), "square_m", "reprojection_rms_px",
 /// "decoded_board_share" (the mean over the poses), "decoded_board_share_per_pose": [...],
 /// "published": {...the same keys...}, "difference": {...}}
-std::string procamJson(const StereoFit &ours, const PublishedProcam &published, const ProcamComparison &c,
+/// InputError naming `path` (the file it goes to) when a number is not finite.
+std::string procamJson(const std::string &path, const StereoFit &ours, const PublishedProcam &published,
+                       const ProcamComparison &c,
                        double published_unit_m, double square_m, double decoded_board_share,
                        const std::vector<double> &pose_shares);
 

@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 #include <Eigen/SVD>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include "projsurf/io/errors.hpp"
@@ -139,8 +140,10 @@ std::string readCalibrationVerdict(const std::string &path) {
     return v.as<std::string>();
 }
 
-Projector readCalibration(const std::string &path, std::vector<std::string> *warnings) {
-    const YAML::Node root = loadYaml(path);
+namespace {
+
+/// readCalibration's checks on a parsed file.
+Projector calibrationFromYaml(const std::string &path, const YAML::Node &root, std::vector<std::string> *warnings) {
     if (!root["projector"] && (root["camera"] || root["camera_matrix"]))
         throw InputError(path,
                          "is camera intrinsics, not a projector calibration (projector:); --camera and --calib "
@@ -194,6 +197,65 @@ Projector readCalibration(const std::string &path, std::vector<std::string> *war
     return proj;
 }
 
+/// The dotted key of the first scalar under `node` that reads as a number but not a finite
+/// one (.nan, .inf), "" when there is none; text values (a folder's name) are skipped.
+std::string nonFiniteKey(const YAML::Node &node, const std::string &key) {
+    if (node.IsScalar()) {
+        // The text keys the writers write (a capture folder may be called "nan").
+        const std::string last = key.substr(key.rfind('.') == std::string::npos ? 0 : key.rfind('.') + 1);
+        for (const char *text : {"dir", "captures_dir", "rgb", "tool", "created_utc", "origin_note", "verdict", "method",
+                                 "order"})
+            if (last == text || last.rfind(std::string(text) + "[", 0) == 0) return "";
+        double v = 0;
+        std::string word = node.Scalar();
+        for (char &c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        const bool written_nan = word == "nan" || word == "inf" || word == "-inf" || word == "+inf";  // printf's
+        return written_nan || (YAML::convert<double>::decode(node, v) && !std::isfinite(v)) ? key : "";
+    }
+    if (node.IsMap())
+        for (const auto &kv : node) {
+            const std::string k = nonFiniteKey(kv.second, key.empty() ? kv.first.Scalar() : key + "." + kv.first.Scalar());
+            if (!k.empty()) return k;
+        }
+    if (node.IsSequence())
+        for (std::size_t i = 0; i < node.size(); ++i) {
+            const std::string k = nonFiniteKey(node[i], key + "[" + std::to_string(i) + "]");
+            if (!k.empty()) return k;
+        }
+    return "";
+}
+
+}  // namespace
+
+Projector readCalibration(const std::string &path, std::vector<std::string> *warnings) {
+    return calibrationFromYaml(path, loadYaml(path), warnings);
+}
+
+std::string calibrationYamlText(const std::string &path, const YAML::Node &root) {
+    YAML::Emitter out;
+    out.SetDoublePrecision(9);
+    out << root;
+    const std::string text = std::string(out.c_str()) + "\n";
+    checkCalibrationText(path, text);
+    return text;
+}
+
+void checkCalibrationText(const std::string &path, const std::string &text) {
+    // Read back as every reader reads it: a fit that no reader accepts (a distortion beyond
+    // +-10, an origin beyond 3 m) is refused here with the reader's reason.
+    try {
+        const YAML::Node back = loadCheckedYaml(path, text);
+        if (!back.IsMap()) throw InputError(path, "expected a YAML mapping at the top level");
+        calibrationFromYaml(path, back, nullptr);
+        if (const std::string key = nonFiniteKey(back, ""); !key.empty())
+            throw InputError(path, "'" + key + "' is not finite");
+    } catch (const InputError &e) {
+        std::string reason = e.what();
+        if (reason.rfind(path + ": ", 0) == 0) reason = reason.substr(path.size() + 2);
+        throw InputError(path, "not written: the calibration would be refused by every reader (" + reason + ")");
+    }
+}
+
 YAML::Node calibrationNode(const Projector &projector) {
     YAML::Node p;
     auto seq = [](std::initializer_list<double> v) {
@@ -234,10 +296,7 @@ YAML::Node calibrationNode(const Projector &projector) {
 void writeCalibration(const std::string &path, const Projector &projector) {
     YAML::Node root;
     root["projector"] = calibrationNode(projector);
-    YAML::Emitter out;
-    out.SetDoublePrecision(9);
-    out << root;
-    writeFileAtomic(path, std::string(out.c_str()) + "\n");
+    writeFileAtomic(path, calibrationYamlText(path, root));
 }
 
 namespace {

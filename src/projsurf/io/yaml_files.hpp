@@ -23,7 +23,13 @@ Projector readCalibration(const std::string &path, std::vector<std::string> *war
 std::string readCalibrationVerdict(const std::string &path);
 /// The `projector:` node of the contract (resolution, fov_deg, axis) for a writer to extend.
 YAML::Node calibrationNode(const Projector &projector);
-/// Writes a calibration file with only the required keys (atomically).
+/// The text of the calibration `root` (a `projector:` node and its report) for `path`, checked
+/// before anything is written: read back as readCalibration reads it, every number finite.
+/// InputError naming `path` and the reader's reason otherwise (the fit is refused, nothing written).
+std::string calibrationYamlText(const std::string &path, const YAML::Node &root);
+/// The same check on a calibration's text as it will be written.
+void checkCalibrationText(const std::string &path, const std::string &text);
+/// Writes a calibration file with only the required keys (atomically; checked as above).
 void writeCalibration(const std::string &path, const Projector &projector);
 
 /// Reads camera intrinsics: projsurf's `camera:` block (width, height, fx, fy, cx, cy,
