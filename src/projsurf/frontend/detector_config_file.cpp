@@ -34,6 +34,11 @@ void checkTogether(const std::string &path, const DetectorConfig &c) {
     notAbove(c.tolerance.min_band, c.tolerance.max_band, "tolerance.min_band", "tolerance.max_band");
     notAbove(c.wall.noise_min, c.wall.noise_max, "wall.noise_min", "wall.noise_max");
     notAbove(c.wall.shape.min_points, c.wall.shape.max_points, "wall.shape.min_points", "wall.shape.max_points");
+    // The relief's smoothing, in nodes: sigma_px / node_px sizes a Gaussian kernel on the node grid.
+    const auto &relief = c.wall.shape.relief;
+    if (relief.sigma_px > 10.0 * relief.node_px)
+        throw InputError(path, "'wall.shape.relief.sigma_px' must not exceed 10 x 'wall.shape.relief.node_px' (" +
+                                   std::to_string(relief.sigma_px) + " > 10 x " + std::to_string(relief.node_px) + ")");
 }
 
 }  // namespace
