@@ -59,6 +59,9 @@ constexpr std::uint64_t kMaxJsonBytes = std::uint64_t{1} << 20;
 /// (a larger number is millimetres or garbage, and 1e300 overflows the rectangle's sides).
 constexpr double kMaxDetectionDistanceM = 1000.0;
 constexpr int kMaxNesting = 64;
+/// How far a camera pose (Python's camera_pose=, the node's ~fixed_frame transform) may put the
+/// camera from its fixed frame's origin, m: no robot's map is 100 km across (1e300 overflowed).
+constexpr double kMaxPoseTranslationM = 1e5;
 /// Bytes of a settings YAML file (detect --config): 1 MiB (every key with its comment is 10 KiB).
 constexpr std::uint64_t kMaxSettingsYamlBytes = std::uint64_t{1} << 20;
 
