@@ -27,16 +27,11 @@ ChessboardCorners findChessboard(const cv::Mat &image, const std::vector<cv::Siz
     else
         small = grey;
     ChessboardCorners out;
-    // Early stop: a board of any size holds the smallest one (which is found inside a larger
-    // board's corners too). An image where even that is not found (noise, a blank wall) is
-    // answered after one search, not after every size's (3 poses of 1280 x 1024 noise took 42 s).
-    if (sizes.empty()) {
-        std::vector<cv::Point2f> c;
-        if (!cv::findChessboardCorners(small, cv::Size(3, 3), c,
-                                       cv::CALIB_CB_ADAPTIVE_THRESH | cv::CALIB_CB_NORMALIZE_IMAGE |
-                                           cv::CALIB_CB_FAST_CHECK))
-            return out;
-    }
+    // Early stop: OpenCV's quick check (enough black and white quads of one size) asks more of a
+    // larger board, so an image that fails it for the smallest board (3 x 3 inner corners)
+    // fails it for every size: noise or a blank wall is answered after one check (0.03 s)
+    // instead of a search of every size and orientation (3 poses of 1280 x 1024 noise took 42 s).
+    if (sizes.empty() && !cv::checkChessboard(small, cv::Size(3, 3))) return out;
     for (const cv::Size &s : tries) {
         for (int turn = 0; turn < (s.width == s.height ? 1 : 2); ++turn) {
             const cv::Size t = turn == 0 ? s : cv::Size(s.height, s.width);
