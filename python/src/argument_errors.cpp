@@ -18,7 +18,7 @@ def _install(module):
 
     def explain(name, text, args, kwargs):
         # pybind11's first signature: "1. (points: object, projector: ..., *, aspect: object = None) -> dict"
-        sig = _re.search(r"^\s*1\. \((.*)\)", text, _re.M)
+        sig = _re.search(r"^\s*1\. [\w.]*\((.*)\)", text, _re.M)
         params = sig.group(1) if sig else ""
         names, positional, star = [], 0, False
         for part in _re.split(r",\s*(?![^\[\(]*[\]\)])", params):
