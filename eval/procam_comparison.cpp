@@ -6,6 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "projsurf/io/detection_json.hpp"
+#include "projsurf/io/errors.hpp"
+
 namespace projsurf::eval {
 namespace {
 
@@ -193,7 +196,7 @@ std::string procamTable(const ProcamTableInput &in) {
     return s;
 }
 
-std::string procamJson(const ProcamTableInput &in, const std::vector<double> &pose_shares) {
+std::string procamJson(const std::string &path, const ProcamTableInput &in, const std::vector<double> &pose_shares) {
     nlohmann::json j = fitJson(*in.ours);
     j["square_m"] = in.square_m;
     j["decoded_board_share"] = in.decoded_board_share;
@@ -212,6 +215,10 @@ std::string procamJson(const ProcamTableInput &in, const std::vector<double> &po
         j["reference_opencv_defaults"] = d;
     }
     j["difference_published"] = differenceJson(in.vs_published);
+    // Never a null where a number belongs (a fit or a comparison that came out NaN).
+    if (const std::string key = nonFiniteJsonKey(j); !key.empty())
+        throw InputError(path, "'" + key + "' is not finite (the fit or the published calibration is degenerate): "
+                               "nothing written");
     return j.dump(2) + "\n";
 }
 

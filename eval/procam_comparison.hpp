@@ -45,6 +45,7 @@ std::string procamTable(const ProcamTableInput &in);
 /// "decoded_board_share_per_pose": [...], "reference": {the same keys: the published method
 /// converged}, "difference": {against the reference}, "targets_hold", "published": {the XML},
 /// "difference_published": {against it}}
-std::string procamJson(const ProcamTableInput &in, const std::vector<double> &pose_shares);
+/// InputError naming `path` (the file it goes to) when a number is not finite.
+std::string procamJson(const std::string &path, const ProcamTableInput &in, const std::vector<double> &pose_shares);
 
 }  // namespace projsurf::eval

@@ -9,7 +9,9 @@
 
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/limits.hpp"
 #include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/yaml_tree.hpp"
 
 namespace fs = std::filesystem;
 
@@ -137,13 +139,8 @@ const std::vector<std::string> &sensorFamilies() {
 }
 
 RealLabel readRealLabel(const std::string &path) {
-    requireReadable(path);
-    YAML::Node root;
-    try {
-        root = YAML::LoadFile(path);
-    } catch (const YAML::Exception &e) {
-        throw InputError(path, std::string("malformed YAML: ") + e.what());
-    }
+    // As every YAML file: bounded size and nesting, one document, no alias cycle, no key twice.
+    const YAML::Node root = loadCheckedYaml(path, readSmallTextFile(path, limits::kMaxSettingsYamlBytes, "YAML"));
     const Reader r{path};
     if (!root.IsMap()) r.fail("expected a YAML mapping at the top level");
     RealLabel l;

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # libFuzzer over every reader (PCD, PLY, depth PNG, camera and calibration YAML, detection
 # JSON, procam XML, bags, capture images), a structured-light capture folder through its decoding and fit,
+# the detector settings file through a detection, a chessboard capture folder through its fit,
 # and plan's search on a cloud, for a bounded time, with ASan + UBSan, in the sanitizer tree
 # (build-sanitize, configured by scripts/sanitize.sh). Seeds are made here from the simulator
 # (`projsurf simulate`, `projsurf detect`): nothing binary is committed. Each reader must run
@@ -35,10 +36,15 @@ export PROJSURF_FUZZ_TMP="$work/tmp"
 rc=0
 # The structured-light harness writes its own seeds (a valid folder); plan starts from the PCDs.
 PROJSURF_FUZZ_WRITE_SEEDS="$work/corpus/structured" "$tree/fuzz/fuzz_structured" >/dev/null
+# The settings file and the chessboard folder write theirs too: a valid input and issue 39's
+# hostile cases (an alias cycle, keys given twice, a 5792 x 5792 capture header, noise, links).
+PROJSURF_FUZZ_WRITE_SEEDS="$work/corpus/settings" "$tree/fuzz/fuzz_settings" >/dev/null
+PROJSURF_FUZZ_WRITE_SEEDS="$work/corpus/chessboard" "$tree/fuzz/fuzz_chessboard" >/dev/null
 mkdir -p "$work/corpus/plan"
 cp "$work/corpus/pcd/"* "$work/corpus/plan/"
 
-for name in pcd ply depth_png camera_yaml calib_yaml detection_json procam_xml bag captures structured plan; do
+for name in pcd ply depth_png camera_yaml calib_yaml detection_json procam_xml bag captures structured plan settings \
+  chessboard; do
   corpus="$work/corpus/$name"
   mkdir -p "$corpus"
   need=$runs
@@ -48,6 +54,9 @@ for name in pcd ply depth_png camera_yaml calib_yaml detection_json procam_xml b
   # with a second CI run beside it). The budget ends a slow run; -runs ends a normal one.
   [ "$name" = structured ] && need=$(( runs / 5 )) && limit=$(( seconds * 3 ))
   [ "$name" = plan ] && need=$(( runs / 10 )) && limit=$(( seconds * 3 ))
+  # settings runs a detection per accepted file; chessboard decodes three poses and fits.
+  [ "$name" = settings ] && need=$(( runs / 5 )) && limit=$(( seconds * 2 ))
+  [ "$name" = chessboard ] && need=$(( runs / 20 )) && limit=$(( seconds * 2 ))
   log="$work/$name.log"
   t0=$(date +%s)
   status=0

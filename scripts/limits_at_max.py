@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """Inputs at projsurf's limits (docs/limits.md), each run through the CLI under GNU time:
 prints peak memory and wall time per case. usage: limits_at_max.py PROJSURF_BINARY WORK_DIR [GROUPS]
-GROUPS: a comma-separated subset of readers,structured,plan (default all of them).
+GROUPS: a comma-separated subset of readers,structured,plan,round3 (default all of them).
 (needs about 2 GB of disk in WORK_DIR; takes a few minutes)."""
 import array, os, struct, subprocess, sys, zlib
 
 cli, work = sys.argv[1], sys.argv[2]
-groups = sys.argv[3].split(",") if len(sys.argv) > 3 else ["readers", "structured", "plan"]
+groups = sys.argv[3].split(",") if len(sys.argv) > 3 else ["readers", "structured", "plan", "round3"]
 os.makedirs(work, exist_ok=True)
 P = lambda n: os.path.join(work, n)
 
@@ -171,5 +171,81 @@ def plan():
   png_gray16(P("far_4096.png"), 4096, 4096, 65535)
   run("plan --depth: 4096 x 4096 (the limit), a wall at 65.535 m", ["plan", "--calib", P("calib.yaml"), "--depth", P("far_4096.png"), "--camera", P("camera.yaml"), "--json", P("plan_4096.json")])
 
+def bag_bytes(chunks):
+  # A bag (format 2.0): connections 0 (/points) and 1 (/other) in a stored chunk, then `chunks`.
+  import bz2
+  rec = lambda fields, data: (struct.pack("<I", len(fields)) + fields + struct.pack("<I", len(data)) + data)
+  fld = lambda pairs: b"".join(struct.pack("<I", len(k) + 1 + len(v)) + k + b"=" + v for k, v in pairs)
+  conn = lambda i, t: rec(fld([(b"op", b"\x07"), (b"conn", struct.pack("<I", i)), (b"topic", t)]),
+                          fld([(b"topic", t), (b"type", b"sensor_msgs/PointCloud2"), (b"md5sum", b"1158d486dd51d683ce2f1be655c3c181"), (b"message_definition", b"-")]))
+  conns = conn(0, b"/points") + conn(1, b"/other")
+  body = rec(fld([(b"op", b"\x05"), (b"compression", b"none"), (b"size", struct.pack("<I", len(conns)))]), conns)
+  body += b"".join(chunks)
+  magic = b"#ROSBAG V2.0\n"
+  def header(ip):
+    f = fld([(b"op", b"\x03"), (b"index_pos", struct.pack("<Q", ip)), (b"conn_count", struct.pack("<I", 2)), (b"chunk_count", struct.pack("<I", len(chunks) + 1))])
+    return rec(f, b" " * (4096 - 8 - len(f)))
+  return magic + header(len(magic) + 4096 + len(body)) + body + conns, rec, fld
+
+def bz2_zero_chunk(mib):
+  # A bz2 chunk holding one message of `mib` MiB of zeros on /other.
+  import bz2
+  _, rec, fld = bag_bytes([])
+  msg = rec(fld([(b"op", b"\x02"), (b"conn", struct.pack("<I", 1)), (b"time", struct.pack("<II", 1, 0))]), bytes(mib << 20))
+  return rec(fld([(b"op", b"\x05"), (b"compression", b"bz2"), (b"size", struct.pack("<I", len(msg)))]), bz2.compress(msg, 9))
+
+def chessboard_folder(d, w, h, poses):
+  # capture_0 .. poses-1 of a 1024 x 768 projector (42 captures, OpenCV's order), all links to
+  # four w x h PNGs: noise A for each pattern, noise B for its inverse, white, black. Every pixel
+  # is lit and decodes to garbage: both decoding passes run.
+  import random
+  random.seed(39)
+  os.makedirs(d, exist_ok=True)
+  for name, row in (("a", None), ("b", None), ("white", b"\xff" * w), ("black", bytes(w))):
+    f = os.path.join(d, name + ".png")
+    if not os.path.exists(f):
+      rows = [random.randbytes(w) for _ in range(64)] if row is None else None
+      png_gray8_rows(f, w, h, (lambda y, rows=rows: rows[y % 64]) if row is None else (lambda y, row=row: row))
+  for k in range(poses):
+    pd = os.path.join(d, "capture_%d" % k)
+    os.makedirs(pd, exist_ok=True)
+    for i in range(42):
+      src = "white" if i == 40 else "black" if i == 41 else ("a" if i % 2 == 0 else "b")
+      link = os.path.join(pd, "graycode_%02d.png" % i)
+      if not os.path.lexists(link): os.symlink(os.path.join("..", src + ".png"), link)
+
+def round3():
+  # Issue 39's bounds: YAML trees, bz2 bag chunks, the chessboard mode, simulate --structured-light.
+  open(P("cycle.yaml"), "w").write("planes: &p {max_planes: 4, sub: *p}\n")
+  run("detect --print-config: a settings file holding an alias cycle (refused)", ["detect", "--print-config", "--config", P("cycle.yaml")])
+  laughs = "l0: &l0 [" + ", ".join(["1"] * 9) + "]\n" + "".join("l%d: &l%d [%s]\n" % (i, i, ", ".join(["*l%d" % (i - 1)] * 9)) for i in range(1, 6))
+  open(P("laughs.yaml"), "w").write(laughs)
+  run("detect --print-config: 9^6 nodes by aliases (refused at 100,000)", ["detect", "--print-config", "--config", P("laughs.yaml")])
+  one, _, _ = bag_bytes([])
+  chunk = bz2_zero_chunk(60)
+  data, _, _ = bag_bytes([chunk] * 40)
+  open(P("bomb.bag"), "wb").write(data)
+  run("detect --bag: 40 bz2 chunks of 60 MiB of zeros (%d KB; refused after 1 GiB)" % (len(data) // 1000), ["detect", "--calib", P("calib.yaml"), "--bag", P("bomb.bag"), "--topic", "/points"])
+  data, _, _ = bag_bytes([bz2_zero_chunk(500)])
+  open(P("bomb1.bag"), "wb").write(data)
+  run("detect --bag: one bz2 chunk of 500 MiB of zeros (%d KB; refused from its header)" % (len(data) // 1000), ["detect", "--calib", P("calib.yaml"), "--bag", P("bomb1.bag"), "--topic", "/points"])
+  data, _, _ = bag_bytes([chunk] * 2)
+  open(P("two.bag"), "wb").write(data)
+  run("detect --bag: two bz2 chunks of 60 MiB of zeros (valid)", ["detect", "--calib", P("calib.yaml"), "--bag", P("two.bag"), "--topic", "/points"])
+  chessboard_folder(P("cb_max"), 3260, 3260, 1)
+  run("calibrate: chessboard, one pose of 42 lit 3260 x 3260 noise captures (at the 1.5 GiB budget)", ["calibrate", "--captures", P("cb_max"), "--square-m", "0.075", "--resolution", "1024,768", "--out", P("cb1.yaml")])
+  chessboard_folder(P("cb_over"), 3300, 3300, 1)
+  run("calibrate: chessboard, one pose of 3300 x 3300 (refused from the header)", ["calibrate", "--captures", P("cb_over"), "--square-m", "0.075", "--resolution", "1024,768", "--out", P("cb1.yaml")])
+  chessboard_folder(P("cb_many"), 1280, 1024, 19)
+  run("calibrate: chessboard, 19 poses (links) of 42 lit 1280 x 1024 captures (at the captures' bound)", ["calibrate", "--captures", P("cb_many"), "--square-m", "0.075", "--resolution", "1024,768", "--out", P("cb3.yaml")])
+  chessboard_folder(P("cb_many20"), 1280, 1024, 20)
+  run("calibrate: chessboard, 20 such poses (refused from the listing)", ["calibrate", "--captures", P("cb_many20"), "--square-m", "0.075", "--resolution", "1024,768", "--out", P("cb3.yaml")])
+  calib(P("calib_4k.yaml"), 3840, 2160)
+  import shutil
+  shutil.rmtree(P("sim4k"), ignore_errors=True)
+  run("simulate --structured-light: 3840 x 2160 framebuffer (the bound)", ["simulate", "--structured-light", "--calib", P("calib_4k.yaml"), "--out", P("sim4k")])
+  calib(P("calib_wide.yaml"), 16384, 2048)
+  run("simulate --structured-light: 16384 x 2048 (refused)", ["simulate", "--structured-light", "--calib", P("calib_wide.yaml"), "--out", P("simw")])
+
 for g in groups:
-  {"readers": readers, "structured": structured, "plan": plan}[g]()
+  {"readers": readers, "structured": structured, "plan": plan, "round3": round3}[g]()

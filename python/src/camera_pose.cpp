@@ -3,9 +3,11 @@
 #include <pybind11/numpy.h>
 
 #include <cmath>
+#include <string>
 
 #include "argument_types.hpp"
 #include "projsurf/io/errors.hpp"
+#include "projsurf/io/limits.hpp"
 
 namespace py = pybind11;
 
@@ -32,6 +34,9 @@ Eigen::Isometry3d cameraPoseArgument(const py::handle &value, const char *name) 
     if (value.is_none()) return Eigen::Isometry3d::Identity();
     const Eigen::Matrix4d m = matrixArgument(value, name);
     if (!m.allFinite()) throw InputError(name, "holds a value that is not finite");
+    if (!(m.topRightCorner<3, 1>().norm() <= limits::kMaxPoseTranslationM))
+        throw InputError(name, "puts the camera more than " + std::to_string(static_cast<int>(limits::kMaxPoseTranslationM)) +
+                                   " m from the fixed frame's origin (metres expected)");
     if (m.row(3) != Eigen::RowVector4d(0, 0, 0, 1))
         throw InputError(name, "its last row must be 0 0 0 1 (a rigid transform)");
     const Eigen::Matrix3d R = m.topLeftCorner<3, 3>();

@@ -188,8 +188,10 @@ CheckedDetection detectChecked(SurfaceDetector &detector, const DetectorOptions 
 }
 
 void warnAll(const std::vector<std::string> &warnings) {
+    // Stack level 2: every function is called through its one-line-errors wrapper
+    // (argument_errors.hpp), whose frame is level 1; the warning names the caller's line.
     for (const std::string &w : warnings)
-        if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) < 0) throw py::error_already_set();
+        if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 2) < 0) throw py::error_already_set();
 }
 
 }  // namespace projsurf::python

@@ -10,6 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <optional>
 
+#include "argument_errors.hpp"
 #include "argument_types.hpp"
 #include "bag_function.hpp"
 #include "detection_dict.hpp"
@@ -428,4 +429,5 @@ PYBIND11_MODULE(projsurf, m) {
     addBagFunction(m);
 
     m.attr("__version__") = PROJSURF_VERSION;
+    oneLineArgumentErrors(m);  // last: it wraps every function and method defined above
 }

@@ -13,7 +13,7 @@ namespace projsurf::python {
 /// attribute that numpy reads (an Open3D PointCloud's Vector3dVector). The points are
 /// converted in one pass straight into the Cloud's storage: the Cloud owns a std::vector, so it
 /// cannot borrow the array (a C-contiguous float32 array is a single memcpy).
-/// Throws InputError("points", problem) for another shape, no points or no finite point.
+/// Throws InputError("points", problem) for another shape, or no points (all-NaN points are a valid, empty frame).
 Cloud cloudFromPoints(const pybind11::handle &points);
 
 /// The cloud as an (H, W, 3) float32 array when organized, else (N, 3); the array takes the

@@ -119,3 +119,37 @@ def test_messages_quoting_bytes_that_are_not_utf8_stay_one_readable_line(project
     with pytest.raises(projsurf.InputError) as info:
         projsurf.detect(wall_and_floor(64, 48, f=52.5), projector, config=str(bad))
     assert "\\xFF\\xFE" in one_line(info)
+
+
+def test_arguments_matching_no_signature_are_one_line(projector):
+    # pybind11's TypeError listed every signature on many lines (issue 39).
+    cloud = wall_and_floor(64, 48, f=52.5)
+    with pytest.raises(projsurf.InputError) as info:
+        projsurf.plan(cloud, projector, bogus=1)
+    assert one_line(info).startswith("plan: unknown keyword argument 'bogus' (known: points, projector")
+    with pytest.raises(projsurf.InputError) as info:
+        projsurf.print_config("x.yaml")
+    assert one_line(info).startswith("print_config: takes 0 positional argument(s), got 1")
+    with pytest.raises(projsurf.InputError) as info:
+        projsurf.Tracker(projector, 1, 2)
+    assert one_line(info).startswith("Tracker: takes 1 positional argument(s), got 3")
+    # What matches still runs, and the functions keep their names and help.
+    assert projsurf.plan.__name__ == "plan" and "Raises" in projsurf.plan.__doc__
+    assert projsurf.print_config().startswith("# projsurf detector settings")
+
+
+def test_a_camera_pose_beyond_any_map_is_refused(projector):
+    pose = np.eye(4)
+    pose[0, 3] = 1e300
+    tracker = projsurf.Tracker(projector)
+    with pytest.raises(projsurf.InputError) as info:
+        tracker.update(wall_and_floor(64, 48, f=52.5), camera_pose=pose)
+    assert one_line(info).startswith("camera_pose: puts the camera more than 100000 m")
+
+
+def test_a_latin1_key_in_a_calibration_warns_in_readable_utf8(tmp_path):
+    calib = tmp_path / "c.yaml"
+    calib.write_bytes(open(EXAMPLE_CALIB, "rb").read() + b"  distorsi\xf3n: [0, 0, 0, 0, 0]\n")
+    with pytest.warns(UserWarning) as warned:
+        projsurf.read_calibration(str(calib))  # raised UnicodeDecodeError
+    assert any("distorsi\\xF3n" in str(w.message) for w in warned)

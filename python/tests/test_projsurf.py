@@ -85,7 +85,6 @@ def test_errors_are_input_errors_with_the_clis_line(tmp_path):
 @pytest.mark.parametrize("points, message", [
     (np.zeros((5, 2)), "points: expected an (N, 3) or (H, W, 3) array, got shape (5, 2)"),
     (np.zeros((0, 3)), "points: the cloud has no points"),
-    (np.full((4, 3), np.nan), "points: all points are NaN (no finite point in the cloud)"),
     (np.array([["a", "b", "c"]]), "points: expected numbers"),
     ("not a cloud", "points: expected an (N, 3) or (H, W, 3) array, got a str 'not a cloud' (projsurf.read_cloud"),
     (np.zeros((2, 3, 4)), "points: expected an (N, 3) or (H, W, 3) array, got shape (2, 3, 4)"),
@@ -94,6 +93,20 @@ def test_bad_points_raise_input_error(projector, points, message):
     with pytest.raises(projsurf.InputError, match=None) as info:
         projsurf.detect(points, projector)
     assert str(info.value).startswith(message)
+
+
+def test_all_nan_cloud_is_not_found_like_the_cli(projector, tmp_path):
+    # docs/limits.md: a cloud whose points are all NaN is a valid frame (found: false and a
+    # reason), in Python (detect, Tracker.update) as in the CLI; it raised InputError here.
+    nan = np.full((48, 64, 3), np.nan, dtype=np.float32)
+    det = projsurf.detect(nan, projector)
+    assert det["found"] is False and det["reason"]
+    assert projsurf.Tracker(projector).update(nan)["found"] is False
+    cloud = tmp_path / "nan.pcd"
+    write_pcd(cloud, nan)
+    cli = run_cli("detect", "--cloud", str(cloud), "--calib", EXAMPLE_CALIB)
+    assert cli.returncode == 0
+    assert json.loads(cli.stdout)["found"] is False
 
 
 def test_bad_options_raise_input_error(projector):

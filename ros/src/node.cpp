@@ -16,6 +16,7 @@
 #include "projsurf/frontend/test_card.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
+#include "projsurf/io/limits.hpp"
 
 namespace projsurf::ros_node {
 namespace {
@@ -222,6 +223,11 @@ bool ProjsurfNode::lookup(const std::string &target, const std::string &source, 
     try {
         const auto t = tf_buffer_->lookupTransform(target, source, stamp, ros::Duration(params_.tf_timeout));
         pose = toEigen(t.transform);
+        if (!pose.matrix().allFinite() || !(pose.translation().norm() <= limits::kMaxPoseTranslationM)) {
+            problem = "the transform from " + source + " to " + target + " is not finite or more than " +
+                      std::to_string(static_cast<int>(limits::kMaxPoseTranslationM)) + " m long";
+            return false;
+        }
         return true;
     } catch (const tf2::TransformException &e) {
         problem = "no transform from " + source + " to " + target + ": " + e.what();

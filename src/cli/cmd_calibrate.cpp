@@ -207,9 +207,14 @@ void run(const CalibrateOptions &o) {
     const fs::path dir(o.captures);
     // patterns.yaml in any form (a broken link or a loop included) means structured light:
     // its reader says what is wrong with it, or which pose folder is missing.
-    if (fs::symlink_status(dir / "patterns.yaml", ec).type() != fs::file_type::not_found)
-        return runStructured(o, res_w, res_h);
-    if (isProcamFolder(o.captures)) return runChessboard(o, res_w, res_h);
+    const bool structured = fs::symlink_status(dir / "patterns.yaml", ec).type() != fs::file_type::not_found;
+    const bool chessboard = !structured && isProcamFolder(o.captures);
+    // An option of another mode would be ignored: said, not ignored (as eval --published without --procam).
+    if (o.square_m != 0 && !chessboard)
+        throw InputError("--square-m", "is for the chessboard mode (capture_<k>/graycode_<NN>.png); " + o.captures +
+                                           " is a " + (structured ? "structured-light" : "disc-mode") + " folder");
+    if (structured) return runStructured(o, res_w, res_h);
+    if (chessboard) return runChessboard(o, res_w, res_h);
     if (!fs::exists(dir / "camera.yaml", ec))
         throw InputError((dir / "camera.yaml").string(),
                          "no such file (the disc mode needs it; structured light with depth needs patterns.yaml + "

@@ -92,7 +92,8 @@ void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &
     request.info_topic = o.info_topic;
     auto detectOne = [&](const Cloud &cloud, const BagCloudInfo &info, const std::string &topic) {
         const Detection det = frontend::detectWithGravity(detector, cloud, gravity, minimum,
-                                                          o.bag + ":" + topic + "#" + std::to_string(info.index))
+                                                          o.bag + ":" + topic + "#" + std::to_string(info.index) +
+                                                              withSettings(o.config_file))
                                   .detection;
         nlohmann::json j = frontend::detectionDocument(det, cfg, projector, o.explain);
         if (o.steady) frontend::addContinuousFrame(j, steady.update(det, cloud, Eigen::Isometry3d::Identity()));
@@ -176,7 +177,8 @@ void run(const DetectOptions &o, const CLI::App &sub) {
 
     SurfaceDetector detector(projector, cfg);
     const frontend::GravityDetection answer =
-        frontend::detectWithGravity(detector, cloud, gravity_choice, minimum, o.cloud.empty() ? o.depth : o.cloud);
+        frontend::detectWithGravity(detector, cloud, gravity_choice, minimum,
+                                    (o.cloud.empty() ? o.depth : o.cloud) + withSettings(o.config_file));
     const Detection &det = answer.detection;
     if (gravity_choice.from_floor && !answer.gravity.floor_found)
         std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");

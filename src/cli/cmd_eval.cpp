@@ -100,7 +100,7 @@ void runProcam(const EvalOptions &o) {
         std::vector<double> shares;
         for (const auto &p : cal.poses)
             if (p.board) shares.push_back(p.board_share);
-        writeFileAtomic(o.json, eval::procamJson(in, shares));
+        writeFileAtomic(o.json, eval::procamJson(o.json, in, shares));
     }
 }
 
@@ -402,16 +402,19 @@ void addEvalCommand(CLI::App &app) {
                   "windows, clutter): DIR/realistic.md; --rounds per scene and sensor, 2 with --quick")
         ->excludes("--projector-only")
         ->excludes("--colour-only");
-    sub->add_option("--procam", o->procam,
+    CLI::Option *procam = sub->add_option("--procam", o->procam,
                     "Only the real projector-camera check: calibrate a procam-calibration sample_data folder "
                     "(capture_k/graycode_NN.png, calibration_result.xml) with the chessboard mode and print it "
                     "beside the published method re-run to convergence on the same captures (OpenCV's Gray-code "
                     "decoder) and beside its published calibration (information)");
-    sub->add_option("--json", o->json, "with --procam: write the comparison as JSON");
+    // The options of --procam alone need it: without it they would be ignored and a full eval run.
+    sub->add_option("--json", o->json, "with --procam: write the comparison as JSON")->needs(procam);
     sub->add_option("--published", o->published,
                     "with --procam: the published calibration shown for information (OpenCV XML; default "
-                    "DIR/calibration_result.xml)");
-    sub->add_option("--square-m", o->square_m, "with --procam: the board's square, m (default 0.075: its README's 75)");
+                    "DIR/calibration_result.xml)")
+        ->needs(procam);
+    sub->add_option("--square-m", o->square_m, "with --procam: the board's square, m (default 0.075: its README's 75)")
+        ->needs(procam);
     sub->add_flag("--plan-only", o->plan_only,
                   "Only the plan suite (where to stand: planned, rendered from the moved robot, detected there, "
                   "against an exhaustive reference search): DIR/plan.md; --seed renders the frames, --quick skips the "

@@ -52,7 +52,8 @@ void run(const PlanCliOptions &o) {
     // Today's answer is detect's, by the same call.
     SurfaceDetector detector(projector, cfg);
     const frontend::GravityDetection answer = frontend::detectWithGravity(
-        detector, cloud, choice, frontend::defaultMinimumSize(cfg.method), o.cloud.empty() ? o.depth : o.cloud);
+        detector, cloud, choice, frontend::defaultMinimumSize(cfg.method),
+        (o.cloud.empty() ? o.depth : o.cloud) + withSettings(o.config_file));
     if (choice.from_floor && !answer.gravity.floor_found)
         std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
     const Eigen::Vector3d gravity = answer.gravity.gravity;

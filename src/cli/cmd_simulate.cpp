@@ -5,12 +5,14 @@
 // calibration captures of the white disc (paper 3.1.1); or the structured-light captures that
 // `projsurf patterns` asks a user to take (calibrate --captures reads them).
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <iostream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "cli/calibration_input.hpp"
 #include "cli/commands.hpp"
@@ -33,6 +35,9 @@ namespace fs = std::filesystem;
 
 namespace projsurf::cli {
 namespace {
+
+/// Framebuffer pixels `simulate --structured-light` renders at most (docs/limits.md).
+constexpr std::uint64_t kMaxSimulatedPatternPixels = std::uint64_t{1} << 23;
 
 struct SimulateOptions {
     bool list = false;
@@ -95,6 +100,13 @@ void run(const SimulateOptions &o) {
     if (!std::isfinite(o.pitch_deg) || std::abs(o.pitch_deg) > 30.0)
         throw InputError("--pitch-deg", "must be within +-30 degrees");
     const Projector projector = o.calib.empty() ? sim::exampleProjector() : readCalibrationWarned(o.calib);
+    // Each pattern is rendered at the framebuffer's size, for three positions: 16384 x 2048
+    // took 40-54 s. 4K UHD (3840 x 2160) fits the bound.
+    if (o.structured_light &&
+        static_cast<std::uint64_t>(projector.width) * projector.height > kMaxSimulatedPatternPixels)
+        throw InputError(o.calib, "--structured-light renders framebuffers of at most " +
+                                      std::to_string(kMaxSimulatedPatternPixels) + " pixels; this one is " +
+                                      std::to_string(projector.width) + " x " + std::to_string(projector.height));
     const double aspect = o.aspect.empty() ? projector.aspect() : frontend::parseAspect("--aspect", o.aspect);
     std::optional<sim::Projection> projection;
     if (!o.picture.empty()) {
@@ -126,6 +138,14 @@ void run(const SimulateOptions &o) {
     const fs::path out(o.out);
     std::error_code ec;
     if (fs::exists(out, ec) && !fs::is_directory(out, ec)) throw InputError(o.out, "exists and is not a directory");
+    // The capture folders are read whole (every pose_<k>, every capture_<k>): an earlier run's
+    // files left beside the new ones would be read as this run's.
+    for (const auto &[wanted, name] : {std::pair<bool, const char *>{o.captures > 0, "captures"},
+                                       std::pair<bool, const char *>{o.structured_light, "structured"}})
+        if (wanted && fs::exists(out / name, ec) && !fs::is_empty(out / name, ec))
+            throw InputError((out / name).string(),
+                             "exists and is not empty: an earlier run's captures would stay beside the new ones "
+                             "(remove it, or give another --out)");
 
     // Render.
     std::optional<sim::RgbdFrame> frame;

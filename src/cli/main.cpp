@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/output_paths.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/utf8_text.hpp"
 
@@ -111,6 +112,7 @@ int main(int argc, char **argv) {
     std::vector<char *> cargs;
     for (auto &a : args) cargs.push_back(a.data());
     try {
+        projsurf::cli::refuseOutputOverInput(args);  // before any command reads or writes
         app.parse(static_cast<int>(cargs.size()), cargs.data());
     } catch (const projsurf::cli::ExitStatus &e) {
         return e.code;

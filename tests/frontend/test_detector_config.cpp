@@ -132,7 +132,7 @@ TEST(DetectorConfigFile, PrintedConfigReadsBackToTheSameConfig) {
     DetectorConfig changed;
     for (const ConfigKey &k : detectorConfigKeys()) setConfigValue(changed, k, otherValue(changed, k), k.key);
     changed.paper.voxel_leaf = 0.1 / 3.0;  // a double with no short decimal form
-    changed.objects.surround.offsets = {0.1 / 7.0, 0.2, 1e-5};
+    changed.objects.surround.offsets = {0.1 / 7.0, 0.2, 1e-3};
     ASSERT_NE(allValues(changed), allValues(DetectorConfig{}));
     write(dir / "all.yaml", detectorConfigYaml(changed));
     DetectorConfig read;
@@ -190,10 +190,17 @@ TEST(DetectorConfigFile, ValuesOutOfRangeOrOfTheWrongTypeNameTheKey) {
               at + "'planes.max_planes': must be a whole number from 1 to 20, got '0'");
     EXPECT_EQ(refusal(dir, "planes.max_planes: 21\n"),
               at + "'planes.max_planes': must be a whole number from 1 to 20, got '21'");
-    EXPECT_EQ(refusal(dir, "tolerance.min_band: 0\n"), at + "'tolerance.min_band': must be a number > 0, got '0'");
+    EXPECT_EQ(refusal(dir, "tolerance.min_band: 0\n"),
+              at + "'tolerance.min_band': must be a number from 0.0001 to 10, got '0'");
     EXPECT_EQ(refusal(dir, "max_tilt: .nan\n"), at + "'max_tilt': must be a number from 0 to 1.5, got '.nan'");
     EXPECT_EQ(refusal(dir, "max_tilt: .inf\n"), at + "'max_tilt': must be a number from 0 to 1.5, got '.inf'");
-    EXPECT_EQ(refusal(dir, "wall.noise_max: 1e999\n"), at + "'wall.noise_max': must be a number > 0, got '1e999'");
+    EXPECT_EQ(refusal(dir, "wall.noise_max: 1e999\n"),
+              at + "'wall.noise_max': must be a number from 0.01 to 100, got '1e999'");
+    // Inside "> 0" before, and an OpenCV assertion in the detection (issue 39).
+    EXPECT_EQ(refusal(dir, "wall.shape.relief.node_px: 1e-300\n"),
+              at + "'wall.shape.relief.node_px': must be a number from 1 to 1000, got '1e-300'");
+    EXPECT_EQ(refusal(dir, "wall.shape.relief.sigma_px: 1e300\n"),
+              at + "'wall.shape.relief.sigma_px': must be a number from 0.5 to 1000, got '1e300'");
     EXPECT_EQ(refusal(dir, "seed: -1\n"), at + "'seed': must be a whole number from 0 to 4294967295, got '-1'");
     // The wrong type.
     EXPECT_EQ(refusal(dir, "planes.max_planes: six\n"),
@@ -206,7 +213,7 @@ TEST(DetectorConfigFile, ValuesOutOfRangeOrOfTheWrongTypeNameTheKey) {
               at + "'planes.max_planes': must be a whole number from 1 to 20, got '[...]'");
     EXPECT_EQ(refusal(dir, "objects.avoid: yes\n"), at + "'objects.avoid': must be true or false, got 'yes'");
     EXPECT_EQ(refusal(dir, "objects.surround.offsets: [0.1, -0.2]\n"),
-              at + "'objects.surround.offsets': must be a list of 1 to 16 numbers, each > 0, got '-0.2'");
+              at + "'objects.surround.offsets': must be a list of 1 to 16 numbers, each 0.0001 to 10, got '-0.2'");
     // Words go through the front ends' one parser of each.
     EXPECT_EQ(refusal(dir, "method: fast\n"), at + "'method': expected 'default' or 'paper', got 'fast'");
     EXPECT_EQ(refusal(dir, "paper.hull: round\n"), at + "'paper.hull': expected 'concave' or 'convex', got 'round'");
@@ -250,7 +257,7 @@ TEST(DetectorConfigFile, HostileFilesAreOneLineNamingTheFile) {
     for (int i = 1; i < 30; ++i)
         bomb += "a" + std::to_string(i) + ": &a" + std::to_string(i) + " {p: *a" + std::to_string(i - 1) + ", q: *a" +
                 std::to_string(i - 1) + "}\n";
-    EXPECT_EQ(refusal(dir, bomb), file + ": too many keys (aliases repeating a mapping?)");
+    EXPECT_EQ(refusal(dir, bomb), file + ": more than 100000 YAML nodes (aliases repeating a mapping?)");
     DetectorConfig c;
     EXPECT_THROW(readDetectorConfig(dir.string(), c), InputError);  // a directory
     EXPECT_THROW(readDetectorConfig((dir / "missing.yaml").string(), c), InputError);

@@ -27,6 +27,11 @@ ChessboardCorners findChessboard(const cv::Mat &image, const std::vector<cv::Siz
     else
         small = grey;
     ChessboardCorners out;
+    // Early stop: OpenCV's quick check (enough black and white quads of one size) asks more of a
+    // larger board, so an image that fails it for the smallest board (3 x 3 inner corners)
+    // fails it for every size: noise or a blank wall is answered after one check (0.03 s)
+    // instead of a search of every size and orientation (3 poses of 1280 x 1024 noise took 42 s).
+    if (sizes.empty() && !cv::checkChessboard(small, cv::Size(3, 3))) return out;
     for (const cv::Size &s : tries) {
         for (int turn = 0; turn < (s.width == s.height ? 1 : 2); ++turn) {
             const cv::Size t = turn == 0 ? s : cv::Size(s.height, s.width);

@@ -16,10 +16,8 @@ ChessboardCalibration calibrateChessboard(const ProcamFolder &folder, double squ
     int boards = 0;
     double share_sum = 0;
     for (const ProcamPose &pose : folder.poses) {
-        const std::vector<cv::Mat> captures = readProcamPose(pose);
-        if (out.camera_size.area() == 0) out.camera_size = captures[0].size();
-        if (captures[0].size() != out.camera_size)
-            throw InputError(pose.files[0], "size differs from the first pose's captures");
+        const std::vector<cv::Mat> captures = readProcamPose(pose, folder.camera_width, folder.camera_height);
+        out.camera_size = captures[0].size();
         ChessboardPoseConfig cfg;
         cfg.square = square_m;
         if (out.inner.area() > 0) cfg.board_sizes = {out.inner};  // the first board found fixes the count

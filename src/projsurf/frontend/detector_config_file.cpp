@@ -2,6 +2,7 @@
 
 #include "projsurf/frontend/detector_config_keys.hpp"
 #include "projsurf/io/errors.hpp"
+#include "projsurf/io/utf8_text.hpp"
 #include "projsurf/io/yaml_settings.hpp"
 
 namespace projsurf::frontend {
@@ -14,9 +15,9 @@ std::string unknownKeyProblem(const std::string &key) {
         if (k.key.rfind(key + ".", 0) == 0) section += (section.empty() ? "" : ", ") + k.key;
     if (!section.empty()) {
         if (section.size() > 80) section = section.substr(0, section.rfind(", ", 80)) + ", ...";
-        return "key '" + key + "' holds settings (" + section + "), not a value";
+        return "key '" + shownText(key) + "' holds settings (" + section + "), not a value";
     }
-    std::string problem = "unknown key '" + key + "'";
+    std::string problem = "unknown key '" + shownText(key) + "'";
     const std::string first = key.substr(0, key.find('.'));
     if (first == "projector" || first == "camera" || first == "image_width")
         return problem + " (a calibration or camera file, not a detector configuration?)";
@@ -33,6 +34,11 @@ void checkTogether(const std::string &path, const DetectorConfig &c) {
     notAbove(c.tolerance.min_band, c.tolerance.max_band, "tolerance.min_band", "tolerance.max_band");
     notAbove(c.wall.noise_min, c.wall.noise_max, "wall.noise_min", "wall.noise_max");
     notAbove(c.wall.shape.min_points, c.wall.shape.max_points, "wall.shape.min_points", "wall.shape.max_points");
+    // The relief's smoothing, in nodes: sigma_px / node_px sizes a Gaussian kernel on the node grid.
+    const auto &relief = c.wall.shape.relief;
+    if (relief.sigma_px > 10.0 * relief.node_px)
+        throw InputError(path, "'wall.shape.relief.sigma_px' must not exceed 10 x 'wall.shape.relief.node_px' (" +
+                                   std::to_string(relief.sigma_px) + " > 10 x " + std::to_string(relief.node_px) + ")");
 }
 
 }  // namespace
@@ -42,7 +48,7 @@ void readDetectorConfig(const std::string &path, DetectorConfig &config) {
     for (const SettingText &s : readYamlSettings(path)) {
         const ConfigKey *key = findConfigKey(s.key);
         if (!key) throw InputError(path, unknownKeyProblem(s.key));
-        setConfigValue(read, *key, s, path + ": key '" + s.key + "'");
+        setConfigValue(read, *key, s, path + ": key '" + shownText(s.key) + "'");
     }
     checkTogether(path, read);
     config = read;

@@ -120,6 +120,10 @@ struct BagIndex {
     std::vector<BagConnection> &connections;
     std::vector<BagMessageRef> &messages;
     std::map<std::uint32_t, std::size_t> by_id;  // connection id -> index in connections
+    // Messages per connection in each chunk (by its position), as the chunks hold them: what the
+    // index records must agree with.
+    std::map<std::uint64_t, std::map<std::uint32_t, std::uint32_t>> chunk_counts;
+    std::uint64_t last_chunk = 0;
 
     void addConnection(const Record &r, const char *data, std::size_t n) {
         BagConnection c;
@@ -155,6 +159,7 @@ struct BagIndex {
         if (m.size > limits::kMaxBagRecordBytes)
             throw InputError(path, "ROS bag message of " + std::to_string(m.size) + " bytes exceeds the limit of " +
                                        std::to_string(limits::kMaxBagRecordBytes) + " bytes");
+        if (chunk_pos != 0) ++chunk_counts[chunk_pos][m.connection];
         if (!wanted(m.connection)) return;
         if (messages.size() >= limits::kMaxBagMessages)
             throw InputError(path, "more than " + std::to_string(limits::kMaxBagMessages) + " messages on '" +
@@ -162,8 +167,42 @@ struct BagIndex {
         messages.push_back(m);
     }
 
+    /// An index record that contradicts the chunks is refused: a bag whose index was rebuilt
+    /// wrongly or edited (`rosbag reindex` writes it again).
+    [[noreturn]] void contradiction(const std::string &what) const {
+        throw InputError(path, "corrupt ROS bag: " + what + " contradicts its chunks (rosbag reindex rebuilds the index)");
+    }
+
+    /// An index data record (after its chunk): `count` entries of 12 bytes for one connection.
+    void checkIndexData(const Record &r) {
+        const std::uint32_t conn = fieldU32(path, r, "conn"), count = fieldU32(path, r, "count");
+        if (static_cast<std::uint64_t>(count) * 12 != r.data_len) contradiction("an index record's size");
+        const auto chunk = chunk_counts.find(last_chunk);
+        const std::uint32_t held =
+            chunk == chunk_counts.end() ? 0 : (chunk->second.count(conn) ? chunk->second.at(conn) : 0);
+        if (last_chunk == 0 || held != count)
+            contradiction("an index record (" + std::to_string(count) + " messages of connection " +
+                          std::to_string(conn) + ", the chunk holds " + std::to_string(held) + ")");
+    }
+
+    /// A chunk info record: the chunk's position and its messages per connection.
+    void checkChunkInfo(const Record &r, const char *data) {
+        const auto &pos = fieldString(path, r, "chunk_pos");
+        if (pos.size() != 8) throw InputError(path, "corrupt ROS bag: chunk_pos is not 8 bytes");
+        const std::uint64_t chunk_pos = le32(pos.data()) | static_cast<std::uint64_t>(le32(pos.data() + 4)) << 32;
+        const std::uint32_t count = fieldU32(path, r, "count");
+        if (static_cast<std::uint64_t>(count) * 8 != r.data_len) contradiction("a chunk info record's size");
+        const auto chunk = chunk_counts.find(chunk_pos);
+        std::map<std::uint32_t, std::uint32_t> listed;
+        for (std::uint32_t i = 0; i < count; ++i) listed[le32(data + 8 * i)] += le32(data + 8 * i + 4);
+        const std::map<std::uint32_t, std::uint32_t> none;
+        if ((chunk == chunk_counts.end() ? none : chunk->second) != listed)
+            contradiction("the chunk info of the chunk at byte " + std::to_string(chunk_pos));
+    }
+
     /// The connections and messages inside the decompressed chunk that starts at `chunk_pos`.
     void addChunk(const std::string &data, std::uint64_t chunk_pos) {
+        last_chunk = chunk_pos;
         std::uint64_t cpos = 0;
         while (cpos < data.size()) {
             const Record cr = chunkRecordAt(path, data, cpos);
@@ -184,6 +223,9 @@ struct BagFile::Impl {
     std::string path;
     std::ifstream in;
     std::uint64_t size = 0;
+    // What the chunks of this bag have decompressed to so far, and from how many bytes (every
+    // decompression counts, a chunk read again too): the work is bounded by the file.
+    std::uint64_t decompressed_total = 0, compressed_total = 0;
     // The last chunk decompressed, kept for the messages that follow in it.
     std::uint64_t cached_chunk = 0;
     std::string cached;
@@ -223,6 +265,26 @@ struct BagFile::Impl {
         return r;
     }
 
+    /// Refuses, before it is decompressed, a chunk of `compressed` bytes that announces `raw`:
+    /// beyond limits::kMaxBagChunkRatio times its size (above limits::kMaxBagChunkFreeBytes),
+    /// or taking the bag's chunks beyond limits::kMaxBagRatio times their compressed bytes
+    /// (above limits::kMaxBagFreeBytes). A bz2 chunk of zeros reaches a ratio of 10^6.
+    void checkDecompression(std::uint64_t raw, std::uint64_t compressed) {
+        if (raw > limits::kMaxBagChunkFreeBytes && raw > limits::kMaxBagChunkRatio * compressed)
+            throw InputError(path, "ROS bag chunk of " + std::to_string(compressed) + " compressed bytes announces " +
+                                       std::to_string(raw) + " bytes, beyond the limit of " +
+                                       std::to_string(limits::kMaxBagChunkRatio) +
+                                       " times its size (a decompression bomb?)");
+        const std::uint64_t total = decompressed_total + raw, from = compressed_total + compressed;
+        if (total > limits::kMaxBagFreeBytes && total > limits::kMaxBagRatio * from)
+            throw InputError(path, "ROS bag chunks decompress to more than " +
+                                       std::to_string(limits::kMaxBagFreeBytes >> 20) + " MiB at over " +
+                                       std::to_string(limits::kMaxBagRatio) +
+                                       " times their compressed size, beyond the limit (a decompression bomb?)");
+        decompressed_total = total;
+        compressed_total = from;
+    }
+
     /// The uncompressed data of the chunk record at `pos`.
     const std::string &chunk(std::uint64_t pos) {
         if (pos == cached_chunk && pos != 0) return cached;
@@ -236,6 +298,7 @@ struct BagFile::Impl {
         if (r.data_len > limits::kMaxBagRecordBytes)
             throw InputError(path,
                              "ROS bag chunk of " + std::to_string(r.data_len) + " compressed bytes exceeds the limit");
+        if (compression != "none") checkDecompression(raw, r.data_len);
         std::string data(r.data_len, '\0');
         readAt(r.data_pos, data.data(), data.size());
         cached_chunk = 0;
@@ -314,8 +377,16 @@ struct BagFile::Impl {
             }
             case kOpMessage: index.addMessage(r, 0); break;
             case kOpChunk: index.addChunk(chunk(pos), pos); break;
-            case kOpIndex:
-            case kOpChunkInfo: break;  // the index: not needed, the records were all read in order
+            // The index is not needed (the records are all read in order), but it must agree.
+            case kOpIndex: index.checkIndexData(r); break;
+            case kOpChunkInfo: {
+                if (r.data_len > limits::kMaxBagHeaderBytes)
+                    throw InputError(path, "corrupt ROS bag: chunk info record too long");
+                std::string data(r.data_len, '\0');
+                readAt(r.data_pos, data.data(), data.size());
+                index.checkChunkInfo(r, data.data());
+                break;
+            }
             default: throw InputError(path, "corrupt ROS bag: unknown record type " + std::to_string(r.op));
             }
             pos = next;
@@ -328,7 +399,7 @@ BagFile::BagFile(const std::string &path, const std::string &want_topic) : impl_
     impl_->path = path;
     try {
         impl_->open();
-        BagIndex index{path, want_topic, connections_, messages_, {}};
+        BagIndex index{path, want_topic, connections_, messages_, {}, {}, 0};
         impl_->indexRecords(index);
         std::stable_sort(messages_.begin(), messages_.end(), [](const BagMessageRef &a, const BagMessageRef &c) {
             return a.sec < c.sec || (a.sec == c.sec && a.nsec < c.nsec);

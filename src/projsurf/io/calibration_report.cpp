@@ -85,7 +85,9 @@ std::string calibrationReportYaml(const Calibration &cal, const CalibrationProve
 }
 
 void writeCalibrationReport(const std::string &path, const Calibration &cal, const CalibrationProvenance &prov) {
-    writeFileAtomic(path, calibrationReportYaml(cal, prov));
+    const std::string text = calibrationReportYaml(cal, prov);
+    checkCalibrationText(path, text);  // read back as every reader reads it first
+    writeFileAtomic(path, text);
 }
 
 }  // namespace projsurf

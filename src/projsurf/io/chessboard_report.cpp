@@ -33,10 +33,7 @@ void writeChessboardCalibration(const std::string &path, const StereoFit &fit, i
     root["projector"]["captures"]["poses"] = report.poses;
     root["projector"]["captures"]["square_m"] = report.square_m;
     root["projector"]["created_utc"] = report.created_utc;
-    YAML::Emitter out;
-    out.SetDoublePrecision(9);
-    out << root;
-    writeFileAtomic(path, std::string(out.c_str()) + "\n");
+    writeFileAtomic(path, calibrationYamlText(path, root));  // read back as every reader reads it first
 }
 
 }  // namespace projsurf

@@ -156,4 +156,20 @@ DetectionFile readDetectionJson(const std::string &path) {
     return out;
 }
 
+std::string nonFiniteJsonKey(const nlohmann::json &j, const std::string &prefix) {
+    if (j.is_number_float()) return std::isfinite(j.get<double>()) ? "" : (prefix.empty() ? "(top)" : prefix);
+    if (j.is_object()) {
+        for (auto it = j.begin(); it != j.end(); ++it) {
+            const std::string k = nonFiniteJsonKey(*it, prefix.empty() ? it.key() : prefix + "." + it.key());
+            if (!k.empty()) return k;
+        }
+    } else if (j.is_array()) {
+        for (std::size_t i = 0; i < j.size(); ++i) {
+            const std::string k = nonFiniteJsonKey(j[i], prefix + "[" + std::to_string(i) + "]");
+            if (!k.empty()) return k;
+        }
+    }
+    return "";
+}
+
 }  // namespace projsurf

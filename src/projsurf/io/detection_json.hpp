@@ -16,6 +16,9 @@ nlohmann::json detectionToJson(const Detection &detection, const DetectorConfig 
 /// A rectangle as the contract writes `rectangle`: corners (TL, TR, BR, BL; camera frame, m),
 /// width_m, height_m, area_m2; null when it has no area.
 nlohmann::json rectangleToJson(const Rectangle &rect);
+/// The dotted key of the first number in `j` that is not finite (nlohmann writes NaN and
+/// infinity as null), "" when every number is finite: what a writer checks before it writes.
+std::string nonFiniteJsonKey(const nlohmann::json &j, const std::string &prefix = "");
 
 /// What `correct` needs from a detection file.
 struct DetectionFile {

@@ -249,6 +249,31 @@ cv::Mat decodeImageFile(const std::string &path, int flags, std::uint64_t max_pi
 
 }  // namespace
 
+std::pair<std::uint64_t, std::uint64_t> imageFileSize(const std::string &path) {
+    requireReadable(path);
+    std::error_code ec;
+    const auto size = fs::file_size(path, ec);
+    if (ec) throw InputError(path, "cannot read the file");
+    if (size > limits::kMaxImageFileBytes)
+        throw InputError(path, "image file of " + std::to_string(size) + " bytes exceeds the limit of " +
+                                   std::to_string(limits::kMaxImageFileBytes) + " bytes");
+    // The header is in the first bytes (a JPEG's frame header after its metadata segments:
+    // the whole file when the first MiB does not hold it).
+    ImageHeader header;
+    for (const std::uintmax_t n : {std::min<std::uintmax_t>(size, 1 << 20), static_cast<std::uintmax_t>(size)}) {
+        std::string bytes(static_cast<std::size_t>(n), '\0');
+        std::ifstream in(path, std::ios::binary);
+        in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        if (static_cast<std::uintmax_t>(in.gcount()) != n) throw InputError(path, "cannot read the file");
+        header = readImageHeader(bytes);
+        if (!header.format.empty() || n == size) break;
+    }
+    if (header.format.empty()) throw InputError(path, "not a readable image (expected PNG, JPEG, BMP or PNM)");
+    if (header.width == 0 || header.height == 0)
+        throw InputError(path, "not a readable image (" + header.format + " header gives a zero size)");
+    return {header.width, header.height};
+}
+
 cv::Mat readImage(const std::string &path, int flags, std::uint64_t max_pixels) {
     return decodeImageFile(path, flags, max_pixels, 0, 0, "");
 }

@@ -23,6 +23,11 @@ cv::Mat readImage(const std::string &path, int flags, std::uint64_t max_pixels =
 /// another size is an InputError saying both, before anything is decoded.
 cv::Mat readImageOfSize(const std::string &path, int flags, int width, int height, const std::string &whose);
 
+/// Width and height of an image file from its header alone (nothing decoded); InputError naming
+/// the path when it is not a regular file, over limits::kMaxImageFileBytes, or not a PNG, JPEG,
+/// BMP or PNM with a non-zero size.
+std::pair<std::uint64_t, std::uint64_t> imageFileSize(const std::string &path);
+
 /// The outputs of one command as a group (never a partial output): each add writes a
 /// temporary file beside its target (same folder, so the rename cannot cross file systems);
 /// commit() renames them all; whatever was not committed is removed by the destructor.

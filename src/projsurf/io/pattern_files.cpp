@@ -9,6 +9,8 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"
+#include "projsurf/io/yaml_tree.hpp"
+#include "projsurf/io/utf8_text.hpp"
 
 namespace fs = std::filesystem;
 
@@ -57,7 +59,7 @@ PatternList readPatternList(const std::string &path) {
     const std::string text = readSmallTextFile(path, limits::kMaxYamlBytes, "YAML");
     PatternList list;
     try {
-        const YAML::Node root = YAML::Load(text);
+        const YAML::Node root = loadCheckedYaml(path, text);
         const YAML::Node p = root["patterns"];
         if (!p || !p.IsMap()) throw InputError(path, "missing key 'patterns'");
         const YAML::Node res = p["resolution"];
@@ -73,7 +75,7 @@ PatternList readPatternList(const std::string &path) {
                                        std::to_string(limits::kMaxFramebufferPixels) + " pixels");
         list.coding = p["coding"] ? p["coding"].as<std::string>() : "";
         if (list.coding != kCoding)
-            throw InputError(path, "unknown pattern coding '" + list.coding + "' (this version writes and reads '" +
+            throw InputError(path, "unknown pattern coding '" + shownText(list.coding) + "' (this version writes and reads '" +
                                        kCoding + "'; run projsurf patterns again)");
         const YAML::Node order = p["order"];
         if (!order || !order.IsSequence()) throw InputError(path, "missing list 'patterns.order'");

@@ -87,17 +87,42 @@ ProcamFolder readProcamFolder(const std::string &dir, std::optional<std::pair<in
                                              std::to_string(f.height) + " projector; --resolution?)");
         f.poses.push_back(pose);
     }
+    const auto [cw, ch] = imageFileSize(f.poses.front().files.front());
+    const std::string &first = f.poses.front().files.front();
+    if (cw * ch > limits::kMaxImagePixels)
+        throw InputError(first, "image of " + std::to_string(cw) + " x " + std::to_string(ch) +
+                                    " pixels exceeds the limit of " + std::to_string(limits::kMaxImagePixels) +
+                                    " pixels");
+    f.camera_width = static_cast<int>(cw);
+    f.camera_height = static_cast<int>(ch);
+    const std::uint64_t pixels = cw * ch, pose_bytes = chessboardPoseBytes(pixels, need);
+    const std::string shape = std::to_string(need) + " captures of " + std::to_string(cw) + "x" + std::to_string(ch);
+    if (pose_bytes > limits::kMaxStructuredLightBytes)
+        throw InputError(dir, "a pose of " + shape + " pixels needs " + std::to_string(pose_bytes >> 20) +
+                                  " MiB to decode, beyond the limit of " +
+                                  std::to_string(limits::kMaxStructuredLightBytes >> 20) +
+                                  " MiB (a smaller camera image)");
+    const std::uint64_t capture_bytes = f.poses.size() * need * pixels;
+    if (capture_bytes > limits::kMaxChessboardCaptureBytes)
+        throw InputError(dir, std::to_string(f.poses.size()) + " poses of " + shape + " pixels are " +
+                                  std::to_string(capture_bytes >> 20) + " MiB of captures to decode, beyond the limit of " +
+                                  std::to_string(limits::kMaxChessboardCaptureBytes >> 20) +
+                                  " MiB (fewer poses, or a smaller camera image)");
     return f;
 }
 
-std::vector<cv::Mat> readProcamPose(const ProcamPose &pose) {
+std::uint64_t chessboardPoseBytes(std::uint64_t pixels, std::uint64_t patterns) {
+    return (patterns        // the captures, 8 bits each
+            + 2 * patterns  // their 3 x 3 sums
+            + 2 * 8 + 4 + 1  // the decoding: column, row, direct light, confidence
+            + 4)             // the board search: a grey copy, its half-size image, the white capture's
+           * pixels;
+}
+
+std::vector<cv::Mat> readProcamPose(const ProcamPose &pose, int camera_width, int camera_height) {
     std::vector<cv::Mat> out;
-    for (const std::string &file : pose.files) {
-        cv::Mat m = readImage(file, cv::IMREAD_GRAYSCALE);
-        if (!out.empty() && m.size() != out[0].size())
-            throw InputError(file, "size differs from " + pose.files[0]);
-        out.push_back(m);
-    }
+    for (const std::string &file : pose.files)
+        out.push_back(readImageOfSize(file, cv::IMREAD_GRAYSCALE, camera_width, camera_height, "the first capture"));
     return out;
 }
 

@@ -1,5 +1,8 @@
 #include "projsurf/io/procam_xml.hpp"
 
+#include <cmath>
+
+#include <Eigen/LU>
 #include <opencv2/core.hpp>
 
 #include "projsurf/io/errors.hpp"
@@ -31,7 +34,27 @@ cv::Mat matrix(const cv::FileStorage &fs, const std::string &path, const std::st
         throw InputError(path,
                          "lacks a " + std::to_string(rows) + "x" + std::to_string(cols) + " matrix '" + key + "'");
     m.convertTo(m, CV_64F);
+    for (int i = 0; i < static_cast<int>(m.total()); ++i)
+        if (!std::isfinite(m.at<double>(i)))
+            throw InputError(path, "matrix '" + key + "' holds a number that is not finite");
     return m.reshape(1, rows);
+}
+
+/// What the comparison divides by and takes angles of: positive focal lengths (at most the
+/// camera limit), a rotation, a translation of non-zero length.
+void checkPublished(const std::string &path, const PublishedProcam &p) {
+    auto focal = [&](double fx, double fy, const char *key) {
+        if (!(fx > 0 && fy > 0 && fx <= 1e6 && fy <= 1e6))
+            throw InputError(path, std::string("'") + key + "' focal lengths must be positive and at most 1e6 px");
+    };
+    focal(p.cam_fx, p.cam_fy, "cam_int");
+    focal(p.proj_fx, p.proj_fy, "proj_int");
+    if ((p.rotation.transpose() * p.rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() > 1e-2 ||
+        !(p.rotation.determinant() > 0))
+        throw InputError(path, "'rotation' is not a rotation (orthonormal to 1e-2, determinant +1)");
+    if (!(p.translation.norm() > 0) || !(p.translation.norm() < 1e9))
+        throw InputError(path, "'translation' must have a positive, finite length");
+    if (!std::isfinite(p.rms)) throw InputError(path, "'rms' is not finite");
 }
 
 /// OpenCV's XML reader is handed only a whole document: its `<?xml ...?>` header closed on the
@@ -91,6 +114,7 @@ PublishedProcam readProcamXml(const std::string &path) {
     } catch (const cv::Exception &) {
         throw InputError(path, "a matrix could not be read");
     }
+    checkPublished(path, p);
     return p;
 }
 

@@ -26,10 +26,7 @@ void writeStructuredCalibration(const std::string &path, const ProjectorFit &fit
     root["projector"]["captures"]["dir"] = captures_dir;
     root["projector"]["captures"]["poses"] = poses;
     root["projector"]["created_utc"] = created_utc;
-    YAML::Emitter out;
-    out.SetDoublePrecision(9);
-    out << root;
-    writeFileAtomic(path, std::string(out.c_str()) + "\n");
+    writeFileAtomic(path, calibrationYamlText(path, root));  // read back as every reader reads it first
 }
 
 }  // namespace projsurf

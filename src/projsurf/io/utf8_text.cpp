@@ -66,4 +66,21 @@ std::string utf8Escaped(const std::string &bytes) {
     return out;
 }
 
+std::string shownText(const std::string &bytes, std::size_t max_bytes) {
+    const std::string escaped = utf8Escaped(bytes);
+    std::string out;
+    for (std::size_t i = 0; i < escaped.size(); ++i) {
+        const auto c = static_cast<unsigned char>(escaped[i]);
+        if (out.size() >= max_bytes && (c & 0xC0) != 0x80) return out + "...";  // never inside a sequence
+        if (c < 0x20 || c == 0x7F) {
+            char buf[5];
+            std::snprintf(buf, sizeof buf, "\\x%02X", c);
+            out += buf;
+        } else {
+            out += escaped[i];
+        }
+    }
+    return out;
+}
+
 }  // namespace projsurf

@@ -4,11 +4,14 @@
 #include <yaml-cpp/yaml.h>
 #include <Eigen/SVD>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"
+#include "projsurf/io/utf8_text.hpp"
+#include "projsurf/io/yaml_tree.hpp"
 
 namespace projsurf {
 namespace {
@@ -17,13 +20,9 @@ constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 YAML::Node loadYaml(const std::string &path) {
     const std::string text = readSmallTextFile(path, limits::kMaxYamlBytes, "YAML");
-    try {
-        YAML::Node root = YAML::Load(text);
-        if (!root.IsMap()) throw InputError(path, "expected a YAML mapping at the top level");
-        return root;
-    } catch (const YAML::Exception &e) {
-        throw InputError(path, std::string("malformed YAML: ") + e.what());
-    }
+    YAML::Node root = loadCheckedYaml(path, text);
+    if (!root.IsMap()) throw InputError(path, "expected a YAML mapping at the top level");
+    return root;
 }
 
 YAML::Node child(const std::string &path, const YAML::Node &node, const std::string &key, const std::string &where) {
@@ -49,19 +48,43 @@ std::vector<double> numbers(const std::string &path, const YAML::Node &node, con
     return out;
 }
 
-void noteUnknownKeys(const std::string &path, const YAML::Node &node, const std::string &where,
-                     const std::vector<std::string> &known, std::vector<std::string> *warnings) {
-    if (!warnings || !node.IsMap()) return;
-    for (const auto &kv : node) {
-        const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
-        if (std::find(known.begin(), known.end(), key) == known.end())
-            warnings->push_back(path + ": unknown key '" + where + key + "' is ignored (known: " + [&] {
-                std::string list;
-                for (const auto &k : known) list += (list.empty() ? "" : ", ") + k;
-                return list;
-            }() + ")");
+/// Unknown keys named at most in the one warning line of a file: a file of 1000 typos is one
+/// problem, not 1000 lines.
+constexpr std::size_t kMaxUnknownKeysNamed = 3;
+
+/// Unknown keys of one file, noted as they are found and told as one warning line (each key
+/// escaped by shownText, at most kMaxUnknownKeysNamed of them, then "and N more").
+struct UnknownKeys {
+    UnknownKeys(const std::string &p, std::vector<std::string> *w) : path(p), warnings(w) {}
+    const std::string &path;
+    std::vector<std::string> *warnings;
+    std::size_t count = 0;
+    std::vector<std::string> named;
+    std::string known;  // of the first unknown key's mapping
+
+    void note(const YAML::Node &node, const std::string &where, const std::vector<std::string> &keys) {
+        if (!warnings || !node.IsMap()) return;
+        for (const auto &kv : node) {
+            const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
+            if (std::find(keys.begin(), keys.end(), key) != keys.end()) continue;
+            if (count++ == 0)
+                for (const auto &k : keys) known += (known.empty() ? "" : ", ") + k;
+            if (named.size() < kMaxUnknownKeysNamed) named.push_back("'" + shownText(where + key) + "'");
+        }
     }
-}
+    /// The warning line, when a key was unknown.
+    void finish() {
+        if (!warnings || count == 0) return;
+        if (count == 1) {
+            warnings->push_back(path + ": unknown key " + named.front() + " is ignored (known: " + known + ")");
+            return;
+        }
+        std::string list;
+        for (const auto &k : named) list += (list.empty() ? "" : ", ") + k;
+        if (count > named.size()) list += " and " + std::to_string(count - named.size()) + " more";
+        warnings->push_back(path + ": unknown keys " + list + " are ignored (typos? docs/interface.md lists the keys)");
+    }
+};
 
 /// The contract's optional full-model keys (intrinsics, distortion, rotation), when present.
 void readFullModel(const std::string &path, const YAML::Node &p, Projector &proj) {
@@ -117,8 +140,10 @@ std::string readCalibrationVerdict(const std::string &path) {
     return v.as<std::string>();
 }
 
-Projector readCalibration(const std::string &path, std::vector<std::string> *warnings) {
-    const YAML::Node root = loadYaml(path);
+namespace {
+
+/// readCalibration's checks on a parsed file.
+Projector calibrationFromYaml(const std::string &path, const YAML::Node &root, std::vector<std::string> *warnings) {
     if (!root["projector"] && (root["camera"] || root["camera_matrix"]))
         throw InputError(path,
                          "is camera intrinsics, not a projector calibration (projector:); --camera and --calib "
@@ -158,18 +183,77 @@ Projector readCalibration(const std::string &path, std::vector<std::string> *war
     proj.direction = dir.normalized();
     readFullModel(path, p, proj);
     // What the contract and `projsurf calibrate` write under `projector:`.
-    noteUnknownKeys(path, p, "projector.",
-                    {"resolution", "fov_deg", "axis", "intrinsics", "distortion", "rotation", "corner_rays",
-                     "residuals", "camera", "captures", "created_utc"},
-                    warnings);
-    noteUnknownKeys(path, axis, "projector.axis.", {"origin", "direction"}, warnings);
-    if (p["intrinsics"])
-        noteUnknownKeys(path, p["intrinsics"], "projector.intrinsics.", {"fx", "fy", "cx", "cy"}, warnings);
+    UnknownKeys unknown{path, warnings};
+    unknown.note(p, "projector.",
+                 {"resolution", "fov_deg", "axis", "intrinsics", "distortion", "rotation", "corner_rays", "residuals",
+                  "camera", "captures", "created_utc"});
+    unknown.note(axis, "projector.axis.", {"origin", "direction"});
+    if (p["intrinsics"]) unknown.note(p["intrinsics"], "projector.intrinsics.", {"fx", "fy", "cx", "cy"});
+    unknown.finish();
     if (const std::string problem = lensModelProblem(proj); !problem.empty()) throw InputError(path, problem);
     if (!isValidProjector(proj))
         throw InputError(path,
                          "projector.axis.direction is (nearly) vertical: the projector's image axes are undefined");
     return proj;
+}
+
+/// The dotted key of the first scalar under `node` that reads as a number but not a finite
+/// one (.nan, .inf), "" when there is none; text values (a folder's name) are skipped.
+std::string nonFiniteKey(const YAML::Node &node, const std::string &key) {
+    if (node.IsScalar()) {
+        // The text keys the writers write (a capture folder may be called "nan").
+        const std::string last = key.substr(key.rfind('.') == std::string::npos ? 0 : key.rfind('.') + 1);
+        for (const char *text : {"dir", "captures_dir", "rgb", "tool", "created_utc", "origin_note", "verdict", "method",
+                                 "order"})
+            if (last == text || last.rfind(std::string(text) + "[", 0) == 0) return "";
+        double v = 0;
+        std::string word = node.Scalar();
+        for (char &c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        const bool written_nan = word == "nan" || word == "inf" || word == "-inf" || word == "+inf";  // printf's
+        return written_nan || (YAML::convert<double>::decode(node, v) && !std::isfinite(v)) ? key : "";
+    }
+    if (node.IsMap())
+        for (const auto &kv : node) {
+            const std::string k = nonFiniteKey(kv.second, key.empty() ? kv.first.Scalar() : key + "." + kv.first.Scalar());
+            if (!k.empty()) return k;
+        }
+    if (node.IsSequence())
+        for (std::size_t i = 0; i < node.size(); ++i) {
+            const std::string k = nonFiniteKey(node[i], key + "[" + std::to_string(i) + "]");
+            if (!k.empty()) return k;
+        }
+    return "";
+}
+
+}  // namespace
+
+Projector readCalibration(const std::string &path, std::vector<std::string> *warnings) {
+    return calibrationFromYaml(path, loadYaml(path), warnings);
+}
+
+std::string calibrationYamlText(const std::string &path, const YAML::Node &root) {
+    YAML::Emitter out;
+    out.SetDoublePrecision(9);
+    out << root;
+    const std::string text = std::string(out.c_str()) + "\n";
+    checkCalibrationText(path, text);
+    return text;
+}
+
+void checkCalibrationText(const std::string &path, const std::string &text) {
+    // Read back as every reader reads it: a fit that no reader accepts (a distortion beyond
+    // +-10, an origin beyond 3 m) is refused here with the reader's reason.
+    try {
+        const YAML::Node back = loadCheckedYaml(path, text);
+        if (!back.IsMap()) throw InputError(path, "expected a YAML mapping at the top level");
+        calibrationFromYaml(path, back, nullptr);
+        if (const std::string key = nonFiniteKey(back, ""); !key.empty())
+            throw InputError(path, "'" + key + "' is not finite");
+    } catch (const InputError &e) {
+        std::string reason = e.what();
+        if (reason.rfind(path + ": ", 0) == 0) reason = reason.substr(path.size() + 2);
+        throw InputError(path, "not written: the calibration would be refused by every reader (" + reason + ")");
+    }
 }
 
 YAML::Node calibrationNode(const Projector &projector) {
@@ -212,10 +296,7 @@ YAML::Node calibrationNode(const Projector &projector) {
 void writeCalibration(const std::string &path, const Projector &projector) {
     YAML::Node root;
     root["projector"] = calibrationNode(projector);
-    YAML::Emitter out;
-    out.SetDoublePrecision(9);
-    out << root;
-    writeFileAtomic(path, std::string(out.c_str()) + "\n");
+    writeFileAtomic(path, calibrationYamlText(path, root));
 }
 
 namespace {
@@ -256,10 +337,11 @@ CameraIntrinsics readCamera(const std::string &path, std::vector<std::string> *w
     CameraIntrinsics cam;
     if (!root["camera"] && root["camera_matrix"]) {
         cam = rosCameraInfo(path, root);
-        noteUnknownKeys(path, root, "",
-                        {"image_width", "image_height", "camera_name", "camera_matrix", "distortion_model",
-                         "distortion_coefficients", "rectification_matrix", "projection_matrix"},
-                        warnings);
+        UnknownKeys unknown{path, warnings};
+        unknown.note(root, "",
+                     {"image_width", "image_height", "camera_name", "camera_matrix", "distortion_model",
+                      "distortion_coefficients", "rectification_matrix", "projection_matrix"});
+        unknown.finish();
     } else {
         if (!root["camera"] && root["projector"])
             throw InputError(path,
@@ -277,8 +359,10 @@ CameraIntrinsics readCamera(const std::string &path, std::vector<std::string> *w
         cam.cx = number(path, child(path, c, "cx", "camera."), "camera.cx");
         cam.cy = number(path, child(path, c, "cy", "camera."), "camera.cy");
         cam.depth_scale = c["depth_scale"] ? number(path, c["depth_scale"], "camera.depth_scale") : 1000.0;
-        noteUnknownKeys(path, root, "", {"camera"}, warnings);
-        noteUnknownKeys(path, c, "camera.", {"width", "height", "fx", "fy", "cx", "cy", "depth_scale"}, warnings);
+        UnknownKeys unknown{path, warnings};
+        unknown.note(root, "", {"camera"});
+        unknown.note(c, "camera.", {"width", "height", "fx", "fy", "cx", "cy", "depth_scale"});
+        unknown.finish();
     }
     if (static_cast<double>(cam.width) * cam.height > static_cast<double>(limits::kMaxDepthPixels))
         throw InputError(path, "camera image of " + std::to_string(cam.width) + " x " + std::to_string(cam.height) +

@@ -8,6 +8,8 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
 #include "projsurf/io/limits.hpp"
+#include "projsurf/io/utf8_text.hpp"
+#include "projsurf/io/yaml_tree.hpp"
 
 namespace projsurf {
 namespace {
@@ -24,8 +26,9 @@ bool isQuoted(const YAML::Node &scalar) {
 void flatten(const std::string &path, const YAML::Node &map, const std::string &prefix, int &visits,
              std::vector<SettingText> &out) {
     if (++visits > kMaxVisits) throw InputError(path, "too many keys (aliases repeating a mapping?)");
+    if (prefix.size() > 4096) throw InputError(path, "a key is nested too deep");
     for (const auto &pair : map) {
-        const std::string under = prefix.empty() ? "the top level" : "'" + prefix + "'";
+        const std::string under = prefix.empty() ? "the top level" : "'" + shownText(prefix) + "'";
         if (!pair.first.IsScalar() || pair.first.Scalar().empty())
             throw InputError(path, "a key under " + under + " is not a plain word");
         const std::string key = prefix.empty() ? pair.first.Scalar() : prefix + "." + pair.first.Scalar();
@@ -34,7 +37,7 @@ void flatten(const std::string &path, const YAML::Node &map, const std::string &
             flatten(path, value, key, visits, out);
             continue;
         }
-        if (!value.IsDefined() || value.IsNull()) throw InputError(path, "key '" + key + "' has no value");
+        if (!value.IsDefined() || value.IsNull()) throw InputError(path, "key '" + shownText(key) + "' has no value");
         SettingText s;
         s.key = key;
         if (value.IsScalar()) {
@@ -43,7 +46,7 @@ void flatten(const std::string &path, const YAML::Node &map, const std::string &
         } else {
             s.sequence = true;
             for (const YAML::Node &item : value) {
-                if (!item.IsScalar()) throw InputError(path, "key '" + key + "' must be a list of plain values");
+                if (!item.IsScalar()) throw InputError(path, "key '" + shownText(key) + "' must be a list of plain values");
                 s.items.push_back(item.Scalar());
                 s.quoted = s.quoted || isQuoted(item);
             }
@@ -115,12 +118,9 @@ void emit(const KeyTree &tree, const std::vector<SettingText> &settings, const s
 
 std::vector<SettingText> readYamlSettings(const std::string &path) {
     const std::string text = readSmallTextFile(path, limits::kMaxSettingsYamlBytes, "YAML");
-    YAML::Node root;
-    try {
-        root = YAML::Load(text);
-    } catch (const YAML::Exception &e) {
-        throw InputError(path, "malformed YAML: " + e.msg + " (line " + std::to_string(e.mark.line + 1) + ")");
-    }
+    // One document, no alias cycle, nesting and nodes bounded, no key twice in one mapping:
+    // checked before flatten recurses.
+    const YAML::Node root = loadCheckedYaml(path, text);
     if (root.IsNull()) return {};  // empty, or comments only
     if (!root.IsMap()) throw InputError(path, "expected a YAML mapping of settings at the top level");
     std::vector<SettingText> out;
@@ -132,7 +132,7 @@ std::vector<SettingText> readYamlSettings(const std::string &path) {
     }
     std::set<std::string> seen;
     for (const SettingText &s : out)
-        if (!seen.insert(s.key).second) throw InputError(path, "key '" + s.key + "' is given twice");
+        if (!seen.insert(s.key).second) throw InputError(path, "key '" + shownText(s.key) + "' is given twice");
     return out;
 }
 
