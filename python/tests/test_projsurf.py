@@ -235,6 +235,12 @@ def test_the_example_script_runs(tmp_path):
     assert run.returncode == 2
     assert run.stderr.startswith("detect_and_correct: error: " + str(tmp_path / "none.yaml") + ": ")
     assert run.stderr.count("\n") == 1
+    # --help: whole sentences, the usage lines and the notes after the options (issue 40: it ended mid-sentence).
+    run = subprocess.run([sys.executable, script, "--help"], capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr
+    description = run.stdout.split("\n\n")[1]
+    assert description.startswith("projsurf from Python:") and description.rstrip().endswith("framebuffer."), run.stdout
+    assert "--depth depth.png --camera camera.yaml" in run.stdout and "PYTHONPATH=build/python" in run.stdout
 
 
 def test_an_open3d_cloud_is_taken_as_it_is(projector):
