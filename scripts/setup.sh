@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs everything projsurf needs on a fresh Debian 12 machine (run as root), then
-# configures and builds it once, in Release, into ./build.
+# configures and builds it once, in Release, into ./build: everything (the tests, benchmarks,
+# the ROS node, Python), or with arguments only those targets (scripts/demo.sh: `projsurf`,
+# the CLI, which is all the demo runs).
+# usage: bash scripts/setup.sh [TARGET...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -32,4 +35,8 @@ fi
 # repository on the same machine reuses the objects.
 export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=true
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)"
+if [ $# -gt 0 ]; then
+  cmake --build build -j"$(nproc)" --target "$@"
+else
+  cmake --build build -j"$(nproc)"
+fi
