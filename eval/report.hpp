@@ -17,6 +17,7 @@ namespace projsurf::eval {
 struct ReportInfo {
     std::string command;  ///< the command line that made the report
     bool quick = false;
+    bool paper_only = false;         ///< `eval --paper-only`: the other suites and the real frames were not run
     std::string real_dir;            ///< where the real frames came from ("" = none)
     double real_seconds = 0;         ///< time spent on the gallery
     std::string load;                ///< machine load while it ran (e.g. "1-min load average 7.4 -> 6.5 on 2 cores")
@@ -33,6 +34,10 @@ struct HeadlineRow {
 std::vector<HeadlineRow> evalHeadline(const EvalResults &results);
 /// The same as lines for stdout (eval prints it after its run).
 std::string evalHeadlineText(const EvalResults &results);
+
+/// Why the paper's criterion says 100 % when each pose had `rounds` <= 2 (each round is judged
+/// against the best round of its pose, one of the two); "" for more rounds.
+std::string paperCriterionRoundsNote(int rounds);
 
 /// The report's Markdown (links plots and gallery pictures by relative path).
 std::string evalReportMarkdown(const EvalResults &results, const std::vector<GalleryEntry> &gallery,

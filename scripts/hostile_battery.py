@@ -751,8 +751,10 @@ def build_base(cli, base):
         shutil.copytree("tests/data/procam_excerpt/capture_1", B("chess", "capture_%d" % k), copy_function=os.link)
     shutil.copytree(B("chess"), B("procam"), copy_function=os.link)
     write(B("procam", "calibration_result.xml"), PROCAM_XML)
+    # The labelled frame the eval-labels cases read: one that ships in data/, so that the cases
+    # run on a plain clone (the labelled frames of ../shared/data/real are not redistributed).
     os.makedirs(B("labels"))
-    shutil.copy("labels/real/chimso_classroom_whiteboard.yaml", B("labels", "chimso_classroom_whiteboard.yaml"))
+    shutil.copy("labels/real/%s.yaml" % LABELLED_FRAME, B("labels", LABELLED_FRAME + ".yaml"))
     return B
 
 
@@ -788,11 +790,15 @@ def procam_xml_variants():
     ])
 
 
+# A labelled frame of the repository's data/ (labels/real/ holds its label).
+LABELLED_FRAME = "tum_o3d_fr3_office_partition"
+
+
 def label_variants(valid):
     return content([
         ("yaml-bomb", yaml_bomb("surfaces"), True),
         ("deep-nesting", "frame: " + "[" * 100000 + "]" * 100000 + "\n", True),
-        ("frame-parent-path", valid.replace("frame: chimso_classroom_whiteboard", "frame: ../../../../etc"), True),
+        ("frame-parent-path", valid.replace("frame: " + LABELLED_FRAME, "frame: ../../../../etc"), True),
         ("polygon-1e300", re.sub(r"polygon: \[\[[^\n]*\]\]", "polygon: [[0, 0], [1e300, 0], [1e300, 1e300], [0, 1e300]]", valid, count=1), True),
         ("polygon-nan", re.sub(r"polygon: \[\[[^\n]*\]\]", "polygon: [[0, 0], [.nan, 0], [10, 10], [0, 10]]", valid, count=1), True),
         ("polygon-100000-points", re.sub(r"polygon: \[\[[^\n]*\]\]", "polygon: [%s]" % ", ".join("[%d, %d]" % (i % 640, i % 480) for i in range(100000)), valid, count=1), True),
@@ -997,12 +1003,12 @@ def commands(B):
                                                                   ("calibration_result.xml",)),
                                 "procam": (folder_variants(), ())},
                                outputs=("p.json",), options=[("--square-m", BAD_NUMBERS)], valid_fails=None)
-    lab = read(B("labels", "chimso_classroom_whiteboard.yaml"))
+    lab = read(B("labels", LABELLED_FRAME + ".yaml"))
     C["eval-labels"] = Command("eval-labels", ["eval", "--no-progress", "--labelled-only", "--labels", "{labels}",
-                                               "--real-dir", os.path.abspath("../shared/data/real"), "--out", "{out}/e"],
+                                               "--real-dir", os.path.abspath("data"), "--out", "{out}/e"],
                                {"labels": B("labels")},
-                               {"labels/chimso_classroom_whiteboard.yaml": (label_variants(lab) + g(B("labels", "chimso_classroom_whiteboard.yaml")),
-                                                                            ("chimso_classroom_whiteboard",)),
+                               {"labels/%s.yaml" % LABELLED_FRAME: (label_variants(lab) + g(B("labels", LABELLED_FRAME + ".yaml")),
+                                                                    (LABELLED_FRAME,)),
                                 "labels": (folder_variants(), ())})
     C["eval-options"] = Command("eval-options", ["eval", "--no-progress", "--quick", "--out", "{out}/e"], {}, {},
                                 options=[("--rounds", [("0", True), ("-1", True), ("nan", True), ("1000000000", True)]),

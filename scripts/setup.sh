@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs everything projsurf needs on a fresh Debian 12 machine (run as root), then
-# configures and builds it once, in Release, into ./build.
+# configures and builds it once, in Release, into ./build: everything (the tests, benchmarks,
+# the ROS node, Python), or with arguments only those targets (scripts/demo.sh: `projsurf`,
+# the CLI, which is all the demo runs).
+# usage: bash scripts/setup.sh [TARGET...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -14,7 +17,8 @@ PACKAGES=(
 )
 # ROS 1 (Debian's packages) for the node in ros/; see ros/README.md.
 ROS_PACKAGES=(libroscpp-dev libstd-msgs-dev libstd-srvs-dev libsensor-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libtf2-ros-dev librosbag-storage-dev python3-rosmaster python3-roslaunch
-  python3-rostopic)  # `rostopic echo /projsurf/result` and friends (ros/README.md)
+  python3-rostopic   # `rostopic echo /projsurf/result` and friends (ros/README.md)
+  python3-rosservice)  # `rosservice call /projsurf/detect` (README, ros/README.md)
 
 missing=()
 for p in "${PACKAGES[@]}" "${ROS_PACKAGES[@]}"; do
@@ -31,4 +35,8 @@ fi
 # repository on the same machine reuses the objects.
 export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=true
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)"
+if [ $# -gt 0 ]; then
+  cmake --build build -j"$(nproc)" --target "$@"
+else
+  cmake --build build -j"$(nproc)"
+fi

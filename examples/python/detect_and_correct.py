@@ -28,7 +28,10 @@ def wall_and_floor(width=640, height=480, f=525.0):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    # The docstring's first paragraph (whole sentences) as the description, the rest after the options.
+    first, rest = __doc__.split("\n\n", 1)
+    parser = argparse.ArgumentParser(description=first, epilog=rest,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("calib")
     parser.add_argument("framebuffer")
     parser.add_argument("--cloud", help="PCD or PLY file")

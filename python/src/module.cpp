@@ -46,6 +46,30 @@ namespace {
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
+/// depth_to_cloud's depth: an (H, W) uint16 array, one message for every other kind.
+py::array depthArgument(const py::object &depth) {
+    const py::array a = arrayArgument(depth, "depth");
+    if (a.ndim() != 2 || a.dtype().kind() != 'u' || a.itemsize() != 2) {
+        std::string shape;
+        for (py::ssize_t i = 0; i < a.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(a.shape(i));
+        throw InputError("depth", "expected an (H, W) uint16 depth image (depth_scale units per metre, 0 = no "
+                                  "reading), got a (" + shape + (a.ndim() == 1 ? "," : "") + ") " +
+                                      py::str(py::handle(a.dtype())).cast<std::string>() + " array");
+    }
+    return a;
+}
+
+/// A depth given as (W, H), which numpy's (H, W) order makes easy: the principal point lies near
+/// the centre of the transposed image and well off the centre of this one. Why, or "".
+std::string transposedDepthProblem(int rows, int cols, double cx, double cy) {
+    auto off = [](double c, int size) { return std::abs(c - 0.5 * (size - 1)) / size; };
+    const double here = std::max(off(cx, cols), off(cy, rows)), swapped = std::max(off(cx, rows), off(cy, cols));
+    if (rows == cols || !(here > 0.1 && swapped < 0.05)) return "";
+    return "is (" + std::to_string(rows) + ", " + std::to_string(cols) + "): " + std::to_string(cols) + " wide, " +
+           std::to_string(rows) + " high, but cx and cy lie at the centre of a " + std::to_string(rows) + " x " +
+           std::to_string(cols) + " image: transposed? numpy images are (H, W), depth.T undoes it";
+}
+
 /// The contract's projector, from keyword arguments with the example calibration's defaults.
 Projector makeProjector(const py::object &resolution, const py::object &fov_deg, const py::object &origin,
                         const py::object &direction) {
@@ -281,12 +305,13 @@ PYBIND11_MODULE(projsurf, m) {
         [](const py::object &depth, const py::object &fx, const py::object &fy, const py::object &cx,
            const py::object &cy, const py::object &depth_scale) {
             py::object keep;
-            const cv::Mat d = matFromArray(arrayArgument(depth, "depth"), "depth", keep);
-            if (d.type() != CV_16UC1)
-                throw InputError("depth", "expected an (H, W) uint16 depth image (0 = no reading)");
+            const cv::Mat d = matFromArray(depthArgument(depth), "depth", keep);
             const CameraIntrinsics camera = frontend::pinholeCamera(
                 "camera", d.cols, d.rows, numberArgument(fx, "fx"), numberArgument(fy, "fy"), numberArgument(cx, "cx"),
                 numberArgument(cy, "cy"), numberArgument(depth_scale, "depth_scale"));
+            if (const std::string problem = transposedDepthProblem(d.rows, d.cols, camera.cx, camera.cy);
+                !problem.empty())
+                throw InputError("depth", problem);
             return arrayFromCloud(frontend::depthImageToCloud("depth", d, camera));
         },
         "depth"_a, py::kw_only(), "fx"_a, "fy"_a, "cx"_a, "cy"_a, "depth_scale"_a = 1000.0,

@@ -4,6 +4,7 @@ PYTHONPATH and names the CLI in PROJSURF_CLI."""
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 
@@ -247,6 +248,12 @@ def test_the_example_script_runs(tmp_path):
     assert run.returncode == 2
     assert run.stderr.startswith("detect_and_correct: error: " + str(tmp_path / "none.yaml") + ": ")
     assert run.stderr.count("\n") == 1
+    # --help: whole sentences, the usage lines and the notes after the options (issue 40: it ended mid-sentence).
+    run = subprocess.run([sys.executable, script, "--help"], capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr
+    description = run.stdout.split("\n\n")[1]
+    assert description.startswith("projsurf from Python:") and description.rstrip().endswith("framebuffer."), run.stdout
+    assert "--depth depth.png --camera camera.yaml" in run.stdout and "PYTHONPATH=build/python" in run.stdout
 
 
 def test_an_open3d_cloud_is_taken_as_it_is(projector):
@@ -273,8 +280,24 @@ def test_depth_to_cloud_matches_the_depth_png_reader(tmp_path):
     camera.write_text("camera:\n  width: 64\n  height: 48\n  fx: 52.5\n  fy: 52.5\n  cx: 31.5\n  cy: 23.5\n"
                       "  depth_scale: 1000.0\n")
     np.testing.assert_array_equal(projsurf.read_depth_cloud(png, str(camera)), cloud)
-    with pytest.raises(projsurf.InputError, match="^depth: expected an \\(H, W\\) uint16 depth image"):
-        projsurf.depth_to_cloud(depth.astype(np.float32), fx=52.5, fy=52.5, cx=31.5, cy=23.5)
+    # Every other dtype or shape: the one message, naming what was given (issue 40).
+    for wrong, given in ((depth.astype(np.float32), "(48, 64) float32"), (depth.astype(np.float64), "(48, 64) float64"),
+                         (depth.astype(np.uint8), "(48, 64) uint8"), (np.zeros((48, 64, 3), np.uint16), "(48, 64, 3) uint16")):
+        with pytest.raises(projsurf.InputError, match="^depth: expected an \\(H, W\\) uint16 depth image "
+                                                      "\\(depth_scale units per metre, 0 = no reading\\), got a "
+                                                      + re.escape(given) + " array$"):
+            projsurf.depth_to_cloud(wrong, fx=52.5, fy=52.5, cx=31.5, cy=23.5)
+
+
+def test_depth_to_cloud_refuses_a_transposed_depth():
+    # A VGA depth handed over as (640, 480) with a VGA camera's principal point (issue 40).
+    depth = np.full((640, 480), 2000, np.uint16)
+    with pytest.raises(projsurf.InputError, match="^depth: is \\(640, 480\\): 480 wide, 640 high, but cx and cy lie "
+                                                  "at the centre of a 640 x 480 image: transposed\\?"):
+        projsurf.depth_to_cloud(depth, fx=525, fy=525, cx=319.5, cy=239.5)
+    assert projsurf.depth_to_cloud(depth.T, fx=525, fy=525, cx=319.5, cy=239.5).shape == (480, 640, 3)
+    # A principal point off the centre but not at the transposed one is a camera's own.
+    assert projsurf.depth_to_cloud(depth, fx=525, fy=525, cx=300, cy=300).shape == (640, 480, 3)
 
 
 def _colour_frame():

@@ -13,6 +13,7 @@
 #include "projsurf/io/detection_json.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/detector/detector.hpp"
+#include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
@@ -49,7 +50,66 @@ Loop closeLoop(const Projector &believed, const Projector &truth, const sim::Sce
     return l;
 }
 
+/// The closed loop through a realistic sensor (`simulate --sensor`): detect with `believed`,
+/// correct the card, project it with `truth`, capture, find the card, check the landing.
+std::optional<LandingCheck> sensorLoop(sim::SensorKind kind, const Projector &believed, const Projector &truth,
+                                       const sim::Scenario &sc, unsigned seed) {
+    const sim::DepthSensor sensor = sim::makeDepthSensor(kind, 0);
+    const sim::RgbdFrame before = sim::renderSensorFrame(sc.scene, sensor, seed, std::nullopt, false);
+    const Detection det = detectSurface(before.cloud, believed, DetectorConfig{}, sc.gravity);
+    EXPECT_TRUE(det.found) << det.reason;
+    if (!det.found) return std::nullopt;
+    const cv::Mat card = verificationCard(believed.width, believed.height);
+    const auto k = computeKeystone(believed, det.rectangle, card.size());
+    EXPECT_TRUE(k.keystone) << k.problem;
+    if (!k.keystone) return std::nullopt;
+    const cv::Mat framebuffer = warpToFramebuffer(card, *k.keystone);
+    const sim::RgbdFrame seen = sim::renderSensorFrame(sc.scene, sensor, seed + 1, sim::Projection{truth, framebuffer});
+    const FoundPicture f = findProjectedPicture(seen.rgb, seen.depth, sensor.truthModel().camera);
+    EXPECT_TRUE(f.found) << f.reason;
+    const auto lit = litFramebufferCorners(framebuffer);
+    if (!f.found || !lit) return std::nullopt;
+    return checkLanding(believed, *lit, f, det.rectangle.corners);
+}
+
 }  // namespace
+
+// The grid (docs/projector.md): Kinect v1, ToF and D435 at 1, 2 and 3 m, frontal and
+// 30 deg; verify's default tolerance passes the exact calibration and fails one whose axis is 1
+// deg off in yaw, in every case, however far the detection's corners lie from the landing.
+TEST(Verify, DefaultTolerancePassesTheExactCalibrationAndFailsOneDegreeOfYawOnEverySensor) {
+    const Projector truth = sim::exampleProjector();  // `simulate`'s projector
+    Projector wrong = truth;  // its axis turned 1 deg about the camera's vertical
+    wrong.direction = Eigen::AngleAxisd(1.0 * M_PI / 180, Eigen::Vector3d::UnitY()) * truth.direction;
+    double worst_right = 0, least_wrong = HUGE_VAL, worst_detection = 0;
+    for (const sim::SensorKind kind : sim::sensorKinds())
+        for (const double distance : {1.0, 2.0, 3.0})
+            for (const double angle : {0.0, 30.0}) {
+                const sim::Scenario sc = sim::makeScenario("wall", distance, angle);
+                char where_c[80];
+                std::snprintf(where_c, sizeof where_c, "%s at %.0f m, %.0f deg", sim::sensorName(kind).c_str(),
+                              distance, angle);
+                const std::string where = where_c;
+                const auto right = sensorLoop(kind, truth, truth, sc, 11);
+                const auto off = sensorLoop(kind, wrong, truth, sc, 11);
+                ASSERT_TRUE(right && off) << where;
+                // verify's default tolerance, as verify computes it with the calibration it is given
+                const double tolerance = calibrationTolerance(truth, right->expected),
+                             off_tolerance = calibrationTolerance(wrong, off->expected);
+                std::printf("%-30s exact: %.1f mm (detection's corners %.1f mm), 1 deg yaw: %.1f mm; tolerance "
+                            "%.1f mm\n",
+                            where.c_str(), right->max_calibration_error_m * 1000, right->max_detection_error_m * 1000,
+                            off->max_calibration_error_m * 1000, tolerance * 1000);
+                EXPECT_LE(right->max_calibration_error_m, tolerance) << where;
+                EXPECT_GT(off->max_calibration_error_m, off_tolerance) << where;
+                worst_right = std::max(worst_right, right->max_calibration_error_m);
+                least_wrong = std::min(least_wrong, off->max_calibration_error_m);
+                worst_detection = std::max(worst_detection, right->max_detection_error_m);
+            }
+    std::printf("exact calibration: at most %.1f mm; 1 deg yaw: at least %.1f mm; the detection's corners of the exact "
+                "calibration: up to %.1f mm from the landing\n",
+                worst_right * 1000, least_wrong * 1000, worst_detection * 1000);
+}
 
 TEST(Verify, FindsWhereThePictureLandedWithARightAndAWrongCalibration) {
     const Projector truth = sim::projectorRig({1.0, 1.0, 1.005, -0.05});

@@ -183,6 +183,21 @@ TEST(DetectorConfigFile, UnknownKeysAreNamedWithTheKeyMeant) {
     fs::remove_all(dir);
 }
 
+// The settings every front end takes as an option of its own, not from the file (issue 40):
+// the refusal names the option, so `min_width: 0.7` in a file is not a dead end.
+TEST(DetectorConfigFile, MinimumSizeAndGravityAreRefusedNamingTheirOptions) {
+    const fs::path dir = freshDir("config_flags");
+    const std::string file = (dir / "detector.yaml").string();
+    EXPECT_EQ(refusal(dir, "min_width: 0.7\n"),
+              file + ": unknown key 'min_width' (the smallest picture is not a detector setting: give it as detect "
+                     "--min-width, the node's ~min_width or Python's min_width=)");
+    EXPECT_NE(refusal(dir, "min-area: 0.5\n").find("detect --min-area, the node's ~min_area or Python's min_area="),
+              std::string::npos);
+    EXPECT_NE(refusal(dir, "gravity: [0, 1, 0]\n").find("give it as detect or plan --gravity, the node's ~gravity"),
+              std::string::npos);
+    fs::remove_all(dir);
+}
+
 TEST(DetectorConfigFile, ValuesOutOfRangeOrOfTheWrongTypeNameTheKey) {
     const fs::path dir = freshDir("config_values");
     const std::string at = (dir / "detector.yaml").string() + ": key ";

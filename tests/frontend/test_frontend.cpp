@@ -16,6 +16,7 @@
 #include "projsurf/frontend/detection_summary.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/frontend/gravity_choice.hpp"
+#include "projsurf/frontend/gravity_sanity.hpp"
 #include "projsurf/frontend/progress.hpp"
 #include "projsurf/frontend/stamp_pairing.hpp"
 #include "projsurf/frontend/suitability_mode.hpp"
@@ -124,6 +125,46 @@ TEST(FrontendGravity, AutoTakesDownFromTheFloorElseKeepsTheFallback) {
     // A given vector is used as it is, floor or not.
     choice = parseGravityChoice("--gravity", "0,1,0.1");
     EXPECT_EQ(resolveGravity(choice, room).gravity, Eigen::Vector3d(0, 1, 0.1));
+}
+
+// Issue 40: an unorganized cloud whose floor and wall are neither level nor vertical for a
+// level camera (pitched beyond where the floor search looks) is warned about, and so is one
+// whose floor search and largest plane disagree; a lone level wall is not.
+TEST(FrontendGravity, AnUnorganizedCloudWhosePlanesAreObliqueForALevelCameraIsWarnedAbout) {
+    Eigen::Vector3d down;
+    auto unorganized = [](Cloud c) {
+        c.width = static_cast<int>(c.points.size());
+        c.height = 1;
+        return c;
+    };
+    const Cloud pitched = pitchedRoom(40.0, down);
+    EXPECT_FALSE(floorTiltFromLevelDeg(unorganized(pitched)));  // beyond the floor search: no floor warning
+    const std::vector<double> planes = largestPlanesToLevelDeg(unorganized(pitched));
+    ASSERT_EQ(planes.size(), 2u);
+    for (const double a : planes) EXPECT_TRUE(std::abs(a - 40.0) < 2.0 || std::abs(a - 50.0) < 2.0) << a;
+    const auto w = levelCameraWarning("--gravity auto", unorganized(pitched));
+    ASSERT_TRUE(w);
+    EXPECT_EQ(w->rfind("this unorganized cloud does not look like a level camera's view: its 2 largest planes lie ", 0),
+              0u)
+        << *w;
+    EXPECT_NE(w->find("give --gravity auto or the robot's gravity"), std::string::npos) << *w;
+    // The level room, unorganized: its floor shows as a strip before the wall, and the floor
+    // search takes a plane across the strip and the wall's foot (33 deg); the wall, the largest
+    // plane, is vertical: the two disagree, and the warning says so rather than ask for auto.
+    const Cloud level = unorganized(pitchedRoom(0.0, down));
+    const std::vector<double> level_planes = largestPlanesToLevelDeg(level);
+    ASSERT_FALSE(level_planes.empty());
+    EXPECT_NEAR(level_planes.front(), 90.0, 2.0);
+    const auto tilt = floorTiltFromLevelDeg(level);
+    ASSERT_TRUE(tilt && *tilt > kTiltWarningDeg);
+    const auto disagree = levelCameraWarning("--gravity auto", level);
+    ASSERT_TRUE(disagree);
+    EXPECT_NE(disagree->find("deg from horizontal, a wall of a level camera: the two disagree"), std::string::npos)
+        << *disagree;
+    // A level wall alone, unorganized: a wall is vertical, nothing to say.
+    const Cloud wall =
+        depthToCloud(cv::Mat(120, 160, CV_16UC1, cv::Scalar(2000)), pinholeCamera("c", 160, 120, 130, 130, 79.5, 59.5));
+    EXPECT_FALSE(levelCameraWarning("--gravity auto", unorganized(wall)));
 }
 
 TEST(FrontendDepthImage, MillimetresAndMetresGiveTheSameCloud) {

@@ -246,4 +246,26 @@ FoundPicture findProjectedPicture(const cv::Mat &colour, const cv::Mat &depth, c
     return f;
 }
 
+double calibrationTolerance(const Projector &projector, const Corners3 &expected) {
+    double distance = 0;
+    for (const Eigen::Vector3d &c : expected) distance += 0.25 * (c - projector.origin).norm();
+    return std::max(kCalibrationToleranceM, std::tan(kCalibrationToleranceDeg * M_PI / 180.0) * distance);
+}
+
+std::optional<LandingCheck> checkLanding(const Projector &projector, const Corners2 &lit_px, const FoundPicture &found,
+                                         const Corners3 &meant) {
+    LandingCheck c;
+    for (int i = 0; i < 4; ++i) {
+        const auto hit = castToWall(projector, lit_px[i], found.plane);
+        if (!hit) return std::nullopt;
+        c.expected[i] = *hit;
+        c.calibration_error_m[i] = (found.corners[i] - c.expected[i]).norm();
+        c.detection_error_m[i] = (found.corners[i] - meant[i]).norm();
+        c.max_calibration_error_m = std::max(c.max_calibration_error_m, c.calibration_error_m[i]);
+        c.max_detection_error_m = std::max(c.max_detection_error_m, c.detection_error_m[i]);
+        c.detection_off_m = std::max(c.detection_off_m, std::abs(found.plane.signedDistance(meant[i])));
+    }
+    return c;
+}
+
 }  // namespace projsurf

@@ -1,12 +1,29 @@
 #include "projsurf/frontend/detector_config_file.hpp"
 
 #include "projsurf/frontend/detector_config_keys.hpp"
+#include "projsurf/frontend/method_settings.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/utf8_text.hpp"
 #include "projsurf/io/yaml_settings.hpp"
 
 namespace projsurf::frontend {
 namespace {
+
+/// Settings every front end takes, but as an option of its own and not from the file: the
+/// smallest picture (applied to what the detector returns, frontend/minimum_size.hpp) and the
+/// gravity (an input per frame). How each front end spells them; "" for another key.
+std::string flagNotKey(std::string key) {
+    if (key.rfind("--", 0) == 0) key = key.substr(2);
+    for (char &c : key)
+        if (c == '-') c = '_';
+    if (key == "min_width" || key == "min_area")
+        return "the smallest picture is not a detector setting: give it as detect " + optionName(key) + ", the node's ~" +
+               key + " or Python's " + key + "=";
+    if (key == "gravity")
+        return "gravity goes with the frames, not in this file: give it as detect or plan --gravity, the node's "
+               "~gravity (or ~gravity_frame) or Python's gravity=";
+    return "";
+}
 
 /// Why `key` is not a setting, with what was meant when that can be told.
 std::string unknownKeyProblem(const std::string &key) {
@@ -21,6 +38,7 @@ std::string unknownKeyProblem(const std::string &key) {
     const std::string first = key.substr(0, key.find('.'));
     if (first == "projector" || first == "camera" || first == "image_width")
         return problem + " (a calibration or camera file, not a detector configuration?)";
+    if (const std::string flag = flagNotKey(key); !flag.empty()) return problem + " (" + flag + ")";
     const std::string near = nearestConfigKey(key);
     if (!near.empty()) problem += " (did you mean '" + near + "'?)";
     return problem;

@@ -91,16 +91,25 @@ void wrapLine(const std::string &text, int cols, std::vector<std::string> &lines
     if (!line.empty()) lines.push_back(line);
 }
 
-/// --explain: each candidate's seen extent outlined (the losers) and numbered at its centre,
-/// its outcome in words as status lines.
+/// --explain: each candidate's seen extent outlined (the losers), clipped to the picture, and
+/// numbered at the centre of what is in view; its outcome in words as status lines.
 void drawCandidates(cv::Mat &img, const View &view, const Detection &det, std::vector<std::string> &lines) {
     const Rectangle winner = winningRectangle(det.candidates, det.rectangle);
     for (std::size_t k = 0; k < det.candidates.size(); ++k) {
         const CandidateOutcome &o = det.candidates[k];
         const bool chosen = o.verdict == CandidateVerdict::Chosen;
         const std::string tag = "#" + std::to_string(k + 1);
-        if (!chosen) polyline(img, view, {o.seen.begin(), o.seen.end()}, true, kCandidate, 2);
-        const cv::Point2f at = view(0.25 * (o.seen[0] + o.seen[1] + o.seen[2] + o.seen[3]));  // its centre
+        const std::vector<cv::Point2f> outline = outlineInView(o.seen, view.cam, view.scale, img.size());
+        if (!chosen && outline.size() > 2) {
+            std::vector<cv::Point> px;
+            for (const cv::Point2f &q : outline) px.emplace_back(cvRound(q.x * 16), cvRound(q.y * 16));
+            cv::polylines(img, std::vector<std::vector<cv::Point>>{px}, true, kCandidate, 2, cv::LINE_AA, 4);
+        }
+        cv::Point2f at = view(0.25 * (o.seen[0] + o.seen[1] + o.seen[2] + o.seen[3]));  // its centre
+        if (outline.size() > 2) {  // the centre of what is in view
+            const cv::Moments m = cv::moments(outline);
+            if (m.m00 > 1.0) at = cv::Point2f(static_cast<float>(m.m10 / m.m00), static_cast<float>(m.m01 / m.m00));
+        }
         const cv::Point label(std::clamp(cvRound(at.x) - 12, 4, std::max(4, img.cols - 40)),
                               std::clamp(cvRound(at.y) + 10, 24, std::max(24, img.rows - 6)));
         cv::putText(img, tag, label, cv::FONT_HERSHEY_SIMPLEX, 0.8, chosen ? kRect : kCandidate, 2, cv::LINE_AA);
@@ -109,12 +118,17 @@ void drawCandidates(cv::Mat &img, const View &view, const Detection &det, std::v
     }
 }
 
-/// Appends a panel below the picture: status lines, then the colour key in two columns.
+/// Appends a panel below the picture: status lines, then the colour key in two columns (one
+/// when they do not fit side by side).
 cv::Mat withLegend(const cv::Mat &img, const std::vector<std::pair<cv::Scalar, std::string>> &items,
                    const std::vector<std::string> &lines) {
     const double fs = legendScale(img.cols);
     const int lh = static_cast<int>(std::round(26 * fs / 0.5));
-    const int key_rows = static_cast<int>((items.size() + 1) / 2);
+    std::vector<std::string> entries;
+    for (const auto &item : items) entries.push_back(item.second);
+    const int second = legendSecondColumn(entries, img.cols);
+    const int columns = second > 0 ? 2 : 1;
+    const int key_rows = static_cast<int>((items.size() + columns - 1) / columns);
     cv::Mat out(img.rows + lh * static_cast<int>(lines.size() + key_rows) + lh / 2, img.cols, CV_8UC3,
                 cv::Scalar(32, 32, 32));
     img.copyTo(out(cv::Rect(0, 0, img.cols, img.rows)));
@@ -124,8 +138,8 @@ cv::Mat withLegend(const cv::Mat &img, const std::vector<std::pair<cv::Scalar, s
         y += lh;
     }
     for (std::size_t i = 0; i < items.size(); ++i) {
-        const int x = 10 + static_cast<int>(i % 2) * (img.cols / 2);
-        const int yy = y + static_cast<int>(i / 2) * lh;
+        const int x = i % columns == 0 ? 10 : second;
+        const int yy = y + static_cast<int>(i / columns) * lh;
         cv::rectangle(out, cv::Rect(x, yy - lh + lh / 4, lh / 2, lh / 2), items[i].first, cv::FILLED);
         cv::putText(out, items[i].second, {x + lh, yy - lh / 4}, cv::FONT_HERSHEY_SIMPLEX, fs, kText, 1, cv::LINE_AA);
     }
@@ -133,6 +147,47 @@ cv::Mat withLegend(const cv::Mat &img, const std::vector<std::pair<cv::Scalar, s
 }
 
 }  // namespace
+
+std::vector<cv::Point2f> outlineInView(const std::array<Eigen::Vector3d, 4> &box, const CameraIntrinsics &camera,
+                                       double scale, cv::Size size) {
+    // The box before the camera: cut where it crosses z = 5 cm (a corner behind the camera
+    // would be cast across the whole picture).
+    constexpr double kNear = 0.05;
+    std::vector<Eigen::Vector3d> front;
+    for (std::size_t i = 0; i < box.size(); ++i) {
+        const Eigen::Vector3d &a = box[i], &b = box[(i + 1) % box.size()];
+        if (!a.allFinite() || !b.allFinite()) return {};
+        if (a.z() >= kNear) front.push_back(a);
+        if ((a.z() >= kNear) != (b.z() >= kNear)) front.push_back(a + (kNear - a.z()) / (b.z() - a.z()) * (b - a));
+    }
+    if (front.size() < 3 || size.width < 2 || size.height < 2) return {};
+    View view;
+    view.cam = camera;
+    view.scale = scale;
+    std::vector<cv::Point2f> px, out;
+    for (const Eigen::Vector3d &p : front) px.push_back(view(p));
+    // A plane's convex box seen from in front of it stays convex; the picture is convex.
+    const std::vector<cv::Point2f> picture{{0.f, 0.f},
+                                           {static_cast<float>(size.width - 1), 0.f},
+                                           {static_cast<float>(size.width - 1), static_cast<float>(size.height - 1)},
+                                           {0.f, static_cast<float>(size.height - 1)}};
+    if (std::abs(cv::contourArea(px)) < 1e-6) return {};
+    cv::intersectConvexConvex(px, picture, out, true);
+    return out;
+}
+
+int legendSecondColumn(const std::vector<std::string> &entries, int cols) {
+    const double fs = legendScale(cols);
+    const int lh = static_cast<int>(std::round(26 * fs / 0.5));
+    int left = 0, right = 0;  // the widest entry of each column, with its swatch
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        int base = 0;
+        const int width = lh + cv::getTextSize(entries[i], cv::FONT_HERSHEY_SIMPLEX, fs, 1, &base).width;
+        (i % 2 == 0 ? left : right) = std::max(i % 2 == 0 ? left : right, width);
+    }
+    const int x = std::max(cols / 2, 10 + left + lh);  // a swatch's width of space between the columns
+    return entries.size() > 1 && x + right + 10 <= cols ? x : 0;
+}
 
 CameraIntrinsics estimateIntrinsics(const Cloud &cloud) {
     CameraIntrinsics cam;
