@@ -63,8 +63,9 @@ private:
 #endif
 };
 
-ReferencePose referencePose(const ProcamPose &pose, int width, int height, const PublishedMethodConfig &cfg) {
-    const std::vector<cv::Mat> captures = readProcamPose(pose);
+ReferencePose referencePose(const ProcamPose &pose, int width, int height, int camera_width, int camera_height,
+                            const PublishedMethodConfig &cfg) {
+    const std::vector<cv::Mat> captures = readProcamPose(pose, camera_width, camera_height);
     const cv::Mat &white = captures[captures.size() - 2], &black = captures.back();
     std::vector<cv::Point2f> corners;
     if (!cv::findChessboardCorners(white, cfg.board, corners))
@@ -158,7 +159,7 @@ PublishedMethodRun runPublishedMethodOrThrow(const ProcamFolder &folder, const P
     std::vector<ReferencePose> poses;
     cv::Size camera;
     for (const auto &pose : folder.poses) {
-        poses.push_back(referencePose(pose, folder.width, folder.height, cfg));
+        poses.push_back(referencePose(pose, folder.width, folder.height, folder.camera_width, folder.camera_height, cfg));
         run.carried.push_back(static_cast<int>(poses.back().carried.board.size()));
         if (camera.area() == 0) camera = poses.back().camera;
     }
