@@ -121,6 +121,17 @@ void readGravity(const Reader &r, const YAML::Node &node, const std::string &key
     vector.normalize();
 }
 
+/// The optional key's text, which must be one of `allowed`; "" when the key is absent.
+std::string oneOf(const Reader &r, const YAML::Node &root, const std::string &key,
+                  const std::vector<std::string> &allowed) {
+    if (!root[key]) return "";
+    const std::string value = r.text(root[key], key);
+    if (std::find(allowed.begin(), allowed.end(), value) != allowed.end()) return value;
+    std::string names;
+    for (const std::string &a : allowed) names += (names.empty() ? "" : ", ") + a;
+    r.fail("'" + key + "' must be one of " + names + " (got '" + value + "')");
+}
+
 }  // namespace
 
 const std::vector<std::string> &unsuitableReasons() {
@@ -149,19 +160,9 @@ RealLabel readRealLabel(const std::string &path) {
     if (l.frame.find('/') != std::string::npos || l.frame == "." || l.frame == "..")
         r.fail("'frame' must be the name of one folder of the real frames, not a path");
     if (root["note"]) l.note = r.text(root["note"], "note");
-    if (root["split"]) {
-        l.split = r.text(root["split"], "split");
-        const auto &sides = splitSides();
-        if (std::find(sides.begin(), sides.end(), l.split) == sides.end())
-            r.fail("'split' must be tune or check (got '" + l.split + "')");
-    }
+    l.split = oneOf(r, root, "split", splitSides());
     if (root["scene"]) l.scene = r.text(root["scene"], "scene");
-    if (root["sensor"]) {
-        l.sensor = r.text(root["sensor"], "sensor");
-        const auto &families = sensorFamilies();
-        if (std::find(families.begin(), families.end(), l.sensor) == families.end())
-            r.fail("'sensor' must be structured_light, time_of_flight or stereo (got '" + l.sensor + "')");
-    }
+    l.sensor = oneOf(r, root, "sensor", sensorFamilies());
 
     const YAML::Node g = r.need(root, "gravity", "");
     readGravity(r, g, "gravity", {"auto", "stated"}, l.gravity_source, l.gravity);
