@@ -54,9 +54,10 @@ for name in pcd ply depth_png camera_yaml calib_yaml detection_json procam_xml b
   # with a second CI run beside it). The budget ends a slow run; -runs ends a normal one.
   [ "$name" = structured ] && need=$(( runs / 5 )) && limit=$(( seconds * 3 ))
   [ "$name" = plan ] && need=$(( runs / 10 )) && limit=$(( seconds * 3 ))
-  # settings runs a detection per accepted file; chessboard decodes three poses and fits.
+  # settings runs a detection per accepted file; chessboard decodes three poses and fits (500 of
+  # them took 94 s on this 2-core machine: 400 within 180 s leaves CI a margin).
   [ "$name" = settings ] && need=$(( runs / 5 )) && limit=$(( seconds * 2 ))
-  [ "$name" = chessboard ] && need=$(( runs / 20 )) && limit=$(( seconds * 2 ))
+  [ "$name" = chessboard ] && need=$(( runs / 25 )) && limit=$(( seconds * 3 ))
   log="$work/$name.log"
   t0=$(date +%s)
   status=0
