@@ -201,10 +201,8 @@ void requireImageWriter(const std::string &path) {
 
 namespace {
 
-/// readImage's work; `width` > 0: the header must give exactly width x height (else the
-/// mismatch is named, with `whose` size it should have been).
-cv::Mat decodeImageFile(const std::string &path, int flags, std::uint64_t max_pixels, int width, int height,
-                        const std::string &whose) {
+/// The size of an image file in bytes; InputError when it cannot be read or exceeds the limit.
+std::uintmax_t imageFileBytes(const std::string &path) {
     requireReadable(path);
     std::error_code ec;
     const auto size = fs::file_size(path, ec);
@@ -212,6 +210,14 @@ cv::Mat decodeImageFile(const std::string &path, int flags, std::uint64_t max_pi
     if (size > limits::kMaxImageFileBytes)
         throw InputError(path, "image file of " + std::to_string(size) + " bytes exceeds the limit of " +
                                    std::to_string(limits::kMaxImageFileBytes) + " bytes");
+    return size;
+}
+
+/// readImage's work; `width` > 0: the header must give exactly width x height (else the
+/// mismatch is named, with `whose` size it should have been).
+cv::Mat decodeImageFile(const std::string &path, int flags, std::uint64_t max_pixels, int width, int height,
+                        const std::string &whose) {
+    const std::uintmax_t size = imageFileBytes(path);
     std::string bytes(static_cast<std::size_t>(size), '\0');
     {
         std::ifstream in(path, std::ios::binary);
@@ -250,13 +256,7 @@ cv::Mat decodeImageFile(const std::string &path, int flags, std::uint64_t max_pi
 }  // namespace
 
 std::pair<std::uint64_t, std::uint64_t> imageFileSize(const std::string &path) {
-    requireReadable(path);
-    std::error_code ec;
-    const auto size = fs::file_size(path, ec);
-    if (ec) throw InputError(path, "cannot read the file");
-    if (size > limits::kMaxImageFileBytes)
-        throw InputError(path, "image file of " + std::to_string(size) + " bytes exceeds the limit of " +
-                                   std::to_string(limits::kMaxImageFileBytes) + " bytes");
+    const std::uintmax_t size = imageFileBytes(path);
     // The header is in the first bytes (a JPEG's frame header after its metadata segments:
     // the whole file when the first MiB does not hold it).
     ImageHeader header;
