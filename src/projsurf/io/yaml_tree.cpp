@@ -8,6 +8,7 @@
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/limits.hpp"
 #include "projsurf/io/utf8_text.hpp"
+#include "projsurf/io/yaml_stray_comma.hpp"
 
 namespace projsurf {
 namespace {
@@ -59,6 +60,9 @@ struct TreeCheck {
 }  // namespace
 
 YAML::Node loadCheckedYaml(const std::string &path, const std::string &text) {
+    if (!isUtf8(text)) throw InputError(path, "is not UTF-8 text, as YAML must be");
+    if (const int line = strayCommaLine(text))
+        throw InputError(path, "malformed YAML: a ',' outside [ ] or { } begins a value (line " + std::to_string(line) + ")");
     std::vector<YAML::Node> docs;
     try {
         docs = YAML::LoadAll(text);
