@@ -17,12 +17,11 @@ namespace projsurf {
 constexpr std::uint64_t kMaxYamlNodesVisited = 100000;
 
 /// Parses `text`, read from `path`. InputError naming the file (and the key, escaped) on:
-/// bytes that are not UTF-8 or a stray ',' (strayCommaLine) (yaml-cpp 0.7 may never return
-/// on either),
-/// malformed YAML, more than one document (`---`), nesting deeper than limits::kMaxNesting
-/// levels with aliases followed, an alias of a mapping or list that holds it (a cycle), more
-/// than kMaxYamlNodesVisited nodes, a key given twice in one mapping. An empty file (or
-/// comments only) is a null node.
+/// malformed YAML, more than one document (a `---`, or a stray ','
+/// ']' or '}' that yaml-cpp reads as the start of another), nesting deeper than
+/// limits::kMaxNesting levels with aliases followed, an alias of a mapping or list that holds
+/// it (a cycle), more than kMaxYamlNodesVisited nodes, a key given twice in one mapping. An
+/// empty file (or comments only) is a null node.
 YAML::Node loadCheckedYaml(const std::string &path, const std::string &text);
 
 }  // namespace projsurf
