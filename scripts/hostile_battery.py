@@ -1167,6 +1167,8 @@ def main():
                     help="peak memory a case may take (default 2048; ASan's shadow memory needs more)")
     ap.add_argument("--every", type=int, default=1,
                     help="run every Nth case of each input (its valid run always), for slow builds")
+    ap.add_argument("--offset", type=int, default=0,
+                    help="with --every N: start at this case (0..N-1), so two runs can take different cases")
     a = ap.parse_args()
     cli = os.path.abspath(a.cli)
     RSS_LIMIT_KIB[0] = a.rss_limit_mib * 1024
@@ -1184,7 +1186,7 @@ def main():
     if a.only:
         cases = [c for c in cases if re.search(a.only, c.name)]
     if a.every > 1:
-        cases = [c for i, c in enumerate(cases) if i % a.every == 0 or c.name.endswith(": valid")]
+        cases = [c for i, c in enumerate(cases) if i % a.every == a.offset % a.every or c.name.endswith(": valid")]
     if a.list:
         print("\n".join(c.name for c in cases))
         return 0
