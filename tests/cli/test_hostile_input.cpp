@@ -22,6 +22,7 @@
 
 #include "bag_writer.hpp"
 #include "cli_run.hpp"
+#include "hostile_fixture.hpp"
 #include "projsurf/calibration/gray_code.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
@@ -36,64 +37,8 @@ using namespace projsurf::test;
 
 namespace {
 
-void writeBytes(const fs::path &path, const std::string &bytes) { std::ofstream(path, std::ios::binary) << bytes; }
-
-int tmpLeftovers(const fs::path &dir) {
-    int n = 0;
-    for (const auto &e : fs::recursive_directory_iterator(dir))
-        if (e.path().filename().string().find(".tmp") != std::string::npos) ++n;
-    return n;
-}
-
 /// A simulated frame (cloud, depth, camera, calibration, captures) shared by the cases.
-class Hostile : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() {
-        sim_ = fs::temp_directory_path() / ("projsurf_hostile_sim_" + std::to_string(::getpid()));
-        fs::remove_all(sim_);
-        const std::string cmd = std::string(PROJSURF_CLI) + " simulate --scenario wall --captures 3 --out " +
-                                sim_.string() + " >/dev/null 2>&1";
-        ASSERT_EQ(std::system(cmd.c_str()), 0);
-    }
-    static void TearDownTestSuite() { fs::remove_all(sim_); }
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("projsurf_hostile_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                "_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override {
-        // Every child so far stayed under the memory target (ru_maxrss: KiB, the largest child).
-        rusage ru{};
-        getrusage(RUSAGE_CHILDREN, &ru);
-        EXPECT_LT(ru.ru_maxrss, 2L * 1024 * 1024) << "a projsurf run took more than 2 GiB";
-        if (!HasFailure()) fs::remove_all(dir_);
-    }
-    std::string sim(const char *name) const { return (sim_ / name).string(); }
-    std::string at(const std::string &name) const { return (dir_ / name).string(); }
-
-    /// Exit 2, one stderr line naming `file` (and saying `problem`), none of `outputs`
-    /// written, no temporary left.
-    void refused(const std::string &args, const std::string &file, const std::string &problem,
-                 const std::vector<std::string> &outputs = {}) {
-        const CliRun r = cli(args, dir_);
-        EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
-        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one stderr line expected:\n" << r.err;
-        EXPECT_EQ(r.err.rfind("projsurf: error: ", 0), 0u) << r.err;
-        EXPECT_NE(r.err.find(file), std::string::npos) << "should name " << file << ": " << r.err;
-        EXPECT_NE(r.err.find(problem), std::string::npos) << "should say '" << problem << "': " << r.err;
-        for (const auto &o : outputs) EXPECT_FALSE(fs::exists(o)) << o << " was written";
-        EXPECT_EQ(tmpLeftovers(dir_), 0);
-    }
-    std::string detectArgs(const std::string &cloud) const {
-        return "detect --calib " + sim("calib.yaml") + " --cloud " + cloud;
-    }
-
-    static fs::path sim_;
-    fs::path dir_;
-};
-fs::path Hostile::sim_;
+class Hostile : public HostileCli {};
 
 std::string pngHeader(std::uint32_t w, std::uint32_t h) {
     // Signature and IHDR only: the size is read from the header and refused before decoding.

@@ -21,6 +21,7 @@
 
 #include "bag_writer.hpp"
 #include "cli_run.hpp"
+#include "hostile_fixture.hpp"
 #include "projsurf/calibration/chessboard_corners.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/limits.hpp"
@@ -36,8 +37,6 @@ using namespace projsurf::test;
 
 namespace {
 
-void writeBytes(const fs::path &path, const std::string &bytes) { std::ofstream(path, std::ios::binary) << bytes; }
-
 int lines(const std::string &s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
 
 /// The message of the InputError `f` throws ("" when it throws none).
@@ -51,49 +50,7 @@ std::string inputError(F &&f) {
     return "";
 }
 
-class Hostile3 : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() {
-        sim_ = fs::temp_directory_path() / ("projsurf_hostile3_sim_" + std::to_string(::getpid()));
-        fs::remove_all(sim_);
-        const std::string cmd =
-            std::string(PROJSURF_CLI) + " simulate --scenario wall --out " + sim_.string() + " >/dev/null 2>&1";
-        ASSERT_EQ(std::system(cmd.c_str()), 0);
-    }
-    static void TearDownTestSuite() { fs::remove_all(sim_); }
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("projsurf_hostile3_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                "_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override {
-        rusage ru{};
-        getrusage(RUSAGE_CHILDREN, &ru);
-        EXPECT_LT(ru.ru_maxrss, 2L * 1024 * 1024) << "a projsurf run took more than 2 GiB";
-        if (!HasFailure()) fs::remove_all(dir_);
-    }
-    std::string sim(const char *name) const { return (sim_ / name).string(); }
-    std::string at(const std::string &name) const { return (dir_ / name).string(); }
-
-    /// Exit 2, one stderr line naming `file` and saying `problem`, none of `outputs` written.
-    void refused(const std::string &args, const std::string &file, const std::string &problem,
-                 const std::vector<std::string> &outputs = {}) {
-        const CliRun r = cli(args, dir_);
-        EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
-        EXPECT_EQ(lines(r.err), 1) << "one stderr line expected:\n" << r.err;
-        EXPECT_EQ(r.err.rfind("projsurf: error: ", 0), 0u) << r.err;
-        EXPECT_NE(r.err.find(file), std::string::npos) << "should name " << file << ": " << r.err;
-        EXPECT_NE(r.err.find(problem), std::string::npos) << "should say '" << problem << "': " << r.err;
-        for (const auto &o : outputs) EXPECT_FALSE(fs::exists(o)) << o << " was written";
-    }
-    std::string detectArgs() const { return "detect --calib " + sim("calib.yaml") + " --cloud " + sim("cloud.pcd"); }
-
-    static fs::path sim_;
-    fs::path dir_;
-};
-fs::path Hostile3::sim_;
+class Hostile3 : public HostileCli {};
 
 }  // namespace
 
