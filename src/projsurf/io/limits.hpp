@@ -24,6 +24,8 @@ constexpr std::uint64_t kMaxImageFileBytes = std::uint64_t{256} << 20;
 /// Projector framebuffer (calibration resolution): each side 2..16384 px, at most 2^25 px.
 constexpr int kMaxFramebufferSide = 16384;
 constexpr std::uint64_t kMaxFramebufferPixels = std::uint64_t{1} << 25;
+/// Camera intrinsics: each side of the image 1..16384 px (the pixel count is kMaxImagePixels').
+constexpr int kMaxCameraSide = 16384;
 /// Frames of one image sequence or video: 100000 (over an hour at 25 fps).
 constexpr std::uint64_t kMaxSequenceFrames = 100000;
 /// Messages of one bag topic: 100000; bytes of one bag record (a message or an

@@ -159,15 +159,17 @@ Projector calibrationFromYaml(const std::string &path, const YAML::Node &root, s
     const double side = limits::kMaxFramebufferSide;
     if (res[0] < 2 || res[1] < 2 || res[0] > side || res[1] > side || res[0] != std::floor(res[0]) ||
         res[1] != std::floor(res[1]))
-        throw InputError(path, "projector.resolution must be two whole numbers between 2 and 16384");
+        throw InputError(path, "projector.resolution must be two whole numbers between 2 and " +
+                                   std::to_string(limits::kMaxFramebufferSide));
     if (res[0] * res[1] > static_cast<double>(limits::kMaxFramebufferPixels))
         throw InputError(path, "projector.resolution " + std::to_string(static_cast<int>(res[0])) + " x " +
                                    std::to_string(static_cast<int>(res[1])) + " exceeds the limit of " +
                                    std::to_string(limits::kMaxFramebufferPixels) + " framebuffer pixels");
     proj.width = static_cast<int>(res[0]);
     proj.height = static_cast<int>(res[1]);
-    if (!(fov[0] > 0 && fov[0] < 170 && fov[1] > 0 && fov[1] < 170))
-        throw InputError(path, "projector.fov_deg must be two angles between 0 and 170 degrees");
+    if (!(fov[0] > 0 && fov[0] < kMaxLensFovDeg && fov[1] > 0 && fov[1] < kMaxLensFovDeg))
+        throw InputError(path, "projector.fov_deg must be two angles between 0 and " +
+                                   std::to_string(static_cast<int>(kMaxLensFovDeg)) + " degrees");
     // Likely mistakes that are still numbers: radians for degrees, millimetres for metres.
     if (fov[0] < 3.2 && fov[1] < 3.2)
         throw InputError(path, "projector.fov_deg [" + std::to_string(fov[0]) + ", " + std::to_string(fov[1]) +
@@ -306,7 +308,7 @@ CameraIntrinsics rosCameraInfo(const std::string &path, const YAML::Node &root) 
     CameraIntrinsics cam;
     const double w = number(path, child(path, root, "image_width", ""), "image_width");
     const double h = number(path, child(path, root, "image_height", ""), "image_height");
-    if (w < 1 || h < 1 || w > 16384 || h > 16384 || w != std::floor(w) || h != std::floor(h))
+    if (w < 1 || h < 1 || w > limits::kMaxCameraSide || h > limits::kMaxCameraSide || w != std::floor(w) || h != std::floor(h))
         throw InputError(path, "image_width and image_height must be positive whole numbers");
     cam.width = static_cast<int>(w);
     cam.height = static_cast<int>(h);
@@ -350,7 +352,7 @@ CameraIntrinsics readCamera(const std::string &path, std::vector<std::string> *w
         const YAML::Node c = child(path, root, "camera", "");
         const double w = number(path, child(path, c, "width", "camera."), "camera.width");
         const double h = number(path, child(path, c, "height", "camera."), "camera.height");
-        if (w < 1 || h < 1 || w > 16384 || h > 16384 || w != std::floor(w) || h != std::floor(h))
+        if (w < 1 || h < 1 || w > limits::kMaxCameraSide || h > limits::kMaxCameraSide || w != std::floor(w) || h != std::floor(h))
             throw InputError(path, "camera.width and camera.height must be positive whole numbers");
         cam.width = static_cast<int>(w);
         cam.height = static_cast<int>(h);
