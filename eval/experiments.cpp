@@ -265,6 +265,108 @@ EvalPlan paperEvalPlan(int rounds, bool quick, unsigned seed) {
     return plan;
 }
 
+namespace {
+
+/// The run's progress: one step per calibration and per round of a pose.
+struct EvalTicker {
+    const Progress &progress;
+    int total = 0;
+    int done = 0;
+    void tick(const std::string &what) {
+        ++done;
+        if (progress) progress(done, total, what);
+    }
+};
+
+/// Table 3 uses a projector calibrated from simulated captures, one calibration per round.
+std::vector<CalibrationRun> roundCalibrations(const EvalPlan &plan, const Projector &projector,
+                                              const SensorModel &sensor, EvalTicker &ticker) {
+    std::vector<CalibrationRun> calibrations;
+    for (int r = 0; r < plan.rounds; ++r) {
+        calibrations.push_back(calibrateFromSimulation(projector, sensor, plan.calibration_captures,
+                                                       plan.seed + 500000u + 17u * static_cast<unsigned>(r)));
+        ticker.tick("calibration " + std::to_string(r + 1) + "/" + std::to_string(plan.rounds));
+    }
+    return calibrations;
+}
+
+/// One round of Tables 1-2 and Fig 15: the detection with the true projector, scored against
+/// the ground truth.
+Trial detectionTrial(const Cloud &cloud, const PoseJob &job, const Scenario &sc, const GroundTruth &truth,
+                     const Projector &projector, const std::string &method, const DetectorConfig &cfg, int round) {
+    const Detection det = detectSurface(cloud, projector, cfg, sc.gravity);
+    Trial t = scoreTrial(det, truth, projector, sc.gravity, projector.aspect());
+    t.scenario = job.scenario;
+    t.distance = job.distance;
+    t.angle_deg = job.angle_deg;
+    t.round = round;
+    t.seed = cfg.seed;
+    t.method = method;
+    return t;
+}
+
+/// One round of Table 3: the detection with the round's calibrated projector, and eq. 8 of
+/// the corrected picture cast through the true one.
+KeystoneTrial keystoneTrial(const Cloud &cloud, const PoseJob &job, const Scenario &sc, const Projector &projector,
+                            const CalibrationRun &cal, const std::string &method, const DetectorConfig &cfg, int round,
+                            double tolerance_px) {
+    KeystoneTrial k;
+    k.distance = job.distance;
+    k.angle_deg = job.angle_deg;
+    k.round = round;
+    k.method = method;
+    k.axis_error_deg = cal.axis_error_deg;
+    if (!cal.ok) {
+        k.problem = "calibration failed: " + cal.message;
+        return k;
+    }
+    const Detection det = detectSurface(cloud, cal.projector, cfg, sc.gravity);
+    k.found = det.found;
+    if (!det.found) {
+        k.problem = "not found: " + det.reason;
+        return k;
+    }
+    const WallPicture w = pictureOnWall(cal.projector, projector, sc.scene, det.rectangle,
+                                        cv::Size(projector.width, projector.height), tolerance_px);
+    k.shown = w.ok;
+    k.overshoot_px = w.overshoot_px;
+    k.problem = w.problem;
+    k.errors = w.errors;
+    return k;
+}
+
+/// Every round of the plan's j-th pose, each method on the same noisy frame.
+void runPoseJob(const EvalPlan &plan, std::size_t j, const SensorModel &sensor, const Projector &projector,
+                EvalResults &res, EvalTicker &ticker) {
+    const PoseJob &job = plan.jobs[j];
+    const Scenario sc = makeScenario(job.scenario, job.distance, job.angle_deg);
+    const std::string pose =
+        (job.keystone ? "table 3: " : "") + describePose(job.scenario, job.distance, job.angle_deg);
+    GroundTruth truth;
+    if (!job.keystone) {
+        TruthOptions topt;
+        topt.cell = plan.truth_cell;
+        topt.aspect = projector.aspect();
+        truth = computeGroundTruth(sc.scene, sensor, projector, sc.gravity, topt);
+    }
+    for (int r = 0; r < plan.rounds; ++r) {
+        const unsigned seed = plan.seed + 1000u * static_cast<unsigned>(j) + static_cast<unsigned>(r);
+        const RgbdFrame frame = renderFrame(sc.scene, sensor, seed);
+        for (const MethodVariant &v : job.variants) {
+            DetectorConfig cfg = v.config;
+            cfg.seed = seed;
+            if (!job.keystone)
+                res.trials.push_back(detectionTrial(frame.cloud, job, sc, truth, projector, v.name, cfg, r));
+            else
+                res.keystone.push_back(keystoneTrial(frame.cloud, job, sc, projector, res.calibrations[r], v.name, cfg,
+                                                     r, plan.keystone_tolerance_px));
+        }
+        ticker.tick(pose);
+    }
+}
+
+}  // namespace
+
 EvalResults runEval(const EvalPlan &plan, const Progress &progress) {
     const auto t0 = Clock::now();
     EvalResults res;
@@ -273,82 +375,10 @@ EvalResults runEval(const EvalPlan &plan, const Progress &progress) {
     const Projector projector = exampleProjector();
     const bool any_keystone =
         std::any_of(plan.jobs.begin(), plan.jobs.end(), [](const PoseJob &j) { return j.keystone; });
-    const int total = static_cast<int>(plan.jobs.size()) * plan.rounds + (any_keystone ? plan.rounds : 0);
-    int done = 0;
-    auto tick = [&](const std::string &what) {
-        ++done;
-        if (progress) progress(done, total, what);
-    };
-    if (progress) progress(0, total, "starting");
-
-    // Table 3 uses a projector calibrated from simulated captures, one calibration per round.
-    if (any_keystone)
-        for (int r = 0; r < plan.rounds; ++r) {
-            res.calibrations.push_back(calibrateFromSimulation(projector, sensor, plan.calibration_captures,
-                                                               plan.seed + 500000u + 17u * static_cast<unsigned>(r)));
-            tick("calibration " + std::to_string(r + 1) + "/" + std::to_string(plan.rounds));
-        }
-
-    for (std::size_t j = 0; j < plan.jobs.size(); ++j) {
-        const PoseJob &job = plan.jobs[j];
-        const Scenario sc = makeScenario(job.scenario, job.distance, job.angle_deg);
-        const std::string pose =
-            (job.keystone ? "table 3: " : "") + describePose(job.scenario, job.distance, job.angle_deg);
-        GroundTruth truth;
-        if (!job.keystone) {
-            TruthOptions topt;
-            topt.cell = plan.truth_cell;
-            topt.aspect = projector.aspect();
-            truth = computeGroundTruth(sc.scene, sensor, projector, sc.gravity, topt);
-        }
-        for (int r = 0; r < plan.rounds; ++r) {
-            const unsigned seed = plan.seed + 1000u * static_cast<unsigned>(j) + static_cast<unsigned>(r);
-            const RgbdFrame frame = renderFrame(sc.scene, sensor, seed);
-            for (const MethodVariant &v : job.variants) {
-                DetectorConfig cfg = v.config;
-                cfg.seed = seed;
-                if (!job.keystone) {
-                    const Detection det = detectSurface(frame.cloud, projector, cfg, sc.gravity);
-                    Trial t = scoreTrial(det, truth, projector, sc.gravity, projector.aspect());
-                    t.scenario = job.scenario;
-                    t.distance = job.distance;
-                    t.angle_deg = job.angle_deg;
-                    t.round = r;
-                    t.seed = seed;
-                    t.method = v.name;
-                    res.trials.push_back(t);
-                    continue;
-                }
-                KeystoneTrial k;
-                k.distance = job.distance;
-                k.angle_deg = job.angle_deg;
-                k.round = r;
-                k.method = v.name;
-                const CalibrationRun &cal = res.calibrations[r];
-                k.axis_error_deg = cal.axis_error_deg;
-                if (!cal.ok) {
-                    k.problem = "calibration failed: " + cal.message;
-                    res.keystone.push_back(k);
-                    continue;
-                }
-                const Detection det = detectSurface(frame.cloud, cal.projector, cfg, sc.gravity);
-                k.found = det.found;
-                if (!det.found) {
-                    k.problem = "not found: " + det.reason;
-                } else {
-                    const WallPicture w =
-                        pictureOnWall(cal.projector, projector, sc.scene, det.rectangle,
-                                      cv::Size(projector.width, projector.height), plan.keystone_tolerance_px);
-                    k.shown = w.ok;
-                    k.overshoot_px = w.overshoot_px;
-                    k.problem = w.problem;
-                    k.errors = w.errors;
-                }
-                res.keystone.push_back(k);
-            }
-            tick(pose);
-        }
-    }
+    EvalTicker ticker{progress, static_cast<int>(plan.jobs.size()) * plan.rounds + (any_keystone ? plan.rounds : 0)};
+    if (progress) progress(0, ticker.total, "starting");
+    if (any_keystone) res.calibrations = roundCalibrations(plan, projector, sensor, ticker);
+    for (std::size_t j = 0; j < plan.jobs.size(); ++j) runPoseJob(plan, j, sensor, projector, res, ticker);
     applyPaperCriterion(res.trials);
     res.seconds = msSince(t0) / 1000.0;
     return res;

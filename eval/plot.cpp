@@ -170,37 +170,53 @@ double niceCeil(double v) {
     return 10.0 * mag;
 }
 
-}  // namespace
+/// Where a line chart's values land in its picture: the plot box and the two axes.
+struct ChartMapping {
+    cv::Rect box;
+    Axis x, y;
+    double px(double v) const { return box.x + x.t(v) * box.width; }
+    double py(double v) const { return box.y + box.height - std::clamp(y.t(v), -0.02, 1.02) * box.height; }
+};
 
-cv::Mat drawLineChart(const LineChart &c) {
-    cv::Mat img(c.size, CV_8UC3, kWhite);
-    const int left = 78, right = 20, top = 40;
-    const int legend_h = legendHeight(c.series, c.size.width - left - right);
-    const int bottom = 52 + legend_h;
-    const cv::Rect box(left, top, c.size.width - left - right, c.size.height - top - bottom);
-
-    // Ranges.
+/// The data's extent: x and y over every drawn point (y with its error bar), and the x ticks
+/// (the chart's, else every x that has a point), unsorted.
+struct DataRange {
     double xlo = 1e300, xhi = -1e300, ylo = 1e300, yhi = -1e300;
-    std::vector<double> xt = c.x_ticks;
+    std::vector<double> x_ticks;
+};
+
+DataRange dataRange(const LineChart &c) {
+    DataRange r;
+    r.x_ticks = c.x_ticks;
     for (const auto &s : c.series)
         for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
             if (std::isnan(s.y[i])) continue;
-            xlo = std::min(xlo, s.x[i]);
-            xhi = std::max(xhi, s.x[i]);
+            r.xlo = std::min(r.xlo, s.x[i]);
+            r.xhi = std::max(r.xhi, s.x[i]);
             const double e = i < s.err.size() && !std::isnan(s.err[i]) ? s.err[i] : 0.0;
-            ylo = std::min(ylo, s.y[i] - e);
-            yhi = std::max(yhi, s.y[i] + e);
-            if (c.x_ticks.empty() && std::find(xt.begin(), xt.end(), s.x[i]) == xt.end()) xt.push_back(s.x[i]);
+            r.ylo = std::min(r.ylo, s.y[i] - e);
+            r.yhi = std::max(r.yhi, s.y[i] + e);
+            if (c.x_ticks.empty() && std::find(r.x_ticks.begin(), r.x_ticks.end(), s.x[i]) == r.x_ticks.end())
+                r.x_ticks.push_back(s.x[i]);
         }
     for (double x : c.x_ticks) {
-        xlo = std::min(xlo, x);
-        xhi = std::max(xhi, x);
+        r.xlo = std::min(r.xlo, x);
+        r.xhi = std::max(r.xhi, x);
     }
-    for (const auto &h : c.h_lines) yhi = std::max(yhi, h.value);
+    for (const auto &h : c.h_lines) r.yhi = std::max(r.yhi, h.value);
+    return r;
+}
+
+/// The x axis: the data's extent padded by 6 % (a unit around a single x).
+Axis lineChartXAxis(double xlo, double xhi) {
     if (xlo > xhi) xlo = 0, xhi = 1;
     if (xhi - xlo < 1e-9) xlo -= 0.5, xhi += 0.5;
     const double xpad = 0.06 * (xhi - xlo);
-    Axis ax{xlo - xpad, xhi + xpad, false};
+    return Axis{xlo - xpad, xhi + xpad, false};
+}
+
+/// The y axis: the chart's fixed range, else decades (log) or zero to a nice ceiling.
+Axis lineChartYAxis(const LineChart &c, double ylo, double yhi) {
     Axis ay;
     ay.log = c.log_y;
     if (c.y_max > c.y_min) {
@@ -214,18 +230,20 @@ cv::Mat drawLineChart(const LineChart &c) {
         ay.hi = niceCeil(yhi > -1e300 ? yhi : 1.0);
     }
     if (ay.log && ay.lo <= 0) ay.lo = 1.0;
-    auto X = [&](double x) { return box.x + ax.t(x) * box.width; };
-    auto Y = [&](double y) { return box.y + box.height - std::clamp(ay.t(y), -0.02, 1.02) * box.height; };
+    return ay;
+}
 
-    // Grid, axes, ticks.
-    for (double v : niceTicks(ay.lo, ay.hi, ay.log)) {
-        const double y = Y(v);
+/// Grid, axes, ticks, the title and the axis labels.
+void drawLineChartFrame(cv::Mat &img, const LineChart &c, const ChartMapping &m, std::vector<double> x_ticks) {
+    const cv::Rect &box = m.box;
+    for (double v : niceTicks(m.y.lo, m.y.hi, m.y.log)) {
+        const double y = m.py(v);
         cv::line(img, cv::Point2d(box.x, y), cv::Point2d(box.x + box.width, y), kGrid, 1);
         text(img, fmt(v), {box.x - 8, cvRound(y) + 5}, 0.45, kGreyText, 2);
     }
-    std::sort(xt.begin(), xt.end());
-    for (double v : xt) {
-        const double x = X(v);
+    std::sort(x_ticks.begin(), x_ticks.end());
+    for (double v : x_ticks) {
+        const double x = m.px(v);
         cv::line(img, cv::Point2d(x, box.y), cv::Point2d(x, box.y + box.height), kGrid, 1);
         text(img, fmt(v), {cvRound(x), box.y + box.height + 20}, 0.45, kGreyText, 1);
     }
@@ -233,45 +251,64 @@ cv::Mat drawLineChart(const LineChart &c) {
     text(img, c.title, {c.size.width / 2, 26}, 0.6, kBlack, 1, 1);
     text(img, c.x_label, {box.x + box.width / 2, box.y + box.height + 42}, 0.5, kBlack, 1);
     verticalText(img, c.y_label, {18, box.y + box.height / 2}, 0.5, kBlack);
+}
 
-    // Reference lines.
+void drawReferenceLines(cv::Mat &img, const LineChart &c, const ChartMapping &m) {
     for (const auto &h : c.h_lines) {
-        const double y = Y(h.value);
-        dashedLine(img, cv::Point2d(box.x, y), cv::Point2d(box.x + box.width, y), kGreyText, 1);
+        const double y = m.py(h.value);
+        dashedLine(img, cv::Point2d(m.box.x, y), cv::Point2d(m.box.x + m.box.width, y), kGreyText, 1);
         const int ty = h.label_below ? cvRound(y) + 15 : cvRound(y) - 5;
         if (h.label_left)
-            text(img, h.label, {box.x + 6, ty}, 0.42, kGreyText, 0);
+            text(img, h.label, {m.box.x + 6, ty}, 0.42, kGreyText, 0);
         else
-            text(img, h.label, {box.x + box.width - 6, ty}, 0.42, kGreyText, 2);
+            text(img, h.label, {m.box.x + m.box.width - 6, ty}, 0.42, kGreyText, 2);
     }
-    // Series.
-    for (const auto &s : c.series) {
-        cv::Point2d prev;
-        bool have_prev = false;
-        for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
-            if (std::isnan(s.y[i])) {
-                have_prev = false;
-                continue;
-            }
-            const cv::Point2d p(X(s.x[i]), Y(s.y[i]));
-            if (have_prev) {
-                if (s.dashed)
-                    dashedLine(img, prev, p, s.color, 2);
-                else
-                    cv::line(img, prev, p, s.color, 2, cv::LINE_AA);
-            }
-            if (i < s.err.size() && !std::isnan(s.err[i]) && s.err[i] > 0) {
-                const double y0 = Y(s.y[i] - s.err[i]), y1 = Y(s.y[i] + s.err[i]);
-                cv::line(img, cv::Point2d(p.x, y0), cv::Point2d(p.x, y1), s.color, 1, cv::LINE_AA);
-                cv::line(img, cv::Point2d(p.x - 4, y0), cv::Point2d(p.x + 4, y0), s.color, 1, cv::LINE_AA);
-                cv::line(img, cv::Point2d(p.x - 4, y1), cv::Point2d(p.x + 4, y1), s.color, 1, cv::LINE_AA);
-            }
-            drawMarker(img, p, s.marker, s.color, s.dashed);
-            prev = p;
-            have_prev = true;
+}
+
+/// One series: its line (broken at NaN), error bars and markers.
+void drawLineSeries(cv::Mat &img, const Series &s, const ChartMapping &m) {
+    cv::Point2d prev;
+    bool have_prev = false;
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+        if (std::isnan(s.y[i])) {
+            have_prev = false;
+            continue;
         }
+        const cv::Point2d p(m.px(s.x[i]), m.py(s.y[i]));
+        if (have_prev) {
+            if (s.dashed)
+                dashedLine(img, prev, p, s.color, 2);
+            else
+                cv::line(img, prev, p, s.color, 2, cv::LINE_AA);
+        }
+        if (i < s.err.size() && !std::isnan(s.err[i]) && s.err[i] > 0) {
+            const double y0 = m.py(s.y[i] - s.err[i]), y1 = m.py(s.y[i] + s.err[i]);
+            cv::line(img, cv::Point2d(p.x, y0), cv::Point2d(p.x, y1), s.color, 1, cv::LINE_AA);
+            cv::line(img, cv::Point2d(p.x - 4, y0), cv::Point2d(p.x + 4, y0), s.color, 1, cv::LINE_AA);
+            cv::line(img, cv::Point2d(p.x - 4, y1), cv::Point2d(p.x + 4, y1), s.color, 1, cv::LINE_AA);
+        }
+        drawMarker(img, p, s.marker, s.color, s.dashed);
+        prev = p;
+        have_prev = true;
     }
-    drawLegend(img, c.series, box.x, box.y + box.height + 50, box.width, false);
+}
+
+}  // namespace
+
+cv::Mat drawLineChart(const LineChart &c) {
+    cv::Mat img(c.size, CV_8UC3, kWhite);
+    const int left = 78, right = 20, top = 40;
+    const int legend_h = legendHeight(c.series, c.size.width - left - right);
+    const int bottom = 52 + legend_h;
+    const DataRange range = dataRange(c);
+    ChartMapping m;
+    m.box = cv::Rect(left, top, c.size.width - left - right, c.size.height - top - bottom);
+    m.x = lineChartXAxis(range.xlo, range.xhi);
+    m.y = lineChartYAxis(c, range.ylo, range.yhi);
+    drawLineChartFrame(img, c, m, range.x_ticks);
+    drawReferenceLines(img, c, m);
+    for (const auto &s : c.series) drawLineSeries(img, s, m);
+    drawLegend(img, c.series, m.box.x, m.box.y + m.box.height + 50, m.box.width, false);
     return img;
 }
 

@@ -245,144 +245,150 @@ cv::Mat successPanel(const std::vector<Trial> &trials, const std::string &scenar
     return drawLineChart(c);
 }
 
+/// Table 1: concave vs convex hull (and the default method) on the plain wall.
+cv::Mat unclutteredSuccessPlot(const std::vector<Trial> &T) {
+    std::vector<cv::Mat> panels;
+    for (bool paper : {false, true})
+        for (double a : anglesOf(T, "wall"))
+            panels.push_back(successPanel(T, "wall", a, paper,
+                                          {{"paper-concave", "ours: paper method, concave", kConcave, 0},
+                                           {"paper-convex", "ours: paper method, convex", kConvex, 1},
+                                           {"default", "ours: default method", kDefault, 2}},
+                                          {{"published: concave", findPaperRow("1", "concave", a), kConcave},
+                                           {"published: convex", findPaperRow("1", "convex", a), kConvex}}));
+    return tilePanels(panels, 2, "Table 1: success rate on the plain wall (solid: ours, dashed: paper)");
+}
+
+/// Table 2: cluttered scenario (closet in front of the wall).
+cv::Mat clutteredSuccessPlot(const std::vector<Trial> &T) {
+    std::vector<cv::Mat> panels;
+    for (bool paper : {false, true})
+        for (double a : anglesOf(T, "closet"))
+            panels.push_back(successPanel(T, "closet", a, paper,
+                                          {{"paper-concave", "ours: paper method", kConcave, 0},
+                                           {"default", "ours: default method", kDefault, 2}},
+                                          {{"published", findPaperRow("2", "cluttered", a), kConcave}}));
+    return tilePanels(panels, 2, "Table 2: success rate, cluttered scene (solid: ours, dashed: paper)");
+}
+
+/// Fig 15: surface-check outliers and decisions; empty when no check scenario ran.
+cv::Mat surfaceCheckPlot(const std::vector<Trial> &T) {
+    LineChart outl;
+    outl.title = "Outliers in the checked area (paper method, median; 0 drawn at 1)";
+    outl.x_label = "distance to the wall (m)";
+    outl.y_label = "outliers (log scale)";
+    outl.log_y = true;
+    outl.size = cv::Size(640, 440);
+    LineChart acc;
+    acc.title = "Surface-check decisions that were right (ground truth)";
+    acc.x_label = "distance to the wall (m)";
+    acc.y_label = "right decisions (%)";
+    acc.y_min = 0;
+    acc.y_max = 105;
+    acc.size = cv::Size(640, 440);
+    const cv::Scalar colors[] = {kNo, kSo, kBo};
+    int k = 0;
+    bool any = false;
+    for (const auto &[scenario, tag] : kCheckScenarios) {
+        const std::vector<double> ds = distancesOf(T, scenario);
+        std::vector<double> med, lo, accp, accd;
+        for (double d : ds) {
+            const Summary p = sumFor(T, scenario, "paper-concave", kNaN, d);
+            med.push_back(std::max(1.0, p.outliers_median));
+            const Summary q = sumFor(T, scenario, "default", kNaN, d);
+            accp.push_back(p.checked ? 100.0 * p.decisions_correct / p.checked : kNaN);
+            accd.push_back(q.checked ? 100.0 * q.decisions_correct / q.checked : kNaN);
+        }
+        if (!ds.empty()) any = true;
+        outl.series.push_back({tag + " (" + scenario + ")", colors[k], ds, med, {}, false, k});
+        acc.series.push_back({tag + " paper method", colors[k], ds, accp, {}, true, k});
+        acc.series.push_back({tag + " default", colors[k], ds, accd, {}, false, k});
+        ++k;
+    }
+    const PaperOutlierFacts f = paperOutlierFacts();
+    outl.h_lines = {{static_cast<double>(f.outlier_limit), "paper's limit 5000", true, false},
+                    {f.highest_median_no_obstacle, "paper: NO max median 4285", false, true},
+                    {f.smallest_median_obstacles, "paper: SO/BO min median 7383", false, false}};
+    if (!any) return cv::Mat();
+    return tilePanels({drawLineChart(outl), drawLineChart(acc)}, 2, "Fig 15: surface check on NO / SO / BO");
+}
+
+/// Table 3, one error of eq. 8 (0 horizontal, 1 vertical, 2 diagonals): published, ours with
+/// the paper's method and with the default one, per pose.
+cv::Mat keystoneErrorChart(const std::vector<KeystoneTrial> &keystone, int e) {
+    const char *names[] = {"horizontal", "vertical", "diagonals"};
+    BarChart b;
+    b.title = std::string(names[e]) + " error (eq. 8), mean and std";
+    b.y_label = "error (%)";
+    b.size = cv::Size(1100, 380);
+    Series pub{"published (paper)", kGrey, {}, {}, {}, true, 0}, ours_p{"ours: paper method", kConcave, {}, {}, {}},
+        ours_d{"ours: default method", kDefault, {}, {}, {}};
+    for (const auto &[a, d] : keystonePoses(keystone)) {
+        b.categories.push_back(distanceLabel(d) + " m|" + plotAngle(a));
+        const PaperKeystoneCell *pc = findPaperKeystone(a, d);
+        const KeyStats kp = keyStats(keystone, a, d, "paper-concave"), kd = keyStats(keystone, a, d, "default");
+        const double pm[] = {pc ? pc->horizontal_mean : kNaN, pc ? pc->vertical_mean : kNaN,
+                             pc ? pc->diagonal_mean : kNaN};
+        const double ps[] = {pc ? pc->horizontal_std : kNaN, pc ? pc->vertical_std : kNaN,
+                             pc ? pc->diagonal_std : kNaN};
+        pub.y.push_back(pm[e]);
+        pub.err.push_back(ps[e]);
+        ours_p.y.push_back(e == 0 ? kp.h : e == 1 ? kp.v : kp.g);
+        ours_p.err.push_back(e == 0 ? kp.hs : e == 1 ? kp.vs : kp.gs);
+        ours_d.y.push_back(e == 0 ? kd.h : e == 1 ? kd.v : kd.g);
+        ours_d.err.push_back(e == 0 ? kd.hs : e == 1 ? kd.vs : kd.gs);
+    }
+    b.series = {pub, ours_p, ours_d};
+    return drawBarChart(b);
+}
+
+/// Table 3: shape errors of the corrected picture on the wall.
+cv::Mat keystonePlot(const std::vector<KeystoneTrial> &keystone) {
+    std::vector<cv::Mat> panels;
+    for (int e = 0; e < 3; ++e) panels.push_back(keystoneErrorChart(keystone, e));
+    return tilePanels(panels, 1, "Table 3: shape errors of the corrected picture on the wall");
+}
+
+/// Time per detection on the plain wall, ours per method and the paper's.
+cv::Mat timingPlot(const std::vector<Trial> &T) {
+    LineChart c;
+    c.title = "Time per detection on the plain wall (median, one core)";
+    c.x_label = "distance to the wall (m)";
+    c.y_label = "ms (log scale)";
+    c.log_y = true;
+    c.size = cv::Size(700, 460);
+    const std::vector<double> ds = distancesOf(T, "wall");
+    const std::tuple<std::string, std::string, cv::Scalar, int> methods[] = {
+        {"paper-concave", "ours: paper method, concave", kConcave, 0},
+        {"paper-convex", "ours: paper method, convex", kConvex, 1},
+        {"default", "ours: default method", kDefault, 2}};
+    for (const auto &[name, label, color, marker] : methods) {
+        if (!hasMethod(T, "wall", name)) continue;
+        std::vector<double> y, err;
+        for (double d : ds) y.push_back(sumFor(T, "wall", name, kNaN, d).time_median_ms);
+        c.series.push_back({label, color, ds, y, {}, false, marker});
+    }
+    const PaperTiming pt = paperTiming();
+    c.series.push_back({"published (Mbot CPU)",
+                        kGrey,
+                        {1.0, 3.0},
+                        {1000 * pt.uncluttered_1m_s, 1000 * pt.uncluttered_3m_s},
+                        {},
+                        true,
+                        0});
+    return drawLineChart(c);
+}
+
 }  // namespace
 
 std::vector<std::pair<std::string, cv::Mat>> evalPlots(const EvalResults &res) {
     std::vector<std::pair<std::string, cv::Mat>> out;
     const auto &T = res.trials;
-
-    // Table 1: concave vs convex hull (and the default method) on the plain wall.
-    if (hasMethod(T, "wall", "paper-concave")) {
-        std::vector<cv::Mat> panels;
-        for (bool paper : {false, true})
-            for (double a : anglesOf(T, "wall"))
-                panels.push_back(successPanel(T, "wall", a, paper,
-                                              {{"paper-concave", "ours: paper method, concave", kConcave, 0},
-                                               {"paper-convex", "ours: paper method, convex", kConvex, 1},
-                                               {"default", "ours: default method", kDefault, 2}},
-                                              {{"published: concave", findPaperRow("1", "concave", a), kConcave},
-                                               {"published: convex", findPaperRow("1", "convex", a), kConvex}}));
-        out.emplace_back("success_uncluttered.png",
-                         tilePanels(panels, 2, "Table 1: success rate on the plain wall (solid: ours, dashed: paper)"));
-    }
-    // Table 2: cluttered scenario (closet in front of the wall).
-    if (hasMethod(T, "closet", "paper-concave")) {
-        std::vector<cv::Mat> panels;
-        for (bool paper : {false, true})
-            for (double a : anglesOf(T, "closet"))
-                panels.push_back(successPanel(T, "closet", a, paper,
-                                              {{"paper-concave", "ours: paper method", kConcave, 0},
-                                               {"default", "ours: default method", kDefault, 2}},
-                                              {{"published", findPaperRow("2", "cluttered", a), kConcave}}));
-        out.emplace_back("success_cluttered.png",
-                         tilePanels(panels, 2, "Table 2: success rate, cluttered scene (solid: ours, dashed: paper)"));
-    }
-    // Fig 15: surface-check outliers and decisions.
-    {
-        LineChart outl;
-        outl.title = "Outliers in the checked area (paper method, median; 0 drawn at 1)";
-        outl.x_label = "distance to the wall (m)";
-        outl.y_label = "outliers (log scale)";
-        outl.log_y = true;
-        outl.size = cv::Size(640, 440);
-        LineChart acc;
-        acc.title = "Surface-check decisions that were right (ground truth)";
-        acc.x_label = "distance to the wall (m)";
-        acc.y_label = "right decisions (%)";
-        acc.y_min = 0;
-        acc.y_max = 105;
-        acc.size = cv::Size(640, 440);
-        const cv::Scalar colors[] = {kNo, kSo, kBo};
-        int k = 0;
-        bool any = false;
-        for (const auto &[scenario, tag] : kCheckScenarios) {
-            const std::vector<double> ds = distancesOf(T, scenario);
-            std::vector<double> med, lo, accp, accd;
-            for (double d : ds) {
-                const Summary p = sumFor(T, scenario, "paper-concave", kNaN, d);
-                med.push_back(std::max(1.0, p.outliers_median));
-                const Summary q = sumFor(T, scenario, "default", kNaN, d);
-                accp.push_back(p.checked ? 100.0 * p.decisions_correct / p.checked : kNaN);
-                accd.push_back(q.checked ? 100.0 * q.decisions_correct / q.checked : kNaN);
-            }
-            if (!ds.empty()) any = true;
-            outl.series.push_back({tag + " (" + scenario + ")", colors[k], ds, med, {}, false, k});
-            acc.series.push_back({tag + " paper method", colors[k], ds, accp, {}, true, k});
-            acc.series.push_back({tag + " default", colors[k], ds, accd, {}, false, k});
-            ++k;
-        }
-        const PaperOutlierFacts f = paperOutlierFacts();
-        outl.h_lines = {{static_cast<double>(f.outlier_limit), "paper's limit 5000", true, false},
-                        {f.highest_median_no_obstacle, "paper: NO max median 4285", false, true},
-                        {f.smallest_median_obstacles, "paper: SO/BO min median 7383", false, false}};
-        if (any)
-            out.emplace_back("outliers.png", tilePanels({drawLineChart(outl), drawLineChart(acc)}, 2,
-                                                        "Fig 15: surface check on NO / SO / BO"));
-    }
-    // Table 3: keystone errors.
-    if (!res.keystone.empty()) {
-        std::vector<cv::Mat> panels;
-        const auto poses = keystonePoses(res.keystone);
-        const char *names[] = {"horizontal", "vertical", "diagonals"};
-        for (int e = 0; e < 3; ++e) {
-            BarChart b;
-            b.title = std::string(names[e]) + " error (eq. 8), mean and std";
-            b.y_label = "error (%)";
-            b.size = cv::Size(1100, 380);
-            Series pub{"published (paper)", kGrey, {}, {}, {}, true, 0},
-                ours_p{"ours: paper method", kConcave, {}, {}, {}},
-                ours_d{"ours: default method", kDefault, {}, {}, {}};
-            for (const auto &[a, d] : poses) {
-                b.categories.push_back(distanceLabel(d) + " m|" + plotAngle(a));
-                const PaperKeystoneCell *pc = findPaperKeystone(a, d);
-                const KeyStats kp = keyStats(res.keystone, a, d, "paper-concave"),
-                               kd = keyStats(res.keystone, a, d, "default");
-                const double pm[] = {pc ? pc->horizontal_mean : kNaN, pc ? pc->vertical_mean : kNaN,
-                                     pc ? pc->diagonal_mean : kNaN};
-                const double ps[] = {pc ? pc->horizontal_std : kNaN, pc ? pc->vertical_std : kNaN,
-                                     pc ? pc->diagonal_std : kNaN};
-                pub.y.push_back(pm[e]);
-                pub.err.push_back(ps[e]);
-                ours_p.y.push_back(e == 0 ? kp.h : e == 1 ? kp.v : kp.g);
-                ours_p.err.push_back(e == 0 ? kp.hs : e == 1 ? kp.vs : kp.gs);
-                ours_d.y.push_back(e == 0 ? kd.h : e == 1 ? kd.v : kd.g);
-                ours_d.err.push_back(e == 0 ? kd.hs : e == 1 ? kd.vs : kd.gs);
-            }
-            b.series = {pub, ours_p, ours_d};
-            panels.push_back(drawBarChart(b));
-        }
-        out.emplace_back("keystone.png",
-                         tilePanels(panels, 1, "Table 3: shape errors of the corrected picture on the wall"));
-    }
-    // Time per detection.
-    if (!T.empty()) {
-        LineChart c;
-        c.title = "Time per detection on the plain wall (median, one core)";
-        c.x_label = "distance to the wall (m)";
-        c.y_label = "ms (log scale)";
-        c.log_y = true;
-        c.size = cv::Size(700, 460);
-        const std::vector<double> ds = distancesOf(T, "wall");
-        const std::tuple<std::string, std::string, cv::Scalar, int> methods[] = {
-            {"paper-concave", "ours: paper method, concave", kConcave, 0},
-            {"paper-convex", "ours: paper method, convex", kConvex, 1},
-            {"default", "ours: default method", kDefault, 2}};
-        for (const auto &[name, label, color, marker] : methods) {
-            if (!hasMethod(T, "wall", name)) continue;
-            std::vector<double> y, err;
-            for (double d : ds) y.push_back(sumFor(T, "wall", name, kNaN, d).time_median_ms);
-            c.series.push_back({label, color, ds, y, {}, false, marker});
-        }
-        const PaperTiming pt = paperTiming();
-        c.series.push_back({"published (Mbot CPU)",
-                            kGrey,
-                            {1.0, 3.0},
-                            {1000 * pt.uncluttered_1m_s, 1000 * pt.uncluttered_3m_s},
-                            {},
-                            true,
-                            0});
-        out.emplace_back("timing.png", drawLineChart(c));
-    }
+    if (hasMethod(T, "wall", "paper-concave")) out.emplace_back("success_uncluttered.png", unclutteredSuccessPlot(T));
+    if (hasMethod(T, "closet", "paper-concave")) out.emplace_back("success_cluttered.png", clutteredSuccessPlot(T));
+    if (cv::Mat check = surfaceCheckPlot(T); !check.empty()) out.emplace_back("outliers.png", check);
+    if (!res.keystone.empty()) out.emplace_back("keystone.png", keystonePlot(res.keystone));
+    if (!T.empty()) out.emplace_back("timing.png", timingPlot(T));
     return out;
 }
 
@@ -468,10 +474,11 @@ std::string paperCriterionRoundsNote(int rounds) {
            "; the paper's 10 rounds (eval without --quick) make it a measure";
 }
 
-std::string evalReportMarkdown(const EvalResults &res, const std::vector<GalleryEntry> &gallery,
-                               const ReportInfo &info) {
+namespace {
+
+/// The title, what was run, the command and the machine's load.
+void writeReportIntro(std::ostream &md, const EvalResults &res, const ReportInfo &info) {
     const auto &T = res.trials;
-    std::ostringstream md;
     md << "# projsurf: the paper's experiments re-run in simulation\n\n";
     md << "Fernández-Rodicio et al. 2017, section 4 (Tables 1–3, Fig 15), re-run on the simulator (Kinect v1 class "
           "depth noise, the paper's scenes) with `--method paper` (the paper's steps) and the default method. "
@@ -484,8 +491,10 @@ std::string evalReportMarkdown(const EvalResults &res, const std::vector<Gallery
         md << "Machine: " << info.load
            << ". Times are wall-clock in-process times of one thread; on a busy machine they include waiting for a "
               "core, so compare methods within this report rather than with other runs.\n\n";
+}
 
-    // Headline.
+/// The headline: every experiment's success rate, published and ours.
+void writeHeadlineSection(std::ostream &md, const EvalResults &res) {
     md << "## Headline\n\n";
     md << "Success rates are averages over the distances of each table. *Paper's criterion* = area within 0.05 m² of "
           "the best of the rounds for that pose and method (paper 4.1); *ground truth* = the simulator's true "
@@ -502,8 +511,11 @@ std::string evalReportMarkdown(const EvalResults &res, const std::vector<Gallery
     md << "\n";
     md << "Published timings are the paper's (its robot's CPU, PCL); ours are this machine, one core.\n\n";
     md << "![Table 1](success_uncluttered.png)\n\n";
+}
 
-    // Table 1.
+/// Table 1: concave vs convex hull on the plain wall, per angle.
+void writeTable1Section(std::ostream &md, const EvalResults &res) {
+    const auto &T = res.trials;
     md << "## Table 1: concave vs convex hull on the plain wall (paper 4.1)\n\n";
     md << "Wall scenario, " << res.rounds << " rounds per pose. Rows *published* are copied from the paper.\n\n";
     for (double a : anglesOf(T, "wall")) {
@@ -519,8 +531,11 @@ std::string evalReportMarkdown(const EvalResults &res, const std::vector<Gallery
         for (auto &r : ourRows(T, "wall", a, "default", "**ours (default method)**", false)) rows.push_back(r);
         md << distanceTable(distancesOf(T, "wall"), rows) << "\n";
     }
+}
 
-    // Table 2.
+/// Table 2: the cluttered scene (a closet against the wall), per angle.
+void writeTable2Section(std::ostream &md, const EvalResults &res) {
+    const auto &T = res.trials;
     md << "## Table 2: uncluttered and cluttered scenes (paper 4.2)\n\n";
     md << "Uncluttered = the plain wall above (Table 1, concave hull). Cluttered = a closet (1.0 m wide, 0.6 m deep, "
           "2.0 m tall) standing against the wall; the simulator's scene has no 1 m pose (the closet front would be "
@@ -540,8 +555,11 @@ std::string evalReportMarkdown(const EvalResults &res, const std::vector<Gallery
         if (row && !ds.empty() && ds.front() > 1.0) ds.insert(ds.begin(), 1.0);  // show the paper's 1 m column
         md << distanceTable(ds, rows) << "\n";
     }
+}
 
-    // Fig 15.
+/// Fig 15: the surface check's outliers and decisions, no / small / big obstacles.
+void writeSurfaceCheckSection(std::ostream &md, const EvalResults &res) {
+    const auto &T = res.trials;
     md << "## Figure 15: surface-check outliers, no / small / big obstacles (paper 4.3)\n\n";
     const PaperOutlierFacts f = paperOutlierFacts();
     md << "The paper counts points of the checked area farther than " << f.threshold_m
@@ -574,8 +592,10 @@ std::string evalReportMarkdown(const EvalResults &res, const std::vector<Gallery
     md << "\nHighest median without obstacles: published " << f.highest_median_no_obstacle << ", ours (paper method) "
        << num(our_no_max, 0) << ". Smallest median with obstacles: published " << f.smallest_median_obstacles
        << ", ours " << num(our_obst_min, 0) << ".\n\n";
+}
 
-    // Table 3.
+/// Table 3: keystone errors of the corrected picture, with the calibrations' errors.
+void writeKeystoneSection(std::ostream &md, const EvalResults &res) {
     if (!res.keystone.empty()) {
         md << "## Table 3: keystone errors of the corrected picture (paper 4.4)\n\n";
         int ok = 0;
@@ -617,8 +637,11 @@ std::string evalReportMarkdown(const EvalResults &res, const std::vector<Gallery
         }
         md << "\n";
     }
+}
 
-    // Why rounds failed.
+/// Why rounds failed: the first condition of `scoreDetection` that failed, per scene and method.
+void writeFailureSection(std::ostream &md, const EvalResults &res) {
+    const auto &T = res.trials;
     md << "## Why rounds failed (ground truth)\n\n";
     md << "The first condition of `scoreDetection` that failed, counted over all rounds of a scene and "
           "method.\n\n| Scene | Method | rounds | failed | reasons (count) |\n|---|---|---:|---:|---|\n";
@@ -643,8 +666,11 @@ std::string evalReportMarkdown(const EvalResults &res, const std::vector<Gallery
             md << " |\n";
         }
     md << "\n";
+}
 
-    // Timing.
+/// Time per detection, per method, scene and distance.
+void writeTimingSection(std::ostream &md, const EvalResults &res) {
+    const auto &T = res.trials;
     md << "## Time per detection\n\n";
     md << "In-process time from a loaded cloud to the result (`timing_ms.total`), this machine, one core. "
           "Published: 1.29 s at 1 m and 1.46 s at 3 m on the plain wall, 1.6 s at 3 m cluttered, \"around 1.5 s\" "
@@ -668,8 +694,10 @@ std::string evalReportMarkdown(const EvalResults &res, const std::vector<Gallery
         }
         md << "\n";
     }
+}
 
-    // Gallery.
+/// The real frames: one row per frame of the gallery.
+void writeGallerySection(std::ostream &md, const ReportInfo &info, const std::vector<GalleryEntry> &gallery) {
     md << "## Real frames\n\n";
     if (info.paper_only) {
         md << "Not run (`--paper-only`: the paper's experiments alone).\n\n";
@@ -700,9 +728,10 @@ std::string evalReportMarkdown(const EvalResults &res, const std::vector<Gallery
         }
         md << "\n";
     }
+}
 
-    if (info.labelled) md << labelledReportMarkdown(*info.labelled, info.labels_dir, "labels");
-
+/// How it was measured: scenes, noise, the criteria.
+void writeMethodNotes(std::ostream &md, const EvalResults &res) {
     md << "## How it was measured\n\n";
     md << "- Scenes: `sim::makeScenario` (wall, closet, small_obstacles, big_obstacle) at the paper's distances and "
           "angles (`sim::paperExperiments()`); camera 1.0 m above the floor, level; the contract's example projector "
@@ -722,6 +751,24 @@ std::string evalReportMarkdown(const EvalResults &res, const std::vector<Gallery
     md << "- Table 3 uses the wall scenario at 1, 2, 3 m and 27.5°, 17.19°, −12.06° with a picture of the "
           "framebuffer's "
           "aspect (letterbox = the whole rectangle).\n";
+}
+
+}  // namespace
+
+std::string evalReportMarkdown(const EvalResults &res, const std::vector<GalleryEntry> &gallery,
+                               const ReportInfo &info) {
+    std::ostringstream md;
+    writeReportIntro(md, res, info);
+    writeHeadlineSection(md, res);
+    writeTable1Section(md, res);
+    writeTable2Section(md, res);
+    writeSurfaceCheckSection(md, res);
+    writeKeystoneSection(md, res);
+    writeFailureSection(md, res);
+    writeTimingSection(md, res);
+    writeGallerySection(md, info, gallery);
+    if (info.labelled) md << labelledReportMarkdown(*info.labelled, info.labels_dir, "labels");
+    writeMethodNotes(md, res);
     if (!info.realistic_markdown.empty()) md << "\n## Realistic simulated suite\n\n" << info.realistic_markdown;
     return md.str();
 }

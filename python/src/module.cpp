@@ -162,36 +162,9 @@ private:
     bool gravity_checked_ = false;  ///< the gravity was checked against the first cloud's floor
 };
 
-}  // namespace
-}  // namespace projsurf::python
-
-/// numpy for this interpreter, else an ImportError that says which interpreter and what to do
-/// (without it pybind11 says only "initialization failed").
-void requireNumpy() {
-    try {
-        py::module_::import("numpy");
-    } catch (const py::error_already_set &e) {
-        const py::module_ sys = py::module_::import("sys");
-        const std::string interpreter = py::str(sys.attr("executable")).cast<std::string>();
-        const std::string version = py::str(sys.attr("version")).cast<std::string>().substr(0, 6);
-        throw std::runtime_error("projsurf needs numpy, which " + interpreter + " (Python " + version +
-                                 ") cannot import: " + std::string(e.what()).substr(0, 80) +
-                                 ". Install numpy for that interpreter (Debian: apt-get install python3-numpy) or "
-                                 "run the one the module was built for, " PROJSURF_PYTHON_EXECUTABLE);
-    }
-}
-
-PYBIND11_MODULE(projsurf, m) {
-    using namespace projsurf;
-    using namespace projsurf::python;
-    requireNumpy();
-    m.doc() =
-        "projsurf: where a robot's projector can show a picture on a wall, and its keystone correction.\n"
-        "Camera optical frame (x right, y down, z forward), metres; degrees only where a name says _deg.\n"
-        "Every bad argument (a wrong type, value or file) raises projsurf.InputError with one line.";
-
-    // Same one-line messages as the CLI's "projsurf: error: <file>: <problem>" (without the prefix).
-    // The message as UTF-8 on one line, whatever file bytes it quotes (Python could not decode them).
+/// projsurf.InputError (a ValueError): the same one-line messages as the CLI's "projsurf: error: <file>:
+/// <problem>" (without the prefix), as UTF-8 on one line whatever file bytes they quote.
+void bindInputError(py::module_ &m) {
     static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
     py::register_exception_translator([](std::exception_ptr p) {
         try {
@@ -202,7 +175,10 @@ PYBIND11_MODULE(projsurf, m) {
             PyErr_SetString(input_error.ptr(), text.c_str());
         }
     });
+}
 
+/// Projector: the lens model, built from keywords or read from a calibration.
+void bindProjector(py::module_ &m) {
     py::class_<Projector>(
         m, "Projector",
         "The projector's lens model (docs/interface.md). Projector(...) builds the contract's plain model:\n"
@@ -260,7 +236,10 @@ PYBIND11_MODULE(projsurf, m) {
                         py::str(py::cast(std::vector<double>{p.direction.x(), p.direction.y(), p.direction.z()})),
                         p.fullModel() ? ", full model" : "");
         });
+}
 
+/// read_calibration and write_calibration.
+void bindCalibrationFiles(py::module_ &m) {
     m.def(
         "read_calibration",
         [](const py::object &path) {
@@ -282,6 +261,10 @@ PYBIND11_MODULE(projsurf, m) {
         "path"_a, "projector"_a,
         "Writes a calibration YAML with the contract's keys, the full model's too when set (atomically).\n"
         "Raises InputError.");
+}
+
+/// Clouds from files and from a depth image: read_cloud, read_depth_cloud, depth_to_cloud.
+void bindCloudFunctions(py::module_ &m) {
     m.def(
         "read_cloud", [](const py::object &path) { return arrayFromCloud(readCloud(pathArgument(path, "path"))); },
         "path"_a, "Reads a PCD or PLY file: float32 (H, W, 3) when organized, else (N, 3). Raises InputError.");
@@ -317,6 +300,10 @@ PYBIND11_MODULE(projsurf, m) {
         "depth"_a, py::kw_only(), "fx"_a, "fy"_a, "cx"_a, "cy"_a, "depth_scale"_a = 1000.0,
         "An (H, W) uint16 depth image (depth_scale units per metre, 0 = no reading) and its pinhole\n"
         "(px) as an organized (H, W, 3) float32 cloud, NaN where there is no reading. Raises InputError.");
+}
+
+/// read_image and write_image.
+void bindImageFiles(py::module_ &m) {
     m.def(
         "read_image",
         [](const py::object &path) {
@@ -332,23 +319,28 @@ PYBIND11_MODULE(projsurf, m) {
         },
         "path"_a, "image"_a,
         "Writes an image by the path's extension (channels taken as B, G, R), atomically. Raises InputError.");
+}
 
-    const char *options_doc =
-        "aspect: None (the framebuffer's), a number, 'W:H' or (W, H); gravity: camera frame, pointing down\n"
-        "(None: a level camera [0, 1, 0]; 'auto': from the floor; three numbers or 'gx,gy,gz'); method:\n"
-        "'default' | 'paper'; hull: 'concave' | 'convex' (paper); seed: RANSAC seed; min_width (m), min_area\n"
-        "(m^2): smaller rectangles are not found (None: 0.15 m and 0.012 m^2, as `projsurf detect`; 0 with\n"
-        "method='paper'); suitability: None (avoid), 'off', 'avoid' or 'prefer' with colour (as\n"
-        "--suitability). The pipeline settings of `projsurf detect` under the same names and units: max_tilt\n"
-        "(rad), voxel_leaf, ransac_distance (m), max_outliers (paper); cell (m), max_planes,\n"
-        "max_outlier_fraction (default). hull=None is 'concave'. config: None or the path of a detector settings\n"
-        "YAML (`projsurf detect --config`, every key: `projsurf detect --print-config`), read first; any other\n"
-        "argument given (not None) overrides it. The CLI's warnings (a gravity the floor contradicts, depths outside "
-        "what RGB-D\n"
-        "cameras read, colour not registered) come as UserWarnings.";
+/// The options of detect() and Detector(...), written once for both docstrings (and the tracker's).
+constexpr const char *kOptionsDoc =
+    "aspect: None (the framebuffer's), a number, 'W:H' or (W, H); gravity: camera frame, pointing down\n"
+    "(None: a level camera [0, 1, 0]; 'auto': from the floor; three numbers or 'gx,gy,gz'); method:\n"
+    "'default' | 'paper'; hull: 'concave' | 'convex' (paper); seed: RANSAC seed; min_width (m), min_area\n"
+    "(m^2): smaller rectangles are not found (None: 0.15 m and 0.012 m^2, as `projsurf detect`; 0 with\n"
+    "method='paper'); suitability: None (avoid), 'off', 'avoid' or 'prefer' with colour (as\n"
+    "--suitability). The pipeline settings of `projsurf detect` under the same names and units: max_tilt\n"
+    "(rad), voxel_leaf, ransac_distance (m), max_outliers (paper); cell (m), max_planes,\n"
+    "max_outlier_fraction (default). hull=None is 'concave'. config: None or the path of a detector settings\n"
+    "YAML (`projsurf detect --config`, every key: `projsurf detect --print-config`), read first; any other\n"
+    "argument given (not None) overrides it. The CLI's warnings (a gravity the floor contradicts, depths outside "
+    "what RGB-D\n"
+    "cameras read, colour not registered) come as UserWarnings.";
+
+/// Detector: detection over a stream of clouds.
+void bindDetectorClass(py::module_ &m) {
     py::class_<Detector> detector_class(
         m, "Detector",
-        (std::string("Detection over a stream of clouds (reuses its buffers from frame to frame).\n") + options_doc)
+        (std::string("Detection over a stream of clouds (reuses its buffers from frame to frame).\n") + kOptionsDoc)
             .c_str());
     addOptionsConstructor(detector_class);
     detector_class
@@ -374,7 +366,10 @@ PYBIND11_MODULE(projsurf, m) {
             "overlay, `detect --overlay`'s picture as an (H, W, 3) uint8 B, G, R array (with explain, the\n"
             "candidates outlined). Returns the detection as a dict with the keys of the detection JSON.")
         .def_property_readonly("projector", &Detector::projector);
+}
 
+/// detect(): one cloud, `projsurf detect`.
+void bindDetectFunction(py::module_ &m) {
     m.def(
         "detect",
         [](const py::object &points, const py::object &projector, const py::object &aspect, const py::object &gravity,
@@ -392,12 +387,15 @@ PYBIND11_MODULE(projsurf, m) {
         "explain"_a = false, "overlay"_a = false,
         (std::string("The biggest upright rectangle of the aspect ratio that the projector can light on a vertical\n"
                      "surface: `projsurf detect`. points and colour as for Detector.detect.\n") +
-         options_doc +
+         kOptionsDoc +
          "\nexplain, overlay: as for Detector.detect. Returns a dict: found, reason, method, plane, rectangle,\n"
          "surface_check, suitability (with colour), timing_ms, gravity (numpy arrays for vectors), candidates\n"
          "(with explain), overlay (with overlay). Raises InputError for bad points or options.")
             .c_str());
+}
 
+/// keystone(): the homography and corners of a picture in the detected rectangle.
+void bindKeystoneFunction(py::module_ &m) {
     m.def(
         "keystone",
         [](const py::object &projector, const py::object &detection, const py::object &picture_size,
@@ -419,7 +417,10 @@ PYBIND11_MODULE(projsurf, m) {
         "picture_size: (width, height) px. homography maps picture pixels to framebuffer pixels (centres at\n"
         "integers); rectangle_px / picture_px: (4, 2) framebuffer positions (TL, TR, BR, BL). Raises InputError\n"
         "when the detection found nothing or its rectangle cannot be shown.");
+}
 
+/// correct(): the corrected framebuffer, `projsurf correct`.
+void bindCorrectFunction(py::module_ &m) {
     m.def(
         "correct",
         [](const py::object &image, const py::object &projector_arg, const py::object &detection,
@@ -447,8 +448,44 @@ PYBIND11_MODULE(projsurf, m) {
         "read in place. detection: the dict of detect(), or (4, 3) corners. cloud: None, or the current points\n"
         "(as detect() takes them): the pixels whose rays meet something between the lens and the rectangle's\n"
         "plane (a person walking in) are black, as `projsurf correct --cloud`. Raises InputError.");
+}
 
-    addTrackerClass(m, options_doc);
+}  // namespace
+}  // namespace projsurf::python
+
+/// numpy for this interpreter, else an ImportError that says which interpreter and what to do
+/// (without it pybind11 says only "initialization failed").
+void requireNumpy() {
+    try {
+        py::module_::import("numpy");
+    } catch (const py::error_already_set &e) {
+        const py::module_ sys = py::module_::import("sys");
+        const std::string interpreter = py::str(sys.attr("executable")).cast<std::string>();
+        const std::string version = py::str(sys.attr("version")).cast<std::string>().substr(0, 6);
+        throw std::runtime_error("projsurf needs numpy, which " + interpreter + " (Python " + version +
+                                 ") cannot import: " + std::string(e.what()).substr(0, 80) +
+                                 ". Install numpy for that interpreter (Debian: apt-get install python3-numpy) or "
+                                 "run the one the module was built for, " PROJSURF_PYTHON_EXECUTABLE);
+    }
+}
+
+PYBIND11_MODULE(projsurf, m) {
+    using namespace projsurf::python;
+    requireNumpy();
+    m.doc() =
+        "projsurf: where a robot's projector can show a picture on a wall, and its keystone correction.\n"
+        "Camera optical frame (x right, y down, z forward), metres; degrees only where a name says _deg.\n"
+        "Every bad argument (a wrong type, value or file) raises projsurf.InputError with one line.";
+    bindInputError(m);
+    bindProjector(m);
+    bindCalibrationFiles(m);
+    bindCloudFunctions(m);
+    bindImageFiles(m);
+    bindDetectorClass(m);
+    bindDetectFunction(m);
+    bindKeystoneFunction(m);
+    bindCorrectFunction(m);
+    addTrackerClass(m, kOptionsDoc);
     addPlanFunction(m);
     addPrintConfigFunction(m);
     addBagFunction(m);

@@ -56,13 +56,22 @@ frontend::GravityChoice parseGravity(const ros::NodeHandle &pnh) {
     throw InputError(name(pnh, key), "needs 3 numbers, e.g. [0, 1, 0], or auto");
 }
 
-}  // namespace
+/// ~aspect as "W:H" or a number; "" (the launch file's default): the config's.
+void getAspect(const ros::NodeHandle &pnh, DetectorConfig &c) {
+    if (!pnh.hasParam("aspect")) return;
+    std::string text;
+    double number;
+    if (pnh.getParam("aspect", text)) {
+        if (!text.empty()) c.aspect = frontend::parseAspect(name(pnh, "aspect"), text);
+    } else if (pnh.getParam("aspect", number)) {
+        c.aspect = frontend::parseAspect(name(pnh, "aspect"), std::to_string(number));
+    } else {
+        throw InputError(name(pnh, "aspect"), "expected \"W:H\"");
+    }
+}
 
-NodeParams loadParams(const ros::NodeHandle &pnh) {
-    NodeParams p;
-    if (!pnh.getParam("calib", p.calib) || p.calib.empty())
-        throw InputError(name(pnh, "calib"), "is required: the path of the projector calibration YAML");
-    p.projector = readCalibration(p.calib, &p.calib_warnings);
+/// The picture, continuous mode, blanking and the move planner's limits.
+void loadOutputParams(const ros::NodeHandle &pnh, NodeParams &p) {
     get(pnh, "image", p.image);
     get(pnh, "continuous", p.continuous);
     get(pnh, "blank", p.blank);
@@ -72,23 +81,16 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
         throw InputError(name(pnh, "plan_width"), "must be between 0 and 50 m");
     if (!(p.plan.max_move >= 0.0 && p.plan.max_move <= 10.0))
         throw InputError(name(pnh, "plan_max_move"), "must be between 0 and 10 m");
+}
 
+/// ~config first: every parameter given after it overrides the file's value. Then the
+/// aspect, gravity, method, hull, colour and suitability.
+void loadDetectorChoices(const ros::NodeHandle &pnh, NodeParams &p) {
     DetectorConfig &c = p.detector;
-    // ~config first: every parameter given below overrides the file's value.
     std::string config_file;
     get(pnh, "config", config_file);
     if (!config_file.empty()) frontend::readDetectorConfig(config_file, c);
-    if (pnh.hasParam("aspect")) {
-        std::string text;
-        double number;
-        if (pnh.getParam("aspect", text)) {
-            if (!text.empty()) c.aspect = frontend::parseAspect(name(pnh, "aspect"), text);
-        } else if (pnh.getParam("aspect", number)) {
-            c.aspect = frontend::parseAspect(name(pnh, "aspect"), std::to_string(number));
-        } else {
-            throw InputError(name(pnh, "aspect"), "expected \"W:H\"");
-        }
-    }
+    getAspect(pnh, c);
     if (pnh.hasParam("gravity")) p.gravity = parseGravity(pnh);
     std::string method, hull;  // "" (the launch file's default): the config's
     get(pnh, "method", method);
@@ -103,11 +105,14 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
         p.suitability_given = !mode.empty();  // "" (the launch file's default): the config's, avoid by default
         if (p.suitability_given) c.suitability.mode = frontend::parseSuitabilityMode(name(pnh, "suitability"), mode);
     }
+}
+
+/// The CLI's pipeline options (projsurf detect --voxel-leaf ... -> ~voxel_leaf ...).
+void loadPipelineParams(const ros::NodeHandle &pnh, DetectorConfig &c) {
     getPositive(pnh, "max_tilt", c.max_tilt);
     int seed = static_cast<int>(c.seed);
     getCount(pnh, "seed", seed, 0);
     c.seed = static_cast<unsigned>(seed);
-    // The CLI's pipeline options (projsurf detect --voxel-leaf ... -> ~voxel_leaf ...).
     getPositive(pnh, "voxel_leaf", c.paper.voxel_leaf);
     getPositive(pnh, "ransac_distance", c.paper.ransac_distance);
     getCount(pnh, "max_outliers", c.paper.max_outliers, 0);
@@ -116,14 +121,20 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
     getNumber(pnh, "max_outlier_fraction", c.check.max_outlier_fraction);
     if (c.check.max_outlier_fraction < 0.0 || c.check.max_outlier_fraction > 1.0)
         throw InputError(name(pnh, "max_outlier_fraction"), "must be within [0, 1]");
+}
 
-    p.minimum = frontend::defaultMinimumSize(c.method);
-    getNumber(pnh, "min_width", p.minimum.width);
-    getNumber(pnh, "min_area", p.minimum.area);
-    if (p.minimum.width < 0.0) throw InputError(name(pnh, "min_width"), "must be >= 0");
-    if (p.minimum.area < 0.0) throw InputError(name(pnh, "min_area"), "must be >= 0");
+/// The smallest picture worth showing: the method's default, or ~min_width / ~min_area.
+frontend::MinimumSize loadMinimumSize(const ros::NodeHandle &pnh, Method method) {
+    frontend::MinimumSize minimum = frontend::defaultMinimumSize(method);
+    getNumber(pnh, "min_width", minimum.width);
+    getNumber(pnh, "min_area", minimum.area);
+    if (minimum.width < 0.0) throw InputError(name(pnh, "min_width"), "must be >= 0");
+    if (minimum.area < 0.0) throw InputError(name(pnh, "min_area"), "must be >= 0");
+    return minimum;
+}
 
-    // Frames and continuous mode.
+/// Frames and continuous mode: tf, the steady rectangle, the keystone's margins, the outputs.
+void loadFrameAndSteadyParams(const ros::NodeHandle &pnh, NodeParams &p) {
     get(pnh, "gravity_frame", p.gravity_frame);
     get(pnh, "fixed_frame", p.fixed_frame);
     getPositive(pnh, "tf_timeout", p.tf_timeout);
@@ -141,6 +152,20 @@ NodeParams loadParams(const ros::NodeHandle &pnh) {
     getNumber(pnh, "keystone_tolerance_px", p.keystone_tolerance_px);
     get(pnh, "framebuffer_file", p.framebuffer_file);
     get(pnh, "marker_ns", p.marker_ns);
+}
+
+}  // namespace
+
+NodeParams loadParams(const ros::NodeHandle &pnh) {
+    NodeParams p;
+    if (!pnh.getParam("calib", p.calib) || p.calib.empty())
+        throw InputError(name(pnh, "calib"), "is required: the path of the projector calibration YAML");
+    p.projector = readCalibration(p.calib, &p.calib_warnings);
+    loadOutputParams(pnh, p);
+    loadDetectorChoices(pnh, p);
+    loadPipelineParams(pnh, p.detector);
+    p.minimum = loadMinimumSize(pnh, p.detector.method);
+    loadFrameAndSteadyParams(pnh, p);
     return p;
 }
 

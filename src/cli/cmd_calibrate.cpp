@@ -181,47 +181,39 @@ void runChessboard(const CalibrateOptions &o, int res_w, int res_h) {
     for (const auto &w : stereoWarnings(f)) std::cerr << "projsurf: warning: " << w << "\n";
 }
 
-void run(const CalibrateOptions &o) {
-    if (!o.write_picture.empty()) return writePicture(o);
-    if (o.captures.empty()) throw CLI::RequiredError("--captures");
-    if (o.out.empty()) throw CLI::RequiredError("--out");
-    // Arguments first, then every input, before any work; the output only at the end.
+/// The projector's lens as given (--fov-deg in degrees, --resolution), refused by the lens
+/// check every reader applies: nothing is written that could not be read.
+struct LensArguments {
+    double fov_h_deg = 0, fov_v_deg = 0;
+    int width = 0, height = 0;
+};
+
+LensArguments lensArguments(const CalibrateOptions &o) {
     const auto [fov_h, fov_v] = parseTwo("--fov-deg", o.fov);
     if (!(fov_h > 0 && fov_h < 170 && fov_v > 0 && fov_v < 170))
         throw InputError("--fov-deg", "angles must be between 0 and 170 degrees");
     const auto [res_w, res_h] = frontend::parseResolution("--resolution", o.resolution);
-    {
-        // The lens check every reader applies (radians, for one): nothing is written that could not be read.
-        Projector lens;
-        lens.width = static_cast<int>(res_w);
-        lens.height = static_cast<int>(res_h);
-        lens.fov_h = fov_h * kDeg;
-        lens.fov_v = fov_v * kDeg;
-        const std::string problem = lensModelProblem(lens);
-        if (!problem.empty()) throw InputError("--fov-deg", problem);
-    }
-    if (o.threshold < 0 || o.threshold > 254) throw InputError("--threshold", "must be between 0 and 254");
-    std::error_code ec;
-    if (!fs::is_directory(o.captures, ec)) throw InputError(o.captures, "not a directory");
-    requireWritableLocation(o.out);
-    const fs::path dir(o.captures);
-    // patterns.yaml in any form (a broken link or a loop included) means structured light:
-    // its reader says what is wrong with it, or which pose folder is missing.
-    const bool structured = fs::symlink_status(dir / "patterns.yaml", ec).type() != fs::file_type::not_found;
-    const bool chessboard = !structured && isProcamFolder(o.captures);
-    // An option of another mode would be ignored: said, not ignored (as eval --published without --procam).
-    if (o.square_m != 0 && !chessboard)
-        throw InputError("--square-m", "is for the chessboard mode (capture_<k>/graycode_<NN>.png); " + o.captures +
-                                           " is a " + (structured ? "structured-light" : "disc-mode") + " folder");
-    if (structured) return runStructured(o, res_w, res_h);
-    if (chessboard) return runChessboard(o, res_w, res_h);
-    if (!fs::exists(dir / "camera.yaml", ec))
-        throw InputError((dir / "camera.yaml").string(),
-                         "no such file (the disc mode needs it; structured light with depth needs patterns.yaml + "
-                         "pose_<k>/ beside it; the chessboard mode needs capture_<k>/graycode_<NN>.png instead)");
-    const CameraIntrinsics camera = readCamera((dir / "camera.yaml").string());
+    Projector lens;  // the check reads radians
+    lens.width = static_cast<int>(res_w);
+    lens.height = static_cast<int>(res_h);
+    lens.fov_h = fov_h * kDeg;
+    lens.fov_v = fov_v * kDeg;
+    const std::string problem = lensModelProblem(lens);
+    if (!problem.empty()) throw InputError("--fov-deg", problem);
+    return {fov_h, fov_v, lens.width, lens.height};
+}
 
-    // capture_<k>_rgb.png for k = 0..N-1, each with its capture_<k>_depth.png.
+/// The disc mode's captures: capture_<k>_rgb.png with its capture_<k>_depth.png, k = 0..N-1.
+struct DiscCaptures {
+    std::vector<CaptureImages> images;
+    std::vector<std::string> rgb_paths, depth_paths;
+    std::vector<std::string> names;  ///< the colour images' file names
+};
+
+/// N, the number of capture_<k>_rgb.png in `dir`; refused when a number is out of range or
+/// missing, when the captures together are too big, or when there are fewer than 3.
+int discCaptureCount(const fs::path &dir, const std::string &captures_arg, const CameraIntrinsics &camera) {
+    std::error_code ec;
     std::map<int, std::string> found;
     const std::regex pattern(R"(capture_(\d+)_rgb\.png)");
     for (const auto &entry : fs::directory_iterator(dir, ec)) {
@@ -236,21 +228,22 @@ void run(const CalibrateOptions &o) {
     }
     const int n = static_cast<int>(found.size());
     if (static_cast<std::uint64_t>(n) * camera.width * camera.height > limits::kMaxCapturePixels)
-        throw InputError(o.captures, std::to_string(n) + " captures of " + std::to_string(camera.width) + " x " +
-                                         std::to_string(camera.height) + " pixels exceed the limit of " +
-                                         std::to_string(limits::kMaxCapturePixels) + " pixels in all");
+        throw InputError(captures_arg, std::to_string(n) + " captures of " + std::to_string(camera.width) + " x " +
+                                           std::to_string(camera.height) + " pixels exceed the limit of " +
+                                           std::to_string(limits::kMaxCapturePixels) + " pixels in all");
     for (int k = 0; k < n; ++k)
         if (!found.count(k))
             throw InputError((dir / ("capture_" + std::to_string(k) + "_rgb.png")).string(),
                              "missing (captures must be numbered 0.." + std::to_string(n - 1) + ")");
     if (n < 3)
-        throw InputError(o.captures, "found " + std::to_string(n) +
-                                         " capture(s) (capture_k_rgb.png), need at least 3 taken at different "
-                                         "distances from the wall");
+        throw InputError(captures_arg, "found " + std::to_string(n) +
+                                           " capture(s) (capture_k_rgb.png), need at least 3 taken at different "
+                                           "distances from the wall");
+    return n;
+}
 
-    std::vector<CaptureImages> captures;
-    CalibrationProvenance prov;
-    std::vector<std::string> rgb_paths, depth_paths;
+DiscCaptures readDiscCaptures(const fs::path &dir, int n, const CameraIntrinsics &camera) {
+    DiscCaptures captures;
     for (int k = 0; k < n; ++k) {
         const std::string rgb = (dir / ("capture_" + std::to_string(k) + "_rgb.png")).string();
         const std::string dep = (dir / ("capture_" + std::to_string(k) + "_depth.png")).string();
@@ -258,41 +251,48 @@ void run(const CalibrateOptions &o) {
         c.color = readImageOfSize(rgb, cv::IMREAD_COLOR, camera.width, camera.height, "camera.yaml");
         c.depth = readImageOfSize(dep, cv::IMREAD_UNCHANGED, camera.width, camera.height, "camera.yaml");
         if (c.depth.type() != CV_16UC1) throw InputError(dep, "expected a 16-bit single-channel depth PNG");
-        captures.push_back(c);
-        rgb_paths.push_back(rgb);
-        depth_paths.push_back(dep);
-        prov.capture_names.push_back(fs::path(rgb).filename().string());
+        captures.images.push_back(c);
+        captures.rgb_paths.push_back(rgb);
+        captures.depth_paths.push_back(dep);
+        captures.names.push_back(fs::path(rgb).filename().string());
     }
+    return captures;
+}
 
+/// The paper's calibration (3.1) of the captures; a failure is the input error of the file it
+/// failed on.
+Calibration calibrateDisc(const CalibrateOptions &o, const LensArguments &lens, const DiscCaptures &captures,
+                          const CameraIntrinsics &camera) {
     CalibrationConfig config;
     config.disc.threshold = o.threshold;
-    config.width = static_cast<int>(res_w);
-    config.height = static_cast<int>(res_h);
-    config.fov_h = fov_h * kDeg;
-    config.fov_v = fov_v * kDeg;
-    const Calibration cal = calibrateProjector(captures, camera, config);
+    config.width = lens.width;
+    config.height = lens.height;
+    config.fov_h = lens.fov_h_deg * kDeg;
+    config.fov_v = lens.fov_v_deg * kDeg;
+    const Calibration cal = calibrateProjector(captures.images, camera, config);
     switch (cal.failure) {
     case CalibrationFailure::None: break;
     case CalibrationFailure::NoDisc:
-        throw InputError(rgb_paths.at(cal.failed_capture),
+        throw InputError(captures.rgb_paths.at(cal.failed_capture),
                          cal.message + (cal.message.find("threshold") != std::string::npos ? " (--threshold)" : ""));
-    case CalibrationFailure::SizeMismatch: throw InputError(rgb_paths.at(cal.failed_capture), cal.message);
-    case CalibrationFailure::NoDepth: throw InputError(depth_paths.at(cal.failed_capture), cal.message);
+    case CalibrationFailure::SizeMismatch: throw InputError(captures.rgb_paths.at(cal.failed_capture), cal.message);
+    case CalibrationFailure::NoDepth: throw InputError(captures.depth_paths.at(cal.failed_capture), cal.message);
     default: throw InputError(o.captures, cal.message);
     }
+    return cal;
+}
 
-    prov.captures_dir = o.captures;
-    prov.threshold = o.threshold;
-    prov.created_utc = utcNow();
-    writeCalibrationReport(o.out, cal, prov);
-
+/// The axis, each capture's disc and residual, a warning for each capture with more than one
+/// bright blob, and the fit with its verdict.
+void printDiscCalibration(const std::string &out, const Calibration &cal, const DiscCaptures &captures) {
+    const int n = static_cast<int>(captures.names.size());
     const Eigen::Vector3d &d = cal.projector.direction, &og = cal.projector.origin;
-    std::cout << "projsurf calibrate: " << n << " captures -> " << o.out << "\n"
+    std::cout << "projsurf calibrate: " << n << " captures -> " << out << "\n"
               << fmt("  axis direction [%.5f, %.5f, %.5f]", d.x(), d.y(), d.z())
               << fmt(", origin (z = 0, A.1) [%.4f, %.4f, %.4f] m\n", og.x(), og.y(), og.z());
     for (int k = 0; k < n; ++k) {
         const CaptureResult &r = cal.captures[k];
-        std::cout << "  " << prov.capture_names[k]
+        std::cout << "  " << captures.names[k]
                   << fmt(": disc at (%.2f, %.2f) px, radius %.1f px", r.disc.centroid.x(), r.disc.centroid.y(),
                          r.disc.radius_px)
                   << fmt(" -> [%.4f, %.4f, %.4f] m", r.lifted.point->x(), r.lifted.point->y(), r.lifted.point->z())
@@ -300,23 +300,71 @@ void run(const CalibrateOptions &o) {
     }
     for (int k = 0; k < n; ++k)
         if (cal.captures[k].disc.candidates > 1)
-            std::cerr << "projsurf: warning: " << rgb_paths[k] << ": " << cal.captures[k].disc.candidates
+            std::cerr << "projsurf: warning: " << captures.rgb_paths[k] << ": " << cal.captures[k].disc.candidates
                       << " bright blobs; used the largest round one"
                       << fmt(" at (%.0f, %.0f) px", cal.captures[k].disc.centroid.x(),
                              cal.captures[k].disc.centroid.y())
                       << " (raise --threshold or darken the room if that is not the disc)\n";
-    const std::string verdict = calibrationVerdict(cal.axis);
     std::cout << fmt("  fit: residual rms %.2f mm, max %.2f mm, centroids span %.2f m along the axis",
                      cal.axis.rms_m * 1000, cal.axis.max_m * 1000, cal.axis.spread_m)
-              << ": " << verdict << "\n";
-    if (verdict == "redo") {
-        // Written (to look at), but not to be used: exit 3, so a script stops here.
-        std::cerr << "projsurf: error: " << o.out << ": written, but the captures disagree by up to "
-                  << fmt("%.1f mm", cal.axis.max_m * 1000)
-                  << " from one line (verdict redo); check the robot did not turn the projector between captures "
-                     "and take them again\n";
-        throw ExitStatus{kExitRedo};
-    }
+              << ": " << calibrationVerdict(cal.axis) << "\n";
+}
+
+/// Verdict redo: the calibration is written (to look at), but not to be used: exit 3, so a
+/// script stops here.
+void stopWhenTheCapturesDisagree(const std::string &out, const Calibration &cal) {
+    if (calibrationVerdict(cal.axis) != "redo") return;
+    std::cerr << "projsurf: error: " << out << ": written, but the captures disagree by up to "
+              << fmt("%.1f mm", cal.axis.max_m * 1000)
+              << " from one line (verdict redo); check the robot did not turn the projector between captures "
+                 "and take them again\n";
+    throw ExitStatus{kExitRedo};
+}
+
+/// The disc mode (paper 3.1): camera.yaml and capture_<k>_rgb.png / capture_<k>_depth.png.
+void runDisc(const CalibrateOptions &o, const LensArguments &lens) {
+    const fs::path dir(o.captures);
+    std::error_code ec;
+    if (!fs::exists(dir / "camera.yaml", ec))
+        throw InputError((dir / "camera.yaml").string(),
+                         "no such file (the disc mode needs it; structured light with depth needs patterns.yaml + "
+                         "pose_<k>/ beside it; the chessboard mode needs capture_<k>/graycode_<NN>.png instead)");
+    const CameraIntrinsics camera = readCamera((dir / "camera.yaml").string());
+    const int n = discCaptureCount(dir, o.captures, camera);
+    const DiscCaptures captures = readDiscCaptures(dir, n, camera);
+    const Calibration cal = calibrateDisc(o, lens, captures, camera);
+    CalibrationProvenance prov;
+    prov.capture_names = captures.names;
+    prov.captures_dir = o.captures;
+    prov.threshold = o.threshold;
+    prov.created_utc = utcNow();
+    writeCalibrationReport(o.out, cal, prov);
+    printDiscCalibration(o.out, cal, captures);
+    stopWhenTheCapturesDisagree(o.out, cal);
+}
+
+void run(const CalibrateOptions &o) {
+    if (!o.write_picture.empty()) return writePicture(o);
+    if (o.captures.empty()) throw CLI::RequiredError("--captures");
+    if (o.out.empty()) throw CLI::RequiredError("--out");
+    // Arguments first, then every input, before any work; the output only at the end.
+    const LensArguments lens = lensArguments(o);
+    if (o.threshold < 0 || o.threshold > 254) throw InputError("--threshold", "must be between 0 and 254");
+    std::error_code ec;
+    if (!fs::is_directory(o.captures, ec)) throw InputError(o.captures, "not a directory");
+    requireWritableLocation(o.out);
+    const fs::path dir(o.captures);
+    // patterns.yaml in any form (a broken link or a loop included) means structured light:
+    // its reader says what is wrong with it, or which pose folder is missing.
+    const bool structured = fs::symlink_status(dir / "patterns.yaml", ec).type() != fs::file_type::not_found;
+    const bool chessboard = !structured && isProcamFolder(o.captures);
+    // An option of another mode would be ignored: said, not ignored (as eval --published without --procam).
+    if (o.square_m != 0 && !chessboard)
+        throw InputError("--square-m", "is for the chessboard mode (capture_<k>/graycode_<NN>.png); " + o.captures +
+                                           " is a " + (structured ? "structured-light" : "disc-mode") + " folder");
+    if (structured) return runStructured(o, lens.width, lens.height);
+    if (chessboard) return runChessboard(o, lens.width, lens.height);
+    runDisc(o, lens);
 }
 
 }  // namespace

@@ -115,13 +115,10 @@ void runBag(const DetectOptions &o, const DetectorConfig &cfg, const Projector &
     }
 }
 
-void run(const DetectOptions &o, const CLI::App &sub) {
-    if (o.print_config) {  // the settings only: no input is needed or read
-        std::cout << frontend::detectorConfigYaml(detectorConfig(o, sub));
-        return;
-    }
+/// Exactly one input (--cloud, --depth or --bag) and only the options that go with it; refused
+/// before any work, and before any output is written.
+void checkDetectInputs(const DetectOptions &o) {
     if (o.calib.empty()) throw InputError("--calib is required (see projsurf detect --help)");
-    // Validate every input before any work, and before any output is written.
     if (!o.bag.empty()) {
         if (!o.cloud.empty() || !o.depth.empty())
             throw InputError("arguments", "give only one of --cloud, --depth or --bag");
@@ -135,51 +132,72 @@ void run(const DetectOptions &o, const CLI::App &sub) {
         throw InputError("arguments", "give exactly one of --cloud FILE, --depth FILE or --bag FILE");
     }
     if (!o.depth.empty() && o.camera.empty()) throw InputError("arguments", "--depth needs --camera camera.yaml");
-    const DetectorConfig cfg = detectorConfig(o, sub);
-    warnIfIgnored(sub, cfg.method);
-    const frontend::GravityChoice gravity_choice = frontend::parseGravityChoice("--gravity", o.gravity);
+}
+
+void checkDetectOutputs(const DetectOptions &o) {
     for (const auto &out : {o.json, o.overlay})
         if (!out.empty()) requireWritableFile(out);
     if (!o.overlay.empty()) requireImageWriter(o.overlay);
+}
 
-    const Projector projector = readCalibrationWarned(o.calib);
-    if (readCalibrationVerdict(o.calib) == "redo")
+/// --calib's projector, with a warning when its fit's verdict is redo.
+Projector detectionProjector(const std::string &calib) {
+    const Projector projector = readCalibrationWarned(calib);
+    if (readCalibrationVerdict(calib) == "redo")
         std::fprintf(stderr,
                      "projsurf: warning: %s: its captures disagree (fit verdict redo); the picture may land "
                      "off the detected area until you calibrate again\n",
-                     o.calib.c_str());
-    frontend::MinimumSize minimum = frontend::defaultMinimumSize(cfg.method);
+                     calib.c_str());
+    return projector;
+}
+
+/// The method's smallest picture worth showing, or --min-width / --min-area where given.
+frontend::MinimumSize minimumSize(const DetectOptions &o, Method method) {
+    frontend::MinimumSize minimum = frontend::defaultMinimumSize(method);
     if (o.min_width >= 0.0) minimum.width = o.min_width;
     if (o.min_area >= 0.0) minimum.area = o.min_area;
-    if (!o.bag.empty()) return runBag(o, cfg, projector, gravity_choice, minimum);
-    std::unique_ptr<CameraIntrinsics> camera;
+    return minimum;
+}
+
+/// One frame to detect on: the cloud (of --cloud, or of --depth through --camera's camera)
+/// and --rgb's colour where it is registered to it.
+struct DetectInput {
+    std::unique_ptr<CameraIntrinsics> camera;  ///< with --depth only
     Cloud cloud;
+    cv::Mat color;  ///< empty without --rgb, or when its colour was not used
+};
+
+DetectInput readDetectInput(const DetectOptions &o) {
+    DetectInput in;
     if (!o.cloud.empty()) {
-        cloud = readCloud(o.cloud);
+        in.cloud = readCloud(o.cloud);
     } else {
         std::vector<std::string> camera_warnings;
-        camera = std::make_unique<CameraIntrinsics>(readCamera(o.camera, &camera_warnings));
+        in.camera = std::make_unique<CameraIntrinsics>(readCamera(o.camera, &camera_warnings));
         for (const std::string &w : camera_warnings) std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
-        cloud = readDepthCloud(o.depth, o.camera);
+        in.cloud = readDepthCloud(o.depth, o.camera);
     }
-    cv::Mat color;
     if (!o.rgb.empty()) {
-        color = readImage(o.rgb, cv::IMREAD_UNCHANGED);
-        const frontend::ColourAttachment attached = frontend::attachRegisteredColour(cloud, color, o.rgb);
+        in.color = readImage(o.rgb, cv::IMREAD_UNCHANGED);
+        const frontend::ColourAttachment attached = frontend::attachRegisteredColour(in.cloud, in.color, o.rgb);
         for (const std::string &w : attached.warnings) std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
-        if (!attached.used) color.release();
+        if (!attached.used) in.color.release();
     }
-    if (!o.suitability.empty() && o.suitability != "off" && !cloud.hasColour() && cfg.method == Method::Default)
+    return in;
+}
+
+void warnIfSuitabilityHasNoColour(const DetectOptions &o, const Cloud &cloud, Method method) {
+    if (!o.suitability.empty() && o.suitability != "off" && !cloud.hasColour() && method == Method::Default)
         std::fprintf(stderr,
                      "projsurf: warning: --suitability %s needs registered colour (--rgb); the surface is judged by "
                      "depth only\n",
                      o.suitability.c_str());
+}
 
-    SurfaceDetector detector(projector, cfg);
-    const frontend::GravityDetection answer =
-        frontend::detectWithGravity(detector, cloud, gravity_choice, minimum,
-                                    (o.cloud.empty() ? o.depth : o.cloud) + withSettings(o.config_file));
-    const Detection &det = answer.detection;
+/// What the answer says about the gravity used (no floor for --gravity auto, a camera that is
+/// not level, a gravity that does not fit the cloud) and about the cloud's depth range.
+void warnAboutGravityAndDepth(const DetectOptions &o, const frontend::GravityChoice &gravity_choice,
+                              const frontend::GravityDetection &answer, const Cloud &cloud) {
     if (gravity_choice.from_floor && !answer.gravity.floor_found)
         std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
     else if (o.gravity.empty())
@@ -190,11 +208,17 @@ void run(const DetectOptions &o, const CLI::App &sub) {
             std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
     if (const auto w = frontend::depthRangeWarning(cloud, o.depth.empty() ? o.cloud : o.camera, !o.depth.empty()))
         std::fprintf(stderr, "projsurf: warning: %s\n", w->c_str());
+}
+
+/// The JSON (to --json, else stdout) and the overlay: both files, or neither, written beside
+/// their targets and renamed once both are there; with --json, the summary on stdout.
+void writeDetection(const DetectOptions &o, const Detection &det, const DetectorConfig &cfg, const Projector &projector,
+                    const DetectInput &in) {
     const nlohmann::json j = frontend::detectionDocument(det, cfg, projector, o.explain);
-    // Both outputs, or neither: written beside their targets, renamed once both are there.
     OutputGroup outputs;
     if (!o.json.empty()) outputs.addFile(o.json, j.dump(2) + "\n");
-    if (!o.overlay.empty()) outputs.addImage(o.overlay, renderOverlay(cloud, det, cfg, camera.get(), color, o.explain));
+    if (!o.overlay.empty())
+        outputs.addImage(o.overlay, renderOverlay(in.cloud, det, cfg, in.camera.get(), in.color, o.explain));
     outputs.commit();
     if (o.json.empty()) {
         std::cout << j.dump(2) << "\n";
@@ -203,6 +227,29 @@ void run(const DetectOptions &o, const CLI::App &sub) {
         if (o.explain)
             for (const std::string &line : frontend::candidateLines(det)) std::printf("%s\n", line.c_str());
     }
+}
+
+void run(const DetectOptions &o, const CLI::App &sub) {
+    if (o.print_config) {  // the settings only: no input is needed or read
+        std::cout << frontend::detectorConfigYaml(detectorConfig(o, sub));
+        return;
+    }
+    checkDetectInputs(o);
+    const DetectorConfig cfg = detectorConfig(o, sub);
+    warnIfIgnored(sub, cfg.method);
+    const frontend::GravityChoice gravity_choice = frontend::parseGravityChoice("--gravity", o.gravity);
+    checkDetectOutputs(o);
+    const Projector projector = detectionProjector(o.calib);
+    const frontend::MinimumSize minimum = minimumSize(o, cfg.method);
+    if (!o.bag.empty()) return runBag(o, cfg, projector, gravity_choice, minimum);
+    const DetectInput in = readDetectInput(o);
+    warnIfSuitabilityHasNoColour(o, in.cloud, cfg.method);
+    SurfaceDetector detector(projector, cfg);
+    const frontend::GravityDetection answer =
+        frontend::detectWithGravity(detector, in.cloud, gravity_choice, minimum,
+                                    (o.cloud.empty() ? o.depth : o.cloud) + withSettings(o.config_file));
+    warnAboutGravityAndDepth(o, gravity_choice, answer, in.cloud);
+    writeDetection(o, answer.detection, cfg, projector, in);
 }
 
 }  // namespace

@@ -153,6 +153,26 @@ eval::ColourSuiteOptions colourSuiteOptions(const EvalOptions &o) {
     return copt;
 }
 
+/// eval's progress bar, drawn on stderr unless --no-progress (a log, too: eval's runs are
+/// long), and the callback that moves it (empty without the bar).
+struct EvalProgress {
+    std::unique_ptr<frontend::ProgressLine> bar;
+    eval::Progress progress;
+    /// The drawn line ends as it is; the next stage starts a new one.
+    void endLine() const {
+        if (bar) bar->endLine();
+    }
+};
+
+EvalProgress evalProgress(const EvalOptions &o, const char *unit) {
+    EvalProgress p;
+    if (o.no_progress) return p;
+    p.bar = std::make_unique<frontend::ProgressLine>("eval", unit, true);
+    frontend::ProgressLine *line = p.bar.get();
+    p.progress = [line](int done, int total, const std::string &what) { line->update(done, total, what); };
+    return p;
+}
+
 /// One suite's table alone: DIR/<file> (created with DIR), the table and its summary line on stdout.
 void writeSuiteTable(const EvalOptions &o, const std::string &file, const std::string &md, const std::string &summary) {
     std::error_code ec;
@@ -248,14 +268,10 @@ void runLabelledTable(const EvalOptions &o, const std::vector<std::string> &labe
         throw InputError(o.real_dir.empty() ? std::string("--real-dir") : o.real_dir,
                          "no folder of real frames (--labelled-only needs them)");
     if (labels.empty()) throw InputError(labels_dir.empty() ? std::string("--labels") : labels_dir, "no label files");
-    std::unique_ptr<frontend::ProgressLine> bar;
-    if (!o.no_progress) bar = std::make_unique<frontend::ProgressLine>("eval", "frames", true);
-    const eval::Progress progress =
-        !bar ? eval::Progress()
-             : eval::Progress([&bar](int done, int total, const std::string &what) { bar->update(done, total, what); });
+    EvalProgress bar = evalProgress(o, "frames");
     const std::vector<eval::LabelledFrame> labelled =
-        runLabelled(labels, label_frames, have_real ? o.real_dir : "", repo_frames, o.labels_dir_given, progress);
-    if (bar) bar->endLine();
+        runLabelled(labels, label_frames, have_real ? o.real_dir : "", repo_frames, o.labels_dir_given, bar.progress);
+    bar.endLine();
     fs::create_directories(o.out, ec);
     if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
     eval::writeLabelledPictures((fs::path(o.out) / "labels").string(), labelled);
@@ -268,13 +284,9 @@ void runLabelledTable(const EvalOptions &o, const std::vector<std::string> &labe
 /// The paper's experiments alone (Tables 1-3, Fig. 15): DIR/report.md without the other
 /// suites, its charts, and the headline.
 void runPaperTables(const EvalOptions &o, const eval::EvalPlan &plan, const std::string &command) {
-    std::unique_ptr<frontend::ProgressLine> bar;
-    if (!o.no_progress) bar = std::make_unique<frontend::ProgressLine>("eval", "runs", true);
-    const eval::Progress progress =
-        !bar ? eval::Progress()
-             : eval::Progress([&bar](int done, int total, const std::string &what) { bar->update(done, total, what); });
-    const eval::EvalResults results = eval::runEval(plan, progress);
-    if (bar) bar->endLine();
+    EvalProgress bar = evalProgress(o, "runs");
+    const eval::EvalResults results = eval::runEval(plan, bar.progress);
+    bar.endLine();
     eval::ReportInfo info;
     info.command = command;
     info.quick = o.quick;
@@ -291,71 +303,79 @@ void runPaperTables(const EvalOptions &o, const eval::EvalPlan &plan, const std:
         std::printf("  %s\n", note.c_str());
 }
 
-void run(const EvalOptions &o, const std::string &command) {
-    if (!o.procam.empty()) return runProcam(o);
+/// The label files of the real frames: their folder, each file and each one's frame.
+struct EvalLabels {
+    std::string dir;
+    std::vector<std::string> files, frames;
+};
+
+void checkEvalArguments(const EvalOptions &o) {
     if (!o.json.empty()) throw InputError("--json", "only with --procam");
     if (o.out.empty()) throw InputError("--out", "an output directory is required");
     if (o.rounds < 1 || o.rounds > 100) throw InputError("--rounds", "must be between 1 and 100");
-    const fs::path out(o.out);
     std::error_code ec;
-    if (fs::exists(out, ec) && !fs::is_directory(out, ec)) throw InputError(o.out, "exists and is not a directory");
+    if (fs::exists(o.out, ec) && !fs::is_directory(o.out, ec)) throw InputError(o.out, "exists and is not a directory");
     if (o.real_dir_given && !o.real_dir.empty() && !fs::is_directory(o.real_dir, ec))
         throw InputError(o.real_dir, "is not a directory (--real-dir)");
     if (o.labels_dir_given && !o.labels_dir.empty() && !fs::is_directory(o.labels_dir, ec))
         throw InputError(o.labels_dir, "is not a directory (--labels)");
-    // Bad label files are reported before the long simulation runs.
-    const std::string labels_dir = o.labels_dir_given ? o.labels_dir : defaultLabelsDir(o.labels_dir);
-    const std::vector<std::string> labels =
-        labels_dir.empty() ? std::vector<std::string>{} : eval::listLabelFiles(labels_dir);
-    std::vector<std::string> label_frames;
-    for (const std::string &l : labels) label_frames.push_back(eval::readRealLabel(l).frame);
+}
 
-    if (o.projector_only) return runProjectorTable(o);
-    if (o.colour_only) return runColourTable(o);
-    if (o.realistic_only) return runRealisticTable(o);
-    if (o.plan_only) return runPlanTable(o);
-    if (o.labelled_only) return runLabelledTable(o, labels, label_frames, labels_dir);
-    const int rounds = o.quick ? std::min(o.rounds, 2) : o.rounds;
-    if (o.paper_only) return runPaperTables(o, eval::paperEvalPlan(rounds, o.quick, o.seed), command);
-    // The default real-frame folder is taken from the working directory, and said (before the
-    // long simulation) when it is not there.
+/// Every label file read: bad label files are reported before the long simulation runs.
+EvalLabels readEvalLabels(const EvalOptions &o) {
+    EvalLabels labels;
+    labels.dir = o.labels_dir_given ? o.labels_dir : defaultLabelsDir(o.labels_dir);
+    if (!labels.dir.empty()) labels.files = eval::listLabelFiles(labels.dir);
+    for (const std::string &l : labels.files) labels.frames.push_back(eval::readRealLabel(l).frame);
+    return labels;
+}
+
+/// The default real-frame folder is taken from the working directory, and said (before the
+/// long simulation) when it is not there.
+void noteMissingRealFrames(const EvalOptions &o) {
+    std::error_code ec;
     if (!o.real_dir_given && !fs::is_directory(o.real_dir, ec))
         std::fprintf(stderr,
                      "projsurf: note: %s: no such folder (from %s); the report has no real frames (--real-dir)\n",
                      o.real_dir.c_str(), fs::current_path(ec).string().c_str());
+}
 
-    const eval::EvalPlan plan = eval::paperEvalPlan(rounds, o.quick, o.seed);
-    const double load_before = loadAverage();
-    // Drawn on stderr unless --no-progress (a log, too: eval's runs are long).
-    std::unique_ptr<frontend::ProgressLine> bar;
-    if (!o.no_progress) bar = std::make_unique<frontend::ProgressLine>("eval", "runs", true);
-    const eval::Progress progress =
-        !bar ? eval::Progress()
-             : eval::Progress([&bar](int done, int total, const std::string &what) { bar->update(done, total, what); });
-    const eval::EvalResults results = eval::runEval(plan, progress);
-    // The realistic suite (realistic sensors and scenes), the default method.
+/// What the full eval simulates: the paper's experiments (both methods), and the realistic
+/// and colour suites with the default method.
+struct SimulatedSuites {
+    eval::EvalResults results;
+    eval::RealisticSuiteResult realistic;
+    eval::ColourSuiteResult colour;
+};
+
+SimulatedSuites runSimulatedSuites(const EvalOptions &o, const eval::EvalPlan &plan, int rounds,
+                                   const eval::Progress &progress) {
+    SimulatedSuites s;
+    s.results = eval::runEval(plan, progress);
     eval::RealisticSuiteOptions ropt = o.quick ? eval::quickRealisticSuite() : eval::RealisticSuiteOptions{};
     if (!o.quick) ropt.rounds = rounds;
     ropt.seed = o.seed;
-    const eval::RealisticSuiteResult realistic = eval::runRealisticSuite(ropt, eval::defaultVariant().config, progress);
-    // The colour suite (surface suitability), the default method.
-    const eval::ColourSuiteResult colour =
-        eval::runColourSuite(colourSuiteOptions(o), eval::defaultVariant().config, progress);
+    s.realistic = eval::runRealisticSuite(ropt, eval::defaultVariant().config, progress);
+    s.colour = eval::runColourSuite(colourSuiteOptions(o), eval::defaultVariant().config, progress);
+    return s;
+}
 
-    // Real frames: default method, the contract's example calibration, the default gravity.
-    std::vector<eval::GalleryEntry> gallery;
-    eval::ReportInfo info;
-    info.command = command;
-    info.quick = o.quick;
-    info.realistic_markdown = eval::realisticSuiteMarkdown(realistic);
-    const auto t0 = std::chrono::steady_clock::now();
-    const std::string &real_dir = o.real_dir;
-    // The repository's own frames (data/real) join the default folder's; a --real-dir stands alone.
-    const std::string repo_frames = o.real_dir_given ? "" : defaultLabelsDir(kRepoFrames);
+/// The real frames' folders: those of `real_dir`, and the repository's own frames
+/// (`repo_frames`, data/real) that are not in it.
+std::vector<std::string> realFrameFolders(const std::string &real_dir, const std::string &repo_frames) {
+    std::error_code ec;
     std::vector<std::string> frames = real_dir.empty() ? std::vector<std::string>{} : eval::listFrameFolders(real_dir);
     if (!repo_frames.empty() && fs::is_directory(repo_frames, ec))
         for (const std::string &f : eval::listFrameFolders(repo_frames))
             if (frameParent(fs::path(f).filename().string(), real_dir, "").empty()) frames.push_back(f);
+    return frames;
+}
+
+/// Each real frame detected with the default method, the contract's example calibration and
+/// the default gravity.
+std::vector<eval::GalleryEntry> detectRealFrames(const std::vector<std::string> &frames,
+                                                 const eval::Progress &progress) {
+    std::vector<eval::GalleryEntry> gallery;
     for (std::size_t i = 0; i < frames.size(); ++i) {
         if (progress)
             progress(static_cast<int>(i), static_cast<int>(frames.size()),
@@ -364,41 +384,91 @@ void run(const EvalOptions &o, const std::string &command) {
     }
     if (progress && !frames.empty())
         progress(static_cast<int>(frames.size()), static_cast<int>(frames.size()), "real frames");
-    if (bar) bar->endLine();
-    info.real_dir = frames.empty() ? "" : real_dir;
+    return gallery;
+}
 
-    // Labelled real frames: each label's projector and gravity, scored against the label.
-    const std::vector<eval::LabelledFrame> labelled =
-        frames.empty() ? std::vector<eval::LabelledFrame>{}
-                       : runLabelled(labels, label_frames, real_dir, repo_frames, o.labels_dir_given, progress);
-    if (bar && !labelled.empty()) bar->endLine();
-    if (!labelled.empty()) {
-        info.labelled = &labelled;
-        info.labels_dir = labels_dir;
-    }
-    const double load_after = loadAverage();
-    if (!std::isnan(load_before) && !std::isnan(load_after)) {
-        char buf[160];
-        std::snprintf(buf, sizeof buf, "1-minute load average %.1f at the start, %.1f at the end, %u hardware threads",
-                      load_before, load_after, std::thread::hardware_concurrency());
-        info.load = buf;
-    }
-    info.real_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+/// The machine's load while eval ran, for the report; "" when unknown.
+std::string loadLine(double load_before, double load_after) {
+    if (std::isnan(load_before) || std::isnan(load_after)) return "";
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "1-minute load average %.1f at the start, %.1f at the end, %u hardware threads",
+                  load_before, load_after, std::thread::hardware_concurrency());
+    return buf;
+}
 
+/// DIR/report.md with its charts and gallery, the colour suite's table appended.
+void writeFullReport(const EvalOptions &o, const SimulatedSuites &suites,
+                     const std::vector<eval::GalleryEntry> &gallery, const eval::ReportInfo &info) {
+    const fs::path out(o.out);
+    std::error_code ec;
     fs::create_directories(out, ec);
     if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
-    writeEvalReport(o.out, results, gallery, info);
+    writeEvalReport(o.out, suites.results, gallery, info);
     std::ofstream(out / "report.md", std::ios::app) << "\n## Colour suite: surface suitability\n\n"
-                                                    << eval::colourSuiteMarkdown(colour);
+                                                    << eval::colourSuiteMarkdown(suites.colour);
+}
+
+void printFullSummary(const EvalOptions &o, int rounds, const SimulatedSuites &suites, std::size_t real_frames,
+                      const std::vector<eval::LabelledFrame> &labelled) {
+    const eval::EvalResults &results = suites.results;
     std::printf("eval: %zu detections in %.1f s (%d rounds%s), %zu real frames; wrote %s/report.md\n",
                 results.trials.size() + results.keystone.size(), results.seconds, rounds, o.quick ? ", quick" : "",
-                gallery.size(), o.out.c_str());
+                real_frames, o.out.c_str());
     std::printf("%s\n", evalHeadlineText(results).c_str());
     if (const std::string note = eval::paperCriterionRoundsNote(rounds); !note.empty()) std::printf("  %s\n", note.c_str());
-    std::printf("%s\n", eval::realisticSuiteSummary(realistic).c_str());
-    std::printf("%s\n", eval::colourSuiteSummary(colour).c_str());
+    std::printf("%s\n", eval::realisticSuiteSummary(suites.realistic).c_str());
+    std::printf("%s\n", eval::colourSuiteSummary(suites.colour).c_str());
     printLabelledLines(labelled);
+}
+
+/// The whole eval: the simulated suites, the real frames and the labelled ones, DIR/report.md
+/// and the summary; without --quick, the projector table too.
+void runFullEval(const EvalOptions &o, const std::string &command, const EvalLabels &labels, int rounds) {
+    noteMissingRealFrames(o);
+    const eval::EvalPlan plan = eval::paperEvalPlan(rounds, o.quick, o.seed);
+    const double load_before = loadAverage();
+    EvalProgress bar = evalProgress(o, "runs");
+    const SimulatedSuites suites = runSimulatedSuites(o, plan, rounds, bar.progress);
+    eval::ReportInfo info;
+    info.command = command;
+    info.quick = o.quick;
+    info.realistic_markdown = eval::realisticSuiteMarkdown(suites.realistic);
+    const auto t0 = std::chrono::steady_clock::now();
+    // The repository's own frames (data/real) join the default folder's; a --real-dir stands alone.
+    const std::string repo_frames = o.real_dir_given ? "" : defaultLabelsDir(kRepoFrames);
+    const std::vector<std::string> frames = realFrameFolders(o.real_dir, repo_frames);
+    const std::vector<eval::GalleryEntry> gallery = detectRealFrames(frames, bar.progress);
+    bar.endLine();
+    info.real_dir = frames.empty() ? "" : o.real_dir;
+    // Labelled real frames: each label's projector and gravity, scored against the label.
+    const std::vector<eval::LabelledFrame> labelled =
+        frames.empty()
+            ? std::vector<eval::LabelledFrame>{}
+            : runLabelled(labels.files, labels.frames, o.real_dir, repo_frames, o.labels_dir_given, bar.progress);
+    if (!labelled.empty()) {
+        bar.endLine();
+        info.labelled = &labelled;
+        info.labels_dir = labels.dir;
+    }
+    info.load = loadLine(load_before, loadAverage());
+    info.real_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    writeFullReport(o, suites, gallery, info);
+    printFullSummary(o, rounds, suites, gallery.size(), labelled);
     if (!o.quick) runProjectorTable(o);
+}
+
+void run(const EvalOptions &o, const std::string &command) {
+    if (!o.procam.empty()) return runProcam(o);
+    checkEvalArguments(o);
+    const EvalLabels labels = readEvalLabels(o);
+    if (o.projector_only) return runProjectorTable(o);
+    if (o.colour_only) return runColourTable(o);
+    if (o.realistic_only) return runRealisticTable(o);
+    if (o.plan_only) return runPlanTable(o);
+    if (o.labelled_only) return runLabelledTable(o, labels.files, labels.frames, labels.dir);
+    const int rounds = o.quick ? std::min(o.rounds, 2) : o.rounds;
+    if (o.paper_only) return runPaperTables(o, eval::paperEvalPlan(rounds, o.quick, o.seed), command);
+    runFullEval(o, command, labels, rounds);
 }
 
 }  // namespace

@@ -79,15 +79,37 @@ void writeFrame(const fs::path &dir, const std::string &stem, const sim::RgbdFra
     if (with_cloud) writeCloudPcd((dir / (stem + "cloud.pcd")).string(), frame.cloud);
 }
 
-void run(const SimulateOptions &o) {
-    if (o.list) {
-        for (const auto &name : sim::scenarioNames())
-            std::cout << name << "\t" << sim::makeScenario(name, 2.0, 0.0).description << "\n";
-        for (const auto &name : sim::realisticScenarioNames())
-            std::cout << name << "\t" << sim::makeRealisticScenario(name, 2.0, 0.0).description << "\n";
-        return;
-    }
-    // Arguments and inputs first; nothing is written until everything is rendered.
+/// The depth sensor a frame is rendered through.
+struct SimulatedSensor {
+    bool independent = false;                   ///< the paper experiments' independent-noise Kinect
+    std::optional<sim::DepthSensor> realistic;  ///< none when independent or noise-free
+    /// The independent model at the chosen sensor's camera and range (exact with --noise-free):
+    /// the frame when there is no realistic sensor, the ground truth's limits, the captures.
+    sim::SensorModel model;
+};
+
+/// What a scenario's frame is: the frame, its ground truth, and the picture seen by the audience.
+struct SimulatedScene {
+    sim::RgbdFrame frame;
+    sim::GroundTruth truth;
+    cv::Mat audience;  ///< empty without --picture
+};
+
+void createFolder(const fs::path &dir) {
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec) throw InputError(dir.string(), "cannot create the directory: " + ec.message());
+}
+
+void listScenarios() {
+    for (const auto &name : sim::scenarioNames())
+        std::cout << name << "\t" << sim::makeScenario(name, 2.0, 0.0).description << "\n";
+    for (const auto &name : sim::realisticScenarioNames())
+        std::cout << name << "\t" << sim::makeRealisticScenario(name, 2.0, 0.0).description << "\n";
+}
+
+/// The options that are refused on their own, before any file is read.
+void checkSimulateArguments(const SimulateOptions &o) {
     if (o.out.empty()) throw InputError("--out", "an output directory is required");
     if (o.scenario.empty() && o.captures == 0 && !o.structured_light)
         throw InputError("--scenario", "required (see --list)");
@@ -99,6 +121,11 @@ void run(const SimulateOptions &o) {
         throw InputError("--roll-deg", "must be within +-45 degrees");
     if (!std::isfinite(o.pitch_deg) || std::abs(o.pitch_deg) > 30.0)
         throw InputError("--pitch-deg", "must be within +-30 degrees");
+}
+
+/// --calib's projector (the contract's example without it), refused when --structured-light
+/// would render framebuffers too big.
+Projector simulatedProjector(const SimulateOptions &o) {
     const Projector projector = o.calib.empty() ? sim::exampleProjector() : readCalibrationWarned(o.calib);
     // Each pattern is rendered at the framebuffer's size, for three positions: 16384 x 2048
     // took 40-54 s. 4K UHD (3840 x 2160) fits the bound.
@@ -107,128 +134,164 @@ void run(const SimulateOptions &o) {
         throw InputError(o.calib, "--structured-light renders framebuffers of at most " +
                                       std::to_string(kMaxSimulatedPatternPixels) + " pixels; this one is " +
                                       std::to_string(projector.width) + " x " + std::to_string(projector.height));
-    const double aspect = o.aspect.empty() ? projector.aspect() : frontend::parseAspect("--aspect", o.aspect);
-    std::optional<sim::Projection> projection;
-    if (!o.picture.empty()) {
-        cv::Mat picture = readImage(o.picture, cv::IMREAD_COLOR);
-        if (picture.cols != projector.width || picture.rows != projector.height)  // the projector scales its input
-            cv::resize(picture, picture, cv::Size(projector.width, projector.height), 0, 0, cv::INTER_AREA);
-        projection = sim::Projection{projector, picture};
-    }
-    const bool independent = o.sensor == kIndependent;
+    return projector;
+}
+
+/// --picture scaled to the framebuffer (the projector scales its input); none without it.
+std::optional<sim::Projection> projectedPicture(const std::string &path, const Projector &projector) {
+    if (path.empty()) return std::nullopt;
+    cv::Mat picture = readImage(path, cv::IMREAD_COLOR);
+    if (picture.cols != projector.width || picture.rows != projector.height)
+        cv::resize(picture, picture, cv::Size(projector.width, projector.height), 0, 0, cv::INTER_AREA);
+    return sim::Projection{projector, picture};
+}
+
+SimulatedSensor simulatedSensor(const SimulateOptions &o) {
+    SimulatedSensor s;
+    s.independent = o.sensor == kIndependent;
     const auto kind = sim::parseSensorKind(o.sensor);
-    if (!independent && !kind)
+    if (!s.independent && !kind)
         throw InputError("--sensor", "expected kinect1, tof, d435 or kinect1-independent, got '" + o.sensor + "'");
     if (o.unit < 0 || o.unit > 1000000) throw InputError("--unit", "must be between 0 and 1000000");
-    const std::optional<sim::DepthSensor> realistic =
-        independent || o.noise_free ? std::nullopt
-                                    : std::optional<sim::DepthSensor>(sim::makeDepthSensor(*kind, o.unit));
-    // The independent model at the chosen sensor's camera and range (exact with --noise-free):
-    // the frame when there is no realistic sensor, the ground truth's limits, the captures.
-    sim::SensorModel sensor = o.noise_free ? sim::SensorModel::ideal() : sim::SensorModel();
-    if (!independent) {
+    if (!(s.independent || o.noise_free)) s.realistic = sim::makeDepthSensor(*kind, o.unit);
+    s.model = o.noise_free ? sim::SensorModel::ideal() : sim::SensorModel();
+    if (!s.independent) {
         const sim::SensorModel limits = sim::makeDepthSensor(*kind, o.unit).truthModel();
-        sensor.camera = limits.camera;
-        sensor.min_depth = limits.min_depth;
-        sensor.max_depth = limits.max_depth;
-        sensor.grazing_max_deg = limits.grazing_max_deg;
+        s.model.camera = limits.camera;
+        s.model.min_depth = limits.min_depth;
+        s.model.max_depth = limits.max_depth;
+        s.model.grazing_max_deg = limits.grazing_max_deg;
     }
-    std::optional<sim::Scenario> scenario;
-    if (!o.scenario.empty()) scenario = buildScenario(o.scenario, o.distance, o.angle_deg, o.roll_deg, o.pitch_deg);
+    return s;
+}
+
+/// Refuses an --out that is a file, and capture folders an earlier run left: they are read
+/// whole (every pose_<k>, every capture_<k>), so its files would be read as this run's.
+void checkOutputFolder(const SimulateOptions &o) {
     const fs::path out(o.out);
     std::error_code ec;
     if (fs::exists(out, ec) && !fs::is_directory(out, ec)) throw InputError(o.out, "exists and is not a directory");
-    // The capture folders are read whole (every pose_<k>, every capture_<k>): an earlier run's
-    // files left beside the new ones would be read as this run's.
     for (const auto &[wanted, name] : {std::pair<bool, const char *>{o.captures > 0, "captures"},
                                        std::pair<bool, const char *>{o.structured_light, "structured"}})
         if (wanted && fs::exists(out / name, ec) && !fs::is_empty(out / name, ec))
             throw InputError((out / name).string(),
                              "exists and is not empty: an earlier run's captures would stay beside the new ones "
                              "(remove it, or give another --out)");
+}
 
-    // Render.
-    std::optional<sim::RgbdFrame> frame;
-    sim::GroundTruth truth;
-    cv::Mat audience;
-    if (scenario) {
-        frame = realistic ? sim::renderSensorFrame(scenario->scene, *realistic, o.seed, projection)
-                          : sim::renderFrame(scenario->scene, sensor, o.seed, projection);
-        sim::TruthOptions topt;
-        topt.aspect = aspect;
-        truth = sim::computeGroundTruth(scenario->scene, sensor, projector, scenario->gravity, topt);
-        if (projection) {
-            // The picture as someone facing the wall sees it, 2.5 m in front of where the
-            // projector's axis meets the wall (or of the true rectangle's centre).
-            const Plane &wall = truth.found ? truth.best.plane : scenario->wall;
-            const auto axis_hit = intersectRay(wall, projector.origin, projector.direction.normalized());
-            const Eigen::Vector3d target =
-                truth.found ? truth.best.rectangle.center() : axis_hit.value_or(Eigen::Vector3d(0.0, 0.0, o.distance));
-            audience =
-                sim::renderView(scenario->scene, sim::facingView(wall, target, 2.5, scenario->gravity), projection);
-        }
-    }
-    // Calibration captures: a plain wall from N robot positions, 1.2-3.0 m, turned a little.
-    std::vector<sim::RgbdFrame> captures;
-    if (o.captures > 0)
-        captures = sim::renderCalibrationCaptures(projector, sensor, o.captures, o.seed, o.roll_deg, o.pitch_deg);
+/// The picture as someone facing the wall sees it, 2.5 m in front of where the projector's
+/// axis meets the wall (or of the true rectangle's centre).
+cv::Mat audienceView(const sim::Scenario &scenario, const sim::GroundTruth &truth, const Projector &projector,
+                     const sim::Projection &projection, double distance) {
+    const Plane &wall = truth.found ? truth.best.plane : scenario.wall;
+    const auto axis_hit = intersectRay(wall, projector.origin, projector.direction.normalized());
+    const Eigen::Vector3d target =
+        truth.found ? truth.best.rectangle.center() : axis_hit.value_or(Eigen::Vector3d(0.0, 0.0, distance));
+    return sim::renderView(scenario.scene, sim::facingView(wall, target, 2.5, scenario.gravity), projection);
+}
 
-    // Structured-light captures: the flat wall from three positions (sim/projector_rigs.hpp),
-    // each pattern of `projsurf patterns` as the colour camera sees it, and the depth.
-    std::vector<sim::PatternCapture> patterns;
-    if (o.structured_light) patterns = sim::renderPatternCaptures(projector, sensor, sim::flatWallPoses(), o.seed);
+SimulatedScene renderScene(const sim::Scenario &scenario, const SimulatedSensor &sensor, const Projector &projector,
+                           const std::optional<sim::Projection> &projection, double aspect, const SimulateOptions &o) {
+    SimulatedScene s;
+    s.frame = sensor.realistic ? sim::renderSensorFrame(scenario.scene, *sensor.realistic, o.seed, projection)
+                               : sim::renderFrame(scenario.scene, sensor.model, o.seed, projection);
+    sim::TruthOptions topt;
+    topt.aspect = aspect;
+    s.truth = sim::computeGroundTruth(scenario.scene, sensor.model, projector, scenario.gravity, topt);
+    if (projection) s.audience = audienceView(scenario, s.truth, projector, *projection, o.distance);
+    return s;
+}
 
-    // Write.
-    fs::create_directories(out, ec);
-    if (ec) throw InputError(o.out, "cannot create the directory: " + ec.message());
-    if (scenario) {
-        writeFrame(out, "", *frame, true);
-        if (!audience.empty()) writeImageAtomic((out / "audience.png").string(), audience);
-        writeCamera((out / "camera.yaml").string(), sensor.camera);
-        writeCalibration((out / "calib.yaml").string(), projector);
-        eval::writeTruthJson((out / "truth.json").string(), truth, *scenario, o.seed, !o.noise_free);
+void writeScene(const fs::path &out, const SimulatedScene &s, const sim::Scenario &scenario,
+                const CameraIntrinsics &camera, const Projector &projector, const SimulateOptions &o) {
+    writeFrame(out, "", s.frame, true);
+    if (!s.audience.empty()) writeImageAtomic((out / "audience.png").string(), s.audience);
+    writeCamera((out / "camera.yaml").string(), camera);
+    writeCalibration((out / "calib.yaml").string(), projector);
+    eval::writeTruthJson((out / "truth.json").string(), s.truth, scenario, o.seed, !o.noise_free);
+}
+
+void writeCalibrationCaptures(const fs::path &dir, const std::vector<sim::RgbdFrame> &captures,
+                              const CameraIntrinsics &camera) {
+    createFolder(dir);
+    writeCamera((dir / "camera.yaml").string(), camera);
+    for (std::size_t k = 0; k < captures.size(); ++k)
+        writeFrame(dir, "capture_" + std::to_string(k) + "_", captures[k], false);
+}
+
+void writePatternCaptures(const fs::path &dir, const std::vector<sim::PatternCapture> &patterns,
+                          const Projector &projector, const CameraIntrinsics &camera) {
+    const PatternList list = writePatternSet(dir.string(), projector.width, projector.height);
+    writeCamera((dir / "camera.yaml").string(), camera);
+    for (std::size_t k = 0; k < patterns.size(); ++k) {
+        const fs::path pose = dir / ("pose_" + std::to_string(k));
+        createFolder(pose);
+        writeImageAtomic((pose / "depth.png").string(), patterns[k].depth);
+        for (std::size_t i = 0; i < list.names.size() && i < patterns[k].colour.size(); ++i)
+            writeImageAtomic((pose / (list.names[i] + ".png")).string(), patterns[k].colour[i]);
     }
-    if (!captures.empty()) {
-        const fs::path dir = out / "captures";
-        fs::create_directories(dir, ec);
-        if (ec) throw InputError(dir.string(), "cannot create the directory: " + ec.message());
-        writeCamera((dir / "camera.yaml").string(), sensor.camera);
-        for (std::size_t k = 0; k < captures.size(); ++k)
-            writeFrame(dir, "capture_" + std::to_string(k) + "_", captures[k], false);
-    }
-    if (!patterns.empty()) {
-        const fs::path dir = out / "structured";
-        const PatternList list = writePatternSet(dir.string(), projector.width, projector.height);
-        writeCamera((dir / "camera.yaml").string(), sensor.camera);
-        for (std::size_t k = 0; k < patterns.size(); ++k) {
-            const fs::path pose = dir / ("pose_" + std::to_string(k));
-            fs::create_directories(pose, ec);
-            if (ec) throw InputError(pose.string(), "cannot create the directory: " + ec.message());
-            writeImageAtomic((pose / "depth.png").string(), patterns[k].depth);
-            for (std::size_t i = 0; i < list.names.size() && i < patterns[k].colour.size(); ++i)
-                writeImageAtomic((pose / (list.names[i] + ".png")).string(), patterns[k].colour[i]);
-        }
-    }
-    if (!scenario && (!captures.empty() || !patterns.empty()))
-        writeCalibration((out / "calib.yaml").string(), projector);  // the truth to compare with
-    if (scenario) {
-        std::cout << "sensor " << (independent ? std::string(kIndependent) : o.sensor)
-                  << (realistic ? " unit " + std::to_string(o.unit) : std::string()) << " (" << sensor.camera.width
-                  << "x" << sensor.camera.height << "), ";
-        std::cout << "scenario " << scenario->name << " at " << scenario->distance << " m, " << scenario->angle_deg
-                  << " deg: ";
-        if (truth.found)
-            std::cout << "true rectangle on the " << truth.best.label << ", " << truth.best.rectangle.width << " x "
-                      << truth.best.rectangle.height << " m\n";
-        else
-            std::cout << "no free rectangle\n";
-    }
-    if (!captures.empty())
-        std::cout << captures.size() << " calibration captures in " << (out / "captures").string() << "\n";
-    if (!patterns.empty())
-        std::cout << patterns.size() << " positions of structured-light captures in " << (out / "structured").string()
+}
+
+void printScene(const SimulateOptions &o, const SimulatedSensor &sensor, const sim::Scenario &scenario,
+                const sim::GroundTruth &truth) {
+    std::cout << "sensor " << (sensor.independent ? std::string(kIndependent) : o.sensor)
+              << (sensor.realistic ? " unit " + std::to_string(o.unit) : std::string()) << " ("
+              << sensor.model.camera.width << "x" << sensor.model.camera.height << "), ";
+    std::cout << "scenario " << scenario.name << " at " << scenario.distance << " m, " << scenario.angle_deg
+              << " deg: ";
+    if (truth.found)
+        std::cout << "true rectangle on the " << truth.best.label << ", " << truth.best.rectangle.width << " x "
+                  << truth.best.rectangle.height << " m\n";
+    else
+        std::cout << "no free rectangle\n";
+}
+
+void printCaptureFolders(const fs::path &out, std::size_t captures, std::size_t pattern_positions) {
+    if (captures != 0) std::cout << captures << " calibration captures in " << (out / "captures").string() << "\n";
+    if (pattern_positions != 0)
+        std::cout << pattern_positions << " positions of structured-light captures in " << (out / "structured").string()
                   << "; projsurf calibrate --captures " << (out / "structured").string()
                   << " --out calib.yaml fits the projector, to compare with " << (out / "calib.yaml").string() << "\n";
+}
+
+void run(const SimulateOptions &o) {
+    if (o.list) {
+        listScenarios();
+        return;
+    }
+    // Arguments and inputs first; nothing is written until everything is rendered.
+    checkSimulateArguments(o);
+    const Projector projector = simulatedProjector(o);
+    const double aspect = o.aspect.empty() ? projector.aspect() : frontend::parseAspect("--aspect", o.aspect);
+    const std::optional<sim::Projection> projection = projectedPicture(o.picture, projector);
+    const SimulatedSensor sensor = simulatedSensor(o);
+    std::optional<sim::Scenario> scenario;
+    if (!o.scenario.empty()) scenario = buildScenario(o.scenario, o.distance, o.angle_deg, o.roll_deg, o.pitch_deg);
+    checkOutputFolder(o);
+
+    // Render. Calibration captures: a plain wall from N robot positions, 1.2-3.0 m, turned a
+    // little. Structured-light captures: the flat wall from three positions
+    // (sim/projector_rigs.hpp), each pattern of `projsurf patterns` as the colour camera sees
+    // it, and the depth.
+    std::optional<SimulatedScene> shot;
+    if (scenario) shot = renderScene(*scenario, sensor, projector, projection, aspect, o);
+    std::vector<sim::RgbdFrame> captures;
+    if (o.captures > 0)
+        captures = sim::renderCalibrationCaptures(projector, sensor.model, o.captures, o.seed, o.roll_deg, o.pitch_deg);
+    std::vector<sim::PatternCapture> patterns;
+    if (o.structured_light)
+        patterns = sim::renderPatternCaptures(projector, sensor.model, sim::flatWallPoses(), o.seed);
+
+    // Write.
+    const fs::path out(o.out);
+    createFolder(out);
+    if (scenario) writeScene(out, *shot, *scenario, sensor.model.camera, projector, o);
+    if (!captures.empty()) writeCalibrationCaptures(out / "captures", captures, sensor.model.camera);
+    if (!patterns.empty()) writePatternCaptures(out / "structured", patterns, projector, sensor.model.camera);
+    if (!scenario && (!captures.empty() || !patterns.empty()))
+        writeCalibration((out / "calib.yaml").string(), projector);  // the truth to compare with
+    if (scenario) printScene(o, sensor, *scenario, shot->truth);
+    printCaptureFolders(out, captures.size(), patterns.size());
 }
 
 }  // namespace
