@@ -1155,6 +1155,7 @@ def python_cases(cli, pydir, B, work):
 
 # ---------------------------------------------------------------- main
 def main():
+    global TIMEOUT_S
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("cli")
     ap.add_argument("--work", default="/tmp/projsurf-hostile")
@@ -1167,11 +1168,14 @@ def main():
                     help="peak memory a case may take (default 2048; ASan's shadow memory needs more)")
     ap.add_argument("--every", type=int, default=1,
                     help="run every Nth case of each input (its valid run always), for slow builds")
+    ap.add_argument("--timeout-s", type=int, default=TIMEOUT_S,
+                    help="a case running longer is a hang (default %d s; ASan runs several times slower)" % TIMEOUT_S)
     ap.add_argument("--offset", type=int, default=0,
                     help="with --every N: start at this case (0..N-1), so two runs can take different cases")
     a = ap.parse_args()
     cli = os.path.abspath(a.cli)
     RSS_LIMIT_KIB[0] = a.rss_limit_mib * 1024
+    TIMEOUT_S = a.timeout_s
     os.chdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
     work = os.path.abspath(a.work)
     B = build_base(cli, os.path.join(work, "base"))

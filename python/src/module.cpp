@@ -76,9 +76,10 @@ Projector makeProjector(const py::object &resolution, const py::object &fov_deg,
     const std::pair<double, double> size = pairArgument(resolution, "resolution");
     const std::pair<double, double> fov = pairArgument(fov_deg, "fov_deg");
     Projector p;
-    if (!(size.first >= 2 && size.second >= 2 && size.first <= 16384 && size.second <= 16384 &&
+    constexpr double kSide = limits::kMaxFramebufferSide;
+    if (!(size.first >= 2 && size.second >= 2 && size.first <= kSide && size.second <= kSide &&
           size.first == std::floor(size.first) && size.second == std::floor(size.second)))
-        throw InputError("resolution", "must be two whole numbers between 2 and 16384");
+        throw InputError("resolution", "must be two whole numbers between 2 and " + std::to_string(limits::kMaxFramebufferSide));
     p.width = static_cast<int>(size.first);
     p.height = static_cast<int>(size.second);
     if (static_cast<std::uint64_t>(p.width) * p.height > limits::kMaxFramebufferPixels)

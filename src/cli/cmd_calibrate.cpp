@@ -190,8 +190,9 @@ struct LensArguments {
 
 LensArguments lensArguments(const CalibrateOptions &o) {
     const auto [fov_h, fov_v] = parseTwo("--fov-deg", o.fov);
-    if (!(fov_h > 0 && fov_h < 170 && fov_v > 0 && fov_v < 170))
-        throw InputError("--fov-deg", "angles must be between 0 and 170 degrees");
+    if (!(fov_h > 0 && fov_h < kMaxLensFovDeg && fov_v > 0 && fov_v < kMaxLensFovDeg))
+        throw InputError("--fov-deg",
+                         "angles must be between 0 and " + std::to_string(static_cast<int>(kMaxLensFovDeg)) + " degrees");
     const auto [res_w, res_h] = frontend::parseResolution("--resolution", o.resolution);
     Projector lens;  // the check reads radians
     lens.width = static_cast<int>(res_w);
