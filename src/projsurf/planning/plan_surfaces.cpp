@@ -106,7 +106,9 @@ std::vector<PlanSurface> planSurfaces(const Cloud &cloud, const SeenSurfaces &se
                                       const PlanSurfaceOptions &options) {
     std::vector<PlanSurface> out;
     for (const SeenSurface &s : seen.surfaces) {
-        if (s.free.empty() || cv::countNonZero(s.free) == 0) continue;
+        // No picture where detection would refuse one: a face that stands free, a view through
+        // an opening (seeVerticalSurfaces judges them as detect does).
+        if (!s.usable() || s.free.empty() || cv::countNonZero(s.free) == 0) continue;
         PlanSurface p = extend(s, seen.camera, floor, standsBeforeAnother(s, seen) ? 0.0 : options.beyond_view);
         p.voxel = options.voxel;
         collectInFront(cloud, s, floor, options, p);

@@ -1,5 +1,6 @@
 #pragma once
-// The vertical surfaces a plan can put the picture on: every plane detection considers, with
+// The vertical surfaces a plan can put the picture on: every plane detection considers and
+// does not refuse (a face standing free in the room, a view through an opening), with
 // where the camera saw it free (no shadows: those depend on where the robot will stand), the
 // wall assumed to go on a little where it runs out of the camera's view, and the points in
 // front of it that may shadow it from a stance.
