@@ -1,11 +1,14 @@
-// Where a plan may put the picture (issue 41): only on surfaces detection does not refuse.
+// Where a plan may put the picture (issue 41): only on surfaces detection does not refuse,
+// with the share on wall assumed beyond the camera's view said and ranked down.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 #include <opencv2/imgproc.hpp>
 
 #include "projsurf/detection/default/default_method.hpp"
 #include "projsurf/planning/floor_occupancy.hpp"
+#include "projsurf/planning/plan_raster.hpp"
 #include "projsurf/planning/plan_surfaces.hpp"
 #include "projsurf/planning/stand_planner.hpp"
 #include "projsurf/sim/render.hpp"
@@ -43,4 +46,47 @@ TEST(PlanSurfaces, FacesDetectionRefusesHoldNoPicture) {
     const PlanResult plan = planStand(f.cloud, sim::exampleProjector(), DetectorConfig{}, sc.gravity);
     ASSERT_TRUE(plan.found) << plan.reason;
     for (const auto &c : plan.predicted.corners) EXPECT_LT(offQuad(sc, "wall", c), 0.05) << c.transpose();
+}
+
+TEST(PlanSurfaces, AssumedShareCountsTheCellsUnderThePicture) {
+    // A wall 2 m ahead on a 0.1 m raster, assumed (not seen) left of its centre line.
+    PlanSurface s;
+    s.plane.normal = -Eigen::Vector3d::UnitZ();
+    s.plane.d = 2.0;
+    s.frame = makePlaneFrame(s.plane, Eigen::Vector3d::UnitY(), Eigen::Vector3d(0, 0, 2));
+    s.raster = planRaster({-1.0, -1.0}, {1.0, 1.0}, 0.1);
+    s.assumed = cv::Mat::zeros(s.raster.rows, s.raster.cols, CV_8UC1);
+    for (int r = 0; r < s.raster.rows; ++r)
+        for (int c = 0; c < s.raster.cols; ++c)
+            if (s.raster.toPlane({c + 0.5, r + 0.5}).x() < 0.0) s.assumed.at<uchar>(r, c) = 255;
+    cv::integral(s.assumed / 255, s.assumed_integral, CV_32S);
+    EXPECT_NEAR(assumedShare(s, makeRectangle(s.frame, {-0.6, -0.5}, {0.6, 0.5})), 0.5, 1e-9);
+    EXPECT_NEAR(assumedShare(s, makeRectangle(s.frame, {0.02, -0.5}, {0.98, 0.5})), 0.0, 1e-9);
+    EXPECT_NEAR(assumedShare(s, makeRectangle(s.frame, {-0.98, -0.5}, {-0.02, 0.5})), 1.0, 1e-9);
+    EXPECT_NEAR(assumedShare(s, makeRectangle(s.frame, {-0.2, -0.5}, {0.6, 0.5})), 0.25, 1e-9);
+}
+
+TEST(PlanSurfaces, APictureOnAssumedWallIsSaidAndRankedDown) {
+    // 1 m from a wall that fills the view: the largest picture steps back onto wall assumed
+    // beyond the view. The less a m^2 of assumed wall counts, the less of it the plan uses;
+    // counted as nothing, the picture is mostly on seen wall.
+    const sim::Scenario sc = sim::makeScenario("wall", 1.0, 0.0);
+    const sim::RgbdFrame f = sim::renderFrame(sc.scene, sim::SensorModel{}, 3);
+    std::vector<PlanResult> plans;
+    for (double w : {1.0, 0.5, 0.0}) {
+        PlanOptions o;
+        o.assumed_weight = w;
+        plans.push_back(planStand(f.cloud, sim::exampleProjector(), DetectorConfig{}, sc.gravity, o));
+        ASSERT_TRUE(plans.back().found) << plans.back().reason;
+        std::printf("assumed weight %.1f: %s, %.3f m^2, %.0f %% assumed\n", w, moveInWords(plans.back().move).c_str(),
+                    plans.back().predicted.area(), 100.0 * plans.back().assumed_share);
+    }
+    ASSERT_TRUE(plans[0].assumed()) << "the scene no longer tests the assumed wall";
+    EXPECT_NE(plans[0].limit.find("% of the picture is on wall not seen"), std::string::npos) << plans[0].limit;
+    EXPECT_LE(plans[1].assumed_share, plans[0].assumed_share + 1e-9);
+    EXPECT_LT(plans[2].assumed_share, 0.5 * plans[0].assumed_share);
+    for (const PlanResult &p : plans)
+        if (!p.assumed()) {
+            EXPECT_EQ(p.limit.find("not seen"), std::string::npos) << p.limit;
+        }
 }

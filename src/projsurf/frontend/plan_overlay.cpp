@@ -12,9 +12,13 @@ namespace projsurf {
 namespace {
 
 const cv::Scalar kToday(255, 0, 255), kProposed(80, 255, 80), kText(255, 255, 255), kRobot(255, 200, 0);
+const cv::Scalar kAssumed(0, 160, 255);  ///< orange: a proposed picture that relies on wall not seen
+
+/// The proposed picture's colour: green on seen wall, orange when it relies on wall not seen.
+cv::Scalar proposedColour(const PlanResult &plan) { return plan.assumed() ? kAssumed : kProposed; }
 
 /// The proposed rectangle drawn on detect's overlay (whose picture part is the camera's image scaled).
-void drawProposed(cv::Mat &img, const CameraIntrinsics &cam, const Rectangle &r) {
+void drawProposed(cv::Mat &img, const CameraIntrinsics &cam, const Rectangle &r, const cv::Scalar &colour) {
     const double scale = static_cast<double>(img.cols) / cam.width;
     std::vector<cv::Point> px;
     for (const auto &c : r.corners) {
@@ -23,7 +27,7 @@ void drawProposed(cv::Mat &img, const CameraIntrinsics &cam, const Rectangle &r)
         px.emplace_back(cvRound(fit((cam.fx * c.x() / z + cam.cx + 0.5) * scale - 0.5) * 16),
                         cvRound(fit((cam.fy * c.y() / z + cam.cy + 0.5) * scale - 0.5) * 16));
     }
-    cv::polylines(img, std::vector<std::vector<cv::Point>>{px}, true, kProposed, 4, cv::LINE_AA, 4);
+    cv::polylines(img, std::vector<std::vector<cv::Point>>{px}, true, colour, 4, cv::LINE_AA, 4);
 }
 
 /// Top-down: left/right across, forward up; 1 px per `mpp` m about the camera's foot.
@@ -75,10 +79,10 @@ cv::Mat topDown(const Cloud &cloud, const PlanResult &plan, const Eigen::Vector3
         if (r.area() > 0) cv::line(img, v(r.corners[3]), v(r.corners[2]), c, 4, cv::LINE_AA);
     };
     if (plan.today.found) bottom(plan.today.rectangle, kToday);
-    if (plan.found) bottom(plan.predicted, kProposed);
+    if (plan.found) bottom(plan.predicted, proposedColour(plan));
     drawRobot(img, v, Eigen::Vector3d::Zero(), v.f.forward, radius, kRobot, "now");
     if (plan.found && plan.moves())
-        drawRobot(img, v, plan.translation, plan.rotation * v.f.forward, radius, kProposed, "after");
+        drawRobot(img, v, plan.translation, plan.rotation * v.f.forward, radius, proposedColour(plan), "after");
     const int metre = static_cast<int>(std::lround(1.0 / v.mpp));
     cv::line(img, {10, size - 14}, {10 + metre, size - 14}, kText, 2);
     cv::putText(img, "1 m", {14 + metre, size - 9}, cv::FONT_HERSHEY_SIMPLEX, 0.5, kText, 1, cv::LINE_AA);
@@ -92,12 +96,16 @@ cv::Mat renderPlanOverlay(const Cloud &cloud, const PlanResult &plan, const Dete
     CameraIntrinsics cam = camera ? *camera : estimateIntrinsics(cloud);
     if (!(cam.fx > 0)) cam = CameraIntrinsics{};
     cv::Mat left = renderOverlay(cloud, plan.today, config, camera, cv::Mat());
-    if (plan.found && plan.moves()) drawProposed(left, cam, plan.predicted);
+    if (plan.found && plan.moves()) drawProposed(left, cam, plan.predicted, proposedColour(plan));
     cv::Mat sketch = topDown(cloud, plan, gravity, robot_radius, left.rows);
     cv::Mat out;
     cv::hconcat(left, sketch, out);
     char line[400];
-    if (plan.found)
+    if (plan.assumed())
+        std::snprintf(line, sizeof line, "plan: %s: %.2f m^2 (orange: assumed, %.0f %% on wall not seen), %.2f m^2 "
+                      "today (magenta)", moveInWords(plan.move).c_str(), plan.predicted.area(),
+                      100.0 * plan.assumed_share, plan.todayArea());
+    else if (plan.found)
         std::snprintf(line, sizeof line, "plan: %s: %.2f m^2 (green), %.2f m^2 today (magenta)",
                       moveInWords(plan.move).c_str(), plan.predicted.area(), plan.todayArea());
     else

@@ -60,6 +60,7 @@ PlanSurface extend(const SeenSurface &seen, const std::optional<CameraIntrinsics
         s.free |= s.assumed;
     }
     cv::integral(s.free / 255, s.integral, CV_32S);
+    cv::integral(s.assumed / 255, s.assumed_integral, CV_32S);
     return s;
 }
 
@@ -117,14 +118,35 @@ std::vector<PlanSurface> planSurfaces(const Cloud &cloud, const SeenSurfaces &se
     return out;
 }
 
-int freeCells(const PlanSurface &s, int c0, int r0, int c1, int r1) {
+namespace {
+
+/// Cells counted by the integral image `I` of `s`'s raster in [c0, c1) x [r0, r1) (clipped).
+int cellsIn(const PlanSurface &s, const cv::Mat &I, int c0, int r0, int c1, int r1) {
     c0 = std::clamp(c0, 0, s.raster.cols);
     c1 = std::clamp(c1, 0, s.raster.cols);
     r0 = std::clamp(r0, 0, s.raster.rows);
     r1 = std::clamp(r1, 0, s.raster.rows);
-    if (c1 <= c0 || r1 <= r0) return 0;
-    const cv::Mat &I = s.integral;
+    if (c1 <= c0 || r1 <= r0 || I.empty()) return 0;
     return I.at<int>(r1, c1) - I.at<int>(r0, c1) - I.at<int>(r1, c0) + I.at<int>(r0, c0);
+}
+
+}  // namespace
+
+int freeCells(const PlanSurface &s, int c0, int r0, int c1, int r1) { return cellsIn(s, s.integral, c0, r0, c1, r1); }
+
+double assumedShare(const PlanSurface &s, const Rectangle &picture) {
+    Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e18), hi = -lo;
+    for (const auto &corner : picture.corners) {
+        const Eigen::Vector2d cr = s.raster.toCell(s.frame.toPlane(corner));
+        lo = lo.cwiseMin(cr);
+        hi = hi.cwiseMax(cr);
+    }
+    // The cells whose centre (c + 0.5, r + 0.5) lies in the box.
+    const int c0 = static_cast<int>(std::ceil(lo.x() - 0.5)), c1 = static_cast<int>(std::floor(hi.x() - 0.5)) + 1;
+    const int r0 = static_cast<int>(std::ceil(lo.y() - 0.5)), r1 = static_cast<int>(std::floor(hi.y() - 0.5)) + 1;
+    const int all = std::max(0, c1 - c0) * std::max(0, r1 - r0);
+    if (all == 0) return 0.0;
+    return static_cast<double>(cellsIn(s, s.assumed_integral, c0, r0, c1, r1)) / all;
 }
 
 }  // namespace projsurf

@@ -30,6 +30,7 @@ struct PlanSurface {
     cv::Mat free;      ///< CV_8U, 255 = free (seen free, or assumed beyond the view)
     cv::Mat assumed;   ///< CV_8U, 255 = assumed free beyond the view
     cv::Mat integral;  ///< CV_32S (rows + 1) x (cols + 1), the free cells' integral image
+    cv::Mat assumed_integral;  ///< CV_32S, the assumed cells' integral image
     /// The points in front of it, one per voxel: the voxel centre's plane coordinates and its
     /// height above the plane (m, towards the camera).
     struct InFront {
@@ -47,5 +48,9 @@ std::vector<PlanSurface> planSurfaces(const Cloud &cloud, const SeenSurfaces &se
 
 /// Free cells of `surface` in the cell box [c0, c1) x [r0, r1) (clipped), from its integral image.
 int freeCells(const PlanSurface &surface, int c0, int r0, int c1, int r1);
+
+/// The share of the cells under `picture` (an upright rectangle on `surface`, camera frame;
+/// the cells whose centre it covers) that are assumed, not seen: 0 = all seen, 1 = all assumed.
+double assumedShare(const PlanSurface &surface, const Rectangle &picture);
 
 }  // namespace projsurf
