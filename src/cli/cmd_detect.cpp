@@ -8,6 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli/calibration_input.hpp"
+#include "cli/colour_input.hpp"
 #include "cli/commands.hpp"
 #include "projsurf/detection/gravity.hpp"
 #include "projsurf/frontend/aspect.hpp"
@@ -27,7 +28,6 @@
 #include "projsurf/frontend/method_words.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
 #include "projsurf/frontend/overlay.hpp"
-#include "projsurf/frontend/registered_colour.hpp"
 #include "projsurf/frontend/suitability_mode.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
@@ -162,13 +162,7 @@ void run(const DetectOptions &o, const CLI::App &sub) {
         for (const std::string &w : camera_warnings) std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
         cloud = readDepthCloud(o.depth, o.camera);
     }
-    cv::Mat color;
-    if (!o.rgb.empty()) {
-        color = readImage(o.rgb, cv::IMREAD_UNCHANGED);
-        const frontend::ColourAttachment attached = frontend::attachRegisteredColour(cloud, color, o.rgb);
-        for (const std::string &w : attached.warnings) std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
-        if (!attached.used) color.release();
-    }
+    const cv::Mat color = o.rgb.empty() ? cv::Mat() : attachColourFile(cloud, o.rgb);
     if (!o.suitability.empty() && o.suitability != "off" && !cloud.hasColour() && cfg.method == Method::Default)
         std::fprintf(stderr,
                      "projsurf: warning: --suitability %s needs registered colour (--rgb); the surface is judged by "

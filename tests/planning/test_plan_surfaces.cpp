@@ -1,11 +1,17 @@
 // Where a plan may put the picture (issue 41): only on surfaces detection does not refuse,
-// with the share on wall assumed beyond the camera's view said and ranked down.
+// with the share on wall assumed beyond the camera's view said and ranked down; `plan --rgb`
+// as `detect --rgb`.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <vector>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "cli_run.hpp"
 #include "projsurf/detection/default/default_method.hpp"
 #include "projsurf/planning/floor_occupancy.hpp"
 #include "projsurf/planning/plan_raster.hpp"
@@ -14,7 +20,9 @@
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
 
+namespace fs = std::filesystem;
 using namespace projsurf;
+using namespace projsurf::test;
 
 namespace {
 
@@ -89,4 +97,36 @@ TEST(PlanSurfaces, APictureOnAssumedWallIsSaidAndRankedDown) {
         if (!p.assumed()) {
             EXPECT_EQ(p.limit.find("not seen"), std::string::npos) << p.limit;
         }
+}
+
+TEST(PlanSurfaces, PlanRgbIsReadAsDetectReadsIt) {
+    const std::string frame = std::string(PROJSURF_SOURCE_DIR) + "/data/tum_o3d_fr3_office_partition";
+    const fs::path dir = freshDir("plan_rgb");
+    const std::string args = "plan --depth " + frame + "/depth.png --camera " + frame + "/camera.yaml --calib " +
+                             frame + "/calib.yaml --gravity auto --json " + (dir / "p.json").string() + " --overlay " +
+                             (dir / "p.png").string();
+    const auto plain = cli(args, dir);
+    ASSERT_EQ(plain.status, 0) << plain.err;
+    const cv::Mat grey_overlay = cv::imread((dir / "p.png").string());
+    const auto coloured = cli(args + " --rgb " + frame + "/rgb.png", dir);
+    ASSERT_EQ(coloured.status, 0) << coloured.err;
+    const auto j = nlohmann::json::parse(slurp(dir / "p.json"));
+    EXPECT_TRUE(j.at("assumed").is_boolean());
+    EXPECT_GE(j.at("assumed_share").get<double>(), 0.0);
+    EXPECT_LE(j.at("assumed_share").get<double>(), 1.0);
+    // The colour is the overlay's background: the pictures differ.
+    const cv::Mat colour_overlay = cv::imread((dir / "p.png").string());
+    ASSERT_EQ(colour_overlay.size(), grey_overlay.size());
+    EXPECT_GT(cv::norm(colour_overlay, grey_overlay, cv::NORM_L1), 1e6);
+    // Colour of the wrong size: one line, exit 2, nothing written.
+    cv::Mat small = cv::imread(frame + "/rgb.png");
+    cv::resize(small, small, {small.cols / 2, small.rows / 2});
+    cv::imwrite((dir / "small.png").string(), small);
+    fs::remove(dir / "p.json");
+    const auto bad = cli(args + " --rgb " + (dir / "small.png").string(), dir);
+    EXPECT_EQ(bad.status, 2) << bad.err;
+    EXPECT_EQ(bad.err.rfind("projsurf: error: ", 0), 0u) << bad.err;
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+    EXPECT_FALSE(fs::exists(dir / "p.json"));
+    fs::remove_all(dir);
 }

@@ -92,10 +92,11 @@ cv::Mat topDown(const Cloud &cloud, const PlanResult &plan, const Eigen::Vector3
 }  // namespace
 
 cv::Mat renderPlanOverlay(const Cloud &cloud, const PlanResult &plan, const DetectorConfig &config,
-                          const CameraIntrinsics *camera, const Eigen::Vector3d &gravity, double robot_radius) {
+                          const CameraIntrinsics *camera, const Eigen::Vector3d &gravity, double robot_radius,
+                          const cv::Mat &colour) {
     CameraIntrinsics cam = camera ? *camera : estimateIntrinsics(cloud);
     if (!(cam.fx > 0)) cam = CameraIntrinsics{};
-    cv::Mat left = renderOverlay(cloud, plan.today, config, camera, cv::Mat());
+    cv::Mat left = renderOverlay(cloud, plan.today, config, camera, colour);
     if (plan.found && plan.moves()) drawProposed(left, cam, plan.predicted, proposedColour(plan));
     cv::Mat sketch = topDown(cloud, plan, gravity, robot_radius, left.rows);
     cv::Mat out;
