@@ -122,6 +122,13 @@ std::vector<PlanScene> planSuiteScenes() {
     };
 }
 
+std::vector<PlanScene> obliqueWallScenes() {
+    std::vector<PlanScene> out;
+    for (double angle : {30.0, 45.0, 60.0})
+        for (double distance : {1.5, 2.25, 3.0}) out.push_back({"wall", distance, angle, 0.0, "oblique"});
+    return out;
+}
+
 PlanSceneResult runPlanScene(const PlanScene &scene, const PlanSuiteOptions &options) {
     PlanSceneResult r;
     r.scene = scene;
@@ -202,6 +209,27 @@ std::string planSuiteSummary(const std::vector<PlanSceneResult> &rows) {
         "plan suite: the targets hold in %d of %zu scenes; realised %.1f-%.1f %% of predicted; plan at most %.0f ms",
         holds, rows.size(), 100.0 * lo, 100.0 * hi, ms);
     return buf;
+}
+
+std::string planGainSummary(const std::vector<PlanSceneResult> &rows) {
+    std::string out;
+    double least = 1e9;
+    char buf[200];
+    for (const PlanSceneResult &r : rows) {
+        if (r.reference <= 0.0 || r.scene.width > 0.0) continue;
+        const double share = r.realised / r.reference;
+        least = std::min(least, share);
+        std::snprintf(buf, sizeof buf, "%s %.2f m %.0f deg: gain %.2fx of the reference's %.2fx (%.0f %%)\n",
+                      r.scene.scenario.c_str(), r.scene.distance, r.scene.angle_deg,
+                      r.realised / std::max(r.before, 1e-9), r.reference / std::max(r.before, 1e-9), 100.0 * share);
+        out += buf;
+    }
+    if (least < 1e9) {
+        std::snprintf(buf, sizeof buf, "realised gain at least %.0f %% of the reference's (target 85 %%)\n",
+                      100.0 * least);
+        out += buf;
+    }
+    return out;
 }
 
 }  // namespace projsurf::eval

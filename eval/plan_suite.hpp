@@ -22,6 +22,9 @@ struct PlanScene {
 /// furniture against part of the wall, a width that needs a step back, two walls at a corner).
 std::vector<PlanScene> planSuiteScenes();
 
+/// Issue 41's oblique wall: a plain wall seen at 30, 45 and 60 deg from 1.5, 2.25 and 3 m.
+std::vector<PlanScene> obliqueWallScenes();
+
 struct PlanSceneResult {
     PlanScene scene;
     PlanResult plan;
@@ -46,5 +49,9 @@ PlanSceneResult runPlanScene(const PlanScene &scene, const PlanSuiteOptions &opt
 
 std::string planSuiteMarkdown(const std::vector<PlanSceneResult> &rows);
 std::string planSuiteSummary(const std::vector<PlanSceneResult> &rows);
+
+/// The realised gain against the reference's (realised / reference, both over today's), per
+/// scene and the least: issue 41's target is >= 85 %. Only scenes whose reference ran.
+std::string planGainSummary(const std::vector<PlanSceneResult> &rows);
 
 }  // namespace projsurf::eval

@@ -57,6 +57,7 @@ struct EvalOptions {
     double square_m = 0.075;
     double published_square = 75;
     bool plan_only = false;      // only the plan suite (where to stand)
+    bool oblique = false;        // with plan_only: the oblique walls (issue 41) instead of the suite
     bool labelled_only = false;  // only the labelled real frames
     bool paper_only = false;     // only the paper's experiments (Tables 1-3, Fig. 15)
 };
@@ -184,12 +185,14 @@ void runPlanTable(const EvalOptions &o) {
     eval::PlanSuiteOptions popt;
     popt.reference = !o.quick;
     popt.seed = o.seed;
-    for (const eval::PlanScene &scene : eval::planSuiteScenes()) {
+    for (const eval::PlanScene &scene : o.oblique ? eval::obliqueWallScenes() : eval::planSuiteScenes()) {
         rows.push_back(eval::runPlanScene(scene, popt));
         if (!o.no_progress) std::fprintf(stderr, "plan suite: %zu scenes done\r", rows.size());
     }
     if (!o.no_progress) std::fprintf(stderr, "\n");
-    writeSuiteTable(o, "plan.md", eval::planSuiteMarkdown(rows), eval::planSuiteSummary(rows));
+    writeSuiteTable(o, o.oblique ? "plan_oblique.md" : "plan.md", eval::planSuiteMarkdown(rows),
+                    eval::planSuiteSummary(rows));
+    std::printf("%s", eval::planGainSummary(rows).c_str());
 }
 
 /// Where a label's frame is: the real-frame folder (--real-dir), else the repository's own
@@ -451,6 +454,10 @@ void addEvalCommand(CLI::App &app) {
         ->excludes("--projector-only")
         ->excludes("--colour-only")
         ->excludes("--realistic-only");
+    sub->add_flag("--oblique", o->oblique,
+                  "with --plan-only: a wall seen at 30, 45 and 60 deg from 1.5-3 m instead of the suite "
+                  "(DIR/plan_oblique.md, and the realised gain against the reference's)")
+        ->needs("--plan-only");
     sub->add_flag("--labelled-only", o->labelled_only,
                   "Only the labelled real frames (each with its label's projector and with the example calibration, "
                   "scored against the label): DIR/labelled.md and DIR/labels/")
