@@ -1,6 +1,6 @@
 // Where a plan may put the picture (issue 41): only on surfaces detection does not refuse,
 // with the share on wall assumed beyond the camera's view said and ranked down; `plan --rgb`
-// as `detect --rgb`.
+// as `detect --rgb`; the overlay's top-down sketch drawing the move the words say.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,7 +12,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "cli_run.hpp"
+#include "label_fixtures.hpp"
 #include "projsurf/detection/default/default_method.hpp"
+#include "projsurf/frontend/plan_overlay.hpp"
 #include "projsurf/planning/floor_occupancy.hpp"
 #include "projsurf/planning/plan_raster.hpp"
 #include "projsurf/planning/plan_surfaces.hpp"
@@ -26,11 +28,20 @@ using namespace projsurf::test;
 
 namespace {
 
+constexpr double kPi = 3.14159265358979323846;
+
 /// The distance of `p` to the plane of the scene's quad labelled `label` (the first one).
 double offQuad(const sim::Scenario &sc, const std::string &label, const Eigen::Vector3d &p) {
     for (const auto &q : sc.scene.quads)
         if (q.label == label) return std::abs(q.normal().dot(p - q.corner));
     return 1e9;
+}
+
+/// The bounding box of the pixels of exactly `colour` in `img`.
+cv::Rect pixelsOf(const cv::Mat &img, const cv::Scalar &colour) {
+    cv::Mat mask;
+    cv::inRange(img, colour, colour, mask);
+    return cv::boundingRect(mask);
 }
 
 }  // namespace
@@ -97,6 +108,35 @@ TEST(PlanSurfaces, APictureOnAssumedWallIsSaidAndRankedDown) {
         if (!p.assumed()) {
             EXPECT_EQ(p.limit.find("not seen"), std::string::npos) << p.limit;
         }
+}
+
+TEST(PlanSurfaces, TheSketchDrawsTheMoveTheWordsSay) {
+    // 1.5 m left, then a quarter turn left: the robot after is drawn 1.5 m left of the robot now
+    // (its disc's centre, 5 radii of 0.3 m), level with it, its arrow pointing left.
+    const SyntheticWall wall(3.0);
+    const Eigen::Vector3d gravity = Eigen::Vector3d::UnitY();
+    const LevelledFrame lf = levelledFrame(gravity);
+    PlanResult plan;
+    plan.found = true;
+    plan.rotation = turnAboutUp(lf, 0.5 * kPi);
+    plan.translation = 1.5 * lf.left;
+    plan.move = levelledMove(plan.rotation, plan.translation, gravity);
+    ASSERT_EQ(moveInWords(plan.move), "move 1.50 m left, then turn 90 deg left");
+    const cv::Mat img = renderPlanOverlay(wall.cloud, plan, DetectorConfig{}, &wall.camera, gravity, 0.3);
+    const int side = img.rows - 36;  // the sketch: the square at the right, under the line of words
+    const cv::Mat sketch = img(cv::Rect(img.cols - side, 36, side, side));
+    const cv::Rect now = pixelsOf(sketch, cv::Scalar(255, 200, 0)), after = pixelsOf(sketch, cv::Scalar(80, 255, 80));
+    ASSERT_FALSE(now.empty() || after.empty());
+    // Now: the arrow up (forward), 1.5 radii beyond the centre; "now" is written above right.
+    const double r = (now.br().y - now.y) / 2.5;
+    const double cx = now.x + r, cy = now.br().y - r;
+    // After: the arrow left, 1.5 radii beyond its centre, the disc's top and bottom 2 radii apart.
+    // (Within a tenth of a radius and a quarter: the lines' width and smoothing; a turn the
+    // other way would draw the arrow 2.5 radii to the right.)
+    EXPECT_NEAR(after.br().y - after.y, 2.0 * r, 0.1 * r);
+    const double ax = after.x + 1.5 * r, ay = after.br().y - r;
+    EXPECT_NEAR(ay, cy, 0.1 * r);
+    EXPECT_NEAR(cx - ax, 5.0 * r, 0.25 * r);
 }
 
 TEST(PlanSurfaces, PlanRgbIsReadAsDetectReadsIt) {
