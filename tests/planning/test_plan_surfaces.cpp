@@ -108,6 +108,13 @@ TEST(PlanSurfaces, APictureOnAssumedWallIsSaidAndRankedDown) {
         if (!p.assumed()) {
             EXPECT_EQ(p.limit.find("not seen"), std::string::npos) << p.limit;
         }
+    // A picture more than max_assumed_share on assumed wall is no proposal.
+    PlanOptions capped;
+    capped.max_assumed_share = 0.3;
+    const PlanResult c = planStand(f.cloud, sim::exampleProjector(), DetectorConfig{}, sc.gravity, capped);
+    ASSERT_TRUE(c.found) << c.reason;
+    EXPECT_LE(c.assumed_share, 0.3);
+    EXPECT_GT(c.predicted.area(), 1.5 * c.todayArea()) << "a seen picture still gains";
 }
 
 TEST(PlanSurfaces, TheSketchDrawsTheMoveTheWordsSay) {

@@ -41,8 +41,10 @@ std::optional<StanceCandidate> evaluate(Context &x, int surface, const Stance &s
     ++x.out.evaluated;
     const auto pic = pictureFromStance(x.surfaces[surface], x.projector, fp, s, x.limits, x.mask, min_area);
     if (!pic) return std::nullopt;
+    const double assumed = assumedShare(x.surfaces[surface], *pic);
+    if (assumed > x.o.max_assumed_share) return std::nullopt;
     if (x.o.width > 0.0) x.out.widest = std::max(x.out.widest, pic->width);
-    return StanceCandidate{surface, s, *pic, assumedShare(x.surfaces[surface], *pic)};
+    return StanceCandidate{surface, s, *pic, assumed};
 }
 
 /// a is better than b: larger by more than 1 % (its area with the assumed part weighted down),

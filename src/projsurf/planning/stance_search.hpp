@@ -25,6 +25,9 @@ struct StanceSearchOptions {
     /// pictures are ranked (our choice, docs/planning.md: the wall may end just out of view, so
     /// a picture on seen wall wins over one of similar size that relies on unseen wall).
     double assumed_weight = 0.5;
+    /// A picture more than this share of which is on assumed wall is no proposal: it would be a
+    /// guess at what the camera has not seen, not a plan (our choice, docs/planning.md).
+    double max_assumed_share = 0.5;
 };
 
 struct StanceCandidate {

@@ -77,6 +77,7 @@ PlanResult planStand(const Cloud &cloud, const Projector &projector, const Detec
     so2.step = o.step;
     so2.turn_step_deg = o.turn_step_deg;
     so2.assumed_weight = o.assumed_weight;
+    so2.max_assumed_share = o.max_assumed_share;
     const StanceSearch s = searchStances(surfaces, projector, floor, limits, o.robot_radius, so2);
     out.poses_tried = s.tried;
     out.poses_occupied = s.occupied;

@@ -35,6 +35,8 @@ struct PlanOptions {
     /// A m^2 of that assumed wall counts this much of a seen one when pictures are ranked
     /// (stance_search.hpp; our choice: a picture on seen wall wins over a similar one on unseen).
     double assumed_weight = 0.5;
+    /// A picture more than half on that assumed wall is not proposed (stance_search.hpp).
+    double max_assumed_share = 0.5;
     /// A move is proposed only for a picture this many times today's (our choice: 5 % more is
     /// not worth driving for).
     double min_gain = 1.05;
