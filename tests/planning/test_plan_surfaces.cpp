@@ -92,7 +92,7 @@ TEST(PlanSurfaces, APictureOnAssumedWallIsSaidAndRankedDown) {
     const sim::Scenario sc = sim::makeScenario("wall", 1.0, 0.0);
     const sim::RgbdFrame f = sim::renderFrame(sc.scene, sim::SensorModel{}, 3);
     std::vector<PlanResult> plans;
-    for (double w : {1.0, 0.5, 0.0}) {
+    for (double w : {1.0, PlanOptions{}.assumed_weight, 0.0}) {
         PlanOptions o;
         o.assumed_weight = w;
         plans.push_back(planStand(f.cloud, sim::exampleProjector(), DetectorConfig{}, sc.gravity, o));

@@ -24,7 +24,7 @@ struct StanceSearchOptions {
     /// What a m^2 of wall assumed beyond the camera's view counts for against a m^2 seen, when
     /// pictures are ranked (our choice, docs/planning.md: the wall may end just out of view, so
     /// a picture on seen wall wins over one of similar size that relies on unseen wall).
-    double assumed_weight = 0.5;
+    double assumed_weight = 0.75;
     /// A picture more than this share of which is on assumed wall is no proposal: it would be a
     /// guess at what the camera has not seen, not a plan (our choice, docs/planning.md).
     double max_assumed_share = 0.5;

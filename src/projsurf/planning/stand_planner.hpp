@@ -34,7 +34,7 @@ struct PlanOptions {
     double beyond_view = 0.75;  ///< m of wall assumed free beyond the camera's view (plan_surfaces.hpp)
     /// A m^2 of that assumed wall counts this much of a seen one when pictures are ranked
     /// (stance_search.hpp; our choice: a picture on seen wall wins over a similar one on unseen).
-    double assumed_weight = 0.5;
+    double assumed_weight = 0.75;
     /// A picture more than half on that assumed wall is not proposed (stance_search.hpp).
     double max_assumed_share = 0.5;
     /// A move is proposed only for a picture this many times today's (our choice: 5 % more is
