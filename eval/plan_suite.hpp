@@ -43,6 +43,10 @@ struct PlanSceneResult {
 struct PlanSuiteOptions {
     unsigned seed = 4;
     bool reference = true;  ///< run the reference search (the slow part)
+    /// The depth sensor today's and the moved robot's frames are rendered through: "" = the
+    /// suite's (sim/sensor_model.hpp's Kinect v1), or "kinect1", "tof", "d435": unit 0 of
+    /// sim/depth_sensor.hpp's realistic models (the reference then sees through its intrinsics).
+    std::string sensor;
 };
 
 PlanSceneResult runPlanScene(const PlanScene &scene, const PlanSuiteOptions &options = {});
