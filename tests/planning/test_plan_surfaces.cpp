@@ -97,7 +97,7 @@ TEST(PlanSurfaces, APictureOnAssumedWallIsSaidAndRankedDown) {
         o.assumed_weight = w;
         plans.push_back(planStand(f.cloud, sim::exampleProjector(), DetectorConfig{}, sc.gravity, o));
         ASSERT_TRUE(plans.back().found) << plans.back().reason;
-        std::printf("assumed weight %.1f: %s, %.3f m^2, %.0f %% assumed\n", w, moveInWords(plans.back().move).c_str(),
+        std::printf("assumed weight %.2f: %s, %.3f m^2, %.0f %% assumed\n", w, moveInWords(plans.back().move).c_str(),
                     plans.back().predicted.area(), 100.0 * plans.back().assumed_share);
     }
     ASSERT_TRUE(plans[0].assumed()) << "the scene no longer tests the assumed wall";
