@@ -85,6 +85,38 @@ TEST(PlanSurfaces, AssumedShareCountsTheCellsUnderThePicture) {
     EXPECT_NEAR(assumedShare(s, makeRectangle(s.frame, {-0.2, -0.5}, {0.6, 0.5})), 0.25, 1e-9);
 }
 
+TEST(PlanSurfaces, WallIsAssumedBeyondTheViewOnlyWhereItWasSeenUpToTheEdge) {
+    // A wall 2 m ahead across the whole view (1.22 m either side of the axis), seen free
+    // everywhere, or only left of 0.9 m (it ends there, in view: a corner, a cupboard's side).
+    const CameraIntrinsics camera;
+    SeenSurfaces seen;
+    seen.camera = camera;
+    SeenSurface w;
+    w.plane.normal = -Eigen::Vector3d::UnitZ();
+    w.plane.d = 2.0;
+    w.frame = makePlaneFrame(w.plane, Eigen::Vector3d::UnitY(), Eigen::Vector3d(0, 0, 2));
+    w.raster = planRaster({-1.23, -0.92}, {1.23, 0.92}, 0.03);
+    w.free = cv::Mat(w.raster.rows, w.raster.cols, CV_8UC1, cv::Scalar(255));
+    seen.surfaces.push_back(w);
+    const FloorOccupancy floor(Cloud{}, Eigen::Vector3d::UnitY(), 2.5, 0.08);
+    // Assumed cells right of the view at mid-height (1.3-1.6 m right, within 0.2 m of the axis' height).
+    auto assumedRightOfView = [&](const SeenSurfaces &ss) {
+        const PlanSurface p = planSurfaces(Cloud{}, ss, floor, {}).at(0);
+        int n = 0;
+        for (int r = 0; r < p.raster.rows; ++r)
+            for (int c = 0; c < p.raster.cols; ++c) {
+                const Eigen::Vector2d uv = p.raster.toPlane({c + 0.5, r + 0.5});
+                n += p.assumed.at<uchar>(r, c) && uv.x() > 1.3 && uv.x() < 1.6 && std::abs(uv.y()) < 0.2;
+            }
+        return n;
+    };
+    EXPECT_GT(assumedRightOfView(seen), 50);
+    for (int r = 0; r < w.raster.rows; ++r)
+        for (int c = 0; c < w.raster.cols; ++c)
+            if (w.raster.toPlane({c + 0.5, r + 0.5}).x() > 0.9) seen.surfaces[0].free.at<uchar>(r, c) = 0;
+    EXPECT_EQ(assumedRightOfView(seen), 0);
+}
+
 TEST(PlanSurfaces, APictureOnAssumedWallIsSaidAndRankedDown) {
     // 1 m from a wall that fills the view: the largest picture steps back onto wall assumed
     // beyond the view. The less a m^2 of assumed wall counts, the less of it the plan uses;

@@ -28,10 +28,28 @@ cv::Mat outOfView(const PlanSurface &s, const CameraIntrinsics &camera) {
     return out;
 }
 
+/// The wall assumed beyond the view (CV_8U, 255): the out-of-view cells (`out`) reached within
+/// `pad` cells from free cells seen up to the view's edge (within `edge` cells of `out`),
+/// growing only through `out` and that edge band. A wall that ends in view (a corner, a door's
+/// frame, a cupboard's side) is not continued past its end.
+cv::Mat assumedBeyondView(const cv::Mat &free, const cv::Mat &out, int pad, int edge) {
+    cv::Mat band, grown;
+    cv::dilate(out, band, cv::getStructuringElement(cv::MORPH_RECT, {2 * edge + 1, 2 * edge + 1}));
+    grown = free & band;
+    // Cross and square steps in turn: an octagon about each seed, near enough a disc.
+    const cv::Mat cross = cv::getStructuringElement(cv::MORPH_CROSS, {3, 3});
+    const cv::Mat square = cv::getStructuringElement(cv::MORPH_RECT, {3, 3});
+    for (int i = 0; i < pad; ++i) {
+        cv::dilate(grown, grown, i % 2 ? square : cross);
+        grown &= band;
+    }
+    return grown & out;
+}
+
 /// The seen surface on a raster `beyond` m larger each way, the wall assumed free out of view
-/// within `beyond` of a free cell seen, and not below the floor.
+/// within `beyond` of where it was seen up to the view's edge (`edge` m), and not below the floor.
 PlanSurface extend(const SeenSurface &seen, const std::optional<CameraIntrinsics> &camera,
-                   const FloorOccupancy &floor, double beyond) {
+                   const FloorOccupancy &floor, double beyond, double edge) {
     PlanSurface s;
     s.plane = seen.plane;
     s.frame = seen.frame;
@@ -48,9 +66,7 @@ PlanSurface extend(const SeenSurface &seen, const std::optional<CameraIntrinsics
                          std::min(seen.free.rows, s.raster.rows - pad));
     seen.free(cv::Rect(0, 0, inner.width, inner.height)).copyTo(s.free(inner));
     if (camera && pad > 0) {
-        cv::Mat grown;
-        cv::dilate(s.free, grown, cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * pad + 1, 2 * pad + 1}));
-        s.assumed = grown & outOfView(s, *camera);
+        s.assumed = assumedBeyondView(s.free, outOfView(s, *camera), pad, static_cast<int>(std::ceil(edge / cell)));
         // Not below the floor (the wall's foot).
         if (floor.floorSeen())
             for (int r = 0; r < s.assumed.rows; ++r)
@@ -110,7 +126,8 @@ std::vector<PlanSurface> planSurfaces(const Cloud &cloud, const SeenSurfaces &se
         // No picture where detection would refuse one: a face that stands free, a view through
         // an opening (seeVerticalSurfaces judges them as detect does).
         if (!s.usable() || s.free.empty() || cv::countNonZero(s.free) == 0) continue;
-        PlanSurface p = extend(s, seen.camera, floor, standsBeforeAnother(s, seen) ? 0.0 : options.beyond_view);
+        PlanSurface p = extend(s, seen.camera, floor, standsBeforeAnother(s, seen) ? 0.0 : options.beyond_view,
+                               options.view_edge);
         p.voxel = options.voxel;
         collectInFront(cloud, s, floor, options, p);
         out.push_back(std::move(p));

@@ -19,6 +19,10 @@ struct PlanSurfaceOptions {
     /// a wall seen to the image border rarely ends just there; this much lets the plan step
     /// back for a wider picture without trusting much unseen wall: docs/planning.md)
     double beyond_view = 0.75;
+    /// m, wall seen this near the edge of the camera's view is taken as seen up to it, and only
+    /// such wall is assumed to go on beyond the view (our choice: depth images often have no
+    /// reading in their outermost pixels, ~8 px = 5 cm at 3 m on a Kinect v1).
+    double view_edge = 0.1;
     double voxel = 0.04;  ///< m, the points in front are kept one per voxel (shadows are cast per voxel)
     double obstacle_height = 0.08;  ///< m above the floor: lower points in front of the wall are floor
 };
