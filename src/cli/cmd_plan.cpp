@@ -66,7 +66,8 @@ void run(const PlanCliOptions &o) {
     OutputGroup outputs;
     if (!o.json.empty()) outputs.addFile(o.json, j.dump(2) + "\n");
     if (!o.overlay.empty())
-        outputs.addImage(o.overlay, renderPlanOverlay(cloud, r, cfg, camera.get(), gravity, o.plan.robot_radius, colour));
+        outputs.addImage(o.overlay,
+                         renderPlanOverlay(cloud, r, cfg, camera.get(), gravity, o.plan.robot_radius, colour));
     outputs.commit();
     if (o.json.empty())
         std::cout << j.dump(2) << "\n";
@@ -82,8 +83,9 @@ void addPlanCommand(CLI::App &app) {
     sub->add_option("--cloud", o->cloud, "Point cloud (PCD or PLY, camera optical frame, metres)");
     sub->add_option("--depth", o->depth, "16-bit depth PNG (0 = no reading); needs --camera");
     sub->add_option("--camera", o->camera, "Camera intrinsics YAML for --depth");
-    sub->add_option("--rgb", o->rgb,
-                    "Colour PNG registered to the cloud (checked, as detect --rgb): surface suitability and the overlay");
+    sub->add_option(
+        "--rgb", o->rgb,
+        "Colour PNG registered to the cloud (checked, as detect --rgb): surface suitability and the overlay");
     sub->add_option("--calib", o->calib, "Projector calibration YAML")->required();
     sub->add_option("--aspect", o->aspect, "Picture aspect ratio W:H (default: the framebuffer's)");
     sub->add_option("--gravity", o->gravity,

@@ -103,9 +103,11 @@ cv::Mat renderPlanOverlay(const Cloud &cloud, const PlanResult &plan, const Dete
     cv::hconcat(left, sketch, out);
     char line[400];
     if (plan.assumed())
-        std::snprintf(line, sizeof line, "plan: %s: %.2f m^2 (orange: assumed, %.0f %% on wall not seen), %.2f m^2 "
-                      "today (magenta)", moveInWords(plan.move).c_str(), plan.predicted.area(),
-                      100.0 * plan.assumed_share, plan.todayArea());
+        std::snprintf(line, sizeof line,
+                      "plan: %s: %.2f m^2 (orange: assumed, %.0f %% on wall not seen), %.2f m^2 "
+                      "today (magenta)",
+                      moveInWords(plan.move).c_str(), plan.predicted.area(), 100.0 * plan.assumed_share,
+                      plan.todayArea());
     else if (plan.found)
         std::snprintf(line, sizeof line, "plan: %s: %.2f m^2 (green), %.2f m^2 today (magenta)",
                       moveInWords(plan.move).c_str(), plan.predicted.area(), plan.todayArea());

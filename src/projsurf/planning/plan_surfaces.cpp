@@ -48,8 +48,8 @@ cv::Mat assumedBeyondView(const cv::Mat &free, const cv::Mat &out, int pad, int 
 
 /// The seen surface on a raster `beyond` m larger each way, the wall assumed free out of view
 /// within `beyond` of where it was seen up to the view's edge (`edge` m), and not below the floor.
-PlanSurface extend(const SeenSurface &seen, const std::optional<CameraIntrinsics> &camera,
-                   const FloorOccupancy &floor, double beyond, double edge) {
+PlanSurface extend(const SeenSurface &seen, const std::optional<CameraIntrinsics> &camera, const FloorOccupancy &floor,
+                   double beyond, double edge) {
     PlanSurface s;
     s.plane = seen.plane;
     s.frame = seen.frame;
@@ -126,8 +126,8 @@ std::vector<PlanSurface> planSurfaces(const Cloud &cloud, const SeenSurfaces &se
         // No picture where detection would refuse one: a face that stands free, a view through
         // an opening (seeVerticalSurfaces judges them as detect does).
         if (!s.usable() || s.free.empty() || cv::countNonZero(s.free) == 0) continue;
-        PlanSurface p = extend(s, seen.camera, floor, standsBeforeAnother(s, seen) ? 0.0 : options.beyond_view,
-                               options.view_edge);
+        PlanSurface p =
+            extend(s, seen.camera, floor, standsBeforeAnother(s, seen) ? 0.0 : options.beyond_view, options.view_edge);
         p.voxel = options.voxel;
         collectInFront(cloud, s, floor, options, p);
         out.push_back(std::move(p));
