@@ -178,6 +178,32 @@ TEST(PlanSurfaces, TheSketchDrawsTheMoveTheWordsSay) {
     EXPECT_NEAR(cx - ax, 5.0 * r, 0.25 * r);
 }
 
+TEST(PlanSurfaces, APictureOnAssumedWallIsDrawnDashed) {
+    // The same proposal (1 m back, a picture on the wall 3 m ahead) seen, then 40 % assumed:
+    // its outline on the frame and its bottom edge in the sketch lose about half their pixels.
+    const SyntheticWall wall(3.0);
+    const Eigen::Vector3d gravity = Eigen::Vector3d::UnitY();
+    PlanResult plan;
+    plan.found = true;
+    plan.translation = -1.0 * levelledFrame(gravity).forward;
+    plan.move = levelledMove(plan.rotation, plan.translation, gravity);
+    Plane plane;
+    plane.normal = -Eigen::Vector3d::UnitZ();
+    plane.d = 3.0;
+    plan.predicted = makeRectangle(makePlaneFrame(plane, gravity, Eigen::Vector3d(0, 0, 3)), {-1.0, -0.6}, {1.0, 0.6});
+    auto green = [&](double assumed) {
+        plan.assumed_share = assumed;
+        cv::Mat mask;
+        const cv::Mat img = renderPlanOverlay(wall.cloud, plan, DetectorConfig{}, &wall.camera, gravity, 0.3);
+        cv::inRange(img, cv::Scalar(80, 255, 80), cv::Scalar(80, 255, 80), mask);
+        return cv::countNonZero(mask);
+    };
+    const int seen = green(0.0), assumed = green(0.4);
+    EXPECT_GT(seen, 0);
+    EXPECT_LT(assumed, 0.8 * seen);
+    EXPECT_GT(assumed, 0.2 * seen);
+}
+
 TEST(PlanSurfaces, PlanRgbIsReadAsDetectReadsIt) {
     const std::string frame = std::string(PROJSURF_SOURCE_DIR) + "/data/tum_o3d_fr3_office_partition";
     const fs::path dir = freshDir("plan_rgb");
