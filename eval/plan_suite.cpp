@@ -8,6 +8,7 @@
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/planning/floor_occupancy.hpp"
 #include "projsurf/planning/stance_view.hpp"
+#include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
 #include "projsurf/sim/scenarios.hpp"
@@ -35,6 +36,12 @@ Cloud sceneSamples(const Scene &scene) {
     return c;
 }
 
+/// A frame of `scene` through the options' sensor (PlanSuiteOptions::sensor).
+RgbdFrame renderScene(const Scene &scene, const PlanSuiteOptions &o, unsigned seed) {
+    if (o.sensor.empty()) return renderFrame(scene, SensorModel(), seed);
+    return renderSensorFrame(scene, makeDepthSensor(*parseSensorKind(o.sensor), 0), seed, std::nullopt, false);
+}
+
 struct Reference {
     double area = 0.0, width = 0.0, move_to_width = -1.0;
 };
@@ -43,11 +50,13 @@ struct Reference {
 /// either way, where the robot's disc fits and its way there is clear; each scored by the
 /// ground truth from there (what the moved camera sees and the moved projector lights), with
 /// the picture's far corner within the plan's range.
-Reference referenceSearch(const Scenario &sc, const Projector &projector, const PlanOptions &o) {
+Reference referenceSearch(const Scenario &sc, const Projector &projector, const PlanOptions &o,
+                          const std::string &sensor_name) {
     Reference ref;
     const FloorOccupancy floor(sceneSamples(sc.scene), sc.gravity, o.max_move + o.robot_radius + 0.2,
                                o.obstacle_height);
     SensorModel sensor = SensorModel::ideal();
+    if (!sensor_name.empty()) sensor.camera = makeDepthSensor(*parseSensorKind(sensor_name), 0).camera();
     sensor.max_depth = o.max_distance;
     TruthOptions topt;
     topt.cell = 0.03;
@@ -83,11 +92,12 @@ Reference referenceSearch(const Scenario &sc, const Projector &projector, const 
 }
 
 /// Detected from the moved robot: the scene rendered there.
-Detection detectFromMoved(const Scenario &sc, const Projector &projector, const PlanResult &plan, unsigned seed) {
+Detection detectFromMoved(const Scenario &sc, const Projector &projector, const PlanResult &plan,
+                          const PlanSuiteOptions &options) {
     Eigen::Isometry3d today_from_moved = Eigen::Isometry3d::Identity();
     today_from_moved.linear() = plan.rotation;
     today_from_moved.translation() = plan.translation;
-    const RgbdFrame after = renderFrame(transformed(sc.scene, today_from_moved.inverse()), SensorModel(), seed + 1);
+    const RgbdFrame after = renderScene(transformed(sc.scene, today_from_moved.inverse()), options, options.seed + 1);
     return detectSurface(after.cloud, projector, DetectorConfig{}, plan.rotation.transpose() * sc.gravity);
 }
 
@@ -122,12 +132,19 @@ std::vector<PlanScene> planSuiteScenes() {
     };
 }
 
+std::vector<PlanScene> obliqueWallScenes() {
+    std::vector<PlanScene> out;
+    for (double angle : {30.0, 45.0, 60.0})
+        for (double distance : {1.5, 2.25, 3.0}) out.push_back({"wall", distance, angle, 0.0, "oblique"});
+    return out;
+}
+
 PlanSceneResult runPlanScene(const PlanScene &scene, const PlanSuiteOptions &options) {
     PlanSceneResult r;
     r.scene = scene;
     const Scenario sc = makeScenario(scene.scenario, scene.distance, scene.angle_deg);
     const Projector projector = exampleProjector();
-    const RgbdFrame today = renderFrame(sc.scene, SensorModel(), options.seed);
+    const RgbdFrame today = renderScene(sc.scene, options, options.seed);
     PlanOptions o;
     o.width = scene.width;
     const auto t0 = std::chrono::steady_clock::now();
@@ -136,12 +153,12 @@ PlanSceneResult runPlanScene(const PlanScene &scene, const PlanSuiteOptions &opt
     r.before = r.plan.todayArea();
     if (r.plan.found) {
         r.predicted = r.plan.predicted.area();
-        const Detection after = r.plan.moves() ? detectFromMoved(sc, projector, r.plan, options.seed) : r.plan.today;
+        const Detection after = r.plan.moves() ? detectFromMoved(sc, projector, r.plan, options) : r.plan.today;
         r.realised = after.found ? after.rectangle.area() : 0.0;
         r.realised_width = after.found ? after.rectangle.width : 0.0;
     }
     if (options.reference) {
-        const Reference ref = referenceSearch(sc, projector, o);
+        const Reference ref = referenceSearch(sc, projector, o, options.sensor);
         r.reference = ref.area;
         r.reference_width = ref.width;
         r.reference_move = ref.move_to_width;
@@ -202,6 +219,27 @@ std::string planSuiteSummary(const std::vector<PlanSceneResult> &rows) {
         "plan suite: the targets hold in %d of %zu scenes; realised %.1f-%.1f %% of predicted; plan at most %.0f ms",
         holds, rows.size(), 100.0 * lo, 100.0 * hi, ms);
     return buf;
+}
+
+std::string planGainSummary(const std::vector<PlanSceneResult> &rows) {
+    std::string out;
+    double least = 1e9;
+    char buf[200];
+    for (const PlanSceneResult &r : rows) {
+        if (r.reference <= 0.0 || r.scene.width > 0.0) continue;
+        const double share = r.realised / r.reference;
+        least = std::min(least, share);
+        std::snprintf(buf, sizeof buf, "%s %.2f m %.0f deg: gain %.2fx of the reference's %.2fx (%.0f %%)\n",
+                      r.scene.scenario.c_str(), r.scene.distance, r.scene.angle_deg,
+                      r.realised / std::max(r.before, 1e-9), r.reference / std::max(r.before, 1e-9), 100.0 * share);
+        out += buf;
+    }
+    if (least < 1e9) {
+        std::snprintf(buf, sizeof buf, "realised gain at least %.0f %% of the reference's (target 85 %%)\n",
+                      100.0 * least);
+        out += buf;
+    }
+    return out;
 }
 
 }  // namespace projsurf::eval

@@ -11,6 +11,9 @@
 //          then fits the surfaces, recomputes the reference best rectangle (and, when the label has a
 //          colour section, the colour-aware best: the unsuitable polygons as further obstacles) and
 //          writes the label.
+//   score <frame_dir> <label.yaml> x,y,z x,y,z x,y,z x,y,z
+//          scores a rectangle (camera frame, corners TL TR BR BL) by eval/real_scoring's rules, the
+//          detector's: prints "valid 0|1 free F surface NAME why ..." (scripts/plan_labels.py)
 //   baseline <real_dir> <labels_dir> [margin]  prints the regression baseline (labels/baseline.yaml); a frame
 //          not in real_dir is looked for in data/real (run from the repository root):
 //          today's detector per frame, right or not, and its area ratio minus `margin` (default 0.05),
@@ -30,6 +33,7 @@
 #include "eval/label_reference.hpp"
 #include "eval/labelled_eval.hpp"
 #include "eval/real_labels.hpp"
+#include "eval/real_scoring.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/yaml_files.hpp"
 #include "projsurf/sim/scenarios.hpp"
@@ -170,12 +174,33 @@ void refineObstacles(RealLabel &l, const Cloud &cloud, const std::string &keep_l
 
 }  // namespace
 
+/// `score`: one rectangle against the label (argv as in the comment at the top).
+int scoreRectangle(int argc, char **argv) {
+    if (argc != 8) throw std::runtime_error("score <frame_dir> <label.yaml> x,y,z x,y,z x,y,z x,y,z");
+    const CameraIntrinsics cam = readCamera((fs::path(argv[2]) / "camera.yaml").string());
+    const RealLabel l = readRealLabel(argv[3]);
+    Rectangle r;
+    for (int k = 0; k < 4; ++k) {
+        char comma;
+        std::istringstream in(argv[4 + k]);
+        in >> r.corners[k].x() >> comma >> r.corners[k].y() >> comma >> r.corners[k].z();
+        if (!in) throw std::runtime_error(std::string("not a point x,y,z: ") + argv[4 + k]);
+    }
+    r.width = (r.corners[1] - r.corners[0]).norm();
+    r.height = (r.corners[3] - r.corners[0]).norm();
+    const RealScore s = scoreRealRectangle(l, cam, true, r);
+    std::printf("valid %d free %.3f surface %s why %s\n", s.valid ? 1 : 0, s.free_fraction, s.surface.c_str(),
+                s.why.c_str());
+    return 0;
+}
+
 int main(int argc, char **argv) {
     if (argc < 4) {
         std::fprintf(stderr, "usage: see the comment at the top of tests/label_tool.cpp\n");
         return 2;
     }
     try {
+        if (std::string(argv[1]) == "score") return scoreRectangle(argc, argv);
         if (std::string(argv[1]) == "baseline") {
             const double margin = argc > 4 ? std::stod(argv[4]) : 0.05;
             std::printf(

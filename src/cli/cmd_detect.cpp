@@ -8,6 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli/calibration_input.hpp"
+#include "cli/colour_input.hpp"
 #include "cli/commands.hpp"
 #include "projsurf/detection/gravity.hpp"
 #include "projsurf/frontend/aspect.hpp"
@@ -27,7 +28,6 @@
 #include "projsurf/frontend/method_words.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
 #include "projsurf/frontend/overlay.hpp"
-#include "projsurf/frontend/registered_colour.hpp"
 #include "projsurf/frontend/suitability_mode.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
@@ -177,12 +177,7 @@ DetectInput readDetectInput(const DetectOptions &o) {
         for (const std::string &w : camera_warnings) std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
         in.cloud = readDepthCloud(o.depth, o.camera);
     }
-    if (!o.rgb.empty()) {
-        in.color = readImage(o.rgb, cv::IMREAD_UNCHANGED);
-        const frontend::ColourAttachment attached = frontend::attachRegisteredColour(in.cloud, in.color, o.rgb);
-        for (const std::string &w : attached.warnings) std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
-        if (!attached.used) in.color.release();
-    }
+    if (!o.rgb.empty()) in.color = attachColourFile(in.cloud, o.rgb);
     return in;
 }
 

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/calibration_input.hpp"
+#include "cli/colour_input.hpp"
 #include "cli/commands.hpp"
 #include "projsurf/frontend/aspect.hpp"
 #include "projsurf/frontend/detect_answer.hpp"
@@ -23,7 +24,7 @@ namespace projsurf::cli {
 namespace {
 
 struct PlanCliOptions {
-    std::string cloud, depth, camera, calib, aspect, gravity, json, overlay, config_file;
+    std::string cloud, depth, camera, rgb, calib, aspect, gravity, json, overlay, config_file;
     PlanOptions plan;
 };
 
@@ -48,7 +49,9 @@ void run(const PlanCliOptions &o) {
     const Projector projector = readCalibrationWarned(o.calib);
     std::unique_ptr<CameraIntrinsics> camera;
     if (!o.depth.empty()) camera = std::make_unique<CameraIntrinsics>(readCamera(o.camera));
-    const Cloud cloud = o.cloud.empty() ? readDepthCloud(o.depth, o.camera) : readCloud(o.cloud);
+    Cloud cloud = o.cloud.empty() ? readDepthCloud(o.depth, o.camera) : readCloud(o.cloud);
+    // As detect --rgb: the colour judges today's surface and is the overlay's background.
+    const cv::Mat colour = o.rgb.empty() ? cv::Mat() : attachColourFile(cloud, o.rgb);
     // Today's answer is detect's, by the same call.
     SurfaceDetector detector(projector, cfg);
     const frontend::GravityDetection answer = frontend::detectWithGravity(
@@ -63,7 +66,8 @@ void run(const PlanCliOptions &o) {
     OutputGroup outputs;
     if (!o.json.empty()) outputs.addFile(o.json, j.dump(2) + "\n");
     if (!o.overlay.empty())
-        outputs.addImage(o.overlay, renderPlanOverlay(cloud, r, cfg, camera.get(), gravity, o.plan.robot_radius));
+        outputs.addImage(o.overlay,
+                         renderPlanOverlay(cloud, r, cfg, camera.get(), gravity, o.plan.robot_radius, colour));
     outputs.commit();
     if (o.json.empty())
         std::cout << j.dump(2) << "\n";
@@ -79,6 +83,9 @@ void addPlanCommand(CLI::App &app) {
     sub->add_option("--cloud", o->cloud, "Point cloud (PCD or PLY, camera optical frame, metres)");
     sub->add_option("--depth", o->depth, "16-bit depth PNG (0 = no reading); needs --camera");
     sub->add_option("--camera", o->camera, "Camera intrinsics YAML for --depth");
+    sub->add_option(
+        "--rgb", o->rgb,
+        "Colour PNG registered to the cloud (checked, as detect --rgb): surface suitability and the overlay");
     sub->add_option("--calib", o->calib, "Projector calibration YAML")->required();
     sub->add_option("--aspect", o->aspect, "Picture aspect ratio W:H (default: the framebuffer's)");
     sub->add_option("--gravity", o->gravity,

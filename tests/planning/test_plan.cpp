@@ -53,13 +53,13 @@ TEST(Plan, EverySuiteSceneRealisesThePrediction) {
 }
 
 TEST(Plan, ShortestMoveForAWidthAndARefusal) {
-    const eval::PlanSceneResult r = eval::runPlanScene({"wall", 0.86, 0.0, 1.2, "width"}, {4, false});
+    const eval::PlanSceneResult r = eval::runPlanScene({"wall", 0.86, 0.0, 1.2, "width"}, {4, false, ""});
     ASSERT_TRUE(r.plan.found) << r.plan.reason;
     EXPECT_GE(r.plan.predicted.width, 1.2);
     EXPECT_LT(r.plan.move.forward_m, 0.0) << "a wider picture needs a step back";
     EXPECT_GE(r.realised_width, 0.95 * 1.2);
     // Wider than possible within the bound: a clear refusal that names the width.
-    const eval::PlanSceneResult none = eval::runPlanScene({"wall", 0.86, 0.0, 20.0, "width"}, {4, false});
+    const eval::PlanSceneResult none = eval::runPlanScene({"wall", 0.86, 0.0, 20.0, "width"}, {4, false, ""});
     EXPECT_FALSE(none.plan.found);
     EXPECT_NE(none.plan.reason.find("20.00 m wide"), std::string::npos) << none.plan.reason;
 }

@@ -38,6 +38,10 @@ nlohmann::json planToJson(const PlanResult &r) {
     j["today"] = r.today.found ? rectangleJson(r.today.rectangle) : nlohmann::json(nullptr);
     j["today_reason"] = r.today.found ? nlohmann::json(nullptr) : nlohmann::json(r.today.reason);
     j["limit"] = r.limit;
+    // Extension: the proposed picture relies on wall assumed beyond the camera's view (not
+    // seen), and on how much of it.
+    j["assumed"] = r.assumed();
+    j["assumed_share"] = r.found ? r.assumed_share : 0.0;
     j["search"] = {{"surfaces", r.surfaces},
                    {"poses_tried", r.poses_tried},
                    {"poses_occupied", r.poses_occupied},

@@ -1,7 +1,8 @@
 #pragma once
 // A plan as every front end reports it: the contract's JSON (found, reason, camera_pose,
 // predicted) with the extensions (today = detect's answer, the move in the gravity-levelled
-// robot frame, what limits the picture), and the one-line summary in words.
+// robot frame, what limits the picture, whether it relies on wall not seen), and the one-line
+// summary in words.
 #include <nlohmann/json.hpp>
 #include <string>
 

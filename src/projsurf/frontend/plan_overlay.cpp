@@ -12,18 +12,33 @@ namespace projsurf {
 namespace {
 
 const cv::Scalar kToday(255, 0, 255), kProposed(80, 255, 80), kText(255, 255, 255), kRobot(255, 200, 0);
+/// The segment a-b (px), solid, or dashed (12 px on, 12 off) for a picture that relies on wall
+/// not seen (detect's overlay already uses every plain colour for something else).
+void drawSegment(cv::Mat &img, const cv::Point2d &a, const cv::Point2d &b, const cv::Scalar &colour, int thickness,
+                 bool dashed) {
+    auto at = [](const cv::Point2d &p) { return cv::Point(cvRound(p.x * 16), cvRound(p.y * 16)); };
+    const double length = cv::norm(b - a), dash = 12.0;
+    if (!dashed || length <= dash) {
+        cv::line(img, at(a), at(b), colour, thickness, cv::LINE_AA, 4);
+        return;
+    }
+    for (double t = 0.0; t < length; t += 2.0 * dash)
+        cv::line(img, at(a + (b - a) * (t / length)), at(a + (b - a) * (std::min(t + dash, length) / length)), colour,
+                 thickness, cv::LINE_AA, 4);
+}
 
-/// The proposed rectangle drawn on detect's overlay (whose picture part is the camera's image scaled).
-void drawProposed(cv::Mat &img, const CameraIntrinsics &cam, const Rectangle &r) {
+/// The proposed rectangle drawn on detect's overlay (whose picture part is the camera's image
+/// scaled), dashed when it relies on wall not seen.
+void drawProposed(cv::Mat &img, const CameraIntrinsics &cam, const Rectangle &r, bool dashed) {
     const double scale = static_cast<double>(img.cols) / cam.width;
-    std::vector<cv::Point> px;
+    std::vector<cv::Point2d> px;
     for (const auto &c : r.corners) {
         const double z = std::max(c.z(), 1e-3);
         auto fit = [](double v) { return std::clamp(v, -1e5, 1e5); };
-        px.emplace_back(cvRound(fit((cam.fx * c.x() / z + cam.cx + 0.5) * scale - 0.5) * 16),
-                        cvRound(fit((cam.fy * c.y() / z + cam.cy + 0.5) * scale - 0.5) * 16));
+        px.emplace_back(fit((cam.fx * c.x() / z + cam.cx + 0.5) * scale - 0.5),
+                        fit((cam.fy * c.y() / z + cam.cy + 0.5) * scale - 0.5));
     }
-    cv::polylines(img, std::vector<std::vector<cv::Point>>{px}, true, kProposed, 4, cv::LINE_AA, 4);
+    for (std::size_t k = 0; k < px.size(); ++k) drawSegment(img, px[k], px[(k + 1) % px.size()], kProposed, 4, dashed);
 }
 
 /// Top-down: left/right across, forward up; 1 px per `mpp` m about the camera's foot.
@@ -75,7 +90,8 @@ cv::Mat topDown(const Cloud &cloud, const PlanResult &plan, const Eigen::Vector3
         if (r.area() > 0) cv::line(img, v(r.corners[3]), v(r.corners[2]), c, 4, cv::LINE_AA);
     };
     if (plan.today.found) bottom(plan.today.rectangle, kToday);
-    if (plan.found) bottom(plan.predicted, kProposed);
+    if (plan.found && plan.predicted.area() > 0)
+        drawSegment(img, v(plan.predicted.corners[3]), v(plan.predicted.corners[2]), kProposed, 4, plan.assumed());
     drawRobot(img, v, Eigen::Vector3d::Zero(), v.f.forward, radius, kRobot, "now");
     if (plan.found && plan.moves())
         drawRobot(img, v, plan.translation, plan.rotation * v.f.forward, radius, kProposed, "after");
@@ -88,16 +104,23 @@ cv::Mat topDown(const Cloud &cloud, const PlanResult &plan, const Eigen::Vector3
 }  // namespace
 
 cv::Mat renderPlanOverlay(const Cloud &cloud, const PlanResult &plan, const DetectorConfig &config,
-                          const CameraIntrinsics *camera, const Eigen::Vector3d &gravity, double robot_radius) {
+                          const CameraIntrinsics *camera, const Eigen::Vector3d &gravity, double robot_radius,
+                          const cv::Mat &colour) {
     CameraIntrinsics cam = camera ? *camera : estimateIntrinsics(cloud);
     if (!(cam.fx > 0)) cam = CameraIntrinsics{};
-    cv::Mat left = renderOverlay(cloud, plan.today, config, camera, cv::Mat());
-    if (plan.found && plan.moves()) drawProposed(left, cam, plan.predicted);
+    cv::Mat left = renderOverlay(cloud, plan.today, config, camera, colour);
+    if (plan.found && plan.moves()) drawProposed(left, cam, plan.predicted, plan.assumed());
     cv::Mat sketch = topDown(cloud, plan, gravity, robot_radius, left.rows);
     cv::Mat out;
     cv::hconcat(left, sketch, out);
     char line[400];
-    if (plan.found)
+    if (plan.assumed())
+        std::snprintf(line, sizeof line,
+                      "plan: %s: %.2f m^2 (green, dashed: assumed, %.0f %% on wall not seen), %.2f m^2 "
+                      "today (magenta)",
+                      moveInWords(plan.move).c_str(), plan.predicted.area(), 100.0 * plan.assumed_share,
+                      plan.todayArea());
+    else if (plan.found)
         std::snprintf(line, sizeof line, "plan: %s: %.2f m^2 (green), %.2f m^2 today (magenta)",
                       moveInWords(plan.move).c_str(), plan.predicted.area(), plan.todayArea());
     else

@@ -10,8 +10,11 @@
 namespace projsurf {
 
 /// `camera`: intrinsics of an organized cloud (nullptr: estimated from the cloud); `gravity`:
-/// the plan's; `robot_radius`: m, the disc drawn.
+/// the plan's; `robot_radius`: m, the disc drawn; `colour`: BGR image registered to the cloud,
+/// the frame's background as in detect's overlay (empty: the depth). A proposed picture that
+/// relies on wall not seen is drawn dashed, and the line above says how much.
 cv::Mat renderPlanOverlay(const Cloud &cloud, const PlanResult &plan, const DetectorConfig &config,
-                          const CameraIntrinsics *camera, const Eigen::Vector3d &gravity, double robot_radius);
+                          const CameraIntrinsics *camera, const Eigen::Vector3d &gravity, double robot_radius,
+                          const cv::Mat &colour = cv::Mat());
 
 }  // namespace projsurf

@@ -28,10 +28,28 @@ cv::Mat outOfView(const PlanSurface &s, const CameraIntrinsics &camera) {
     return out;
 }
 
+/// The wall assumed beyond the view (CV_8U, 255): the out-of-view cells (`out`) reached within
+/// `pad` cells from free cells seen up to the view's edge (within `edge` cells of `out`),
+/// growing only through `out` and that edge band. A wall that ends in view (a corner, a door's
+/// frame, a cupboard's side) is not continued past its end.
+cv::Mat assumedBeyondView(const cv::Mat &free, const cv::Mat &out, int pad, int edge) {
+    cv::Mat band, grown;
+    cv::dilate(out, band, cv::getStructuringElement(cv::MORPH_RECT, {2 * edge + 1, 2 * edge + 1}));
+    grown = free & band;
+    // Cross and square steps in turn: an octagon about each seed, near enough a disc.
+    const cv::Mat cross = cv::getStructuringElement(cv::MORPH_CROSS, {3, 3});
+    const cv::Mat square = cv::getStructuringElement(cv::MORPH_RECT, {3, 3});
+    for (int i = 0; i < pad; ++i) {
+        cv::dilate(grown, grown, i % 2 ? square : cross);
+        grown &= band;
+    }
+    return grown & out;
+}
+
 /// The seen surface on a raster `beyond` m larger each way, the wall assumed free out of view
-/// within `beyond` of a free cell seen, and not below the floor.
-PlanSurface extend(const SeenSurface &seen, const std::optional<CameraIntrinsics> &camera,
-                   const FloorOccupancy &floor, double beyond) {
+/// within `beyond` of where it was seen up to the view's edge (`edge` m), and not below the floor.
+PlanSurface extend(const SeenSurface &seen, const std::optional<CameraIntrinsics> &camera, const FloorOccupancy &floor,
+                   double beyond, double edge) {
     PlanSurface s;
     s.plane = seen.plane;
     s.frame = seen.frame;
@@ -48,9 +66,7 @@ PlanSurface extend(const SeenSurface &seen, const std::optional<CameraIntrinsics
                          std::min(seen.free.rows, s.raster.rows - pad));
     seen.free(cv::Rect(0, 0, inner.width, inner.height)).copyTo(s.free(inner));
     if (camera && pad > 0) {
-        cv::Mat grown;
-        cv::dilate(s.free, grown, cv::getStructuringElement(cv::MORPH_ELLIPSE, {2 * pad + 1, 2 * pad + 1}));
-        s.assumed = grown & outOfView(s, *camera);
+        s.assumed = assumedBeyondView(s.free, outOfView(s, *camera), pad, static_cast<int>(std::ceil(edge / cell)));
         // Not below the floor (the wall's foot).
         if (floor.floorSeen())
             for (int r = 0; r < s.assumed.rows; ++r)
@@ -60,6 +76,7 @@ PlanSurface extend(const SeenSurface &seen, const std::optional<CameraIntrinsics
         s.free |= s.assumed;
     }
     cv::integral(s.free / 255, s.integral, CV_32S);
+    cv::integral(s.assumed / 255, s.assumed_integral, CV_32S);
     return s;
 }
 
@@ -106,8 +123,11 @@ std::vector<PlanSurface> planSurfaces(const Cloud &cloud, const SeenSurfaces &se
                                       const PlanSurfaceOptions &options) {
     std::vector<PlanSurface> out;
     for (const SeenSurface &s : seen.surfaces) {
-        if (s.free.empty() || cv::countNonZero(s.free) == 0) continue;
-        PlanSurface p = extend(s, seen.camera, floor, standsBeforeAnother(s, seen) ? 0.0 : options.beyond_view);
+        // No picture where detection would refuse one: a face that stands free, a view through
+        // an opening (seeVerticalSurfaces judges them as detect does).
+        if (!s.usable() || s.free.empty() || cv::countNonZero(s.free) == 0) continue;
+        PlanSurface p =
+            extend(s, seen.camera, floor, standsBeforeAnother(s, seen) ? 0.0 : options.beyond_view, options.view_edge);
         p.voxel = options.voxel;
         collectInFront(cloud, s, floor, options, p);
         out.push_back(std::move(p));
@@ -115,14 +135,35 @@ std::vector<PlanSurface> planSurfaces(const Cloud &cloud, const SeenSurfaces &se
     return out;
 }
 
-int freeCells(const PlanSurface &s, int c0, int r0, int c1, int r1) {
+namespace {
+
+/// Cells counted by the integral image `I` of `s`'s raster in [c0, c1) x [r0, r1) (clipped).
+int cellsIn(const PlanSurface &s, const cv::Mat &I, int c0, int r0, int c1, int r1) {
     c0 = std::clamp(c0, 0, s.raster.cols);
     c1 = std::clamp(c1, 0, s.raster.cols);
     r0 = std::clamp(r0, 0, s.raster.rows);
     r1 = std::clamp(r1, 0, s.raster.rows);
-    if (c1 <= c0 || r1 <= r0) return 0;
-    const cv::Mat &I = s.integral;
+    if (c1 <= c0 || r1 <= r0 || I.empty()) return 0;
     return I.at<int>(r1, c1) - I.at<int>(r0, c1) - I.at<int>(r1, c0) + I.at<int>(r0, c0);
+}
+
+}  // namespace
+
+int freeCells(const PlanSurface &s, int c0, int r0, int c1, int r1) { return cellsIn(s, s.integral, c0, r0, c1, r1); }
+
+double assumedShare(const PlanSurface &s, const Rectangle &picture) {
+    Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e18), hi = -lo;
+    for (const auto &corner : picture.corners) {
+        const Eigen::Vector2d cr = s.raster.toCell(s.frame.toPlane(corner));
+        lo = lo.cwiseMin(cr);
+        hi = hi.cwiseMax(cr);
+    }
+    // The cells whose centre (c + 0.5, r + 0.5) lies in the box.
+    const int c0 = static_cast<int>(std::ceil(lo.x() - 0.5)), c1 = static_cast<int>(std::floor(hi.x() - 0.5)) + 1;
+    const int r0 = static_cast<int>(std::ceil(lo.y() - 0.5)), r1 = static_cast<int>(std::floor(hi.y() - 0.5)) + 1;
+    const int all = std::max(0, c1 - c0) * std::max(0, r1 - r0);
+    if (all == 0) return 0.0;
+    return static_cast<double>(cellsIn(s, s.assumed_integral, c0, r0, c1, r1)) / all;
 }
 
 }  // namespace projsurf

@@ -41,19 +41,22 @@ std::optional<StanceCandidate> evaluate(Context &x, int surface, const Stance &s
     ++x.out.evaluated;
     const auto pic = pictureFromStance(x.surfaces[surface], x.projector, fp, s, x.limits, x.mask, min_area);
     if (!pic) return std::nullopt;
+    const double assumed = assumedShare(x.surfaces[surface], *pic);
+    if (assumed > x.o.max_assumed_share) return std::nullopt;
     if (x.o.width > 0.0) x.out.widest = std::max(x.out.widest, pic->width);
-    return StanceCandidate{surface, s, *pic};
+    return StanceCandidate{surface, s, *pic, assumed};
 }
 
-/// a is better than b: larger by more than 1 %, or as large (1 %) with a shorter move or a smaller turn;
-/// with a width wanted: wide enough, and a shorter move, then a smaller turn.
+/// a is better than b: larger by more than 1 % (its area with the assumed part weighted down),
+/// or as large (1 %) with a shorter move or a smaller turn; with a width wanted: wide enough,
+/// and a shorter move, then a smaller turn.
 bool better(const StanceSearchOptions &o, const StanceCandidate &a, const std::optional<StanceCandidate> &b) {
     if (o.width > 0.0 && a.picture.width + 1e-9 < o.width) return false;
     if (!b) return true;
     const double ma = a.stance.move(), mb = b->stance.move();
     const bool shorter = ma < mb - 1e-9 || (std::abs(ma - mb) <= 1e-9 && std::abs(a.stance.turn) < std::abs(b->stance.turn) - 1e-9);
     if (o.width > 0.0) return shorter;
-    const double aa = a.picture.area(), ab = b->picture.area();
+    const double aa = a.score(o.assumed_weight), ab = b->score(o.assumed_weight);
     return aa > 1.01 * ab || (aa >= 0.99 * ab && shorter);
 }
 
@@ -89,16 +92,18 @@ std::vector<StanceCandidate> bestByArea(Context &x, std::vector<Bounded> &all) {
     std::sort(all.begin(), all.end(), [](const Bounded &a, const Bounded &b) { return a.area > b.area; });
     std::vector<StanceCandidate> seen;
     std::optional<StanceCandidate> best;
+    const double w = x.o.assumed_weight;
+    // A picture's area bounds its score: none whose bound is below the best's score can win.
     for (const Bounded &b : all) {
         if (b.blocked) continue;
-        if (best && b.area < 0.99 * best->picture.area()) break;
-        const auto c = evaluate(x, b.surface, b.stance, b.footprint, best ? 0.99 * best->picture.area() : 0.0);
+        if (best && b.area < 0.99 * best->score(w)) break;
+        const auto c = evaluate(x, b.surface, b.stance, b.footprint, best ? 0.99 * best->score(w) : 0.0);
         if (!c) continue;
         seen.push_back(*c);
         if (better(x.o, *c, best)) best = c;
     }
     std::sort(seen.begin(), seen.end(),
-              [](const StanceCandidate &a, const StanceCandidate &b) { return a.picture.area() > b.picture.area(); });
+              [w](const StanceCandidate &a, const StanceCandidate &b) { return a.score(w) > b.score(w); });
     // Distinct seeds: another surface, or a stance a coarse step or turn away from those kept.
     std::vector<StanceCandidate> seeds;
     if (best) seeds.push_back(*best);
@@ -148,7 +153,8 @@ StanceCandidate refine(Context &x, StanceCandidate c) {
                 if (!reachable(x, s)) continue;
                 const auto fp = stanceFootprint(x.surfaces[c.surface], x.projector, x.rays, s, x.limits);
                 if (!fp) continue;
-                const auto t = evaluate(x, c.surface, s, *fp, x.o.width > 0.0 ? 0.0 : 0.99 * c.picture.area());
+                const auto t =
+                    evaluate(x, c.surface, s, *fp, x.o.width > 0.0 ? 0.0 : 0.99 * c.score(x.o.assumed_weight));
                 if (t && better(x.o, *t, next ? next : std::optional<StanceCandidate>(c))) next = t;
             }
             if (!next) break;

@@ -21,12 +21,22 @@ struct StanceSearchOptions {
     double turn_step_deg = 15;  ///< deg, the coarse turns
     double fine_step = 0.025;   ///< m, the refinement stops below this step
     int refine = 6;             ///< best distinct stances refined
+    /// What a m^2 of wall assumed beyond the camera's view counts for against a m^2 seen, when
+    /// pictures are ranked (our choice, docs/planning.md: the wall may end just out of view, so
+    /// a picture on seen wall wins over one of similar size that relies on unseen wall).
+    double assumed_weight = 0.75;
+    /// A picture more than this share of which is on assumed wall is no proposal: it would be a
+    /// guess at what the camera has not seen, not a plan (our choice, docs/planning.md).
+    double max_assumed_share = 0.5;
 };
 
 struct StanceCandidate {
     int surface = -1;
     Stance stance;
     Rectangle picture;  ///< today's camera frame
+    double assumed = 0.0;  ///< the share of the picture on wall assumed, not seen (plan_surfaces.hpp)
+    /// m^2, what the picture is ranked by: its area with the assumed part weighted down.
+    double score(double assumed_weight) const { return picture.area() * (1.0 - (1.0 - assumed_weight) * assumed); }
 };
 
 struct StanceSearch {

@@ -26,6 +26,15 @@ std::string limitOf(const PlanOptions &o, const StanceSearch &s, const Rectangle
     return "the wall's extent: the free surface seen holds no larger picture";
 }
 
+/// The limit, and what the picture assumes when it relies on wall not seen.
+std::string limitWithAssumed(const PlanOptions &o, const StanceSearch &s, const StanceCandidate &best) {
+    std::string limit = limitOf(o, s, best.picture, best.stance);
+    if (best.assumed > 0.01)
+        limit += formatted("; assumed: %.0f %% of the picture is on wall not seen", 100.0 * best.assumed) +
+                 " (assumed to go on beyond the camera's view: look there first)";
+    return limit;
+}
+
 /// Why nothing was found.
 std::string reasonOf(const PlanOptions &o, const StanceSearch &s, int surfaces) {
     if (surfaces == 0) return "no free vertical surface seen";
@@ -41,7 +50,7 @@ std::string reasonOf(const PlanOptions &o, const StanceSearch &s, int surfaces) 
 bool staysToday(const PlanOptions &o, const PlanResult &r, const StanceSearch &s) {
     if (!r.today.found) return false;
     if (o.width > 0.0) return r.today.rectangle.width + 1e-9 >= o.width;
-    return !s.best || s.best->picture.area() <= o.min_gain * r.todayArea();
+    return !s.best || s.best->score(o.assumed_weight) <= o.min_gain * r.todayArea();
 }
 
 }  // namespace
@@ -67,6 +76,8 @@ PlanResult planStand(const Cloud &cloud, const Projector &projector, const Detec
     so2.width = o.width;
     so2.step = o.step;
     so2.turn_step_deg = o.turn_step_deg;
+    so2.assumed_weight = o.assumed_weight;
+    so2.max_assumed_share = o.max_assumed_share;
     const StanceSearch s = searchStances(surfaces, projector, floor, limits, o.robot_radius, so2);
     out.poses_tried = s.tried;
     out.poses_occupied = s.occupied;
@@ -87,7 +98,8 @@ PlanResult planStand(const Cloud &cloud, const Projector &projector, const Detec
     out.translation = s.best->stance.translation;
     out.move = levelledMove(out.rotation, out.translation, gravity);
     out.predicted = s.best->picture;
-    out.limit = limitOf(o, s, s.best->picture, s.best->stance);
+    out.assumed_share = s.best->assumed;
+    out.limit = limitWithAssumed(o, s, *s.best);
     return out;
 }
 

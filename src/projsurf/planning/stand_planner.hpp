@@ -32,6 +32,11 @@ struct PlanOptions {
     /// still see the wall to detect and track it (Kinect v1: 1.7 cm noise at 3.5 m, K&OE 2012).
     double max_distance = 3.5;
     double beyond_view = 0.75;  ///< m of wall assumed free beyond the camera's view (plan_surfaces.hpp)
+    /// A m^2 of that assumed wall counts this much of a seen one when pictures are ranked
+    /// (stance_search.hpp; our choice: a picture on seen wall wins over a similar one on unseen).
+    double assumed_weight = 0.75;
+    /// A picture more than half on that assumed wall is not proposed (stance_search.hpp).
+    double max_assumed_share = 0.5;
     /// A move is proposed only for a picture this many times today's (our choice: 5 % more is
     /// not worth driving for).
     double min_gain = 1.05;
@@ -46,11 +51,16 @@ struct PlanResult {
     Eigen::Vector3d translation = Eigen::Vector3d::Zero();
     LevelledMove move;    ///< the same move in the gravity-levelled robot frame
     Rectangle predicted;  ///< after the move, today's camera frame
+    /// The share of `predicted` on wall assumed beyond the camera's view, not seen (0 = all
+    /// seen; today's picture is always seen).
+    double assumed_share = 0.0;
     Detection today;      ///< where the robot stands: the detection's answer
     int surfaces = 0;     ///< vertical surfaces searched
     int poses_tried = 0, poses_occupied = 0, pictures_evaluated = 0;
 
     double todayArea() const { return today.found ? today.rectangle.area() : 0.0; }
+    /// The picture relies on wall that was not seen (more than 1 % of it: a cell's sliver at its edge is not).
+    bool assumed() const { return found && assumed_share > 0.01; }
     bool moves() const { return translation.norm() > 1e-9 || (rotation - Eigen::Matrix3d::Identity()).norm() > 1e-9; }
 };
 

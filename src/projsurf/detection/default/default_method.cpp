@@ -646,10 +646,14 @@ SeenSurfaces seeVerticalSurfaces(const Cloud &cloud, const DetectorConfig &cfg, 
     if (scratch.observations.size() < candidates.size()) scratch.observations.resize(candidates.size());
     DetectorConfig fine = cfg;
     fine.free_space.cell = cell;
+    // Detection's judgement, in detection's order: the opening before the wall's shape (on
+    // every candidate as found), the object after it.
+    for (PlaneCandidate &c : candidates) c.beyond_opening = beyondOpening(cloud, sample, cfg, c, candidates);
     for (std::size_t k = 0; k < candidates.size(); ++k) {
         PlaneCandidate &c = candidates[k];
         c.observed = &scratch.observations[k];
         shapeWall(cloud, sample, cfg, gravity, c);
+        const bool object = !c.beyond_opening && objectFace(cloud, sample, cfg, c, candidates);
         Eigen::Vector2d lo, hi;
         inlierExtent(cloud, c, lo, hi);
         // Within `reach` of the camera's foot on the plane (a far plane is not rastered whole).
@@ -672,6 +676,8 @@ SeenSurfaces seeVerticalSurfaces(const Cloud &cloud, const DetectorConfig &cfg, 
         s.tolerance = c.tolerance;
         s.shape = c.shape;
         s.inliers = c.inliers;
+        s.object = object;
+        s.beyond_opening = c.beyond_opening;
         out.surfaces.push_back(std::move(s));
     }
     return out;

@@ -38,6 +38,11 @@ struct SeenSurface {
     DepthTolerance tolerance;
     WallShape shape;
     int inliers = 0;
+    /// Refused by detection's own judgement, as `detect` refuses it: a face that stands free in
+    /// the room (furniture, a box: detection's Object verdict), or one seen through an opening
+    /// of a nearer wall (BeyondOpening). A plan puts no picture on either.
+    bool object = false, beyond_opening = false;
+    bool usable() const { return !object && !beyond_opening; }
 };
 
 struct SeenSurfaces {
@@ -46,7 +51,8 @@ struct SeenSurfaces {
 };
 
 /// Every vertical plane detection considers, each observed over all of the part the camera
-/// saw within `reach` m (along the plane) of the camera, on a raster of `cell` m.
+/// saw within `reach` m (along the plane) of the camera, on a raster of `cell` m; each judged
+/// by detection's rules (objectFace, beyondOpening: `refused`), with the same configuration.
 SeenSurfaces seeVerticalSurfaces(const Cloud &cloud, const DetectorConfig &config, const Eigen::Vector3d &gravity,
                                  double cell, double reach, DefaultScratch &scratch);
 

@@ -1,0 +1,19 @@
+#include "cli/colour_input.hpp"
+
+#include <cstdio>
+#include <opencv2/imgcodecs.hpp>
+
+#include "projsurf/frontend/registered_colour.hpp"
+#include "projsurf/io/files.hpp"
+
+namespace projsurf::cli {
+
+cv::Mat attachColourFile(Cloud &cloud, const std::string &path) {
+    cv::Mat colour = readImage(path, cv::IMREAD_UNCHANGED);
+    const frontend::ColourAttachment attached = frontend::attachRegisteredColour(cloud, colour, path);
+    for (const std::string &w : attached.warnings) std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
+    if (!attached.used) colour.release();
+    return colour;
+}
+
+}  // namespace projsurf::cli
