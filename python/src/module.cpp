@@ -13,6 +13,7 @@
 #include "argument_errors.hpp"
 #include "argument_types.hpp"
 #include "bag_function.hpp"
+#include "colour_argument.hpp"
 #include "detection_dict.hpp"
 #include "detector_options.hpp"
 #include "image_array.hpp"
@@ -116,14 +117,6 @@ py::array corners2(const Corners2 &c) {
     return a;
 }
 
-/// Colour into the cloud by the CLI's policy (frontend/registered_colour.hpp); its warnings
-/// come back for the caller to issue as UserWarnings.
-std::vector<std::string> attachChecked(Cloud &cloud, const py::object &colour) {
-    py::object keep;
-    const cv::Mat bgr = matFromArray(arrayArgument(colour, "colour"), "colour", keep);
-    return frontend::attachRegisteredColour(cloud, bgr, "colour").warnings;
-}
-
 /// A detector for a stream of clouds: keeps the C++ SurfaceDetector (and its buffers).
 class Detector {
 public:
@@ -136,7 +129,7 @@ public:
         if (!py::isinstance<py::bool_>(overlay)) throw InputError("overlay", "must be True or False");
         Cloud cloud = cloudFromPoints(points);
         std::vector<std::string> warnings;
-        if (!colour.is_none()) warnings = attachChecked(cloud, colour);
+        if (!colour.is_none()) warnings = attachColourArgument(cloud, colour);
         Detection det;
         {
             py::gil_scoped_release unlocked;
@@ -149,8 +142,7 @@ public:
         py::dict d = detectionToDict(det, options_.config, detector_.projector(), explain.cast<bool>());
         if (overlay.cast<bool>()) {  // `detect --overlay`'s picture, colour as its background when it was used
             py::object keep;
-            const cv::Mat bgr =
-                cloud.hasColour() ? matFromArray(arrayArgument(colour, "colour"), "colour", keep) : cv::Mat();
+            const cv::Mat bgr = overlayBackground(cloud, colour, keep);
             d["overlay"] = arrayFromMat(renderOverlay(cloud, det, options_.config, nullptr, bgr, explain.cast<bool>()));
         }
         return d;

@@ -155,6 +155,7 @@ OTHER_COUNTERPARTS = {
         "--depth": ("read_depth_cloud", "depth_png"),
         "--camera": ("read_depth_cloud", "camera_yaml"),
         "--calib": ("read_calibration", None),
+        "--rgb": ("plan", "colour"),
         "--json": ("plan", None),  # the dict it returns
     },
     "correct": {

@@ -49,3 +49,20 @@ def test_plan_refuses_bad_options(projector):
         projsurf.plan(cloud, projector, width=-1)
     with pytest.raises(projsurf.InputError, match="max_move"):
         projsurf.plan(cloud, projector, max_move=float("nan"))
+
+
+def test_plan_takes_colour_as_detect_does(projector):
+    # `plan --rgb`'s counterpart: the colour goes through detect()'s policy (a wrong size is
+    # refused by the same words) and today's answer stays detect()'s with the same colour.
+    cloud = wall_and_floor(wall=1.2, camera_height=1.0)
+    grey_wall = np.full(cloud.shape[:2] + (3,), 180, np.uint8)
+    with pytest.raises(projsurf.InputError, match=r"^colour: colour image is 320x240, the cloud is 640x480$"):
+        projsurf.plan(cloud, projector, colour=np.ascontiguousarray(grey_wall[::2, ::2]))
+    # A plain wall has no depth edges to check the registration on: used as given, said by both.
+    with pytest.warns(UserWarning, match="^colour: cannot check that the colour is registered"):
+        plan = projsurf.plan(cloud, projector, colour=grey_wall, overlay=True)
+    with pytest.warns(UserWarning, match="^colour: cannot check that the colour is registered"):
+        today = projsurf.detect(cloud, projector, colour=grey_wall)
+    assert plan["found"] is True
+    np.testing.assert_allclose(plan["today"]["corners"], today["rectangle"]["corners"], atol=1e-12)
+    assert plan["overlay"].shape[2] == 3
