@@ -10,8 +10,8 @@
 #include "points_array.hpp"
 #include "projsurf/frontend/detect_answer.hpp"
 #include "projsurf/frontend/plan_json.hpp"
-#include "projsurf/io/errors.hpp"
 #include "projsurf/frontend/plan_overlay.hpp"
+#include "projsurf/io/errors.hpp"
 #include "projsurf/planning/stand_planner.hpp"
 
 namespace py = pybind11;
@@ -24,8 +24,8 @@ void addPlanFunction(py::module_ &m) {
         "plan",
         [](const py::object &points, const py::object &projector_arg, const py::object &aspect,
            const py::object &gravity, const py::object &width_arg, const py::object &max_move_arg,
-           const py::object &min_width, const py::object &min_area, const py::object &config,
-           const py::object &colour, const py::object &overlay) {
+           const py::object &min_width, const py::object &min_area, const py::object &config, const py::object &colour,
+           const py::object &overlay) {
             if (!py::isinstance<py::bool_>(overlay)) throw InputError("overlay", "must be True or False");
             const bool want_overlay = overlay.cast<bool>();
             const Projector &projector = projectorArgument(projector_arg, "projector");

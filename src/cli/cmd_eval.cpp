@@ -96,8 +96,7 @@ void runProcam(const EvalOptions &o) {
     std::printf("\n%s", eval::procamTable(in).c_str());
     for (const auto &w : stereoWarnings(cal.fit)) std::fprintf(stderr, "projsurf: warning: ours: %s\n", w.c_str());
     for (const auto &c : ref.fit.convergence)
-        if (c.on_cap)
-            std::fprintf(stderr, "projsurf: warning: reference: %s\n", convergenceWarning(c).c_str());
+        if (c.on_cap) std::fprintf(stderr, "projsurf: warning: reference: %s\n", convergenceWarning(c).c_str());
     if (!o.json.empty()) {
         std::vector<double> shares;
         for (const auto &p : cal.poses)
@@ -432,7 +431,8 @@ void printFullSummary(const EvalOptions &o, int rounds, const SimulatedSuites &s
                 results.trials.size() + results.keystone.size(), results.seconds, rounds, o.quick ? ", quick" : "",
                 real_frames, o.out.c_str());
     std::printf("%s\n", evalHeadlineText(results).c_str());
-    if (const std::string note = eval::paperCriterionRoundsNote(rounds); !note.empty()) std::printf("  %s\n", note.c_str());
+    if (const std::string note = eval::paperCriterionRoundsNote(rounds); !note.empty())
+        std::printf("  %s\n", note.c_str());
     std::printf("%s\n", eval::realisticSuiteSummary(suites.realistic).c_str());
     std::printf("%s\n", eval::colourSuiteSummary(suites.colour).c_str());
     printLabelledLines(labelled);
@@ -488,6 +488,36 @@ void run(const EvalOptions &o, const std::string &command) {
     runFullEval(o, command, labels, rounds);
 }
 
+/// The --procam check's options; those beside it need it (without it they would be ignored
+/// and a full eval run).
+void addProcamOptions(CLI::App &sub, EvalOptions &o) {
+    CLI::Option *procam =
+        sub.add_option("--procam", o.procam,
+                       "Only the real projector-camera check: calibrate a procam-calibration sample_data folder "
+                       "(capture_k/graycode_NN.png, calibration_result.xml) with the chessboard mode and print it "
+                       "beside the published method re-run to convergence on the same captures (OpenCV's Gray-code "
+                       "decoder) and beside its published calibration (information)");
+    sub.add_option("--json", o.json, "with --procam: write the comparison as JSON")->needs(procam);
+    sub.add_option("--published", o.published,
+                   "with --procam: the published calibration shown for information (OpenCV XML; default "
+                   "DIR/calibration_result.xml)")
+        ->needs(procam);
+    sub.add_option("--square-m", o.square_m, "with --procam: the board's square, m (default 0.075: its README's 75)")
+        ->needs(procam);
+}
+
+/// The command as the report quotes it.
+std::string evalCommandLine(const EvalOptions &o) {
+    std::string command = "projsurf eval --out " + o.out;
+    if (o.quick) command += " --quick";
+    if (o.paper_only) command += " --paper-only";
+    if (o.rounds != 10) command += " --rounds " + std::to_string(o.rounds);
+    if (o.seed != 1) command += " --seed " + std::to_string(o.seed);
+    if (o.real_dir_given) command += " --real-dir '" + o.real_dir + "'";
+    if (o.labels_dir_given) command += " --labels '" + o.labels_dir + "'";
+    return command;
+}
+
 }  // namespace
 
 void addEvalCommand(CLI::App &app) {
@@ -518,19 +548,7 @@ void addEvalCommand(CLI::App &app) {
                   "windows, clutter): DIR/realistic.md; --rounds per scene and sensor, 2 with --quick")
         ->excludes("--projector-only")
         ->excludes("--colour-only");
-    CLI::Option *procam = sub->add_option("--procam", o->procam,
-                    "Only the real projector-camera check: calibrate a procam-calibration sample_data folder "
-                    "(capture_k/graycode_NN.png, calibration_result.xml) with the chessboard mode and print it "
-                    "beside the published method re-run to convergence on the same captures (OpenCV's Gray-code "
-                    "decoder) and beside its published calibration (information)");
-    // The options of --procam alone need it: without it they would be ignored and a full eval run.
-    sub->add_option("--json", o->json, "with --procam: write the comparison as JSON")->needs(procam);
-    sub->add_option("--published", o->published,
-                    "with --procam: the published calibration shown for information (OpenCV XML; default "
-                    "DIR/calibration_result.xml)")
-        ->needs(procam);
-    sub->add_option("--square-m", o->square_m, "with --procam: the board's square, m (default 0.075: its README's 75)")
-        ->needs(procam);
+    addProcamOptions(*sub, *o);
     sub->add_flag("--plan-only", o->plan_only,
                   "Only the plan suite (where to stand: planned, rendered from the moved robot, detected there, "
                   "against an exhaustive reference search): DIR/plan.md; --seed renders the frames, --quick skips the "
@@ -563,14 +581,7 @@ void addEvalCommand(CLI::App &app) {
         EvalOptions opts = *o;
         opts.real_dir_given = real->count() > 0;
         opts.labels_dir_given = labels->count() > 0;
-        std::string command = "projsurf eval --out " + opts.out;
-        if (opts.quick) command += " --quick";
-        if (opts.paper_only) command += " --paper-only";
-        if (opts.rounds != 10) command += " --rounds " + std::to_string(opts.rounds);
-        if (opts.seed != 1) command += " --seed " + std::to_string(opts.seed);
-        if (opts.real_dir_given) command += " --real-dir '" + opts.real_dir + "'";
-        if (opts.labels_dir_given) command += " --labels '" + opts.labels_dir + "'";
-        run(opts, command);
+        run(opts, evalCommandLine(opts));
     });
 }
 
