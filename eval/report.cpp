@@ -218,17 +218,25 @@ std::vector<double> publishedSeries(const PaperSuccessRow *row, const std::vecto
     return y;
 }
 
+/// A chart over the distance to the wall (the paper's x axis), `size` px.
+LineChart distanceChart(const std::string &title, const std::string &y_label, cv::Size size) {
+    LineChart c;
+    c.title = title;
+    c.x_label = "distance to the wall (m)";
+    c.y_label = y_label;
+    c.size = size;
+    return c;
+}
+
 cv::Mat successPanel(const std::vector<Trial> &trials, const std::string &scenario, double angle, bool paper_criterion,
                      const std::vector<std::tuple<std::string, std::string, cv::Scalar, int>> &methods,
                      const std::vector<std::tuple<std::string, const PaperSuccessRow *, cv::Scalar>> &published) {
-    LineChart c;
     const std::vector<double> ds = distancesOf(trials, scenario);
-    c.title = scenario + " at " + plotAngle(angle) + (paper_criterion ? ": paper's criterion" : ": ground truth");
-    c.x_label = "distance to the wall (m)";
-    c.y_label = "success rate (%)";
+    LineChart c = distanceChart(
+        scenario + " at " + plotAngle(angle) + (paper_criterion ? ": paper's criterion" : ": ground truth"),
+        "success rate (%)", cv::Size(620, 430));
     c.y_min = 0;
     c.y_max = 105;
-    c.size = cv::Size(620, 430);
     for (const auto &[name, label, color, marker] : methods)
         if (hasMethod(trials, scenario, name))
             c.series.push_back({label,
@@ -273,19 +281,13 @@ cv::Mat clutteredSuccessPlot(const std::vector<Trial> &T) {
 
 /// Fig 15: surface-check outliers and decisions; empty when no check scenario ran.
 cv::Mat surfaceCheckPlot(const std::vector<Trial> &T) {
-    LineChart outl;
-    outl.title = "Outliers in the checked area (paper method, median; 0 drawn at 1)";
-    outl.x_label = "distance to the wall (m)";
-    outl.y_label = "outliers (log scale)";
+    LineChart outl = distanceChart("Outliers in the checked area (paper method, median; 0 drawn at 1)",
+                                   "outliers (log scale)", cv::Size(640, 440));
     outl.log_y = true;
-    outl.size = cv::Size(640, 440);
-    LineChart acc;
-    acc.title = "Surface-check decisions that were right (ground truth)";
-    acc.x_label = "distance to the wall (m)";
-    acc.y_label = "right decisions (%)";
+    LineChart acc = distanceChart("Surface-check decisions that were right (ground truth)", "right decisions (%)",
+                                  cv::Size(640, 440));
     acc.y_min = 0;
     acc.y_max = 105;
-    acc.size = cv::Size(640, 440);
     const cv::Scalar colors[] = {kNo, kSo, kBo};
     int k = 0;
     bool any = false;
@@ -351,12 +353,9 @@ cv::Mat keystonePlot(const std::vector<KeystoneTrial> &keystone) {
 
 /// Time per detection on the plain wall, ours per method and the paper's.
 cv::Mat timingPlot(const std::vector<Trial> &T) {
-    LineChart c;
-    c.title = "Time per detection on the plain wall (median, one core)";
-    c.x_label = "distance to the wall (m)";
-    c.y_label = "ms (log scale)";
+    LineChart c =
+        distanceChart("Time per detection on the plain wall (median, one core)", "ms (log scale)", cv::Size(700, 460));
     c.log_y = true;
-    c.size = cv::Size(700, 460);
     const std::vector<double> ds = distancesOf(T, "wall");
     const std::tuple<std::string, std::string, cv::Scalar, int> methods[] = {
         {"paper-concave", "ours: paper method, concave", kConcave, 0},
