@@ -26,13 +26,11 @@ std::string limitOf(const PlanOptions &o, const StanceSearch &s, const Rectangle
     return "the wall's extent: the free surface seen holds no larger picture";
 }
 
-/// The limit, and what the picture assumes when it relies on wall not seen.
-std::string limitWithAssumed(const PlanOptions &o, const StanceSearch &s, const StanceCandidate &best) {
-    std::string limit = limitOf(o, s, best.picture, best.stance);
-    if (best.assumed > 0.01)
-        limit += formatted("; assumed: %.0f %% of the picture is on wall not seen", 100.0 * best.assumed) +
-                 " (assumed to go on beyond the camera's view: look there first)";
-    return limit;
+/// What the picture assumes when it relies on wall not seen (empty when it does not).
+std::string assumedWords(const PlanResult &r) {
+    if (!r.assumed()) return "";
+    return formatted("; assumed: %.0f %% of the picture is on wall not seen", 100.0 * r.assumed_share) +
+           " (assumed to go on beyond the camera's view: look there first)";
 }
 
 /// Why nothing was found.
@@ -99,7 +97,7 @@ PlanResult planStand(const Cloud &cloud, const Projector &projector, const Detec
     out.move = levelledMove(out.rotation, out.translation, gravity);
     out.predicted = s.best->picture;
     out.assumed_share = s.best->assumed;
-    out.limit = limitWithAssumed(o, s, *s.best);
+    out.limit = limitOf(o, s, s.best->picture, s.best->stance) + assumedWords(out);
     return out;
 }
 
