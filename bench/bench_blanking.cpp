@@ -3,7 +3,7 @@
 #include "eval/walk_in.hpp"
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 using namespace projsurf::eval;  // the evaluation under test
 

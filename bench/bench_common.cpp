@@ -15,11 +15,11 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/files.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/files/files.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 #include "projsurf/sim/sensor_model.hpp"
 
 namespace projsurf::bench {

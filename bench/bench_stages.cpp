@@ -23,12 +23,12 @@
 #include "bench_blanking.hpp"
 #include "bench_common.hpp"
 #include "pcl_reference.hpp"
-#include "projsurf/types/camera.hpp"
 #include "projsurf/detection/colour/colour_registration.hpp"
 #include "projsurf/detection/rectangle_search.hpp"
-#include "projsurf/io/errors.hpp"
 #include "projsurf/detector/detector.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
+#include "projsurf/types/camera.hpp"
 
 namespace {
 

@@ -27,8 +27,8 @@
 #include "bench_plan.hpp"
 #include "pcl_reference.hpp"
 #include "projsurf/detector/detector.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 #include "projsurf/types/projector.hpp"
 
 namespace {

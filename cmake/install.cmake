@@ -1,6 +1,6 @@
 # Install rules and the exported package: `cmake --install build --prefix P` gives
-#   P/include/projsurf/{types,calibration,detection,keystone,people,planning,tracking,sim,io,frontend}/*.hpp
-#   P/lib/libprojsurf_{sim,io,frontend}.so* and one per core folder (libprojsurf_types.so, ...)     P/bin/projsurf (the evaluation, eval/, is linked into it, not installed)
+#   P/include/projsurf/<folder>.hpp, each folder's public header, and the headers they include
+#   P/lib/libprojsurf_<folder>.so* one per folder (libprojsurf_types.so, libprojsurf_io_yaml.so, ...)     P/bin/projsurf (the evaluation, eval/, is linked into it, not installed)
 #   P/lib/cmake/projsurf/  find_package(projsurf [COMPONENTS core sim io frontend]) -> projsurf::<component>
 #                          (projsurf::core links projsurf::types, projsurf::detection, ...)
 #   P/lib/pkgconfig/       projsurf-core.pc (the core), projsurf.pc (all of them)
@@ -8,6 +8,7 @@
 # only what the core's headers need (Eigen, OpenCV core): no nlohmann-json, PCL or CLI11.
 # Every path in these files is relative to where they are installed (a tree can be moved).
 include(CMakePackageConfigHelpers)
+projsurf_install_public_headers()
 set(PROJSURF_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/projsurf)
 
 set(PROJSURF_COMPONENTS core sim)
@@ -17,10 +18,16 @@ endif()
 if(TARGET projsurf_frontend)
   list(APPEND PROJSURF_COMPONENTS frontend)  # the CLI links it
 endif()
+# Each component is one or more folder libraries (projsurf_io_files, ...) behind an umbrella
+# (projsurf::io); sim is its folder's library, which links sim/scenes.
+set(PROJSURF_core_FOLDERS ${PROJSURF_CORE_TARGETS})
+set(PROJSURF_sim_FOLDERS ${PROJSURF_SIM_TARGETS})
+set(PROJSURF_io_FOLDERS ${PROJSURF_IO_TARGETS})
+set(PROJSURF_frontend_FOLDERS ${PROJSURF_FRONTEND_TARGETS})
 foreach(component ${PROJSURF_COMPONENTS})
-  set(targets projsurf_${component})
-  if(component STREQUAL "core")
-    list(APPEND targets ${PROJSURF_CORE_TARGETS})  # the folders' libraries behind the umbrella
+  set(targets ${PROJSURF_${component}_FOLDERS})
+  if(NOT component STREQUAL "sim")
+    list(APPEND targets projsurf_${component})
   endif()
   install(TARGETS ${targets} EXPORT projsurf-${component}-targets
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT runtime NAMELINK_COMPONENT devel
@@ -53,6 +60,12 @@ foreach(target ${PROJSURF_CORE_TARGETS})
   string(PREPEND PROJSURF_PC_CORE_LIBS "-l${target} ")
 endforeach()
 string(STRIP "${PROJSURF_PC_CORE_LIBS}" PROJSURF_PC_CORE_LIBS)
+# projsurf.pc: the frontend's, io's and sim's folder libraries, users before what they use.
+set(PROJSURF_PC_LIBS "")
+foreach(target ${PROJSURF_SIM_TARGETS} ${PROJSURF_IO_TARGETS} ${PROJSURF_FRONTEND_TARGETS})
+  string(PREPEND PROJSURF_PC_LIBS "-l${target} ")
+endforeach()
+string(STRIP "${PROJSURF_PC_LIBS}" PROJSURF_PC_LIBS)
 set(PROJSURF_PC_FILES projsurf-core)
 if(TARGET projsurf_io)
   list(APPEND PROJSURF_PC_FILES projsurf)

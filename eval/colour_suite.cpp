@@ -16,8 +16,8 @@
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/ray_cast.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios_realistic.hpp"
-#include "projsurf/sim/wall_frame.hpp"
+#include "projsurf/sim/scenes/scenarios_realistic.hpp"
+#include "projsurf/sim/scenes/wall_frame.hpp"
 #include "projsurf/types/formatted.hpp"
 
 namespace projsurf::eval {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "projsurf/detector/detector.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 namespace projsurf::eval {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/frontend/test_card.hpp"
+#include "projsurf/frontend/render/test_card.hpp"
 #include "projsurf/sim/ray_cast.hpp"
 
 namespace projsurf::eval {

@@ -15,7 +15,7 @@
 #include "projsurf/keystone/keystone.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 namespace projsurf::eval {
 

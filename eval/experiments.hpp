@@ -15,7 +15,7 @@
 #include "projsurf/calibration/calibration.hpp"
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/keystone/keystone.hpp"
-#include "projsurf/sim/scene.hpp"
+#include "projsurf/sim/scenes/scene.hpp"
 #include "projsurf/sim/sensor_model.hpp"
 
 namespace projsurf::eval {

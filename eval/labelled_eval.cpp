@@ -13,12 +13,12 @@
 #include "eval/label_reference.hpp"
 #include "eval/plot.hpp"
 #include "projsurf/detection/colour/colour_registration.hpp"
-#include "projsurf/frontend/minimum_size.hpp"
-#include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/files.hpp"
-#include "projsurf/io/yaml_files.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/frontend/settings/minimum_size.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/files/files.hpp"
+#include "projsurf/io/formats/cloud_io.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 #include "projsurf/types/formatted.hpp"
 
 namespace fs = std::filesystem;

@@ -10,7 +10,7 @@
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 #include "projsurf/types/projector.hpp"
 
 namespace projsurf::eval {

@@ -5,7 +5,7 @@
 
 #include "projsurf/planning/stand_planner.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 namespace projsurf::eval {
 

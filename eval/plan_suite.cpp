@@ -11,7 +11,7 @@
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 namespace projsurf::eval {
 

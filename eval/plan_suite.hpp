@@ -12,7 +12,7 @@
 namespace projsurf::eval {
 
 struct PlanScene {
-    std::string scenario;  ///< sim/scenarios.hpp
+    std::string scenario;  ///< sim/scenes/scenarios.hpp
     double distance = 1.5, angle_deg = 0.0;
     double width = 0.0;  ///< m, --width (0: the largest picture)
     std::string kind;    ///< what the scene tests: "near", "angled", "furniture", "width", "corner"

@@ -6,8 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "projsurf/io/detection_json.hpp"
-#include "projsurf/io/errors.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/formats/detection_json.hpp"
 
 namespace projsurf::eval {
 namespace {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "projsurf/calibration/stereo_fit.hpp"
-#include "projsurf/io/procam_xml.hpp"
+#include "projsurf/io/formats/procam_xml.hpp"
 
 namespace projsurf::eval {
 

@@ -10,7 +10,7 @@
 #include "projsurf/calibration/gray_code.hpp"
 #endif
 
-#include "projsurf/io/errors.hpp"
+#include "projsurf/io/files/errors.hpp"
 
 namespace projsurf::eval {
 namespace {

@@ -19,7 +19,7 @@
 
 #include "projsurf/calibration/converged_fit.hpp"
 #include "projsurf/calibration/stereo_fit.hpp"
-#include "projsurf/io/procam_captures.hpp"
+#include "projsurf/io/formats/procam_captures.hpp"
 
 namespace projsurf::eval {
 

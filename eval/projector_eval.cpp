@@ -9,7 +9,7 @@
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/keystone/keystone.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 namespace projsurf::eval {
 

@@ -9,11 +9,11 @@
 #include <opencv2/imgproc.hpp>
 
 #include "eval/plot.hpp"
-#include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/files.hpp"
-#include "projsurf/frontend/overlay.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/frontend/render/overlay.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/files/files.hpp"
+#include "projsurf/io/formats/cloud_io.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 
 namespace fs = std::filesystem;
 

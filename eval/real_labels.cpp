@@ -1,5 +1,5 @@
 #include "eval/real_labels.hpp"
-#include "projsurf/io/yaml_numbers.hpp"
+#include "projsurf/io/yaml/yaml_numbers.hpp"
 
 #include <yaml-cpp/yaml.h>
 #include <algorithm>
@@ -7,11 +7,11 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/files.hpp"
-#include "projsurf/io/limits.hpp"
-#include "projsurf/io/yaml_files.hpp"
-#include "projsurf/io/yaml_tree.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/files/files.hpp"
+#include "projsurf/io/files/limits.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
+#include "projsurf/io/yaml/yaml_tree.hpp"
 
 namespace fs = std::filesystem;
 

@@ -8,7 +8,7 @@
 #include "eval/experiments.hpp"
 #include "eval/scoring.hpp"
 #include "projsurf/sim/ground_truth.hpp"
-#include "projsurf/sim/scenarios_realistic.hpp"
+#include "projsurf/sim/scenes/scenarios_realistic.hpp"
 #include "projsurf/types/formatted.hpp"
 
 namespace projsurf::eval {
@@ -145,7 +145,7 @@ std::vector<SensorKind> kindsIn(const RealisticSuiteResult &result) {
 std::string realisticSuiteMarkdown(const RealisticSuiteResult &result) {
     std::ostringstream md;
     const auto kinds = kindsIn(result);
-    md << "Scenes from `sim/scenarios_realistic.hpp` through the realistic sensor models "
+    md << "Scenes from `sim/scenes/scenarios_realistic.hpp` through the realistic sensor models "
           "(`sim/kinect1_model.hpp`, `sim/tof_model.hpp`, `sim/d435_model.hpp`); round r uses sensor unit r. "
        << result.rounds
        << " rounds per scene and sensor, scored like Tables 1-2 (valid, >= 97 % truly free, area "

@@ -11,7 +11,7 @@
 
 #include "eval/paper_results.hpp"
 #include "eval/plot.hpp"
-#include "projsurf/io/files.hpp"
+#include "projsurf/io/files/files.hpp"
 
 namespace fs = std::filesystem;
 

@@ -1,6 +1,6 @@
 #include "eval/truth_json.hpp"
 
-#include "projsurf/io/files.hpp"
+#include "projsurf/io/files/files.hpp"
 #include "projsurf/types/plane.hpp"
 
 namespace projsurf::eval {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "projsurf/sim/ground_truth.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 namespace projsurf::eval {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scene.hpp"
+#include "projsurf/sim/scenes/scene.hpp"
 #include "projsurf/types/plane.hpp"
 #include "projsurf/types/projector.hpp"
 

@@ -1,6 +1,6 @@
 // libFuzzer harness: forEachBagCloud on a ROS 1 bag (the topic /points, as the seeds have it).
 #include "fuzz_common.hpp"
-#include "projsurf/io/rosbag_clouds.hpp"
+#include "projsurf/io/rosbag/rosbag_clouds.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
     using namespace projsurf;

@@ -1,6 +1,6 @@
 // libFuzzer harness: readCamera on a camera intrinsics YAML.
 #include "fuzz_common.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
     using namespace projsurf;

@@ -5,7 +5,7 @@
 
 #include "fuzz_common.hpp"
 #include "projsurf/calibration/calibration.hpp"
-#include "projsurf/io/files.hpp"
+#include "projsurf/io/files/files.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
     using namespace projsurf;

@@ -17,10 +17,10 @@
 #include "fuzz_common.hpp"
 #include "projsurf/calibration/gray_code.hpp"
 #include "projsurf/calibration/stereo_fit.hpp"
-#include "projsurf/frontend/chessboard_calibration.hpp"
-#include "projsurf/io/chessboard_report.hpp"
-#include "projsurf/io/procam_captures.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/frontend/inputs/chessboard_calibration.hpp"
+#include "projsurf/io/formats/procam_captures.hpp"
+#include "projsurf/io/reports/chessboard_report.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 
 namespace fs = std::filesystem;
 

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <string>
 
-#include "projsurf/io/errors.hpp"
+#include "projsurf/io/files/errors.hpp"
 
 namespace projsurf::fuzz {
 

@@ -1,6 +1,6 @@
 // libFuzzer harness: readDepthCloud on a depth PNG, with the seeds' camera (64 x 48).
 #include "fuzz_common.hpp"
-#include "projsurf/io/cloud_io.hpp"
+#include "projsurf/io/formats/cloud_io.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
     using namespace projsurf;

@@ -1,6 +1,6 @@
 // libFuzzer harness: readDetectionJson on a detection JSON (projsurf detect --json).
 #include "fuzz_common.hpp"
-#include "projsurf/io/detection_json.hpp"
+#include "projsurf/io/formats/detection_json.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
     using namespace projsurf;

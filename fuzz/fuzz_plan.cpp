@@ -5,11 +5,11 @@
 // search's time per input is what makes a useful number of inputs per minute.
 #include "fuzz_common.hpp"
 #include "projsurf/detector/detector.hpp"
-#include "projsurf/frontend/detect_answer.hpp"
-#include "projsurf/frontend/minimum_size.hpp"
-#include "projsurf/frontend/plan_json.hpp"
-#include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/frontend/answer/detect_answer.hpp"
+#include "projsurf/frontend/answer/plan_json.hpp"
+#include "projsurf/frontend/settings/minimum_size.hpp"
+#include "projsurf/io/formats/cloud_io.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 #include "projsurf/planning/stand_planner.hpp"
 
 namespace {

@@ -1,6 +1,6 @@
 // libFuzzer harness: readProcamXml on a procam calibration_result.xml (eval --procam).
 #include "fuzz_common.hpp"
-#include "projsurf/io/procam_xml.hpp"
+#include "projsurf/io/formats/procam_xml.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
     using namespace projsurf;

@@ -10,10 +10,10 @@
 
 #include "fuzz_common.hpp"
 #include "projsurf/detector/detector.hpp"
-#include "projsurf/frontend/detect_answer.hpp"
-#include "projsurf/frontend/detector_config_file.hpp"
-#include "projsurf/frontend/minimum_size.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/frontend/answer/detect_answer.hpp"
+#include "projsurf/frontend/settings/detector_config_file.hpp"
+#include "projsurf/frontend/settings/minimum_size.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 
 namespace fs = std::filesystem;
 

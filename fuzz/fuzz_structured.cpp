@@ -14,8 +14,8 @@
 #include "projsurf/calibration/decoded_points.hpp"
 #include "projsurf/calibration/gray_code.hpp"
 #include "projsurf/calibration/projector_fit.hpp"
-#include "projsurf/io/pattern_files.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/formats/pattern_files.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 
 namespace fs = std::filesystem;
 

@@ -12,8 +12,8 @@
 #include <sstream>
 
 #include "../tests/support/bag_writer.hpp"
-#include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/files.hpp"
+#include "projsurf/io/files/files.hpp"
+#include "projsurf/io/formats/cloud_io.hpp"
 
 namespace fs = std::filesystem;
 using namespace projsurf;

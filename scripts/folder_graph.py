@@ -3,9 +3,11 @@
 "projsurf/B/...". Fails (exit 1, one line per problem) when
 
   - the graph has a cycle (two folders that include each other, directly or through others);
-  - a folder built by projsurf_folder() in src/projsurf/CMakeLists.txt does not link exactly
+  - a folder built by projsurf_folder() (in any CMakeLists.txt under src/projsurf) does not link exactly
     the folders its files include (an include it does not link, or a link it does not use);
-  - a folder's header includes a folder it links only PRIVATE.
+  - a folder's header includes a folder it links only PRIVATE;
+  - a folder's public header (`detection/planes.hpp` beside `detection/planes/`) includes
+    another folder's headers, or a file of src/projsurf includes a public header.
 
   python3 scripts/folder_graph.py [SOURCE_DIR]       (--dot prints the graph for Graphviz)
 """
@@ -14,16 +16,44 @@ import re
 import sys
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"projsurf/(.+)/[^/]+\.hpp"', re.M)
+PUBLIC_INCLUDE = re.compile(r'^\s*#\s*include\s+"projsurf/(.+)\.hpp"', re.M)
 FOLDER_CALL = re.compile(r"^projsurf_folder\(([^)]*)\)", re.M)
+
+
+def is_public_header(path):
+    """A folder's public header: `detection/planes.hpp` beside the folder `detection/planes/`."""
+    return path.endswith(".hpp") and os.path.isdir(path[: -len(".hpp")])
 
 
 def folders_of(root):
     """Every folder under src/projsurf/ holding a source or header, as 'detection/default'."""
     out = []
     for dirpath, _, files in os.walk(root):
-        if any(f.endswith((".cpp", ".hpp")) for f in files):
+        if any(f.endswith((".cpp", ".hpp")) and not is_public_header(os.path.join(dirpath, f)) for f in files):
             out.append(os.path.relpath(dirpath, root))
     return sorted(out)
+
+
+def public_header_problems(root, folders):
+    """A public header includes its own folder's headers only, and no file of src/projsurf
+    includes a public header (they are for consumers: docs/library.md)."""
+    problems = []
+    publics = {f for f in folders if os.path.isfile(os.path.join(root, f + ".hpp"))}
+    for f in sorted(publics):
+        with open(os.path.join(root, f + ".hpp"), encoding="utf-8") as h:
+            for target in INCLUDE.findall(h.read()):
+                if target != f:
+                    problems.append(f"{f}.hpp (the folder's public header) includes projsurf/{target}/")
+    for dirpath, _, files in os.walk(root):
+        for name in files:
+            path = os.path.join(dirpath, name)
+            if not name.endswith((".cpp", ".hpp")) or is_public_header(path):
+                continue
+            with open(path, encoding="utf-8") as h:
+                for inc in PUBLIC_INCLUDE.findall(h.read()):
+                    if inc in publics:
+                        problems.append(f"{os.path.relpath(path, root)} includes the public header projsurf/{inc}.hpp")
+    return problems
 
 
 def includes_of(root, folder):
@@ -31,7 +61,7 @@ def includes_of(root, folder):
     found = {}
     path = os.path.join(root, folder)
     for name in sorted(os.listdir(path)):
-        if not name.endswith((".cpp", ".hpp")):
+        if not name.endswith((".cpp", ".hpp")) or is_public_header(os.path.join(path, name)):
             continue
         with open(os.path.join(path, name), encoding="utf-8") as f:
             text = f.read()
@@ -104,12 +134,17 @@ def main(argv):
         for g in graph[f]:
             if g not in folders:
                 problems.append(f"{f}: includes projsurf/{g}/, which is no folder of src/projsurf")
+    problems += public_header_problems(root, folders)
     cycle = find_cycle(graph)
     if cycle:
         problems.append("cycle between folders: " + " -> ".join(cycle))
 
-    with open(os.path.join(root, "CMakeLists.txt"), encoding="utf-8") as f:
-        links = declared_links(f.read(), folders)
+    cmake_text = ""
+    for dirpath, _, files in sorted(os.walk(root)):
+        if "CMakeLists.txt" in files:
+            with open(os.path.join(dirpath, "CMakeLists.txt"), encoding="utf-8") as f:
+                cmake_text += f.read() + "\n"
+    links = declared_links(cmake_text, folders)
     for folder, linked in sorted(links.items()):
         for g, (header, first) in sorted(uses.get(folder, {}).items()):
             target = "projsurf_" + g.replace("/", "_")

@@ -34,9 +34,9 @@
 #include "eval/labelled_eval.hpp"
 #include "eval/real_labels.hpp"
 #include "eval/real_scoring.hpp"
-#include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/yaml_files.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/io/formats/cloud_io.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 using namespace projsurf::eval;  // the evaluation under test
 

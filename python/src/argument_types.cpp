@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "projsurf/io/errors.hpp"
+#include "projsurf/io/files/errors.hpp"
 
 namespace py = pybind11;
 

@@ -3,7 +3,7 @@
 #include "argument_types.hpp"
 #include "detector_options.hpp"
 #include "points_array.hpp"
-#include "projsurf/frontend/bag_frames.hpp"
+#include "projsurf/frontend/inputs/bag_frames.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "argument_types.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/limits.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/files/limits.hpp"
 
 namespace py = pybind11;
 

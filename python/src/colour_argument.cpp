@@ -2,7 +2,7 @@
 
 #include "argument_types.hpp"
 #include "image_array.hpp"
-#include "projsurf/frontend/registered_colour.hpp"
+#include "projsurf/frontend/inputs/registered_colour.hpp"
 
 namespace py = pybind11;
 

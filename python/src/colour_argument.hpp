@@ -1,7 +1,7 @@
 #pragma once
 // The `colour=` keyword of detect(), Detector.detect() and plan(): an (H, W, 3) uint8 B, G, R
 // image registered to the points, put into the cloud by the front ends' one policy
-// (frontend/registered_colour.hpp), as `--rgb` is.
+// (frontend/inputs/registered_colour.hpp), as `--rgb` is.
 #include <pybind11/pybind11.h>
 
 #include <opencv2/core.hpp>

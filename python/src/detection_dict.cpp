@@ -8,9 +8,9 @@
 #include <cmath>
 
 #include "json_values.hpp"
-#include "projsurf/frontend/continuous_json.hpp"
-#include "projsurf/frontend/detection_document.hpp"
-#include "projsurf/io/errors.hpp"
+#include "projsurf/frontend/answer/continuous_json.hpp"
+#include "projsurf/frontend/answer/detection_document.hpp"
+#include "projsurf/io/files/errors.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;
@@ -81,7 +81,7 @@ Rectangle rectangleFromDetection(const py::handle &detection) {
         r.corners[i] = Eigen::Vector3d(v(i, 0), v(i, 1), v(i, 2));
         if (!r.corners[i].allFinite()) throw InputError("detection", "'rectangle.corners' is not finite");
     }
-    // The same checks as the detection file reader (io/detection_json.cpp).
+    // The same checks as the detection file reader (io/formats/detection_json.cpp).
     const auto &k = r.corners;
     r.width = (k[1] - k[0]).norm();
     r.height = (k[3] - k[0]).norm();

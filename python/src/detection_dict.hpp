@@ -8,7 +8,7 @@
 
 namespace projsurf::python {
 
-/// The detection JSON of `projsurf detect --json` (frontend/detection_document.hpp: with the
+/// The detection JSON of `projsurf detect --json` (frontend/answer/detection_document.hpp: with the
 /// projector's `focus`, and with `explain` the `candidates`) as Python values, the same keys and
 /// numbers; the vectors gravity (3,), plane.coefficients (4,) and rectangle.corners (4, 3) as
 /// float64 numpy arrays.
@@ -16,7 +16,7 @@ pybind11::dict detectionToDict(const Detection &detection, const DetectorConfig 
                                bool explain = false);
 
 /// detectionToDict plus continuous mode's `shown` (a rectangle dict as `rectangle`, corners a
-/// (4, 3) numpy array; None when nothing is held) and `event` (frontend/continuous_json.hpp).
+/// (4, 3) numpy array; None when nothing is held) and `event` (frontend/answer/continuous_json.hpp).
 pybind11::dict continuousFrameToDict(const Detection &detection, const ContinuousFrame &frame,
                                      const DetectorConfig &config, const Projector &projector);
 

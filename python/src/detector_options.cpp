@@ -7,15 +7,15 @@
 #include <cstdio>
 
 #include "argument_types.hpp"
-#include "projsurf/frontend/aspect.hpp"
-#include "projsurf/frontend/depth_range_check.hpp"
-#include "projsurf/frontend/detect_answer.hpp"
-#include "projsurf/frontend/detector_config_file.hpp"
-#include "projsurf/frontend/gravity_sanity.hpp"
-#include "projsurf/frontend/method_settings.hpp"
-#include "projsurf/frontend/method_words.hpp"
-#include "projsurf/frontend/suitability_mode.hpp"
-#include "projsurf/io/errors.hpp"
+#include "projsurf/frontend/answer/detect_answer.hpp"
+#include "projsurf/frontend/settings/aspect.hpp"
+#include "projsurf/frontend/settings/depth_range_check.hpp"
+#include "projsurf/frontend/settings/detector_config_file.hpp"
+#include "projsurf/frontend/settings/gravity_sanity.hpp"
+#include "projsurf/frontend/settings/method_settings.hpp"
+#include "projsurf/frontend/settings/method_words.hpp"
+#include "projsurf/frontend/settings/suitability_mode.hpp"
+#include "projsurf/io/files/errors.hpp"
 
 namespace py = pybind11;
 

@@ -9,19 +9,19 @@
 #include <pybind11/pybind11.h>
 
 #include "projsurf/detector/detector.hpp"
-#include "projsurf/frontend/gravity_choice.hpp"
-#include "projsurf/frontend/minimum_size.hpp"
+#include "projsurf/frontend/settings/gravity_choice.hpp"
+#include "projsurf/frontend/settings/minimum_size.hpp"
 #include "projsurf/types/cloud.hpp"
 
 namespace projsurf::python {
 
 struct DetectorOptions {
     DetectorConfig config;
-    bool gravity_given = false;  ///< gravity= was a vector: checked against the cloud's floor (frontend/gravity_sanity)
+    bool gravity_given = false;  ///< gravity= was a vector: checked against the cloud's floor (frontend/settings/gravity_sanity)
     bool gravity_level_assumed = false;  ///< no gravity= at all: a level camera, checked against the floor
     bool suitability_given = false;      ///< suitability= was given: warned about without registered colour
     frontend::GravityChoice gravity;  ///< the given one, the level camera's, or "auto" (from the floor of each cloud)
-    frontend::MinimumSize minimum;    ///< smaller rectangles are "not found" (frontend/minimum_size.hpp)
+    frontend::MinimumSize minimum;    ///< smaller rectangles are "not found" (frontend/settings/minimum_size.hpp)
 };
 
 /// The keyword arguments as given (any Python object; a wrong type is an InputError).
@@ -35,7 +35,7 @@ struct DetectorArguments {
     pybind11::dict settings;
 };
 
-/// config: None or a settings YAML read first (frontend/detector_config_file.hpp); every other
+/// config: None or a settings YAML read first (frontend/settings/detector_config_file.hpp); every other
 /// argument that is not None overrides its value. aspect: None (the framebuffer's), a number (width / height), "W:H" or
 /// a pair (16, 9); gravity: None (level camera), 3 numbers (camera frame, pointing down; any length but zero),
 /// "gx,gy,gz" or "auto"; method: None ("default"), "default" | "paper"; hull: "concave" |
@@ -44,7 +44,7 @@ struct DetectorArguments {
 /// method ignores is a UserWarning, as the CLI's warning line.
 DetectorOptions detectorOptions(const DetectorArguments &arguments);
 
-/// `cloud` detected by the options (frontend/detect_answer.hpp's detectWithGravity: the gravity
+/// `cloud` detected by the options (frontend/answer/detect_answer.hpp's detectWithGravity: the gravity
 /// choice resolved, the minimum size applied), the gravity it was detected with, and the
 /// warnings the CLI gives about it and the cloud (frontend's texts). `check_gravity`: also look
 /// for the floor to check the gravity given or assumed (a search of its own: a stream checks

@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <string>
 
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/limits.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/files/limits.hpp"
 
 namespace py = pybind11;
 

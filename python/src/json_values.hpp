@@ -1,6 +1,6 @@
 #pragma once
 // A JSON tree as plain Python values, so that a dict the module returns is the JSON a front end
-// writes (one serialiser, frontend/detection_document.hpp), key for key and value for value.
+// writes (one serialiser, frontend/answer/detection_document.hpp), key for key and value for value.
 #include <pybind11/pybind11.h>
 #include <nlohmann/json.hpp>
 

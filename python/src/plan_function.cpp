@@ -8,10 +8,10 @@
 #include "image_array.hpp"
 #include "json_values.hpp"
 #include "points_array.hpp"
-#include "projsurf/frontend/detect_answer.hpp"
-#include "projsurf/frontend/plan_json.hpp"
-#include "projsurf/frontend/plan_overlay.hpp"
-#include "projsurf/io/errors.hpp"
+#include "projsurf/frontend/answer/detect_answer.hpp"
+#include "projsurf/frontend/answer/plan_json.hpp"
+#include "projsurf/frontend/render/plan_overlay.hpp"
+#include "projsurf/io/files/errors.hpp"
 #include "projsurf/planning/stand_planner.hpp"
 
 namespace py = pybind11;

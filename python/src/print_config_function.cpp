@@ -1,7 +1,7 @@
 #include "print_config_function.hpp"
 
 #include "detector_options.hpp"
-#include "projsurf/frontend/detector_config_file.hpp"
+#include "projsurf/frontend/settings/detector_config_file.hpp"
 
 namespace py = pybind11;
 using namespace pybind11::literals;

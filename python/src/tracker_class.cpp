@@ -8,7 +8,7 @@
 #include "detector_options.hpp"
 #include "options_constructor.hpp"
 #include "points_array.hpp"
-#include "projsurf/io/errors.hpp"
+#include "projsurf/io/files/errors.hpp"
 #include "projsurf/tracking/continuous_tracker.hpp"
 
 namespace py = pybind11;

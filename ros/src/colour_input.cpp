@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "conversions.hpp"
-#include "projsurf/io/errors.hpp"
+#include "projsurf/io/files/errors.hpp"
 
 namespace projsurf::ros_node {
 

@@ -1,6 +1,6 @@
 #pragma once
 // The node's registered colour: colour images kept by stamp, so that each cloud
-// (depth image) gets the colour image of its own stamp (frontend/stamp_pairing.hpp, as depth
+// (depth image) gets the colour image of its own stamp (frontend/inputs/stamp_pairing.hpp, as depth
 // gets its camera_info), and the check that the colour is registered to the depth
 // (detection/colour/colour_registration.hpp), run once per stream, not per frame. Colour that does not fit
 // (another size or encoding, not registered) is not used, with one warning per stream.
@@ -10,9 +10,9 @@
 #include <set>
 #include <string>
 
-#include "projsurf/types/cloud.hpp"
 #include "projsurf/detection/colour/colour_registration.hpp"
-#include "projsurf/frontend/stamp_pairing.hpp"
+#include "projsurf/frontend/inputs/stamp_pairing.hpp"
+#include "projsurf/types/cloud.hpp"
 
 namespace projsurf::ros_node {
 

@@ -9,10 +9,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "projsurf/detection/default/observed_free_space.hpp"
-#include "projsurf/frontend/depth_image_cloud.hpp"
-#include "projsurf/io/depth_image_bytes.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/pointcloud2.hpp"
+#include "projsurf/frontend/inputs/depth_image_cloud.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/rosbag/depth_image_bytes.hpp"
+#include "projsurf/io/rosbag/pointcloud2.hpp"
 
 namespace projsurf::ros_node {
 namespace enc = sensor_msgs::image_encodings;
@@ -25,7 +25,7 @@ Cloud toCloud(const sensor_msgs::Image &depth, const sensor_msgs::CameraInfo &in
                                       ", camera_info says " + std::to_string(info.width) + "x" +
                                       std::to_string(info.height));
     if (!(info.K[0] > 0.0) || !(info.K[4] > 0.0)) throw InputError("camera_info", "K has no focal length");
-    // The message's pixels in this machine's byte order (io/depth_image_bytes.hpp, as for bags).
+    // The message's pixels in this machine's byte order (io/rosbag/depth_image_bytes.hpp, as for bags).
     const cv::Mat image = depthImageFromBytes("depth", depth.encoding, depth.width, depth.height, depth.step,
                                               depth.is_bigendian != 0, depth.data.data(), depth.data.size());
     const CameraIntrinsics cam = frontend::pinholeCamera("camera_info", image.cols, image.rows, info.K[0], info.K[4],
@@ -146,7 +146,7 @@ visualization_msgs::Marker outline(const std_msgs::Header &header, const std::st
 }
 
 /// Cells the picture must not cover, one square point per cell, coloured by reason as in the
-/// CLI's overlay (frontend/overlay.cpp's legend, RGB here): what stands in front of or proud of
+/// CLI's overlay (frontend/render/overlay.cpp's legend, RGB here): what stands in front of or proud of
 /// the wall, the wall seen through, and (with colour) what is unfit to project on. Cells
 /// without a reading are left out (beyond the wall's edge there are many).
 visualization_msgs::Marker notFreeCells(const DetectionDebug &g, const std_msgs::Header &header,

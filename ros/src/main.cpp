@@ -3,7 +3,7 @@
 
 #include "node.hpp"
 #include "params.hpp"
-#include "projsurf/io/errors.hpp"
+#include "projsurf/io/files/errors.hpp"
 
 int main(int argc, char **argv) {
     ros::init(argc, argv, "projsurf_node");

@@ -9,14 +9,14 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "conversions.hpp"
-#include "projsurf/frontend/detect_answer.hpp"
-#include "projsurf/frontend/detection_document.hpp"
-#include "projsurf/frontend/detection_summary.hpp"
-#include "projsurf/frontend/framebuffer_render.hpp"
-#include "projsurf/frontend/test_card.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/files.hpp"
-#include "projsurf/io/limits.hpp"
+#include "projsurf/frontend/answer/detect_answer.hpp"
+#include "projsurf/frontend/answer/detection_document.hpp"
+#include "projsurf/frontend/answer/detection_summary.hpp"
+#include "projsurf/frontend/render/framebuffer_render.hpp"
+#include "projsurf/frontend/render/test_card.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/files/files.hpp"
+#include "projsurf/io/files/limits.hpp"
 
 namespace projsurf::ros_node {
 namespace {
@@ -56,7 +56,7 @@ ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams p
     // Queue of 1: in continuous mode a slow frame drops the ones behind it, never lags.
     cloud_sub_ = nh_.subscribe("points", 1, &ProjsurfNode::onCloud, this);
     depth_sub_ = nh_.subscribe("depth/image_rect", 1, &ProjsurfNode::onDepth, this);
-    // camera_info is small and paired by stamp: a few are kept (frontend/stamp_pairing.hpp).
+    // camera_info is small and paired by stamp: a few are kept (frontend/inputs/stamp_pairing.hpp).
     info_sub_ = nh_.subscribe("depth/camera_info", 10, &ProjsurfNode::onCameraInfo, this);
     image_sub_ = nh_.subscribe("image", 1, &ProjsurfNode::onImage, this);
     if (params_.use_colour && params_.detector.suitability.mode == SuitabilityMode::Off) {

@@ -21,7 +21,7 @@
 #include "params.hpp"
 #include "plan_service.hpp"
 #include "projsurf/detector/detector.hpp"
-#include "projsurf/frontend/stamp_pairing.hpp"
+#include "projsurf/frontend/inputs/stamp_pairing.hpp"
 
 namespace projsurf::ros_node {
 

@@ -5,12 +5,12 @@
 #include <sstream>
 #include <vector>
 
-#include "projsurf/frontend/aspect.hpp"
-#include "projsurf/frontend/detector_config_file.hpp"
-#include "projsurf/frontend/method_words.hpp"
-#include "projsurf/frontend/suitability_mode.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/frontend/settings/aspect.hpp"
+#include "projsurf/frontend/settings/detector_config_file.hpp"
+#include "projsurf/frontend/settings/method_words.hpp"
+#include "projsurf/frontend/settings/suitability_mode.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 
 namespace projsurf::ros_node {
 namespace {

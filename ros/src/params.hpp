@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "projsurf/detector/detector.hpp"
-#include "projsurf/frontend/gravity_choice.hpp"
-#include "projsurf/frontend/minimum_size.hpp"
+#include "projsurf/frontend/settings/gravity_choice.hpp"
+#include "projsurf/frontend/settings/minimum_size.hpp"
 #include "projsurf/planning/stand_planner.hpp"
 #include "projsurf/tracking/continuous_tracker.hpp"
 #include "projsurf/tracking/steady_tracker.hpp"
@@ -38,7 +38,7 @@ struct NodeParams {
     /// DetectorConfig's).
     DetectorConfig detector;
     /// ~min_width (m), ~min_area (m^2): smaller rectangles are "not found", as `detect
-    /// --min-width/--min-area` (defaults: frontend/minimum_size.hpp's for ~method).
+    /// --min-width/--min-area` (defaults: frontend/settings/minimum_size.hpp's for ~method).
     frontend::MinimumSize minimum;
 
     /// ~gravity_frame: a frame whose -z is gravity (e.g. base_link or odom); when set, gravity

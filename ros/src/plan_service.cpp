@@ -3,7 +3,7 @@
 #include <geometry_msgs/PoseStamped.h>
 #include <visualization_msgs/Marker.h>
 
-#include "projsurf/frontend/plan_json.hpp"
+#include "projsurf/frontend/answer/plan_json.hpp"
 
 namespace projsurf::ros_node {
 

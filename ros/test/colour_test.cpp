@@ -25,7 +25,7 @@
 #include "colour_input.hpp"
 #include "conversions.hpp"
 #include "node_test_support.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 #include "sim_wall.hpp"
 
 using namespace projsurf;

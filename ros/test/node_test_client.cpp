@@ -33,8 +33,8 @@
 
 #include "conversions.hpp"
 #include "node_test_support.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/rosbag_clouds.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/rosbag/rosbag_clouds.hpp"
 #include "sim_wall.hpp"
 
 using namespace projsurf;

@@ -4,7 +4,7 @@
 #include <limits>
 #include <random>
 
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 
 namespace projsurf::sim_test {
 

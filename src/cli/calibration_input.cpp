@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 
 namespace projsurf::cli {
 

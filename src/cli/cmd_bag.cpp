@@ -7,13 +7,13 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "cli/commands.hpp"
-#include "projsurf/io/bag_writer.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/files.hpp"
-#include "projsurf/io/limits.hpp"
-#include "projsurf/io/ros_messages.hpp"
-#include "projsurf/io/utf8_text.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/files/files.hpp"
+#include "projsurf/io/files/limits.hpp"
+#include "projsurf/io/files/utf8_text.hpp"
+#include "projsurf/io/rosbag/bag_writer.hpp"
+#include "projsurf/io/rosbag/ros_messages.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 
 namespace fs = std::filesystem;
 

@@ -15,11 +15,11 @@
 #include "eval/plan_demo.hpp"
 #include "eval/plot.hpp"
 #include "eval/walk_in.hpp"
-#include "projsurf/io/detection_json.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/files.hpp"
-#include "projsurf/frontend/overlay.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/frontend/render/overlay.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/files/files.hpp"
+#include "projsurf/io/formats/detection_json.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 
 namespace fs = std::filesystem;
 

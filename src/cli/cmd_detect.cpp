@@ -11,28 +11,28 @@
 #include "cli/colour_input.hpp"
 #include "cli/commands.hpp"
 #include "projsurf/detection/gravity.hpp"
-#include "projsurf/frontend/aspect.hpp"
-#include "projsurf/frontend/bag_frames.hpp"
-#include "projsurf/frontend/candidates_json.hpp"
-#include "projsurf/frontend/continuous_json.hpp"
-#include "projsurf/frontend/depth_image_cloud.hpp"
-#include "projsurf/frontend/depth_range_check.hpp"
-#include "projsurf/frontend/detect_answer.hpp"
-#include "projsurf/frontend/detection_document.hpp"
-#include "projsurf/frontend/detection_summary.hpp"
-#include "projsurf/frontend/detector_config_file.hpp"
-#include "projsurf/frontend/detector_config_keys.hpp"
-#include "projsurf/frontend/gravity_choice.hpp"
-#include "projsurf/frontend/gravity_sanity.hpp"
-#include "projsurf/frontend/method_settings.hpp"
-#include "projsurf/frontend/method_words.hpp"
-#include "projsurf/frontend/minimum_size.hpp"
-#include "projsurf/frontend/overlay.hpp"
-#include "projsurf/frontend/suitability_mode.hpp"
-#include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/files.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/frontend/answer/candidates_json.hpp"
+#include "projsurf/frontend/answer/continuous_json.hpp"
+#include "projsurf/frontend/answer/detect_answer.hpp"
+#include "projsurf/frontend/answer/detection_document.hpp"
+#include "projsurf/frontend/answer/detection_summary.hpp"
+#include "projsurf/frontend/inputs/bag_frames.hpp"
+#include "projsurf/frontend/inputs/depth_image_cloud.hpp"
+#include "projsurf/frontend/render/overlay.hpp"
+#include "projsurf/frontend/settings/aspect.hpp"
+#include "projsurf/frontend/settings/depth_range_check.hpp"
+#include "projsurf/frontend/settings/detector_config_file.hpp"
+#include "projsurf/frontend/settings/detector_config_keys.hpp"
+#include "projsurf/frontend/settings/gravity_choice.hpp"
+#include "projsurf/frontend/settings/gravity_sanity.hpp"
+#include "projsurf/frontend/settings/method_settings.hpp"
+#include "projsurf/frontend/settings/method_words.hpp"
+#include "projsurf/frontend/settings/minimum_size.hpp"
+#include "projsurf/frontend/settings/suitability_mode.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/files/files.hpp"
+#include "projsurf/io/formats/cloud_io.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 
 namespace projsurf::cli {
 namespace {
@@ -42,10 +42,10 @@ struct DetectOptions {
         method = "default", hull = "concave", bag, topic, info_topic, suitability, config_file;
     bool print_config = false, explain = false, steady = false;
     DetectorConfig config;                     ///< the pipeline flags' values (used where a flag was given)
-    double min_width = -1.0, min_area = -1.0;  ///< m, m^2; < 0: the method's default (frontend/minimum_size.hpp)
+    double min_width = -1.0, min_area = -1.0;  ///< m, m^2; < 0: the method's default (frontend/settings/minimum_size.hpp)
 };
 
-/// Options the chosen method does not use (frontend/method_settings.hpp).
+/// Options the chosen method does not use (frontend/settings/method_settings.hpp).
 void warnIfIgnored(const CLI::App &sub, Method method) {
     for (const std::string &setting : frontend::settingsIgnoredBy(method)) {
         const std::string name = frontend::optionName(setting);
@@ -55,7 +55,7 @@ void warnIfIgnored(const CLI::App &sub, Method method) {
     }
 }
 
-/// The pipeline flags bound to o.config, by the settings' shared names (frontend/method_settings.hpp).
+/// The pipeline flags bound to o.config, by the settings' shared names (frontend/settings/method_settings.hpp).
 constexpr const char *kConfigFlags[] = {"max_tilt",     "seed", "voxel_leaf", "ransac_distance",
                                         "max_outliers", "cell", "max_planes", "max_outlier_fraction"};
 
@@ -74,7 +74,7 @@ DetectorConfig detectorConfig(const DetectOptions &o, const CLI::App &sub) {
     return cfg;
 }
 
-/// --bag: one detection per cloud (or depth image) of the topic (frontend/bag_frames.hpp), one
+/// --bag: one detection per cloud (or depth image) of the topic (frontend/inputs/bag_frames.hpp), one
 /// JSON object per line (JSON Lines), each with a "bag" key (index, stamp, frame_id, topic).
 /// With --json the file is written once all messages were read (never a partial file);
 /// without, lines go to stdout as they come. --steady: continuous mode over the messages

@@ -23,13 +23,13 @@
 #include "eval/real_labels.hpp"
 #include "eval/realistic_suite.hpp"
 #include "eval/report.hpp"
-#include "projsurf/frontend/chessboard_calibration.hpp"
-#include "projsurf/frontend/progress.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/files.hpp"
-#include "projsurf/io/procam_captures.hpp"
-#include "projsurf/io/procam_xml.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/frontend/inputs/chessboard_calibration.hpp"
+#include "projsurf/frontend/render/progress.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/files/files.hpp"
+#include "projsurf/io/formats/procam_captures.hpp"
+#include "projsurf/io/formats/procam_xml.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 namespace fs = std::filesystem;
 

@@ -3,9 +3,9 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "projsurf/frontend/resolution.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/pattern_files.hpp"
+#include "projsurf/frontend/settings/resolution.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/formats/pattern_files.hpp"
 
 namespace projsurf::cli {
 namespace {

@@ -12,9 +12,9 @@
 #include <optional>
 
 #include "cli/commands.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/files.hpp"
-#include "projsurf/io/video_files.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/files/files.hpp"
+#include "projsurf/io/formats/video_files.hpp"
 
 namespace projsurf::cli {
 namespace {

@@ -13,11 +13,11 @@
 #include "cli/calibration_input.hpp"
 #include "cli/commands.hpp"
 #include "projsurf/calibration/projected_picture.hpp"
-#include "projsurf/frontend/resolution.hpp"
-#include "projsurf/io/detection_json.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/files.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/frontend/settings/resolution.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/files/files.hpp"
+#include "projsurf/io/formats/detection_json.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 #include "projsurf/keystone/keystone.hpp"
 
 namespace fs = std::filesystem;

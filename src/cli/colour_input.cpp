@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <opencv2/imgcodecs.hpp>
 
-#include "projsurf/frontend/registered_colour.hpp"
-#include "projsurf/io/files.hpp"
+#include "projsurf/frontend/inputs/registered_colour.hpp"
+#include "projsurf/io/files/files.hpp"
 
 namespace projsurf::cli {
 

@@ -1,7 +1,7 @@
 #pragma once
 // `--rgb FILE` as every command that takes one on a single cloud reads it (detect, plan): the
 // image read, then put into the cloud by the front end's one policy
-// (frontend/registered_colour.hpp), its warnings on stderr, one line each.
+// (frontend/inputs/registered_colour.hpp), its warnings on stderr, one line each.
 #include <opencv2/core/mat.hpp>
 #include <string>
 

@@ -11,8 +11,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/output_paths.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/utf8_text.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/files/utf8_text.hpp"
 
 namespace {
 

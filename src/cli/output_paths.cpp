@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <utility>
 
-#include "projsurf/io/errors.hpp"
+#include "projsurf/io/files/errors.hpp"
 
 namespace fs = std::filesystem;
 

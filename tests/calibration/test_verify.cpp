@@ -10,13 +10,13 @@
 #include "cli_run.hpp"
 #include "projsurf/calibration/projected_picture.hpp"
 #include "eval/experiments.hpp"
-#include "projsurf/io/detection_json.hpp"
-#include "projsurf/io/yaml_files.hpp"
 #include "projsurf/detector/detector.hpp"
+#include "projsurf/io/formats/detection_json.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 using namespace projsurf::eval;  // the evaluation under test
 

@@ -1,5 +1,5 @@
 // From PNG frames to a bag and back: `projsurf bag` writes depth images and camera_infos
-// (io/bag_writer, io/ros_messages), `detect --bag` reads them as the node does (each depth
+// (io/rosbag/bag_writer, io/rosbag/ros_messages), `detect --bag` reads them as the node does (each depth
 // image with the camera_info of its stamp), picking the topic itself when there is one.
 #include <gtest/gtest.h>
 
@@ -11,11 +11,11 @@
 #include <sstream>
 
 #include "cli_run.hpp"
-#include "projsurf/io/bag_writer.hpp"
-#include "projsurf/io/files.hpp"
-#include "projsurf/io/ros_messages.hpp"
-#include "projsurf/io/rosbag_depth.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/files/files.hpp"
+#include "projsurf/io/rosbag/bag_writer.hpp"
+#include "projsurf/io/rosbag/ros_messages.hpp"
+#include "projsurf/io/rosbag/rosbag_depth.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 #include "synthetic_rig.hpp"
 
 namespace fs = std::filesystem;

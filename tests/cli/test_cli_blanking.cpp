@@ -10,14 +10,14 @@
 
 #include "cli_run.hpp"
 #include "eval/walk_in.hpp"
-#include "projsurf/frontend/test_card.hpp"
-#include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/detection_json.hpp"
-#include "projsurf/io/files.hpp"
-#include "projsurf/io/yaml_files.hpp"
 #include "projsurf/detector/detector.hpp"
+#include "projsurf/frontend/render/test_card.hpp"
+#include "projsurf/io/files/files.hpp"
+#include "projsurf/io/formats/cloud_io.hpp"
+#include "projsurf/io/formats/detection_json.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 using namespace projsurf::eval;  // the evaluation under test
 

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_run.hpp"
-#include "projsurf/frontend/detector_config_file.hpp"
+#include "projsurf/frontend/settings/detector_config_file.hpp"
 
 namespace fs = std::filesystem;
 using namespace projsurf::test;

@@ -22,7 +22,7 @@
 
 #include "cli_fixtures.hpp"
 #include "cli_run.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 #include "synthetic_rig.hpp"
 
 namespace fs = std::filesystem;

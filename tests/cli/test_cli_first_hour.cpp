@@ -12,8 +12,8 @@
 
 #include "cli_fixtures.hpp"
 #include "cli_run.hpp"
-#include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/formats/cloud_io.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 #include "synthetic_rig.hpp"
 
 namespace fs = std::filesystem;

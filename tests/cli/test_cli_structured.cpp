@@ -9,7 +9,7 @@
 
 #include "cli_run.hpp"
 #include "projsurf/calibration/gray_code.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 
 using namespace projsurf;

@@ -24,12 +24,12 @@
 #include "cli_run.hpp"
 #include "hostile_fixture.hpp"
 #include "projsurf/calibration/gray_code.hpp"
-#include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/limits.hpp"
-#include "projsurf/io/rosbag_clouds.hpp"
-#include "projsurf/io/utf8_text.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/files/limits.hpp"
+#include "projsurf/io/files/utf8_text.hpp"
+#include "projsurf/io/formats/cloud_io.hpp"
+#include "projsurf/io/rosbag/rosbag_clouds.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 
 namespace fs = std::filesystem;
 using namespace projsurf;

@@ -23,13 +23,13 @@
 #include "cli_run.hpp"
 #include "hostile_fixture.hpp"
 #include "projsurf/calibration/chessboard_corners.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/limits.hpp"
-#include "projsurf/io/procam_captures.hpp"
-#include "projsurf/io/utf8_text.hpp"
-#include "projsurf/io/yaml_files.hpp"
-#include "projsurf/io/yaml_settings.hpp"
-#include "projsurf/io/yaml_tree.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/files/limits.hpp"
+#include "projsurf/io/files/utf8_text.hpp"
+#include "projsurf/io/formats/procam_captures.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
+#include "projsurf/io/yaml/yaml_settings.hpp"
+#include "projsurf/io/yaml/yaml_tree.hpp"
 
 namespace fs = std::filesystem;
 using namespace projsurf;

@@ -15,8 +15,8 @@
 
 #include "cli_run.hpp"
 #include "projsurf/calibration/calibration.hpp"
-#include "projsurf/io/yaml_files.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 namespace fs = std::filesystem;
 using namespace projsurf;

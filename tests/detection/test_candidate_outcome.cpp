@@ -7,9 +7,9 @@
 
 #include "projsurf/detection/default/observed_free_space.hpp"
 #include "projsurf/detector/detector.hpp"
-#include "projsurf/frontend/minimum_size.hpp"
+#include "projsurf/frontend/settings/minimum_size.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 #include "projsurf/types/formatted.hpp"
 
 using namespace projsurf;

@@ -14,11 +14,11 @@
 #include "projsurf/detection/default/step_edges.hpp"
 #include "projsurf/detection/default/wall_shape.hpp"
 #include "projsurf/detection/image_boxes.hpp"
-#include "projsurf/detection/point_sampling.hpp"
+#include "projsurf/detection/planes/point_sampling.hpp"
+#include "projsurf/detection/planes/vertical_planes.hpp"
+#include "projsurf/detection/planes/virtual_depth_image.hpp"
 #include "projsurf/detection/projector_footprint.hpp"
 #include "projsurf/detection/rectangle_growth.hpp"
-#include "projsurf/detection/vertical_planes.hpp"
-#include "projsurf/detection/virtual_depth_image.hpp"
 
 using namespace projsurf;
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "projsurf/detection/pixel_lattice.hpp"
+#include "projsurf/detection/planes/pixel_lattice.hpp"
 
 using namespace projsurf;
 

@@ -17,9 +17,9 @@
 #include "eval/labelled_eval.hpp"
 #include "eval/real_labels.hpp"
 #include "eval/real_scoring.hpp"
-#include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/formats/cloud_io.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 
 using namespace projsurf::eval;  // the evaluation under test
 

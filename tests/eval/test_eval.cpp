@@ -15,7 +15,7 @@
 #include "fresh_dir.hpp"
 #include "eval/experiments.hpp"
 #include "projsurf/sim/ground_truth.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 using namespace projsurf::eval;  // the evaluation under test
 

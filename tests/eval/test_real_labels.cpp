@@ -20,9 +20,9 @@
 #include "eval/real_scoring.hpp"
 #include "fresh_dir.hpp"
 #include "label_fixtures.hpp"
-#include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/formats/cloud_io.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 
 using namespace projsurf::eval;  // the evaluation under test
 

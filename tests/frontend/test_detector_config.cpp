@@ -7,10 +7,10 @@
 #include <set>
 
 #include "cli_run.hpp"
-#include "projsurf/frontend/detector_config_file.hpp"
-#include "projsurf/frontend/detector_config_keys.hpp"
-#include "projsurf/frontend/method_settings.hpp"
-#include "projsurf/io/errors.hpp"
+#include "projsurf/frontend/settings/detector_config_file.hpp"
+#include "projsurf/frontend/settings/detector_config_keys.hpp"
+#include "projsurf/frontend/settings/method_settings.hpp"
+#include "projsurf/io/files/errors.hpp"
 
 namespace fs = std::filesystem;
 using namespace projsurf;
@@ -298,7 +298,7 @@ TEST(DetectorConfigFile, TheInterfaceDocumentListsEveryKey) {
 
 TEST(DetectorConfigKeys, AFieldAddedToTheConfigIsNoticed) {
     // The sizes of the structs the table covers, as it was written (64-bit, libstdc++). A new
-    // field changes one: give it a key in frontend/detector_config_keys.cpp (the docs' table
+    // field changes one: give it a key in frontend/settings/detector_config_keys.cpp (the docs' table
     // and config/detector.yaml follow from --print-config), then its new size here.
     if (sizeof(void *) != 8 || sizeof(std::vector<double>) != 24) GTEST_SKIP() << "sizes recorded for 64-bit only";
     const std::vector<std::pair<std::size_t, std::size_t>> sizes = {

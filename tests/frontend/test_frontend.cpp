@@ -10,18 +10,18 @@
 
 #include <Eigen/Geometry>
 
+#include "projsurf/frontend/answer/detection_summary.hpp"
+#include "projsurf/frontend/inputs/depth_image_cloud.hpp"
+#include "projsurf/frontend/inputs/stamp_pairing.hpp"
+#include "projsurf/frontend/render/framebuffer_render.hpp"
+#include "projsurf/frontend/render/progress.hpp"
+#include "projsurf/frontend/render/test_card.hpp"
+#include "projsurf/frontend/settings/aspect.hpp"
+#include "projsurf/frontend/settings/gravity_choice.hpp"
+#include "projsurf/frontend/settings/gravity_sanity.hpp"
+#include "projsurf/frontend/settings/suitability_mode.hpp"
+#include "projsurf/io/files/errors.hpp"
 #include "projsurf/types/camera.hpp"
-#include "projsurf/frontend/aspect.hpp"
-#include "projsurf/frontend/depth_image_cloud.hpp"
-#include "projsurf/frontend/detection_summary.hpp"
-#include "projsurf/frontend/framebuffer_render.hpp"
-#include "projsurf/frontend/gravity_choice.hpp"
-#include "projsurf/frontend/gravity_sanity.hpp"
-#include "projsurf/frontend/progress.hpp"
-#include "projsurf/frontend/stamp_pairing.hpp"
-#include "projsurf/frontend/suitability_mode.hpp"
-#include "projsurf/frontend/test_card.hpp"
-#include "projsurf/io/errors.hpp"
 #include "synthetic_rig.hpp"
 
 using namespace projsurf;

@@ -12,8 +12,8 @@
 
 #include "eval/real_labels.hpp"
 #include "label_fixtures.hpp"
-#include "projsurf/frontend/gravity_choice.hpp"
-#include "projsurf/io/cloud_io.hpp"
+#include "projsurf/frontend/settings/gravity_choice.hpp"
+#include "projsurf/io/formats/cloud_io.hpp"
 
 using namespace projsurf;
 using namespace projsurf::eval;  // the evaluation under test

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/frontend/overlay.hpp"
+#include "projsurf/frontend/render/overlay.hpp"
 
 using namespace projsurf;
 

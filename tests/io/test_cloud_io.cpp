@@ -23,9 +23,9 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
-#include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/formats/cloud_io.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 
 using namespace projsurf;
 

@@ -5,8 +5,8 @@
 #include <cstring>
 #include <limits>
 
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/pointcloud2.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/rosbag/pointcloud2.hpp"
 
 using namespace projsurf;
 

@@ -8,8 +8,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/yaml_tree.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/yaml/yaml_tree.hpp"
 
 namespace projsurf {
 namespace {

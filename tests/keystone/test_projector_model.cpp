@@ -14,11 +14,11 @@
 #include "projsurf/types/plane_frame.hpp"
 #include "eval/experiments.hpp"
 #include "eval/projector_eval.hpp"
-#include "projsurf/io/errors.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/files/errors.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
-#include "projsurf/sim/scenarios.hpp"
-#include "projsurf/sim/scene.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
+#include "projsurf/sim/scenes/scene.hpp"
 
 using namespace projsurf::eval;  // the evaluation under test
 

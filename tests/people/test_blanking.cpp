@@ -5,14 +5,14 @@
 
 #include <cstdio>
 
-#include "projsurf/people/beam_blanking.hpp"
 #include "projsurf/keystone/keystone.hpp"
+#include "projsurf/people/beam_blanking.hpp"
 #include "eval/walk_in.hpp"
-#include "projsurf/frontend/test_card.hpp"
 #include "projsurf/detector/detector.hpp"
+#include "projsurf/frontend/render/test_card.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 using namespace projsurf::eval;  // the evaluation under test
 

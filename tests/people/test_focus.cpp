@@ -9,11 +9,11 @@
 #include <filesystem>
 #include <fstream>
 
-#include "projsurf/people/focus.hpp"
-#include "projsurf/io/detection_json.hpp"
 #include "projsurf/detector/detector.hpp"
+#include "projsurf/io/formats/detection_json.hpp"
+#include "projsurf/people/focus.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 using namespace projsurf;
 

@@ -15,12 +15,12 @@
 #include "eval/plan_suite.hpp"
 #include "eval/real_labels.hpp"
 #include "projsurf/detector/detector.hpp"
-#include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/yaml_files.hpp"
+#include "projsurf/io/formats/cloud_io.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 #include "projsurf/planning/levelled_frame.hpp"
 #include "projsurf/planning/stand_planner.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 using namespace projsurf::eval;  // the evaluation under test
 

@@ -14,13 +14,13 @@
 #include "cli_run.hpp"
 #include "label_fixtures.hpp"
 #include "projsurf/detection/default/default_method.hpp"
-#include "projsurf/frontend/plan_overlay.hpp"
+#include "projsurf/frontend/render/plan_overlay.hpp"
 #include "projsurf/planning/floor_occupancy.hpp"
 #include "projsurf/planning/plan_raster.hpp"
 #include "projsurf/planning/plan_surfaces.hpp"
 #include "projsurf/planning/stand_planner.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 namespace fs = std::filesystem;
 using namespace projsurf;

@@ -19,17 +19,17 @@
 
 #include "eval/experiments.hpp"
 #include "eval/realistic_suite.hpp"
-#include "projsurf/detector/detector.hpp"
 #include "projsurf/detection/default/planar_regions.hpp"
-#include "projsurf/io/cloud_io.hpp"
-#include "projsurf/types/point_grid.hpp"
+#include "projsurf/detector/detector.hpp"
+#include "projsurf/io/formats/cloud_io.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/noise_field.hpp"
-#include "projsurf/sim/scenarios_realistic.hpp"
-#include "projsurf/sim/wall_frame.hpp"
+#include "projsurf/sim/scenes/scenarios_realistic.hpp"
+#include "projsurf/sim/scenes/wall_frame.hpp"
 #include "projsurf/sim/wall_residual_stats.hpp"
 #include "projsurf/sim/window_noise.hpp"
+#include "projsurf/types/point_grid.hpp"
 
 using namespace projsurf::eval;  // the evaluation under test
 

@@ -19,12 +19,12 @@
 
 #include "cli_run.hpp"
 #include "projsurf/calibration/calibration_picture.hpp"
-#include "projsurf/types/plane.hpp"
 #include "projsurf/sim/ground_truth.hpp"
 #include "projsurf/sim/projector_rigs.hpp"
 #include "projsurf/sim/ray_cast.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
+#include "projsurf/types/plane.hpp"
 
 using namespace projsurf;
 using namespace projsurf::sim;

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "projsurf/calibration/calibration.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 #include "projsurf/types/plane.hpp"
 #include "projsurf/types/plane_frame.hpp"
-#include "projsurf/io/yaml_files.hpp"
 
 namespace projsurf::test {
 

@@ -11,7 +11,7 @@
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/cloud.hpp"
 #include "eval/real_labels.hpp"
-#include "projsurf/io/errors.hpp"
+#include "projsurf/io/files/errors.hpp"
 
 using namespace projsurf::eval;  // the evaluation under test
 

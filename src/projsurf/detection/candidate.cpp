@@ -1,6 +1,6 @@
 #include "projsurf/detection/candidate.hpp"
 
-#include "projsurf/detection/outline_raster.hpp"
+#include "projsurf/detection/raster_frame.hpp"
 
 namespace projsurf {
 

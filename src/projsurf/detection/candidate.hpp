@@ -4,10 +4,10 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
-#include "projsurf/detection/outline_raster.hpp"
-#include "projsurf/types/plane_frame.hpp"
-#include "projsurf/detection/projector_footprint.hpp"
 #include "projsurf/detection/detection.hpp"
+#include "projsurf/detection/projector_footprint.hpp"
+#include "projsurf/detection/raster_frame.hpp"
+#include "projsurf/types/plane_frame.hpp"
 
 namespace projsurf {
 

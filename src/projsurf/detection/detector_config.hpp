@@ -3,7 +3,6 @@
 // and where it comes from (paper section, datasheet, or a measurement of this project).
 #include <vector>
 
-#include "projsurf/detection/virtual_depth_image.hpp"
 #include "projsurf/types/depth_tolerance.hpp"
 #include "projsurf/types/plane.hpp"
 
@@ -14,6 +13,17 @@ enum class Method {
     Paper,    ///< the paper's steps, one by one (for reproduction)
 };
 enum class HullKind { Concave, Convex };
+
+/// Default method, unorganized clouds (`unorganized`): the depth image a pinhole at the camera
+/// would have taken of them (detection/planes/virtual_depth_image.hpp).
+struct VirtualImageConfig {
+    bool enabled = true;               ///< false: unorganized clouds take the sequential-RANSAC path
+    double max_half_angle_deg = 70.0;  ///< deg off the optical axis kept (the projector's beam is < 30)
+    double fill =
+        1.0;  ///< clouds on no pixel grid: pixels per point over the covered view (1: the cloud's own density)
+    int max_pixels = 1 << 20;  ///< image size cap (about 1.3 x 1280x800)
+    int min_points = 500;      ///< fewer points in front of the camera: no image
+};
 
 /// The paper's method (section 3.2), step by step.
 struct PaperConfig {

@@ -4,9 +4,9 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "projsurf/detection/raster_frame.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/cloud.hpp"
-#include "projsurf/detection/outline_raster.hpp"
 #include "projsurf/types/plane_frame.hpp"
 
 namespace projsurf {

@@ -1,7 +1,7 @@
 #pragma once
 // The one table of the words for the detection method ("default", "paper") and the paper
 // method's hull ("concave", "convex"): what the JSON, the overlay and every front end write,
-// and what they read (frontend/method_words.hpp adds the error a user sees).
+// and what they read (frontend/settings/method_words.hpp adds the error a user sees).
 #include <string_view>
 
 #include "projsurf/detection/detector_config.hpp"

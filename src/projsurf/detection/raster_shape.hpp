@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "projsurf/detection/outline_raster.hpp"
+#include "projsurf/detection/raster_frame.hpp"
 #include "projsurf/detection/wall_height.hpp"
 
 namespace projsurf {

@@ -6,7 +6,7 @@
 #include <array>
 #include <opencv2/core.hpp>
 
-#include "projsurf/detection/outline_raster.hpp"
+#include "projsurf/detection/raster_frame.hpp"
 #include "projsurf/types/plane_frame.hpp"
 
 namespace projsurf {

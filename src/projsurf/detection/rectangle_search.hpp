@@ -5,7 +5,7 @@
 #include <opencv2/core.hpp>
 #include <optional>
 
-#include "projsurf/detection/outline_raster.hpp"
+#include "projsurf/detection/raster_frame.hpp"
 #include "projsurf/types/plane_frame.hpp"
 
 namespace projsurf {

@@ -4,7 +4,7 @@
 
 #include "projsurf/detection/default/default_method.hpp"
 #include "projsurf/detection/paper/paper_method.hpp"
-#include "projsurf/detection/virtual_depth_image.hpp"
+#include "projsurf/detection/planes/virtual_depth_image.hpp"
 
 namespace projsurf {
 namespace {

@@ -3,7 +3,7 @@
 // one place for its size and for turning metres into cells.
 #include <Eigen/Core>
 
-#include "projsurf/detection/outline_raster.hpp"
+#include "projsurf/detection/raster_frame.hpp"
 
 namespace projsurf {
 

@@ -6,7 +6,7 @@
 
 #include "projsurf/calibration/calibration_picture.hpp"
 #include "projsurf/calibration/gray_code.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 namespace projsurf::sim {
 

@@ -4,8 +4,8 @@
 // glass. The sensor models (kinect1_model, tof_model, d435_model) start from this.
 #include <opencv2/core.hpp>
 
+#include "projsurf/sim/scenes/scene.hpp"
 #include "projsurf/types/camera.hpp"
-#include "projsurf/sim/scene.hpp"
 
 namespace projsurf::sim {
 

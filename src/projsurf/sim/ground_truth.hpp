@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "projsurf/sim/scene.hpp"
+#include "projsurf/sim/scenes/scene.hpp"
 #include "projsurf/sim/sensor_model.hpp"
 #include "projsurf/types/plane.hpp"
 #include "projsurf/types/plane_frame.hpp"

@@ -7,7 +7,7 @@
 
 #include "projsurf/calibration/decoded_points.hpp"
 #include "projsurf/calibration/gray_code.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 namespace projsurf::sim {
 

@@ -5,10 +5,10 @@
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
 
+#include "projsurf/sim/scenes/scene.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/plane.hpp"
 #include "projsurf/types/projector.hpp"
-#include "projsurf/sim/scene.hpp"
 
 namespace projsurf::sim {
 

@@ -5,11 +5,11 @@
 #include <opencv2/core.hpp>
 #include <optional>
 
+#include "projsurf/sim/ray_cast.hpp"
+#include "projsurf/sim/scenes/scene.hpp"
+#include "projsurf/sim/sensor_model.hpp"
 #include "projsurf/types/cloud.hpp"
 #include "projsurf/types/projector.hpp"
-#include "projsurf/sim/ray_cast.hpp"
-#include "projsurf/sim/scene.hpp"
-#include "projsurf/sim/sensor_model.hpp"
 
 namespace projsurf::sim {
 

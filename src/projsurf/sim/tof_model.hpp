@@ -11,7 +11,7 @@
 #include <opencv2/core.hpp>
 
 #include "projsurf/sim/exact_depth.hpp"
-#include "projsurf/sim/scene.hpp"
+#include "projsurf/sim/scenes/scene.hpp"
 
 namespace projsurf::sim {
 

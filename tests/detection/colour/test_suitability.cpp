@@ -8,19 +8,19 @@
 
 #include "cli_run.hpp"
 #include "projsurf/detection/colour/colour_registration.hpp"
+#include "projsurf/detection/colour/surface_suitability.hpp"
 #include "projsurf/detection/default/observed_free_space.hpp"
 #include "projsurf/types/plane_frame.hpp"
 #include "projsurf/types/point_grid.hpp"
-#include "projsurf/detection/colour/surface_suitability.hpp"
 #include "eval/colour_suite.hpp"
-#include "projsurf/io/detection_json.hpp"
-#include "projsurf/io/yaml_files.hpp"
 #include "projsurf/detector/detector.hpp"
+#include "projsurf/io/formats/detection_json.hpp"
+#include "projsurf/io/yaml/yaml_files.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/exact_depth.hpp"
 #include "projsurf/sim/ray_cast.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/wall_frame.hpp"
+#include "projsurf/sim/scenes/wall_frame.hpp"
 
 using namespace projsurf::eval;  // the evaluation under test
 

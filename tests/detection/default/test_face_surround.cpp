@@ -6,7 +6,7 @@
 
 #include "projsurf/detection/default/face_surround.hpp"
 #include "projsurf/sim/exact_depth.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 using namespace projsurf;
 

@@ -7,7 +7,7 @@
 
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 
 using namespace projsurf;
 

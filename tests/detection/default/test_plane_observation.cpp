@@ -8,12 +8,12 @@
 #include <limits>
 #include <random>
 
-#include "projsurf/types/camera.hpp"
 #include "projsurf/detection/default/plane_observation.hpp"
-#include "projsurf/types/point_grid.hpp"
 #include "projsurf/detection/surface_check.hpp"
 #include "projsurf/sim/render.hpp"
-#include "projsurf/sim/scenarios.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
+#include "projsurf/types/camera.hpp"
+#include "projsurf/types/point_grid.hpp"
 
 using namespace projsurf;
 

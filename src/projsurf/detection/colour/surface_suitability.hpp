@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "projsurf/detection/detector_config.hpp"
-#include "projsurf/detection/outline_raster.hpp"
+#include "projsurf/detection/raster_frame.hpp"
 #include "projsurf/detection/wall_height.hpp"
 #include "projsurf/types/depth_tolerance.hpp"
 #include "projsurf/types/plane.hpp"

@@ -15,11 +15,11 @@
 #include "projsurf/detection/default/planar_regions.hpp"
 #include "projsurf/detection/default/plane_samples.hpp"
 #include "projsurf/detection/image_boxes.hpp"
-#include "projsurf/detection/point_sampling.hpp"
+#include "projsurf/detection/planes/point_sampling.hpp"
+#include "projsurf/detection/planes/vertical_planes.hpp"
 #include "projsurf/detection/rectangle_growth.hpp"
 #include "projsurf/detection/rectangle_search.hpp"
 #include "projsurf/detection/stage_timer.hpp"
-#include "projsurf/detection/vertical_planes.hpp"
 #include "projsurf/types/camera.hpp"
 
 namespace projsurf {

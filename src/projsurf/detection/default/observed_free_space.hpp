@@ -9,7 +9,7 @@
 #include "projsurf/detection/cell_state.hpp"
 #include "projsurf/detection/default/plane_observation.hpp"
 #include "projsurf/detection/detector_config.hpp"
-#include "projsurf/detection/outline_raster.hpp"
+#include "projsurf/detection/raster_frame.hpp"
 
 namespace projsurf {
 

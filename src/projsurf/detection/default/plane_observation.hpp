@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "projsurf/detection/default/wall_shape.hpp"
-#include "projsurf/detection/outline_raster.hpp"
+#include "projsurf/detection/raster_frame.hpp"
 #include "projsurf/detection/surface_check.hpp"
 #include "projsurf/types/plane.hpp"
 #include "projsurf/types/plane_frame.hpp"

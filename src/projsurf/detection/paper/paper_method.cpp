@@ -3,13 +3,13 @@
 #include <random>
 
 #include "projsurf/calibration/euler_rodrigues.hpp"
-#include "projsurf/detection/hull.hpp"
-#include "projsurf/detection/outline_raster.hpp"
-#include "projsurf/detection/rectangle_search.hpp"
-#include "projsurf/detection/vertical_planes.hpp"
-#include "projsurf/detection/vertical_ransac.hpp"
-#include "projsurf/detection/paper/voxel_grid.hpp"
 #include "projsurf/detection/candidate.hpp"
+#include "projsurf/detection/paper/hull.hpp"
+#include "projsurf/detection/paper/outline_raster.hpp"
+#include "projsurf/detection/paper/voxel_grid.hpp"
+#include "projsurf/detection/planes/vertical_planes.hpp"
+#include "projsurf/detection/planes/vertical_ransac.hpp"
+#include "projsurf/detection/rectangle_search.hpp"
 #include "projsurf/detection/stage_timer.hpp"
 
 namespace projsurf {

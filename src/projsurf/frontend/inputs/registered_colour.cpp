@@ -1,0 +1,39 @@
+#include "projsurf/frontend/inputs/registered_colour.hpp"
+
+#include "projsurf/detection/colour/colour_registration.hpp"
+#include "projsurf/io/files/errors.hpp"
+
+namespace projsurf::frontend {
+
+ColourAttachment attachRegisteredColour(Cloud &cloud, const cv::Mat &bgr, const std::string &source) {
+    if (bgr.depth() != CV_8U || bgr.channels() != 3) {
+        const int bits = bgr.depth() == CV_8U ? 8 : bgr.depth() == CV_16U ? 16 : bgr.depth() == CV_32F ? 32 : 0;
+        const std::string depth_png = bgr.depth() == CV_16U && bgr.channels() == 1 ? " (a depth PNG?)" : "";
+        throw InputError(source, "expected 8-bit 3-channel colour (B, G, R), got " +
+                                     (bits ? std::to_string(bits) : std::string("non-8")) + "-bit with " +
+                                     std::to_string(bgr.channels()) + " channel" + (bgr.channels() == 1 ? "" : "s") +
+                                     depth_png);
+    }
+    ColourAttachment out;
+    if (!cloud.organized()) {
+        out.warnings.push_back(source +
+                               ": colour needs an organized cloud or a depth image to be registered to; not used");
+        return out;
+    }
+    if (bgr.cols != cloud.width || bgr.rows != cloud.height)
+        throw InputError(source, "colour image is " + std::to_string(bgr.cols) + "x" + std::to_string(bgr.rows) +
+                                     ", the cloud is " + std::to_string(cloud.width) + "x" +
+                                     std::to_string(cloud.height));
+    const RegistrationResult r = checkColourRegistration(cloud, bgr);
+    if (r.checked && !r.registered) {
+        out.warnings.push_back(source + ": colour is not registered to the depth (" + r.summary() + "); not used");
+        return out;
+    }
+    if (!r.checked)
+        out.warnings.push_back(source + ": cannot check that the colour is registered to the depth (" + r.summary() +
+                               "); used as given");
+    out.used = attachColour(cloud, bgr);
+    return out;
+}
+
+}  // namespace projsurf::frontend
