@@ -4,13 +4,12 @@
 #include <exception>
 #include <iostream>
 
-#include "projsurf/detection/gravity.hpp"
-#include "projsurf/keystone/keystone.hpp"
-#include "projsurf/io/cloud_io.hpp"
-#include "projsurf/io/errors.hpp"
+#include "projsurf/detection.hpp"
+#include "projsurf/detector.hpp"
 #include "projsurf/io/files.hpp"
-#include "projsurf/io/yaml_files.hpp"
-#include "projsurf/detector/detector.hpp"
+#include "projsurf/io/formats.hpp"
+#include "projsurf/io/yaml.hpp"
+#include "projsurf/keystone.hpp"
 #include "synthetic_input.hpp"  // makeWallAndFloor(), makePicture(): when no file is given
 
 int main(int argc, char **argv) {

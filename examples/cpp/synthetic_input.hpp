@@ -6,8 +6,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "projsurf/types/camera.hpp"
-#include "projsurf/types/cloud.hpp"
+#include "projsurf/types.hpp"
 
 /// An organized cloud (camera frame, metres): a level 640x480 depth camera (525 px focal
 /// length), 0.8 m above the floor, 2.5 m from a wall.

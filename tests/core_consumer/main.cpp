@@ -2,8 +2,8 @@
 // the contract's example projector. Exits 0 when a rectangle is found and can be shown.
 #include <iostream>
 
-#include "projsurf/keystone/keystone.hpp"
-#include "projsurf/detector/detector.hpp"
+#include "projsurf/detector.hpp"
+#include "projsurf/keystone.hpp"
 
 int main() {
     projsurf::Cloud cloud;
