@@ -17,6 +17,7 @@
 #include "projsurf/frontend/depth_range_check.hpp"
 #include "projsurf/frontend/framebuffer_render.hpp"
 #include "projsurf/frontend/gravity_warnings.hpp"
+#include "projsurf/frontend/registered_colour.hpp"
 #include "projsurf/frontend/test_card.hpp"
 #include "projsurf/io/errors.hpp"
 #include "projsurf/io/files.hpp"
@@ -75,8 +76,7 @@ ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams p
         ROS_INFO("projsurf_node: colour from %s (suitability %s)", colour_sub_.getTopic().c_str(),
                  suitabilityModeName(params_.detector.suitability.mode));
     } else if (params_.suitability_given && params_.detector.suitability.mode != SuitabilityMode::Off) {
-        ROS_WARN(
-            "projsurf_node: ~suitability needs registered colour (~use_colour); the surface is judged by depth only");
+        ROS_WARN("projsurf_node: %s", frontend::suitabilityWithoutColourWarning("~suitability", "~use_colour").c_str());
     }
     for (const std::string &w : params_.calib_warnings) ROS_WARN("projsurf_node: %s", w.c_str());
     for (const std::string &w : ignoredParamWarnings(pnh_, params_.detector.method))

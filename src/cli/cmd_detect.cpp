@@ -29,6 +29,7 @@
 #include "projsurf/frontend/method_words.hpp"
 #include "projsurf/frontend/minimum_size.hpp"
 #include "projsurf/frontend/overlay.hpp"
+#include "projsurf/frontend/registered_colour.hpp"
 #include "projsurf/frontend/suitability_mode.hpp"
 #include "projsurf/io/cloud_io.hpp"
 #include "projsurf/io/errors.hpp"
@@ -181,10 +182,8 @@ DetectInput readDetectInput(const DetectOptions &o) {
 
 void warnIfSuitabilityHasNoColour(const DetectOptions &o, const Cloud &cloud, Method method) {
     if (!o.suitability.empty() && o.suitability != "off" && !cloud.hasColour() && method == Method::Default)
-        std::fprintf(stderr,
-                     "projsurf: warning: --suitability %s needs registered colour (--rgb); the surface is judged by "
-                     "depth only\n",
-                     o.suitability.c_str());
+        std::fprintf(stderr, "projsurf: warning: %s\n",
+                     frontend::suitabilityWithoutColourWarning("--suitability " + o.suitability, "--rgb").c_str());
 }
 
 const frontend::GravityWords kGravityWords{"--gravity", "--gravity auto"};

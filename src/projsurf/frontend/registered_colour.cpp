@@ -41,4 +41,8 @@ ColourAttachment attachRegisteredColour(Cloud &cloud, const cv::Mat &bgr, const 
     return out;
 }
 
+std::string suitabilityWithoutColourWarning(const std::string &what, const std::string &colour_option) {
+    return what + " needs registered colour (" + colour_option + "); the surface is judged by depth only";
+}
+
 }  // namespace projsurf::frontend

@@ -30,4 +30,9 @@ ColourAttachment attachRegisteredColour(Cloud &cloud, const cv::Mat &bgr, const 
 ColourAttachment attachRegisteredColour(Cloud &cloud, const cv::Mat &bgr, const std::string &source,
                                         const RegistrationCheck &check);
 
+/// The warning when the surface suitability was asked for (`what`: "--suitability avoid",
+/// "suitability", "~suitability") and no registered colour comes with the clouds
+/// (`colour_option`: "--rgb", "colour=", "~use_colour"): the surface is judged by depth only.
+std::string suitabilityWithoutColourWarning(const std::string &what, const std::string &colour_option);
+
 }  // namespace projsurf::frontend
