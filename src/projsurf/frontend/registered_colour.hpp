@@ -1,9 +1,10 @@
 #pragma once
-// Colour given with a cloud (`detect --rgb`, Python's colour=): checked as one policy for every
-// front end. Not 8-bit, 3-channel or not the cloud's size is an error; colour that cannot be
-// registered (an unorganized cloud) or whose edges do not fit the depth's is not used, with a
-// warning; colour whose registration cannot be checked is used, with a warning. The node, which
-// cannot stop on a stream, takes the error as a warning and detects that frame without colour.
+// Colour given with a cloud (`detect --rgb`, Python's colour=, the node's ~use_colour): checked
+// as one policy for every front end. Not 8-bit, 3-channel or not the cloud's size is an error;
+// colour that cannot be registered (an unorganized cloud) or whose edges do not fit the depth's
+// is not used, with a warning; colour whose registration cannot be checked is used, with a
+// warning. The node, which cannot stop on a stream, takes the error as a warning and detects
+// that frame without colour.
 #include <functional>
 #include <opencv2/core/mat.hpp>
 #include <string>
