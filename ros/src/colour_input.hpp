@@ -1,18 +1,21 @@
 #pragma once
 // The node's registered colour: colour images kept by stamp, so that each cloud
 // (depth image) gets the colour image of its own stamp (frontend/inputs/stamp_pairing.hpp, as depth
-// gets its camera_info), and the check that the colour is registered to the depth
-// (detection/colour/colour_registration.hpp), run once per stream, not per frame. Colour that does not fit
-// (another size or encoding, not registered) is not used, with one warning per stream.
+// gets its camera_info), put into the cloud by the front ends' one policy
+// (frontend/inputs/registered_colour.hpp), whose registration check
+// (detection/colour/colour_registration.hpp) runs once per stream here, not per frame. Colour the
+// policy refuses (another size or encoding: an error in the CLI and Python) or does not use (not
+// registered) leaves the frame to be detected without it, with a warning naming the topic
+// (warning_throttle.hpp: not one per frame).
 #include <ros/time.h>
 #include <sensor_msgs/Image.h>
 
-#include <set>
 #include <string>
 
 #include "projsurf/detection/colour/colour_registration.hpp"
 #include "projsurf/frontend/inputs/stamp_pairing.hpp"
 #include "projsurf/types/cloud.hpp"
+#include "warning_throttle.hpp"
 
 namespace projsurf::ros_node {
 
@@ -34,11 +37,11 @@ public:
     /// is set to the nearest one's distance (infinity when there is none).
     sensor_msgs::ImageConstPtr near(const ros::Time &stamp, double &offset_s) const;
 
-    /// Puts `colour` into `cloud` (organized, camera frame) when it may be used: the same size
-    /// as the cloud, a colour encoding, and registered. `stream` names the depth stream's
+    /// Puts `colour` into `cloud` (organized, camera frame) when the policy allows it: the same
+    /// size as the cloud, a colour encoding, and registered. `stream` names the depth stream's
     /// geometry (size, intrinsics, frame): the registration is checked again when it or the
-    /// colour's size or frame changes. Returns "" when attached, else why not; each reason is
-    /// warned once per stream (ROS_WARN).
+    /// colour's size or frame changes. Returns "" when attached, else why not, the policy's
+    /// sentence naming the topic; each warning is logged as warning_throttle.hpp says.
     std::string attach(Cloud &cloud, const sensor_msgs::Image &colour, const std::string &stream);
 
     /// The latest registration check (checked = false before any).
@@ -49,8 +52,9 @@ public:
     double lastCheckMs() const { return check_ms_; }
 
 private:
-    /// Warns `text` unless it was warned for this stream already.
-    void warnOnce(const std::string &key, const std::string &text);
+    /// The policy's registration check for the stream `key`: the verdict kept for it, checked
+    /// again for another stream, or while it cannot tell, every kRecheckPeriodS.
+    RegistrationResult verdictFor(const std::string &key, const Cloud &cloud, const cv::Mat &bgr);
 
     std::string topic_;
     /// The latest few (a sixth of a second at 30 Hz: colour and depth of one instant arrive
@@ -61,7 +65,7 @@ private:
     RegistrationResult verdict_;
     ros::WallTime last_check_;
     double check_ms_ = 0.0;
-    std::set<std::string> warned_;  ///< stream + reason of every warning given (one each)
+    WarningThrottle warnings_;
 };
 
 }  // namespace projsurf::ros_node

@@ -3,12 +3,14 @@
 #include <sensor_msgs/image_encodings.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
 #include "projsurf/detection/default/observed_free_space.hpp"
+#include "projsurf/frontend/inputs/camera_info_intrinsics.hpp"
 #include "projsurf/frontend/inputs/depth_image_cloud.hpp"
 #include "projsurf/io/files/errors.hpp"
 #include "projsurf/io/rosbag/depth_image_bytes.hpp"
@@ -20,20 +22,21 @@ namespace enc = sensor_msgs::image_encodings;
 Cloud toCloud(const sensor_msgs::PointCloud2 &msg) { return cloudFromPointCloud2(viewOfMessage(msg), "points"); }
 
 Cloud toCloud(const sensor_msgs::Image &depth, const sensor_msgs::CameraInfo &info) {
-    if (depth.width != info.width || depth.height != info.height)
-        throw InputError("depth", "image is " + std::to_string(depth.width) + "x" + std::to_string(depth.height) +
-                                      ", camera_info says " + std::to_string(info.width) + "x" +
-                                      std::to_string(info.height));
-    if (!(info.K[0] > 0.0) || !(info.K[4] > 0.0)) throw InputError("camera_info", "K has no focal length");
     // The message's pixels in this machine's byte order (io/rosbag/depth_image_bytes.hpp, as for bags).
     const cv::Mat image = depthImageFromBytes("depth", depth.encoding, depth.width, depth.height, depth.step,
                                               depth.is_bigendian != 0, depth.data.data(), depth.data.size());
-    const CameraIntrinsics cam = frontend::pinholeCamera("camera_info", image.cols, image.rows, info.K[0], info.K[4],
-                                                         info.K[2], info.K[5], 1000.0);  // 16UC1 is in mm (REP 118)
-    return frontend::depthImageToCloud("depth", image, cam);
+    std::array<double, 9> K;
+    std::copy(info.K.begin(), info.K.end(), K.begin());
+    const CameraIntrinsics cam = frontend::cameraInfoIntrinsics("camera_info", info.width, info.height, K, depth.encoding);
+    return frontend::depthImageToCloud("depth", image, cam);  // refuses an image of another size than camera_info's
 }
 
-cv::Mat toBgr(const sensor_msgs::Image &msg) {
+cv::Mat colourToBgr(const sensor_msgs::Image &msg, const std::string &topic) {
+    if (msg.encoding == enc::MONO8) throw InputError(topic, "its encoding is mono8; need bgr8, rgb8, bgra8 or rgba8");
+    return toBgr(msg, topic);
+}
+
+cv::Mat toBgr(const sensor_msgs::Image &msg, const std::string &what) {
     int type, code = -1;
     if (msg.encoding == enc::BGR8)
         type = CV_8UC3;
@@ -46,11 +49,11 @@ cv::Mat toBgr(const sensor_msgs::Image &msg) {
     else if (msg.encoding == enc::MONO8)
         type = CV_8UC1, code = cv::COLOR_GRAY2BGR;
     else
-        throw InputError("image", "encoding '" + msg.encoding + "' (expected bgr8, rgb8, bgra8, rgba8 or mono8)");
-    if (msg.width == 0 || msg.height == 0) throw InputError("image", "is empty");
+        throw InputError(what, "encoding '" + msg.encoding + "' (expected bgr8, rgb8, bgra8, rgba8 or mono8)");
+    if (msg.width == 0 || msg.height == 0) throw InputError(what, "is empty");
     const std::size_t row = static_cast<std::size_t>(msg.width) * CV_ELEM_SIZE(type);
     if (msg.step < row || msg.data.size() < static_cast<std::size_t>(msg.step) * msg.height)
-        throw InputError("image", "data is shorter than its size says");
+        throw InputError(what, "data is shorter than its size says");
     const cv::Mat view(static_cast<int>(msg.height), static_cast<int>(msg.width), type,
                        const_cast<std::uint8_t *>(msg.data.data()), msg.step);
     cv::Mat out;

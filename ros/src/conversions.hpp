@@ -9,8 +9,8 @@
 #include <opencv2/core.hpp>
 #include <string>
 
-#include "projsurf/types/cloud.hpp"
 #include "projsurf/detector/detector.hpp"
+#include "projsurf/types/cloud.hpp"
 
 namespace projsurf::ros_node {
 
@@ -20,8 +20,12 @@ Cloud toCloud(const sensor_msgs::PointCloud2 &msg);
 /// (K only; the depth is taken as rectified). Throws InputError on other encodings or sizes.
 Cloud toCloud(const sensor_msgs::Image &depth, const sensor_msgs::CameraInfo &info);
 
-/// A picture to show: bgr8, rgb8, bgra8, rgba8 or mono8 -> a BGR cv::Mat (copied).
-cv::Mat toBgr(const sensor_msgs::Image &msg);
+/// A picture to show: bgr8, rgb8, bgra8, rgba8 or mono8 -> a BGR cv::Mat (copied). Throws
+/// InputError(what, problem) for another encoding or data shorter than the size.
+cv::Mat toBgr(const sensor_msgs::Image &msg, const std::string &what = "image");
+/// Colour for the surface suitability: as toBgr, but a grey image (mono8) is refused too (it
+/// cannot tell colours apart); `topic` names it in the error.
+cv::Mat colourToBgr(const sensor_msgs::Image &msg, const std::string &topic);
 /// A BGR (CV_8UC3) image -> bgr8 message.
 sensor_msgs::Image toImageMsg(const cv::Mat &bgr, const std_msgs::Header &header);
 /// An organized cloud as a PointCloud2 (x, y, z float32), for tests and tools.

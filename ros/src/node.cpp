@@ -9,17 +9,25 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "conversions.hpp"
+#include "ignored_params.hpp"
+#include "projsurf/frontend/answer/continuous_json.hpp"
 #include "projsurf/frontend/answer/detect_answer.hpp"
 #include "projsurf/frontend/answer/detection_document.hpp"
 #include "projsurf/frontend/answer/detection_summary.hpp"
+#include "projsurf/frontend/inputs/registered_colour.hpp"
 #include "projsurf/frontend/render/framebuffer_render.hpp"
 #include "projsurf/frontend/render/test_card.hpp"
+#include "projsurf/frontend/settings/depth_range_check.hpp"
+#include "projsurf/frontend/settings/gravity_warnings.hpp"
 #include "projsurf/io/files/errors.hpp"
 #include "projsurf/io/files/files.hpp"
 #include "projsurf/io/files/limits.hpp"
 
 namespace projsurf::ros_node {
 namespace {
+
+/// ~gravity as the node's users write it, in the CLI's and Python's warnings.
+const frontend::GravityWords kGravityWords{"~gravity", "~gravity auto"};
 
 Eigen::Isometry3d toEigen(const geometry_msgs::Transform &t) {
     Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
@@ -68,10 +76,11 @@ ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams p
         ROS_INFO("projsurf_node: colour from %s (suitability %s)", colour_sub_.getTopic().c_str(),
                  suitabilityModeName(params_.detector.suitability.mode));
     } else if (params_.suitability_given && params_.detector.suitability.mode != SuitabilityMode::Off) {
-        ROS_WARN(
-            "projsurf_node: ~suitability needs registered colour (~use_colour); the surface is judged by depth only");
+        ROS_WARN("projsurf_node: %s", frontend::suitabilityWithoutColourWarning("~suitability", "~use_colour").c_str());
     }
     for (const std::string &w : params_.calib_warnings) ROS_WARN("projsurf_node: %s", w.c_str());
+    for (const std::string &w : ignoredParamWarnings(pnh_, params_.detector.method))
+        ROS_WARN("projsurf_node: %s", w.c_str());
     ROS_INFO("projsurf_node: projector %dx%d from %s; %s mode; listening on %s (or %s + %s)", params_.projector.width,
              params_.projector.height, params_.calib.c_str(), params_.continuous ? "continuous" : "on-demand (~detect)",
              cloud_sub_.getTopic().c_str(), depth_sub_.getTopic().c_str(), info_sub_.getTopic().c_str());
@@ -163,7 +172,7 @@ void ProjsurfNode::takeDepth(const sensor_msgs::Image &depth, const sensor_msgs:
     std::snprintf(stream, sizeof stream, "depth %ux%u K %.2f %.2f %.2f %.2f %s", info.width, info.height, info.K[0],
                   info.K[4], info.K[2], info.K[5], depth.header.frame_id.c_str());
     try {
-        takeCloud(toCloud(depth, info), depth.header, stream);
+        takeCloud(toCloud(depth, info), depth.header, stream, depth_sub_.getTopic());
     } catch (const InputError &e) {
         rejectCloud("depth image", e.what(), depth.header);
     }
@@ -171,9 +180,9 @@ void ProjsurfNode::takeDepth(const sensor_msgs::Image &depth, const sensor_msgs:
 
 void ProjsurfNode::onCloud(const sensor_msgs::PointCloud2ConstPtr &msg) {
     try {
-        takeCloud(
-            toCloud(*msg), msg->header,
-            "cloud " + std::to_string(msg->width) + "x" + std::to_string(msg->height) + " " + msg->header.frame_id);
+        takeCloud(toCloud(*msg), msg->header,
+                  "cloud " + std::to_string(msg->width) + "x" + std::to_string(msg->height) + " " + msg->header.frame_id,
+                  cloud_sub_.getTopic());
     } catch (const InputError &e) {
         rejectCloud("cloud", e.what(), msg->header);
     }
@@ -186,7 +195,8 @@ void ProjsurfNode::rejectCloud(const std::string &what, const std::string &probl
     rejected_ = "the latest " + what + " (stamp " + stamp + ") was rejected: " + problem;
 }
 
-void ProjsurfNode::takeCloud(Cloud cloud, const std_msgs::Header &header, const std::string &stream) {
+void ProjsurfNode::takeCloud(Cloud cloud, const std_msgs::Header &header, const std::string &stream,
+                             const std::string &topic) {
     if (colour_wait_ && continuous_) {  // the previous cloud's colour never came: the nearest, or none
         settleColourWait();
         runContinuous();
@@ -195,6 +205,7 @@ void ProjsurfNode::takeCloud(Cloud cloud, const std_msgs::Header &header, const 
     depth_stream_ = stream;
     cloud_ = std::move(cloud);
     cloud_header_ = header;
+    cloud_topic_ = topic;
     have_cloud_ = true;
     rejected_.clear();
     colour_ms_ = 0.0;
@@ -248,6 +259,26 @@ frontend::GravityChoice ProjsurfNode::gravityChoiceFor(const std_msgs::Header &h
     }
     // With ~gravity auto and no tf: "down" from the floor when one is in view, else a level camera.
     return choice;
+}
+
+frontend::GravityDetection ProjsurfNode::detectLatest() {
+    std::string tf_problem;
+    const frontend::GravityChoice choice = gravityChoiceFor(cloud_header_, tf_problem);
+    if (!tf_problem.empty()) ROS_WARN_THROTTLE(5.0, "projsurf_node: %s", tf_problem.c_str());
+    frontend::GravityDetection answer = frontend::detectWithGravity(detector_, cloud_, choice, params_.minimum,
+                                                                    "the latest cloud", "~min_width", "~min_area");
+    // The CLI's words on ~gravity (not on tf's: ~gravity_frame gave it). ~gravity's default,
+    // the launch file's too, is the level camera's vector: a level camera assumed.
+    const bool from_tf = !params_.gravity_frame.empty() && tf_problem.empty();
+    const bool level = !choice.from_floor && choice.gravity == SurfaceDetector::levelGravity();
+    const bool check_floor = !from_tf && !floor_checked_;
+    const frontend::GravityUsed used{choice, level, answer.gravity};
+    for (const std::string &w : frontend::gravityUsedWarnings(kGravityWords, used, cloud_, check_floor))
+        warnThrottled(warnings_, w);
+    floor_checked_ = floor_checked_ || check_floor;
+    if (const auto w = frontend::depthRangeWarning(cloud_, cloud_topic_, false))
+        warnThrottled(warnings_, *w, "depth range");
+    return answer;
 }
 
 void ProjsurfNode::publishBlack(const std_msgs::Header &header) {
@@ -309,12 +340,7 @@ ProjsurfNode::Outcome ProjsurfNode::detectOnce() {
 
 ProjsurfNode::Outcome ProjsurfNode::detectOnValidCloud() {
     Outcome out;
-    std::string tf_problem;
-    const frontend::GravityChoice choice = gravityChoiceFor(cloud_header_, tf_problem);
-    if (!tf_problem.empty()) ROS_WARN("projsurf_node: %s", tf_problem.c_str());
-    const Detection det = frontend::detectWithGravity(detector_, cloud_, choice, params_.minimum, "the latest cloud",
-                                                      "~min_width", "~min_area")
-                              .detection;
+    const Detection det = detectLatest().detection;
     const nlohmann::json result =
         frontend::detectionDocument(det, detector_.config(), params_.projector, params_.explain);
     std_msgs::String json;
@@ -360,15 +386,13 @@ bool ProjsurfNode::onPlan(std_srvs::Trigger::Request &, std_srvs::Trigger::Respo
     }
     try {
         std::string problem;
-        const frontend::GravityChoice choice = gravityChoiceFor(cloud_header_, problem);
         Eigen::Isometry3d fixed_from_camera = Eigen::Isometry3d::Identity();
         std::string frame = cloud_header_.frame_id;
         if (!params_.fixed_frame.empty() &&
             lookup(params_.fixed_frame, cloud_header_.frame_id, cloud_header_.stamp, fixed_from_camera, problem))
             frame = params_.fixed_frame;
         // Today's answer is ~detect's, by the same call.
-        const frontend::GravityDetection today = frontend::detectWithGravity(
-            detector_, cloud_, choice, params_.minimum, "the latest cloud", "~min_width", "~min_area");
+        const frontend::GravityDetection today = detectLatest();
         const NodePlanner::Answer a = planner_->plan(cloud_, today.gravity.gravity, today.detection, fixed_from_camera,
                                                      frame, cloud_header_.stamp);
         res.success = a.found;
@@ -390,14 +414,9 @@ void ProjsurfNode::runContinuous() {
         ROS_WARN_THROTTLE(5.0, "projsurf_node: skipping a cloud: %s", problem.c_str());
         return;
     }
-    std::string tf_problem;
-    const frontend::GravityChoice choice = gravityChoiceFor(header, tf_problem);
-    if (!tf_problem.empty()) ROS_WARN_THROTTLE(5.0, "projsurf_node: %s", tf_problem.c_str());
     Detection det;
     try {
-        det = frontend::detectWithGravity(detector_, cloud_, choice, params_.minimum, "the latest cloud", "~min_width",
-                                          "~min_area")
-                  .detection;
+        det = detectLatest().detection;
     } catch (const std::exception &e) {
         ROS_ERROR_THROTTLE(5.0, "projsurf_node: detection failed: %s", e.what());
         return;
@@ -412,9 +431,10 @@ void ProjsurfNode::runContinuous() {
     blanking_->apply(fb.image, cloud_, o.has_target ? &o.shown : nullptr, header);
     const double frame_ms = (ros::WallTime::now() - start).toSec() * 1e3 + colour_ms_;
 
+    // The frame's document as `detect --bag --steady` and Python's Tracker write it, then the node's own.
     nlohmann::json j = frontend::detectionDocument(det, detector_.config(), params_.projector, params_.explain);
-    j["continuous"] = {{"event", toString(o.event)},
-                       {"showing", o.has_target && fb.problem.empty()},
+    frontend::addContinuousFrame(j, o);
+    j["continuous"] = {{"showing", o.has_target && fb.problem.empty()},
                        {"stamp", header.stamp.toSec()},
                        {"frame_ms", std::round(frame_ms * 1000.0) / 1000.0}};
     if (colour_) {

@@ -21,7 +21,9 @@
 #include "params.hpp"
 #include "plan_service.hpp"
 #include "projsurf/detector/detector.hpp"
+#include "projsurf/frontend/answer/detect_answer.hpp"
 #include "projsurf/frontend/inputs/stamp_pairing.hpp"
+#include "warning_throttle.hpp"
 
 namespace projsurf::ros_node {
 
@@ -48,8 +50,8 @@ private:
     bool onDetect(std_srvs::Trigger::Request &req, std_srvs::Trigger::Response &res);
     bool onPlan(std_srvs::Trigger::Request &req, std_srvs::Trigger::Response &res);  ///< ~plan (plan_service.hpp)
 
-    /// `stream`: the depth stream's geometry (colour_input.hpp's `stream`).
-    void takeCloud(Cloud cloud, const std_msgs::Header &header, const std::string &stream);
+    /// `stream`: the depth stream's geometry (colour_input.hpp's `stream`); `topic`: where it came from.
+    void takeCloud(Cloud cloud, const std_msgs::Header &header, const std::string &stream, const std::string &topic);
     /// The depth image with this camera_info as a cloud (or rejected).
     void takeDepth(const sensor_msgs::Image &depth, const sensor_msgs::CameraInfo &info);
     /// ~use_colour: the colour image of the latest cloud's stamp into cloud_ (when it fits);
@@ -66,6 +68,10 @@ private:
     /// ~detect's words on the colour: the chosen rectangle's suitability, or why colour was not used.
     std::string colourSummary(const Detection &det) const;
     void runContinuous();
+    /// The latest cloud detected as every front end detects one (frontend::detectWithGravity),
+    /// with the CLI's warnings about its gravity and depth range (warning_throttle.hpp; the
+    /// floor is searched to check the gravity on the first cloud only). Throws as detectWithGravity.
+    frontend::GravityDetection detectLatest();
     /// How to find gravity for this cloud (frontend::detectWithGravity resolves it): from tf2
     /// when ~gravity_frame is set, from the floor with ~gravity auto when tf gives none, else ~gravity.
     frontend::GravityChoice gravityChoiceFor(const std_msgs::Header &header, std::string &problem);
@@ -90,6 +96,9 @@ private:
     std_msgs::Header cloud_header_;
     bool have_cloud_ = false;
     std::string rejected_;  ///< why the latest cloud was rejected; empty when it was used
+    std::string cloud_topic_;  ///< the topic of the latest cloud (or depth image), named in warnings about it
+    bool floor_checked_ = false;  ///< the gravity was checked against the floor (once: the mount does not change)
+    WarningThrottle warnings_;    ///< the warnings about the clouds' gravity and depth range
     /// camera_info by stamp: each depth image is paired with the one of its own stamp.
     frontend::StampedBuffer<sensor_msgs::CameraInfoConstPtr> camera_infos_;
     sensor_msgs::ImageConstPtr pending_depth_;       ///< a depth image whose camera_info has not come yet

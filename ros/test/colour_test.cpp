@@ -1,7 +1,8 @@
 // The node with registered colour (~use_colour): a framed picture hung flat on the
 // wall, invisible to depth, is avoided with colour (/colour) and covered without (/plain,
-// today's node); colour of another size or not registered is not used, with one warning, and
-// the detection is still published. Both nodes run in continuous mode (run_node_test.sh), so
+// today's node); colour of another size (detect --rgb's error, the same sentence here) or not
+// registered is not used, with one warning (warning_throttle.hpp: not one per frame), and the
+// detection is still published. Both nodes run in continuous mode (run_node_test.sh), so
 // ~result carries each frame's frame_ms: the node's latency with and without colour.
 #include <geometry_msgs/PolygonStamped.h>
 #include <gtest/gtest.h>
@@ -192,6 +193,9 @@ TEST_F(ColourNodeTest, RegisteredColourKeepsThePictureOffAFramedPictureOnTheWall
         ASSERT_TRUE(jc.at("found").get<bool>()) << jc.dump();
         ASSERT_TRUE(jp.at("found").get<bool>()) << jp.dump();
         EXPECT_TRUE(jc.at("continuous").at("colour").at("used").get<bool>()) << jc.at("continuous").dump();
+        // Each frame in `detect --bag --steady`'s and Python Tracker's words (frontend/answer/continuous_json.hpp).
+        EXPECT_TRUE(jc.at("shown").is_object() && jc.at("event").is_string()) << jc.dump();
+        EXPECT_FALSE(jc.at("continuous").contains("event")) << "said once, at the top";
         EXPECT_FALSE(jp.contains("suitability")) << "today's node has no colour";
         if (jc.contains("suitability")) {
             ++with_suitability;

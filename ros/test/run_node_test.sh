@@ -83,8 +83,10 @@ set -e
 grep -qF "$tmp/bad_config.yaml: unknown key 'planes.max_plane' (did you mean 'planes.max_planes'?)" \
     "$tmp/bad_config_node.log" || { echo "run_node_test: ~config's error does not name the key"; exit 1; }
 printf 'method: paper\nplanes: {max_planes: 3}\n' >"$tmp/good_config.yaml"
+# With a parameter the paper method ignores (~max_planes) and one it uses (~hull): the CLI's warning.
 stdbuf -oL "$build/projsurf_node" __ns:=/goodconfig __name:=projsurf _calib:="$tmp/calib.yaml" \
-    _config:="$tmp/good_config.yaml" >"$tmp/good_config_node.log" 2>&1 &  # line-buffered: read while it runs
+    _config:="$tmp/good_config.yaml" _max_planes:=4 _hull:=convex \
+    >"$tmp/good_config_node.log" 2>&1 &  # line-buffered: read while it runs
 good=$!
 pids+=("$good")
 for _ in $(seq 200); do
@@ -94,8 +96,13 @@ for _ in $(seq 200); do
 done
 grep -q "projsurf_node: projector" "$tmp/good_config_node.log" ||
     { echo "run_node_test: the node did not start with a good ~config"; exit 1; }
+grep -qF "~max_planes is ignored by the paper method" "$tmp/good_config_node.log" ||
+    { echo "run_node_test: no warning for ~max_planes, which the paper method ignores"; exit 1; }
+if grep -qF "~hull is ignored" "$tmp/good_config_node.log"; then
+    echo "run_node_test: ~hull warned as ignored, but the paper method uses it"; exit 1
+fi
 kill -INT "$good" 2>/dev/null || true
-echo "run_node_test: ~config read (bad file refused naming the key, good file accepted)"
+echo "run_node_test: ~config read (bad file refused naming the key, good file accepted; ~max_planes warned as ignored)"
 
 # On demand, through the launch file (as a user starts it).
 ROS_NAMESPACE=/oneshot roslaunch projsurf projsurf.launch calib:="$tmp/calib.yaml" \
@@ -116,8 +123,9 @@ pids+=($!)
 "$build/projsurf_node" __ns:=/colour __name:=projsurf _calib:="$tmp/calib.yaml" _continuous:=true \
     _use_colour:=true >"$tmp/colour_node.log" 2>&1 &
 pids+=($!)
+# ~voxel_leaf: a paper-method setting the default method ignores, warned about at the start.
 "$build/projsurf_node" __ns:=/plain __name:=projsurf _calib:="$tmp/calib.yaml" _continuous:=true \
-    >"$tmp/plain_node.log" 2>&1 &
+    _voxel_leaf:=0.02 >"$tmp/plain_node.log" 2>&1 &
 pids+=($!)
 
 # ~explain: ~result carries every candidate plane and why it lost, on demand and continuous.
@@ -132,3 +140,5 @@ export PROJSURF_EXPLAIN_NS=/explain PROJSURF_EXPLAIN_CONTINUOUS_NS=/explain_cont
 export PROJSURF_ONESHOT_NS=/oneshot PROJSURF_MOVING_NS=/moving PROJSURF_STILL_NS=/still
 export PROJSURF_COLOUR_NS=/colour PROJSURF_PLAIN_NS=/plain
 timeout --signal=INT --kill-after=10 240 "$client" --gtest_filter='NodeTest.*:ColourNodeTest.*'
+grep -qF "~voxel_leaf is ignored by the default method" "$tmp/plain_node.log" ||
+    { echo "run_node_test: no warning for ~voxel_leaf, which the default method ignores"; exit 1; }

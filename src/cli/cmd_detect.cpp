@@ -18,13 +18,15 @@
 #include "projsurf/frontend/answer/detection_summary.hpp"
 #include "projsurf/frontend/inputs/bag_frames.hpp"
 #include "projsurf/frontend/inputs/depth_image_cloud.hpp"
+#include "projsurf/frontend/inputs/registered_colour.hpp"
 #include "projsurf/frontend/render/overlay.hpp"
 #include "projsurf/frontend/settings/aspect.hpp"
 #include "projsurf/frontend/settings/depth_range_check.hpp"
 #include "projsurf/frontend/settings/detector_config_file.hpp"
 #include "projsurf/frontend/settings/detector_config_keys.hpp"
 #include "projsurf/frontend/settings/gravity_choice.hpp"
-#include "projsurf/frontend/settings/gravity_sanity.hpp"
+#include "projsurf/frontend/settings/gravity_warnings.hpp"
+#include "projsurf/frontend/settings/ignored_settings.hpp"
 #include "projsurf/frontend/settings/method_settings.hpp"
 #include "projsurf/frontend/settings/method_words.hpp"
 #include "projsurf/frontend/settings/minimum_size.hpp"
@@ -45,14 +47,11 @@ struct DetectOptions {
     double min_width = -1.0, min_area = -1.0;  ///< m, m^2; < 0: the method's default (frontend/settings/minimum_size.hpp)
 };
 
-/// Options the chosen method does not use (frontend/settings/method_settings.hpp).
+/// Options the chosen method does not use (frontend/settings/ignored_settings.hpp).
 void warnIfIgnored(const CLI::App &sub, Method method) {
-    for (const std::string &setting : frontend::settingsIgnoredBy(method)) {
-        const std::string name = frontend::optionName(setting);
-        if (sub.get_option(name)->count() > 0)
-            std::fprintf(stderr, "projsurf: warning: %s is ignored by the %s method\n", name.c_str(),
-                         methodName(method));
-    }
+    auto given = [&](const std::string &setting) { return sub.get_option(frontend::optionName(setting))->count() > 0; };
+    for (const std::string &w : frontend::ignoredSettingWarnings(method, given, frontend::optionName))
+        std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
 }
 
 /// The pipeline flags bound to o.config, by the settings' shared names (frontend/settings/method_settings.hpp).
@@ -183,24 +182,19 @@ DetectInput readDetectInput(const DetectOptions &o) {
 
 void warnIfSuitabilityHasNoColour(const DetectOptions &o, const Cloud &cloud, Method method) {
     if (!o.suitability.empty() && o.suitability != "off" && !cloud.hasColour() && method == Method::Default)
-        std::fprintf(stderr,
-                     "projsurf: warning: --suitability %s needs registered colour (--rgb); the surface is judged by "
-                     "depth only\n",
-                     o.suitability.c_str());
+        std::fprintf(stderr, "projsurf: warning: %s\n",
+                     frontend::suitabilityWithoutColourWarning("--suitability " + o.suitability, "--rgb").c_str());
 }
+
+const frontend::GravityWords kGravityWords{"--gravity", "--gravity auto"};
 
 /// What the answer says about the gravity used (no floor for --gravity auto, a camera that is
 /// not level, a gravity that does not fit the cloud) and about the cloud's depth range.
 void warnAboutGravityAndDepth(const DetectOptions &o, const frontend::GravityChoice &gravity_choice,
                               const frontend::GravityDetection &answer, const Cloud &cloud) {
-    if (gravity_choice.from_floor && !answer.gravity.floor_found)
-        std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
-    else if (o.gravity.empty())
-        if (const auto w = frontend::levelCameraWarning("--gravity auto", cloud))
-            std::fprintf(stderr, "projsurf: warning: %s\n", w->c_str());
-    if (!o.gravity.empty() && !gravity_choice.from_floor)
-        for (const std::string &w : frontend::gravityWarnings("--gravity", gravity_choice.gravity, cloud))
-            std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
+    const frontend::GravityUsed used{gravity_choice, o.gravity.empty(), answer.gravity};
+    for (const std::string &w : frontend::gravityUsedWarnings(kGravityWords, used, cloud))
+        std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
     if (const auto w = frontend::depthRangeWarning(cloud, o.depth.empty() ? o.cloud : o.camera, !o.depth.empty()))
         std::fprintf(stderr, "projsurf: warning: %s\n", w->c_str());
 }

@@ -14,6 +14,7 @@
 #include "projsurf/frontend/settings/aspect.hpp"
 #include "projsurf/frontend/settings/detector_config_file.hpp"
 #include "projsurf/frontend/settings/gravity_choice.hpp"
+#include "projsurf/frontend/settings/gravity_warnings.hpp"
 #include "projsurf/io/files/errors.hpp"
 #include "projsurf/io/files/files.hpp"
 #include "projsurf/io/formats/cloud_io.hpp"
@@ -57,8 +58,10 @@ void run(const PlanCliOptions &o) {
     const frontend::GravityDetection answer = frontend::detectWithGravity(
         detector, cloud, choice, frontend::defaultMinimumSize(cfg.method),
         (o.cloud.empty() ? o.depth : o.cloud) + withSettings(o.config_file));
-    if (choice.from_floor && !answer.gravity.floor_found)
-        std::fprintf(stderr, "projsurf: warning: --gravity auto found no floor; assuming a level camera\n");
+    // detect's words on the gravity (only `auto` that found no floor: plan does not search the floor again).
+    const frontend::GravityUsed used{choice, o.gravity.empty(), answer.gravity};
+    for (const std::string &w : frontend::gravityUsedWarnings({"--gravity", "--gravity auto"}, used, cloud, false))
+        std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
     const Eigen::Vector3d gravity = answer.gravity.gravity;
     const Detection &today = answer.detection;
     const PlanResult r = planStand(cloud, projector, cfg, gravity, o.plan, today);

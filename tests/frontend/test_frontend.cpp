@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -19,6 +20,9 @@
 #include "projsurf/frontend/settings/aspect.hpp"
 #include "projsurf/frontend/settings/gravity_choice.hpp"
 #include "projsurf/frontend/settings/gravity_sanity.hpp"
+#include "projsurf/frontend/settings/gravity_warnings.hpp"
+#include "projsurf/frontend/settings/ignored_settings.hpp"
+#include "projsurf/frontend/settings/method_settings.hpp"
 #include "projsurf/frontend/settings/suitability_mode.hpp"
 #include "projsurf/io/files/errors.hpp"
 #include "projsurf/types/camera.hpp"
@@ -306,4 +310,42 @@ TEST(FrontendSummary, OneLineForAFoundAndANotFoundDetection) {
     det.orientation_deg = 10.04;
     det.timing_ms["total"] = 2.07;
     EXPECT_EQ(detectionSummary(det), "found 1.34 x 0.84 m (1.13 m^2) on a plane 2.00 m away at 10.0 deg in 2.1 ms");
+}
+
+// The warnings on the gravity used, one set of sentences for the CLI, Python and the node, each
+// naming the setting as its users write it (frontend/settings/gravity_warnings.hpp).
+TEST(FrontendGravityWarnings, NameTheFrontEndsSettingAndSearchTheFloorOnlyWhenAsked) {
+    Eigen::Vector3d down;
+    const Cloud room = pitchedRoom(25.0, down);
+    const GravityWords node{"~gravity", "~gravity auto"};
+    GravityUsed used;  // nothing given: a level camera, which the floor says is tilted 25 deg
+    used.level_assumed = true;
+    std::vector<std::string> w = gravityUsedWarnings(node, used, room);
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_EQ(w[0], *levelCameraWarning("~gravity auto", room));
+    EXPECT_NE(w[0].find("tilted 25 deg from level; give ~gravity auto"), std::string::npos) << w[0];
+    EXPECT_TRUE(gravityUsedWarnings(node, used, room, false).empty()) << "no floor search when not asked";
+    // A z-up world's down taken for the optical frame's.
+    used.level_assumed = false;
+    used.choice = parseGravityChoice("~gravity", "0,0,-1");
+    w = gravityUsedWarnings(node, used, room);
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_EQ(w[0].rfind("~gravity 0,0,-1 points along the camera's optical axis", 0), 0u) << w[0];
+    // auto with no floor in view: said on every cloud, no search needed.
+    used.choice = parseGravityChoice("~gravity", "auto");
+    used.resolved.floor_found = false;
+    w = gravityUsedWarnings(node, used, room, false);
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_EQ(w[0], "~gravity auto found no floor; assuming a level camera");
+    used.resolved.floor_found = true;
+    EXPECT_TRUE(gravityUsedWarnings(node, used, room).empty());
+}
+
+TEST(FrontendIgnoredSettings, OneSentenceSpelledAsEachFrontEndSpellsTheSetting) {
+    auto given = [](const std::string &s) { return s == "max_planes" || s == "voxel_leaf"; };
+    EXPECT_EQ(ignoredSettingWarnings(Method::Paper, given, optionName),
+              std::vector<std::string>{"--max-planes is ignored by the paper method"});
+    EXPECT_EQ(ignoredSettingWarnings(Method::Default, given, [](const std::string &s) { return "~" + s; }),
+              std::vector<std::string>{"~voxel_leaf is ignored by the default method"});
+    EXPECT_TRUE(ignoredSettingWarnings(Method::Default, [](const std::string &) { return false; }, optionName).empty());
 }

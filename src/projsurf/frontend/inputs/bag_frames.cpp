@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "projsurf/frontend/inputs/camera_info_intrinsics.hpp"
 #include "projsurf/frontend/inputs/depth_image_cloud.hpp"
 #include "projsurf/frontend/inputs/stamp_pairing.hpp"
 #include "projsurf/io/files/errors.hpp"
@@ -68,8 +69,7 @@ void visitDepthImages(const BagRequest &q, BagFrames &r, const BagFrameVisit &vi
         }
         if (!k) throw InputError(bag, "no camera_info on " + info_topic);
         const CameraIntrinsics cam =
-            pinholeCamera(source + " (camera_info)", static_cast<int>(k->width), static_cast<int>(k->height), k->K[0],
-                          k->K[4], k->K[2], k->K[5], 1000.0);  // 16UC1 is in mm (REP 118)
+            cameraInfoIntrinsics(source + " (camera_info)", k->width, k->height, k->K, m.encoding);
         visit(depthImageToCloud(source, m.depth, cam), info, r.topic);
     });
     if (unpaired > 0)

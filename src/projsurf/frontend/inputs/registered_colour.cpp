@@ -1,11 +1,16 @@
 #include "projsurf/frontend/inputs/registered_colour.hpp"
 
-#include "projsurf/detection/colour/colour_registration.hpp"
 #include "projsurf/io/files/errors.hpp"
 
 namespace projsurf::frontend {
 
 ColourAttachment attachRegisteredColour(Cloud &cloud, const cv::Mat &bgr, const std::string &source) {
+    return attachRegisteredColour(cloud, bgr, source,
+                                  [](const Cloud &c, const cv::Mat &m) { return checkColourRegistration(c, m); });
+}
+
+ColourAttachment attachRegisteredColour(Cloud &cloud, const cv::Mat &bgr, const std::string &source,
+                                        const RegistrationCheck &check) {
     if (bgr.depth() != CV_8U || bgr.channels() != 3) {
         const int bits = bgr.depth() == CV_8U ? 8 : bgr.depth() == CV_16U ? 16 : bgr.depth() == CV_32F ? 32 : 0;
         const std::string depth_png = bgr.depth() == CV_16U && bgr.channels() == 1 ? " (a depth PNG?)" : "";
@@ -24,7 +29,7 @@ ColourAttachment attachRegisteredColour(Cloud &cloud, const cv::Mat &bgr, const 
         throw InputError(source, "colour image is " + std::to_string(bgr.cols) + "x" + std::to_string(bgr.rows) +
                                      ", the cloud is " + std::to_string(cloud.width) + "x" +
                                      std::to_string(cloud.height));
-    const RegistrationResult r = checkColourRegistration(cloud, bgr);
+    const RegistrationResult r = check(cloud, bgr);
     if (r.checked && !r.registered) {
         out.warnings.push_back(source + ": colour is not registered to the depth (" + r.summary() + "); not used");
         return out;
@@ -34,6 +39,10 @@ ColourAttachment attachRegisteredColour(Cloud &cloud, const cv::Mat &bgr, const 
                                "); used as given");
     out.used = attachColour(cloud, bgr);
     return out;
+}
+
+std::string suitabilityWithoutColourWarning(const std::string &what, const std::string &colour_option) {
+    return what + " needs registered colour (" + colour_option + "); the surface is judged by depth only";
 }
 
 }  // namespace projsurf::frontend

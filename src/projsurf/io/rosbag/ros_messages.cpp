@@ -115,7 +115,8 @@ DepthImageMessage parseDepthImage(const std::string &bytes, const std::string &s
     DepthImageMessage out;
     out.header = header(r);
     const std::uint32_t height = r.u32(), width = r.u32();
-    const std::string encoding = r.string();
+    out.encoding = r.string();
+    const std::string &encoding = out.encoding;
     const bool big = r.u8() != 0;
     const std::uint32_t step = r.u32();
     std::size_t length = 0;

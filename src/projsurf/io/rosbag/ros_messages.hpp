@@ -28,6 +28,7 @@ struct CameraInfoMessage {
 /// A depth image message: CV_16UC1 (mm) or CV_32FC1 (m), host byte order.
 struct DepthImageMessage {
     RosHeader header;
+    std::string encoding;  ///< as the message gives it: 16UC1 or mono16 (mm), 32FC1 (m)
     cv::Mat depth;
 };
 
