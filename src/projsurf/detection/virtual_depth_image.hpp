@@ -7,17 +7,19 @@
 #include <optional>
 #include <vector>
 
+#include "projsurf/detection/pixel_lattice.hpp"
 #include "projsurf/types/cloud.hpp"
 
 namespace projsurf {
 
 struct VirtualImageConfig {
-    bool enabled = true;               ///< false: unorganized clouds take the sequential-RANSAC path
-    double max_half_angle_deg = 70.0;  ///< deg off the optical axis kept (the projector's beam is < 30)
+    bool enabled = true;               ///< unorganized clouds as a pinhole's depth image; false: sequential RANSAC
+    double max_half_angle_deg = 70.0;  ///< (0, 89] deg off the optical axis kept (the projector's beam is < 30)
     double fill =
-        1.0;  ///< clouds on no pixel grid: pixels per point over the covered view (1: the cloud's own density)
-    int max_pixels = 1 << 20;  ///< image size cap (about 1.3 x 1280x800)
-    int min_points = 500;      ///< fewer points in front of the camera: no image
+        1.0;  ///< (0, 16] clouds on no pixel grid: pixels per point over the covered view (1: the cloud's own density)
+    int max_pixels = 1 << 20;     ///< [1, 2^24] px, image size cap (about 1.3 x 1280x800)
+    int min_points = 500;         ///< [1, 2^24] fewer points in front of the camera: no image
+    PixelLatticeOptions lattice;  ///< how a cloud's own pixel grid (a depth image's) is recognised
 };
 
 struct VirtualDepthImage {
