@@ -3,6 +3,7 @@
 #include <pybind11/numpy.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
@@ -14,6 +15,7 @@
 #include "projsurf/frontend/settings/gravity_sanity.hpp"
 #include "projsurf/frontend/settings/method_settings.hpp"
 #include "projsurf/frontend/settings/method_words.hpp"
+#include "projsurf/frontend/settings/shared_settings.hpp"
 #include "projsurf/frontend/settings/suitability_mode.hpp"
 #include "projsurf/io/files/errors.hpp"
 
@@ -74,61 +76,38 @@ frontend::GravityChoice gravityFrom(const py::object &gravity) {
     return frontend::gravityChoiceFrom("gravity", g.data(), 3);
 }
 
-/// A pipeline setting by its CLI option's name and range (cmd_detect.cpp's CLI::Range checks).
-struct Setting {
-    const char *name;
-    double lo, hi;  ///< allowed range, the option's unit
-    bool whole;     ///< a count
-};
-constexpr Setting kSettings[] = {
-    {"max_tilt", 0.0, 1.5, false},
-    {"voxel_leaf", 0.001, 1.0, false},
-    {"ransac_distance", 0.001, 1.0, false},
-    {"max_outliers", 0.0, 1e9, true},
-    {"cell", 0.002, 0.5, false},
-    {"max_planes", 1.0, 20.0, true},
-    {"max_outlier_fraction", 0.0, 1.0, false},
-};
-
-double &settingIn(DetectorConfig &c, const std::string &name) {
-    static double unused = 0;
-    if (name == "max_tilt") return c.max_tilt;
-    if (name == "voxel_leaf") return c.paper.voxel_leaf;
-    if (name == "ransac_distance") return c.paper.ransac_distance;
-    if (name == "cell") return c.free_space.cell;
-    if (name == "max_outlier_fraction") return c.check.max_outlier_fraction;
-    return unused;
+/// A number as the text a config file would hold, for the key table to read: a whole number as
+/// written, any other number exactly, with ".0" when whole (a float is no count).
+std::string settingText(const py::handle &value, const char *name) {
+    if (!PyBool_Check(value.ptr()) && PyIndex_Check(value.ptr())) {
+        const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
+        if (index) return py::str(index).cast<std::string>();
+        PyErr_Clear();
+    }
+    char buffer[64];  // the shortest text that reads back exactly, as Python's repr writes it
+    std::string text(buffer, std::to_chars(buffer, buffer + sizeof buffer, numberArgument(value, name)).ptr);
+    if (text.find_first_of(".eEn") == std::string::npos) text += ".0";
+    return text;
 }
 
 const char *const kNamedArguments =
     "points, projector, aspect, gravity, method, hull, seed, min_width, min_area, suitability, colour, config, "
     "explain, overlay";
 
-/// Puts the keyword settings into `o`; returns the names given.
+/// Puts the keyword settings into `o`: each is a key of the table (frontend/settings/shared_settings.hpp),
+/// checked by it as the CLI's flag and the node's parameter are. Returns the names given.
 std::vector<std::string> applySettings(const py::dict &settings, DetectorOptions &o) {
+    const std::vector<std::string> &shared = frontend::sharedNumberSettings();
     std::vector<std::string> given;
     for (const auto &item : settings) {
         const std::string name = py::str(item.first).cast<std::string>();
-        const Setting *s = nullptr;
-        for (const Setting &k : kSettings)
-            if (name == k.name) s = &k;
-        if (!s) {
+        if (std::find(shared.begin(), shared.end(), name) == shared.end() || name == "seed") {
             std::string known = kNamedArguments;
-            for (const Setting &k : kSettings) known += std::string(", ") + k.name;
+            for (const std::string &k : shared)
+                if (k != "seed") known += ", " + k;
             throw InputError(name, "unknown keyword argument (known: " + known + ")");
         }
-        char range[80];
-        std::snprintf(range, sizeof range, "between %g and %g", s->lo, s->hi);
-        if (s->whole) {
-            const long long v =
-                wholeArgument(item.second, s->name, static_cast<long long>(s->lo), static_cast<long long>(s->hi));
-            (name == "max_planes" ? o.config.planes.max_planes : o.config.paper.max_outliers) = static_cast<int>(v);
-        } else {
-            const double v = numberArgument(item.second, s->name);
-            if (!(v >= s->lo && v <= s->hi))
-                throw InputError(name, std::string("must be ") + range + ", got " + describe(item.second));
-            settingIn(o.config, name) = v;
-        }
+        frontend::setSharedSetting(o.config, name, settingText(item.second, name.c_str()), name);
         given.push_back(name);
     }
     return given;
@@ -142,7 +121,7 @@ DetectorOptions detectorOptions(const DetectorArguments &a) {
     if (!a.aspect.is_none()) o.config.aspect = aspectFrom(a.aspect);
     if (!a.method.is_none()) o.config.method = frontend::parseMethod("method", wordArgument(a.method, "method"));
     if (!a.hull.is_none()) o.config.paper.hull = frontend::parseHull("hull", wordArgument(a.hull, "hull"));
-    if (!a.seed.is_none()) o.config.seed = static_cast<unsigned>(wholeArgument(a.seed, "seed", 0, 4294967295LL));
+    if (!a.seed.is_none()) frontend::setSharedSetting(o.config, "seed", settingText(a.seed, "seed"), "seed");
     const std::string method = methodName(o.config.method);
     if (!a.suitability.is_none()) {
         o.config.suitability.mode =

@@ -5,6 +5,7 @@ counterpart below; so a new CLI option without a Python one fails here. And prin
 import os
 import re
 import subprocess
+import warnings
 
 import pytest
 
@@ -186,3 +187,42 @@ def test_plan_and_correct_options_have_python_counterparts(command):
             missing.append(option)
     assert not missing, f"projsurf {command} options without a Python counterpart: {missing}"
     assert f"`{command}(" in readme
+
+
+def shared_settings():
+    """(keyword, option, whole, lo, hi) of each setting the front ends share by name, from
+    `projsurf detect --help`, whose lines give the key table's doc and range ("...; 0 to 1.5")."""
+    run = subprocess.run([CLI, "detect", "--help"], capture_output=True, text=True, timeout=60)
+    found = re.findall(r"^\s+(--[a-z-]+) (FLOAT|INT)\S*\s+[^\n]*; (-?[0-9.e+]+) to ([0-9.e+]+)$", run.stdout,
+                       re.MULTILINE)
+    return [(o[2:].replace("-", "_"), o, kind == "INT", float(lo), float(hi)) for o, kind, lo, hi in found]
+
+
+def edges(whole, lo, hi):
+    """(value, inside) at the ends of [lo, hi] and just outside them."""
+    step = 1 if whole else max(1e-3, (hi - lo) * 1e-3)
+    kind = int if whole else float
+    return [(kind(lo), True), (kind(hi), True), (kind(lo - step), False), (kind(hi + step), False)]
+
+
+def test_the_shared_settings_are_accepted_and_refused_alike_at_their_range_edges():
+    """The CLI and Python at each shared setting's range edges (the node: ros_params, the same
+    edges through its parameter translation), all checked by the one key table."""
+    settings = shared_settings()
+    assert [s[0] for s in settings] == ["max_tilt", "seed", "voxel_leaf", "ransac_distance", "max_outliers", "cell",
+                                        "max_planes", "max_outlier_fraction"]
+    for keyword, option, whole, lo, hi in settings:
+        for value, inside in edges(whole, lo, hi):
+            cli = subprocess.run([CLI, "detect", "--print-config", option, repr(value)], capture_output=True,
+                                 text=True, timeout=60)
+            assert (cli.returncode == 0) == inside, (option, value, cli.stderr)
+            try:
+                with warnings.catch_warnings():  # "voxel_leaf is ignored by the default method"
+                    warnings.simplefilter("ignore", UserWarning)
+                    projsurf.print_config(**{keyword: value})
+                python = None
+            except projsurf.InputError as e:
+                python = str(e)
+            assert (python is None) == inside, (keyword, value, python)
+            if not inside:  # the one message, from the key table
+                assert cli.stderr == f"projsurf: error: {option}: {python.split(': ', 1)[1]}\n", (cli.stderr, python)

@@ -178,9 +178,9 @@ def test_the_clis_pipeline_settings_under_the_same_names(projector):
     cli = run_cli("detect", "--depth", depth, "--camera", camera, "--calib", EXAMPLE_CALIB, "--hull", "convex")
     assert "projsurf: warning: --hull is ignored by the default method" in cli.stderr
     # Out of range, of the wrong type, or a name that is none of them: one line naming it.
-    with pytest.raises(projsurf.InputError, match=r"^cell: must be between 0.002 and 0.5, got a float 0.9$"):
+    with pytest.raises(projsurf.InputError, match=r"^cell: must be a number from 0.002 to 0.5, got '0.9'$"):
         projsurf.detect(points, projector, cell=0.9)
-    with pytest.raises(projsurf.InputError, match=r"^max_planes: expected a whole number between 1 and 20"):
+    with pytest.raises(projsurf.InputError, match=r"^max_planes: must be a whole number from 1 to 20, got '2.5'$"):
         projsurf.detect(points, projector, max_planes=2.5)
     with pytest.raises(projsurf.InputError, match=r"^aspcet: unknown keyword argument \(known: points, projector, aspect,"):
         projsurf.detect(points, projector, aspcet="16:9")

@@ -76,7 +76,7 @@ def test_wrong_types_are_short_input_errors(projector, detection):
     picture = np.zeros((10, 10, 3), np.uint8)
     cases = [
         (lambda: projsurf.detect(cloud, "projector"), "projector: expected a projsurf.Projector"),
-        (lambda: projsurf.detect(cloud, projector, seed=-1), "seed: expected a whole number"),
+        (lambda: projsurf.detect(cloud, projector, seed=-1), "seed: must be a whole number"),
         (lambda: projsurf.detect(cloud, projector, method=3), "method: expected a str"),
         (lambda: projsurf.Detector("projector"), "projector: expected a projsurf.Projector"),
         (lambda: projsurf.keystone(projector, detection, "640x480"), "picture_size: expected two numbers"),

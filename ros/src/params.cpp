@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <vector>
 
 #include "projsurf/frontend/settings/aspect.hpp"
 #include "projsurf/frontend/settings/detector_config_file.hpp"
 #include "projsurf/frontend/settings/method_words.hpp"
+#include "projsurf/frontend/settings/shared_settings.hpp"
 #include "projsurf/frontend/settings/suitability_mode.hpp"
 #include "projsurf/io/files/errors.hpp"
 #include "projsurf/io/yaml/yaml_files.hpp"
@@ -109,18 +111,10 @@ void loadDetectorChoices(const ros::NodeHandle &pnh, NodeParams &p) {
 
 /// The CLI's pipeline options (projsurf detect --voxel-leaf ... -> ~voxel_leaf ...).
 void loadPipelineParams(const ros::NodeHandle &pnh, DetectorConfig &c) {
-    getPositive(pnh, "max_tilt", c.max_tilt);
-    int seed = static_cast<int>(c.seed);
-    getCount(pnh, "seed", seed, 0);
-    c.seed = static_cast<unsigned>(seed);
-    getPositive(pnh, "voxel_leaf", c.paper.voxel_leaf);
-    getPositive(pnh, "ransac_distance", c.paper.ransac_distance);
-    getCount(pnh, "max_outliers", c.paper.max_outliers, 0);
-    getPositive(pnh, "cell", c.free_space.cell);
-    getCount(pnh, "max_planes", c.planes.max_planes, 1);
-    getNumber(pnh, "max_outlier_fraction", c.check.max_outlier_fraction);
-    if (c.check.max_outlier_fraction < 0.0 || c.check.max_outlier_fraction > 1.0)
-        throw InputError(name(pnh, "max_outlier_fraction"), "must be within [0, 1]");
+    for (const std::string &setting : frontend::sharedNumberSettings()) {
+        XmlRpc::XmlRpcValue value;
+        if (pnh.getParam(setting, value)) setSharedParam(c, setting, value, name(pnh, setting));
+    }
 }
 
 /// The smallest picture worth showing: the method's default, or ~min_width / ~min_area.
@@ -154,7 +148,31 @@ void loadFrameAndSteadyParams(const ros::NodeHandle &pnh, NodeParams &p) {
     get(pnh, "marker_ns", p.marker_ns);
 }
 
+/// The parameter as the text a config file would hold: a whole double as a whole number (a
+/// seed of 3e9 given as 3000000000.0), other doubles exactly.
+std::string paramText(const XmlRpc::XmlRpcValue &value, const std::string &what) {
+    XmlRpc::XmlRpcValue v = value;  // the conversions are not const
+    switch (v.getType()) {
+    case XmlRpc::XmlRpcValue::TypeInt: return std::to_string(static_cast<int>(v));
+    case XmlRpc::XmlRpcValue::TypeString: return static_cast<std::string>(v);
+    case XmlRpc::XmlRpcValue::TypeDouble: {
+        const double d = static_cast<double>(v);
+        char text[64];
+        std::snprintf(text, sizeof text,
+                      std::isfinite(d) && d == std::trunc(d) && std::abs(d) < 1e15 ? "%.0f" : "%.17g", d);
+        return text;
+    }
+    default: break;
+    }
+    throw InputError(what, "must be a number");
+}
+
 }  // namespace
+
+void setSharedParam(DetectorConfig &config, const std::string &setting, const XmlRpc::XmlRpcValue &value,
+                    const std::string &what) {
+    frontend::setSharedSetting(config, setting, paramText(value, what), what);
+}
 
 NodeParams loadParams(const ros::NodeHandle &pnh) {
     NodeParams p;

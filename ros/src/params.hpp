@@ -66,4 +66,11 @@ struct NodeParams {
 /// parameter (or the calibration file) and the problem.
 NodeParams loadParams(const ros::NodeHandle &pnh);
 
+/// One of the settings the front ends share by name (frontend/settings/shared_settings.hpp), ~max_tilt
+/// and the like, from its parameter value (an int, a double, or a string for a seed beyond an
+/// XML-RPC int): the key table's check, as `detect --max-tilt` and Python's max_tilt=; throws
+/// InputError(what, ...).
+void setSharedParam(DetectorConfig &config, const std::string &setting, const XmlRpc::XmlRpcValue &value,
+                    const std::string &what);
+
 }  // namespace projsurf::ros_node

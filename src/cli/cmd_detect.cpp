@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -30,6 +31,7 @@
 #include "projsurf/frontend/settings/method_settings.hpp"
 #include "projsurf/frontend/settings/method_words.hpp"
 #include "projsurf/frontend/settings/minimum_size.hpp"
+#include "projsurf/frontend/settings/shared_settings.hpp"
 #include "projsurf/frontend/settings/suitability_mode.hpp"
 #include "projsurf/io/files/errors.hpp"
 #include "projsurf/io/files/files.hpp"
@@ -43,8 +45,8 @@ struct DetectOptions {
     std::string cloud, depth, camera, rgb, calib, aspect, json, overlay, gravity,
         method = "default", hull = "concave", bag, topic, info_topic, suitability, config_file;
     bool print_config = false, explain = false, steady = false;
-    DetectorConfig config;                     ///< the pipeline flags' values (used where a flag was given)
-    double min_width = -1.0, min_area = -1.0;  ///< m, m^2; < 0: the method's default (frontend/settings/minimum_size.hpp)
+    std::map<std::string, std::string> shared;  ///< the pipeline flags' words, by the settings' shared names
+    double min_width = -1.0, min_area = -1.0;   ///< m, m^2; < 0: the method's default (frontend/settings/minimum_size.hpp)
 };
 
 /// Options the chosen method does not use (frontend/settings/ignored_settings.hpp).
@@ -54,9 +56,14 @@ void warnIfIgnored(const CLI::App &sub, Method method) {
         std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
 }
 
-/// The pipeline flags bound to o.config, by the settings' shared names (frontend/settings/method_settings.hpp).
-constexpr const char *kConfigFlags[] = {"max_tilt",     "seed", "voxel_leaf", "ransac_distance",
-                                        "max_outliers", "cell", "max_planes", "max_outlier_fraction"};
+/// "paper: " for a setting only the paper method uses, "default: " for one only the default uses.
+std::string methodOf(const std::string &setting) {
+    auto ignoredBy = [&](Method method) {
+        const std::vector<std::string> ignored = frontend::settingsIgnoredBy(method);
+        return std::find(ignored.begin(), ignored.end(), setting) != ignored.end();
+    };
+    return ignoredBy(Method::Default) ? "paper: " : ignoredBy(Method::Paper) ? "default: " : "";
+}
 
 /// The detector's settings: the defaults, then --config's file, then the flags given.
 DetectorConfig detectorConfig(const DetectOptions &o, const CLI::App &sub) {
@@ -67,9 +74,9 @@ DetectorConfig detectorConfig(const DetectOptions &o, const CLI::App &sub) {
     if (given("hull")) cfg.paper.hull = frontend::parseHull("--hull", o.hull);
     if (given("suitability")) cfg.suitability.mode = frontend::parseSuitabilityMode("--suitability", o.suitability);
     if (!o.aspect.empty()) cfg.aspect = frontend::parseAspect("--aspect", o.aspect);
-    for (const char *setting : kConfigFlags)
+    for (const std::string &setting : frontend::sharedNumberSettings())
         if (given(setting))
-            frontend::copyConfigValue(o.config, cfg, *frontend::findConfigKey(frontend::configKeyOfSetting(setting)));
+            frontend::setSharedSetting(cfg, setting, o.shared.at(setting), frontend::optionName(setting));
     return cfg;
 }
 
@@ -289,20 +296,13 @@ void addDetectCommand(CLI::App &app) {
     sub->add_flag("--print-config", o->print_config,
                   "Write the detector settings in effect (defaults, then --config, then the flags) as YAML to "
                   "stdout and exit; nothing else is needed or read");
-    auto &c = o->config;
-    sub->add_option("--max-tilt", c.max_tilt, "Vertical tolerance, rad (paper 3.2.1)")->check(CLI::Range(0.0, 1.5));
-    sub->add_option("--seed", c.seed, "RANSAC random seed");
-    sub->add_option("--voxel-leaf", c.paper.voxel_leaf, "paper: voxel side, m")->check(CLI::Range(0.001, 1.0));
-    sub->add_option("--ransac-distance", c.paper.ransac_distance, "paper: RANSAC inlier distance, m")
-        ->check(CLI::Range(0.001, 1.0));
-    sub->add_option("--max-outliers", c.paper.max_outliers, "paper: outliers that reject a surface")
-        ->check(CLI::NonNegativeNumber);
-    sub->add_option("--cell", c.free_space.cell, "default: free-space raster cell, m")->check(CLI::Range(0.002, 0.5));
-    sub->add_option("--max-planes", c.planes.max_planes, "default: vertical planes considered")
-        ->check(CLI::Range(1, 20));
-    sub->add_option("--max-outlier-fraction", c.check.max_outlier_fraction,
-                    "default: outlier share that rejects an area")
-        ->check(CLI::Range(0.0, 1.0));
+    // The shared settings: doc and range from the key table, checked by it in detectorConfig().
+    for (const std::string &setting : frontend::sharedNumberSettings()) {
+        const frontend::ConfigKey &key = frontend::sharedSettingKey(setting);
+        sub->add_option(frontend::optionName(setting), o->shared[setting],
+                        methodOf(setting) + frontend::sharedSettingHelp(setting))
+            ->type_name(key.type == frontend::KeyType::Double ? "FLOAT" : "INT");
+    }
     sub->callback([o, sub] { run(*o, *sub); });
 }
 

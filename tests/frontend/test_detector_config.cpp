@@ -10,6 +10,7 @@
 #include "projsurf/frontend/settings/detector_config_file.hpp"
 #include "projsurf/frontend/settings/detector_config_keys.hpp"
 #include "projsurf/frontend/settings/method_settings.hpp"
+#include "projsurf/frontend/settings/shared_settings.hpp"
 #include "projsurf/io/files/errors.hpp"
 
 namespace fs = std::filesystem;
@@ -76,6 +77,23 @@ SettingText otherValue(const DetectorConfig &c, const ConfigKey &key) {
 
 void write(const fs::path &path, const std::string &text) { std::ofstream(path, std::ios::binary) << text; }
 
+/// `|` inside a cell of a Markdown table.
+std::string cell(std::string text) {
+    for (std::size_t at = 0; (at = text.find('|', at)) != std::string::npos; at += 2) text.insert(at, "\\");
+    return text;
+}
+
+/// The key's row in docs/interface.md: key, type and range, default, doc.
+std::string keyTableRow(const ConfigKey &k) {
+    const SettingText v = configValue(DetectorConfig{}, k);
+    std::string value;
+    for (const std::string &item : v.items)
+        value += (value.empty() ? "" : ", ") + (v.quoted ? "\"" + item + "\"" : item);
+    if (v.sequence) value = "[" + value + "]";
+    return "| `" + k.key + "` | " + keyTypeName(k.type) + ": " + cell(keyRangeText(k)) + " | `" + value + "` | " +
+           cell(k.doc) + " |";
+}
+
 /// The one-line message readDetectorConfig throws for a file holding `text`.
 std::string refusal(const fs::path &dir, const std::string &text) {
     const fs::path path = dir / "detector.yaml";
@@ -94,7 +112,7 @@ std::string refusal(const fs::path &dir, const std::string &text) {
 
 TEST(DetectorConfigKeys, EveryKeyIsUniqueDocumentedAndReachesItsOwnField) {
     const std::vector<ConfigKey> &keys = detectorConfigKeys();
-    EXPECT_EQ(keys.size(), 120u);  // every field of DetectorConfig and the structs it nests
+    EXPECT_EQ(keys.size(), 125u);  // every setting field of DetectorConfig and the structs it nests
     std::set<std::string> names;
     for (const ConfigKey &k : keys) {
         EXPECT_TRUE(names.insert(k.key).second) << k.key << " twice";
@@ -125,6 +143,50 @@ TEST(DetectorConfigKeys, TheFrontEndsSharedSettingNamesHaveKeys) {
     EXPECT_EQ(configKeyOfSetting("max_planes"), "planes.max_planes");
     EXPECT_EQ(configKeyOfSetting("voxel_leaf"), "paper.voxel_leaf");
     EXPECT_EQ(configKeyOfSetting("no_such_setting"), "");
+    for (const std::string &setting : sharedNumberSettings())
+        EXPECT_EQ(sharedSettingKey(setting).key, configKeyOfSetting(setting)) << setting;
+}
+
+TEST(DetectorConfigKeys, TheDeadRegionTiltIsNoKey) {
+    // The default method sets planes.regions.max_tilt from max_tilt: a key would do nothing.
+    EXPECT_EQ(findConfigKey("planes.regions.max_tilt"), nullptr);
+    EXPECT_NE(findConfigKey("max_tilt"), nullptr);
+}
+
+TEST(DetectorConfigKeys, TheKeysTakeRangeAndDocFromTheirDeclaration) {
+    // detection/detector_config.hpp: `int max_planes = 4;  ///< [1, 20] vertical planes tried, ...`
+    const ConfigKey *k = findConfigKey("planes.max_planes");
+    ASSERT_NE(k, nullptr);
+    EXPECT_EQ(k->type, KeyType::Int);
+    EXPECT_EQ(k->range.lo, 1.0);
+    EXPECT_EQ(k->range.hi, 20.0);
+    EXPECT_EQ(k->doc.rfind("vertical planes tried", 0), 0u) << k->doc;
+    const ConfigKey *fill = findConfigKey("planes.regions.min_fill");  // (0, 1]
+    ASSERT_NE(fill, nullptr);
+    EXPECT_TRUE(fill->range.lo_open);
+    EXPECT_EQ(keyRangeText(*findConfigKey("seed")), "0 to 4294967295");
+    EXPECT_EQ(keyRangeText(*findConfigKey("wall.refit_min_turn")), "0 to 1.570796327");  // [0, pi/2]
+}
+
+TEST(SharedSettings, EachIsCheckedByItsKeyWithTheOneMessage) {
+    DetectorConfig c;
+    setSharedSetting(c, "max_tilt", "0", "~max_tilt");
+    EXPECT_EQ(c.max_tilt, 0.0);
+    setSharedSetting(c, "seed", "4294967295", "~seed");
+    EXPECT_EQ(c.seed, 4294967295u);
+    setSharedSetting(c, "max_planes", "20", "--max-planes");
+    EXPECT_EQ(c.planes.max_planes, 20);
+    try {
+        setSharedSetting(c, "max_tilt", "2", "~max_tilt");
+        FAIL() << "2 rad accepted";
+    } catch (const InputError &e) {
+        EXPECT_STREQ(e.what(), "~max_tilt: must be a number from 0 to 1.5, got '2'");
+    }
+    EXPECT_THROW(setSharedSetting(c, "seed", "4294967296", "seed"), InputError);
+    EXPECT_THROW(setSharedSetting(c, "max_planes", "2.0", "max_planes"), InputError);
+    EXPECT_THROW(setSharedSetting(c, "cell", "nan", "cell"), InputError);
+    EXPECT_EQ(c.max_tilt, 0.0);  // refused values change nothing
+    EXPECT_NE(sharedSettingHelp("max_tilt").find("0 to 1.5"), std::string::npos) << sharedSettingHelp("max_tilt");
 }
 
 TEST(DetectorConfigFile, PrintedConfigReadsBackToTheSameConfig) {
@@ -289,32 +351,21 @@ TEST(DetectorConfigFile, TheShippedExampleIsTheDefaultsAsPrinted) {
         << "regenerate it: projsurf detect --print-config > config/detector.yaml";
 }
 
-TEST(DetectorConfigFile, TheInterfaceDocumentListsEveryKey) {
+TEST(DetectorConfigFile, TheInterfaceDocumentsTableIsTheDeclaredOne) {
+    // docs/interface.md's key table, row for row, as the declarations give it; on a difference
+    // the table to paste is written beside the test's temporary files.
+    std::string expected;
+    for (const ConfigKey &k : detectorConfigKeys()) expected += keyTableRow(k) + "\n";
     const std::string doc = slurp(fs::path(PROJSURF_SOURCE_DIR) / "docs/interface.md");
-    for (const ConfigKey &k : detectorConfigKeys())
-        EXPECT_NE(doc.find("| `" + k.key + "` | " + keyTypeName(k.type) + ": "), std::string::npos)
-            << k.key << " is not in docs/interface.md's key table";
-}
-
-TEST(DetectorConfigKeys, AFieldAddedToTheConfigIsNoticed) {
-    // The sizes of the structs the table covers, as it was written (64-bit, libstdc++). A new
-    // field changes one: give it a key in frontend/settings/detector_config_keys.cpp (the docs' table
-    // and config/detector.yaml follow from --print-config), then its new size here.
-    if (sizeof(void *) != 8 || sizeof(std::vector<double>) != 24) GTEST_SKIP() << "sizes recorded for 64-bit only";
-    const std::vector<std::pair<std::size_t, std::size_t>> sizes = {
-        {sizeof(DetectorConfig), 888},     {sizeof(DepthTolerance), 48},      {sizeof(VirtualImageConfig), 32},
-        {sizeof(PlaneSearchConfig), 128},  {sizeof(PlanarRegionOptions), 64}, {sizeof(WallConfig), 160},
-        {sizeof(WallShapeOptions), 104},   {sizeof(WallReliefOptions), 56},   {sizeof(ObjectFaceConfig), 120},
-        {sizeof(FaceSurroundOptions), 64}, {sizeof(FreeStandingRule), 40},    {sizeof(FreeSpaceConfig), 136},
-        {sizeof(SurfaceCheckConfig), 8},   {sizeof(SuitabilityConfig), 160},  {sizeof(SuitabilityOptions), 144},
-        {sizeof(PaperConfig), 64},         {sizeof(ProudEvidence), 48},       {sizeof(StepEvidence), 48},
-    };
-    const char *names[] = {"DetectorConfig",      "DepthTolerance",      "VirtualImageConfig", "PlaneSearchConfig",
-                           "PlanarRegionOptions", "WallConfig",          "WallShapeOptions",   "WallReliefOptions",
-                           "ObjectFaceConfig",    "FaceSurroundOptions", "FreeStandingRule",   "FreeSpaceConfig",
-                           "SurfaceCheckConfig",  "SuitabilityConfig",   "SuitabilityOptions", "PaperConfig",
-                           "ProudEvidence",       "StepEvidence"};
-    for (std::size_t i = 0; i < sizes.size(); ++i)
-        EXPECT_EQ(sizes[i].first, sizes[i].second)
-            << names[i] << " changed size: a field added or removed needs its key in the table";
+    const std::string header = "| key | type: accepts | default | what (unit first) |\n|---|---|---|---|\n";
+    const std::size_t begin = doc.find(header);
+    ASSERT_NE(begin, std::string::npos) << "docs/interface.md has no key table";
+    std::size_t end = begin + header.size();
+    while (end < doc.size() && doc.compare(end, 3, "| `") == 0) end = doc.find('\n', end) + 1;
+    const std::string documented = doc.substr(begin + header.size(), end - begin - header.size());
+    if (documented != expected) {
+        const fs::path out = fs::temp_directory_path() / "projsurf_interface_keys.md";
+        write(out, header + expected);
+        FAIL() << "docs/interface.md's key table differs from the declarations: paste " << out.string();
+    }
 }

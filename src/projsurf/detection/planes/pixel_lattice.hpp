@@ -6,6 +6,8 @@
 #include <optional>
 #include <vector>
 
+#include "projsurf/detection/detector_config.hpp"
+
 namespace projsurf {
 
 struct PixelLattice {
@@ -15,16 +17,6 @@ struct PixelLattice {
 
     /// The column of a value (may lie outside [0, count) for a value not in the lattice's sample).
     double index(double value) const { return (value - origin) / step; }
-};
-
-struct PixelLatticeOptions {
-    double tolerance =
-        5e-5;  ///< x/z, a gap this small within a column's values (float rounding, a PCD's printed decimals)
-    double max_residual = 0.15;  ///< of a step: a value further off the lattice is not on it
-    double max_off = 0.01;       ///< share of the values that may lie off it (stray points)
-    int min_columns = 16;        ///< fewer distinct columns: too few to tell a lattice
-    int max_columns = 8192;      ///< more: no depth image this wide
-    int max_samples = 1 << 16;   ///< values looked at (evenly strided)
 };
 
 /// The lattice the values lie on (all but max_off of them), from the first to the last column

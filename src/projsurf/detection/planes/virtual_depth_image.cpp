@@ -33,7 +33,7 @@ struct ImageLayout {
 /// on none (another viewpoint, a voxel grid, merged scans).
 std::optional<ImageLayout> latticeLayout(const std::vector<float> &us, const std::vector<float> &vs,
                                          const VirtualImageConfig &config) {
-    const auto lu = pixelLattice(us), lv = pixelLattice(vs);
+    const auto lu = pixelLattice(us, config.lattice), lv = pixelLattice(vs, config.lattice);
     if (!lu || !lv || static_cast<double>(lu->count) * lv->count > std::max(config.max_pixels, 64)) return std::nullopt;
     ImageLayout l;
     l.fu = 1.0 / lu->step;

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <charconv>
-#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <optional>
 
 #include "projsurf/frontend/settings/aspect.hpp"
+#include "projsurf/frontend/settings/detector_config_table.hpp"
 #include "projsurf/frontend/settings/method_words.hpp"
 #include "projsurf/frontend/settings/suitability_mode.hpp"
 #include "projsurf/io/files/errors.hpp"
@@ -17,269 +17,7 @@ namespace projsurf::frontend {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::max();
-constexpr double kHalfPi = 1.5707963267948966;
 constexpr std::size_t kMaxListItems = 16;
-
-constexpr KeyRange from(double lo, double hi) { return {lo, hi, false}; }
-constexpr KeyRange above(double lo, double hi = kInf) { return {lo, hi, true}; }
-// Every number is bounded both ways, by what it means: an unbounded "> 0" let 1e-300 and 1e300
-// through to an OpenCV assertion (wall.shape.relief.node_px, sigma_px).
-constexpr KeyRange kBands = from(0.01, 100.0);        ///< multiples of an inlier band, a noise, a spread
-constexpr KeyRange kMetres = from(0.0001, 10.0);      ///< m, a length that must be positive
-constexpr KeyRange kMetresOrZero = from(0.0, 10.0);   ///< m, a length or none
-constexpr KeyRange kArea = from(0.0, 100.0);          ///< m^2
-constexpr KeyRange kShare = from(0.0, 1.0);
-constexpr KeyRange kAngle = from(0.0, kHalfPi);  ///< rad, 0 to 90 deg
-constexpr KeyRange kAny{};
-/// Counts that size a buffer stay within a depth image's pixels (io/files/limits.hpp: 2^24).
-constexpr double kMaxCount = double(1 << 24);
-
-template <typename T>
-constexpr KeyType typeOf() {
-    if constexpr (std::is_same_v<T, bool>) return KeyType::Bool;
-    if constexpr (std::is_same_v<T, int>) return KeyType::Int;
-    if constexpr (std::is_same_v<T, unsigned>) return KeyType::Unsigned;
-    if constexpr (std::is_same_v<T, double>) return KeyType::Double;
-    if constexpr (std::is_same_v<T, std::vector<double>>) return KeyType::DoubleList;
-    return KeyType::Word;
-}
-
-template <typename T>
-ConfigKey makeKey(const char *name, ConfigField<T> field, KeyRange range, const char *doc) {
-    return ConfigKey{name, typeOf<T>(), range, doc, ConfigAccess{field}};
-}
-
-// The key is the field's path itself (#path), so that it cannot drift from the struct.
-#define PROJSURF_KEY(T, path, range, doc) \
-    makeKey<T>(                           \
-        #path, [](DetectorConfig &c) -> T & { return c.path; }, range, doc)
-
-std::vector<ConfigKey> topKeys() {
-    return {
-        PROJSURF_KEY(Method, method, kAny, "the detection method; paper: the paper's steps, for reproduction"),
-        ConfigKey{"aspect", KeyType::Double, from(0.0, 100.0),
-                  "picture width / height, or \"W:H\"; 0 = the projector framebuffer's",
-                  AspectField{[](DetectorConfig &c) -> double & { return c.aspect; }}},
-        PROJSURF_KEY(double, max_tilt, from(0.0, 1.5), "rad, plane normal vs horizontal (contract; paper 3.2.1)"),
-        PROJSURF_KEY(unsigned, seed, from(0.0, 4294967295.0), "RANSAC random seed (runs are deterministic)"),
-    };
-}
-
-std::vector<ConfigKey> toleranceKeys() {
-    return {
-        PROJSURF_KEY(double, tolerance.noise_k, from(1e-6, 1.0), "1/m, depth noise sigma_z = k z^2 (K&OE 2012, Kinect v1)"),
-        PROJSURF_KEY(double, tolerance.sigmas, kBands, "inlier band in sigmas of the depth noise"),
-        PROJSURF_KEY(double, tolerance.min_band, kMetres, "m, band floor (flat posters, 3 mm proud, stay inliers)"),
-        PROJSURF_KEY(double, tolerance.max_band, kMetres, "m, band ceiling (beyond 4 m the Kinect is out of range)"),
-        PROJSURF_KEY(double, tolerance.obstacle_bands, kBands,
-                     "beyond this many bands a point is an obstacle or hole"),
-        PROJSURF_KEY(double, tolerance.min_obstacle, kMetresOrZero, "m, and at least this far (paper 3.2.3 uses 0.05)"),
-    };
-}
-
-std::vector<ConfigKey> unorganizedKeys() {
-    return {
-        PROJSURF_KEY(bool, unorganized.enabled, kAny,
-                     "unorganized clouds as a pinhole's depth image; false: sequential RANSAC"),
-        PROJSURF_KEY(double, unorganized.max_half_angle_deg, above(0.0, 89.0),
-                     "deg off the optical axis kept (the projector's beam is < 30)"),
-        PROJSURF_KEY(double, unorganized.fill, above(0.0, 16.0),
-                     "pixels per point over the covered view (1: the cloud's own density)"),
-        PROJSURF_KEY(int, unorganized.max_pixels, from(1, kMaxCount), "image size cap, px (about 1.3 x 1280x800)"),
-        PROJSURF_KEY(int, unorganized.min_points, from(1, kMaxCount), "fewer points in front of the camera: no image"),
-    };
-}
-
-std::vector<ConfigKey> planeKeys() {
-    return {
-        PROJSURF_KEY(bool, planes.image_regions, kAny, "organized clouds: planar regions instead of RANSAC"),
-        PROJSURF_KEY(int, planes.regions.cell, from(1, 256), "grid elements per cell side (8 at the 2-px grid: 16 px)"),
-        PROJSURF_KEY(double, planes.regions.min_fill, above(0.0, 1.0),
-                     "share of a cell's points that must be readings"),
-        PROJSURF_KEY(double, planes.regions.thickness_bands, kBands,
-                     "a flat cell is thinner (RMS off its plane) than this many inlier bands"),
-        PROJSURF_KEY(double, planes.regions.seed_tilt, kAngle,
-                     "rad, a region starts from a cell whose normal is within this of horizontal"),
-        PROJSURF_KEY(double, planes.regions.max_tilt, kAngle, "rad, a region's plane within this of horizontal"),
-        PROJSURF_KEY(double, planes.regions.join_bands, kBands,
-                     "a neighbour cell joins below this RMS distance to the region's plane, in bands"),
-        PROJSURF_KEY(int, planes.regions.min_cells, from(1, kMaxCount), "smaller regions are not surfaces, cells"),
-        PROJSURF_KEY(double, planes.regions.merge_angle, kAngle,
-                     "rad, regions this parallel within each other's obstacle margin are one"),
-        PROJSURF_KEY(int, planes.target_samples, from(3, kMaxCount), "points kept for the RANSAC search, measured"),
-        PROJSURF_KEY(int, planes.max_planes, from(1, 20), "vertical planes tried, biggest first"),
-        PROJSURF_KEY(int, planes.min_plane_points, from(3, kMaxCount), "sampled inliers for a plane to count"),
-        PROJSURF_KEY(int, planes.ransac_iterations, from(1, 1e6),
-                     "hypotheses per plane (adaptive stop usually earlier)"),
-        PROJSURF_KEY(int, planes.score_subset, from(3, kMaxCount), "points a hypothesis is scored on, measured"),
-        PROJSURF_KEY(double, planes.max_sample_span, kMetres,
-                     "m, the 2nd and 3rd point of a hypothesis within this of the 1st"),
-        PROJSURF_KEY(int, planes.refine_rounds, from(0, 100), "least-squares refits of each plane on its inliers"),
-        PROJSURF_KEY(double, planes.merge_angle, kAngle,
-                     "rad, a plane this parallel to a found one, within its margin, is a slice of it"),
-        PROJSURF_KEY(double, planes.min_region_share, kShare,
-                     "share of readings: depth images whose regions hold less also run the RANSAC search"),
-    };
-}
-
-std::vector<ConfigKey> wallKeys() {
-    return {
-        PROJSURF_KEY(bool, wall.fit_shape, kAny, "follow the smooth bend real depth cameras give a flat wall"),
-        PROJSURF_KEY(double, wall.shape.capture_bands, kBands, "points within this many inlier bands take part"),
-        PROJSURF_KEY(double, wall.shape.tukey_bands, kBands, "Tukey biweight width, in inlier bands"),
-        PROJSURF_KEY(int, wall.shape.iterations, from(1, 100), "reweighted least-squares rounds"),
-        PROJSURF_KEY(int, wall.shape.min_points, from(6, kMaxCount), "fewer points: the wall stays flat"),
-        PROJSURF_KEY(int, wall.shape.max_points, from(6, kMaxCount), "more are thinned evenly, measured"),
-        PROJSURF_KEY(double, wall.shape.max_bend, kMetres, "m, a larger fitted bend anywhere is refused"),
-        PROJSURF_KEY(double, wall.shape.bend_per_z2, from(0.0, 10.0), "1/m, or more than this times depth^2 there"),
-        PROJSURF_KEY(bool, wall.shape.relief.enabled, kAny, "fit the relief (features of a few tens of px) too"),
-        PROJSURF_KEY(double, wall.shape.relief.node_px, from(1.0, 1000.0), "px at the wall's depth between relief nodes"),
-        PROJSURF_KEY(double, wall.shape.relief.sigma_px, from(0.5, 1000.0), "px, the relief's Gaussian sigma"),
-        PROJSURF_KEY(double, wall.shape.relief.tukey_bands, kBands, "Tukey biweight width in inlier bands"),
-        PROJSURF_KEY(int, wall.shape.relief.rounds, from(1, 100), "reweighting rounds"),
-        PROJSURF_KEY(double, wall.shape.relief.min_weight_share, kShare,
-                     "nodes below this share of the median node weight shrink towards 0"),
-        PROJSURF_KEY(int, wall.shape.relief.max_nodes, from(1, 1024),
-                     "nodes per side; a larger wall spaces them wider"),
-        PROJSURF_KEY(double, wall.noise_min, kBands,
-                     "the wall's measured noise kept above this multiple of the model's"),
-        PROJSURF_KEY(double, wall.noise_max, kBands, "... and below this multiple (ToF is better, stereo worse)"),
-        PROJSURF_KEY(double, wall.local_cap, kBands, "the wall's noise is at most this many times the local noise"),
-        PROJSURF_KEY(int, wall.noise_offset_px, from(1, 256),
-                     "px between the readings whose differences measure noise"),
-        PROJSURF_KEY(int, wall.plane_refits, from(0, 100), "least-squares refits of the plane to the wall's shape"),
-        PROJSURF_KEY(double, wall.refit_min_turn, kAngle, "rad, a refit turning the plane less ends the refits"),
-        PROJSURF_KEY(double, wall.refit_min_shift, kMetresOrZero, "m, ... and moving it less (docs/wall_model.md)"),
-    };
-}
-
-std::vector<ConfigKey> objectKeys() {
-    return {
-        PROJSURF_KEY(bool, objects.avoid, kAny, "skip faces that stand free; false takes any vertical face (paper)"),
-        PROJSURF_KEY(int, objects.surround.bins, from(1, 1024), "positions along each edge"),
-        PROJSURF_KEY(int, objects.surround.min_bin_points, from(1, kMaxCount), "face points a position needs"),
-        PROJSURF_KEY(double, objects.surround.edge_quantile, kShare, "the edge at a position: this quantile of points"),
-        PROJSURF_KEY(std::vector<double>, objects.surround.offsets, kMetres,
-                     "m beyond the edge, looked at nearest first (1 to 16 numbers)"),
-        PROJSURF_KEY(double, objects.surround.min_step, kMetres, "m, a reading this far off the plane is off it"),
-        PROJSURF_KEY(int, objects.surround.search_px, from(0, 64),
-                     "px, a missing reading is looked for this far around"),
-        PROJSURF_KEY(double, objects.surround.max_gap, kMetres, "m, a gap this wide between a face's points ends it"),
-        PROJSURF_KEY(double, objects.rule.min_seen, kShare, "share of an edge's positions seen past or in front"),
-        PROJSURF_KEY(double, objects.rule.min_past, kShare, "share of those open behind for the edge to be open"),
-        PROJSURF_KEY(double, objects.rule.wall_height, kMetresOrZero, "m, a face this tall and wide serves like a wall"),
-        PROJSURF_KEY(double, objects.rule.wall_width, kMetresOrZero, "m, ... and this wide (wider than a door)"),
-        PROJSURF_KEY(double, objects.rule.min_height, kMetresOrZero, "m, a face lower than this is a strip, no surface"),
-        PROJSURF_KEY(double, objects.opening_depth, kMetres,
-                     "m, an enclosed face this far behind a wall is beyond an opening"),
-    };
-}
-
-std::vector<ConfigKey> freeSpaceKeys() {
-    return {
-        PROJSURF_KEY(double, free_space.cell, from(0.002, 0.5), "m, raster cell (area error < 0.05 m^2 at 3 m)"),
-        PROJSURF_KEY(int, free_space.stride, from(1, 64), "pixel step of the pass on organized clouds"),
-        PROJSURF_KEY(bool, free_space.exclude_other_surfaces, kAny,
-                     "points clearly nearer another region's plane are no support"),
-        PROJSURF_KEY(int, free_space.max_gap_cells, from(0, 1024), "largest gap between wall samples closed, cells"),
-        PROJSURF_KEY(int, free_space.min_blocked_neighbours, from(0, 8),
-                     "blocked cells a blocked cell needs in its 3x3"),
-        PROJSURF_KEY(double, free_space.image_margin, from(0.0, 0.5),
-                     "of the image width: margin around where a plane is seen"),
-        PROJSURF_KEY(double, free_space.inlier_box_margin, from(0.0, 0.5),
-                     "of the image width, when the cloud has no fitted intrinsics"),
-        PROJSURF_KEY(bool, free_space.proud.enabled, kAny,
-                     "cells whose readings stand off the wall's shape on average are not free"),
-        PROJSURF_KEY(double, free_space.proud.window, kMetres, "m, side of the square the offsets are averaged over"),
-        PROJSURF_KEY(int, free_space.proud.min_points, from(1, 100000), "a window with fewer readings says nothing"),
-        PROJSURF_KEY(double, free_space.proud.spreads, from(0.0, 100.0),
-                     "a window mean beyond this many robust spreads of the wall's window means is proud"),
-        PROJSURF_KEY(double, free_space.proud.min_offset, kMetresOrZero,
-                     "m, and beyond this (posters, whiteboards stay free)"),
-        PROJSURF_KEY(double, free_space.proud.min_extent, kMetresOrZero,
-                     "m, proud areas narrower than this are dropped (a few windows: the sensor's)"),
-        PROJSURF_KEY(bool, free_space.steps.enabled, kAny,
-                     "cells where the wall's readings step along a line (a frame's border) are not free"),
-        PROJSURF_KEY(double, free_space.steps.width, kMetres, "m, width of each strip either side of a step"),
-        PROJSURF_KEY(double, free_space.steps.length, kMetres, "m, the strips' length along the step"),
-        PROJSURF_KEY(int, free_space.steps.min_points, from(1, 100000), "a strip with fewer readings says nothing"),
-        PROJSURF_KEY(double, free_space.steps.spreads, from(0.0, 100.0),
-                     "a step beyond this many robust spreads of the wall's steps is an edge"),
-        PROJSURF_KEY(double, free_space.steps.min_step, kMetresOrZero,
-                     "m, and beyond this (posters, whiteboards stay free)"),
-        PROJSURF_KEY(double, check.max_outlier_fraction, kShare, "share of checked points off the wall that rejects"),
-    };
-}
-
-std::vector<ConfigKey> suitabilityKeys() {
-    return {
-        PROJSURF_KEY(
-            SuitabilityMode, suitability.mode, kAny,
-            "with registered colour: ignore it, avoid unfit cells, or prefer a cleaner wall (docs/suitability.md)"),
-        PROJSURF_KEY(double, suitability.cells.context, kMetresOrZero,
-                     "m, the wall judged beyond the raster on each side"),
-        PROJSURF_KEY(double, suitability.cells.weak_contrast, from(0.0, 100.0),
-                     "window contrast above which cells near wide texture are textured too"),
-        PROJSURF_KEY(double, suitability.cells.weak_over_wall, from(0.0, 100.0),
-                     "... and above this many times the wall's"),
-        PROJSURF_KEY(double, suitability.cells.texture_growth, kMetresOrZero,
-                     "m, how far from wide texture weak cells join"),
-        PROJSURF_KEY(double, suitability.cells.window, kMetres,
-                     "m, side of the square texture and glare are judged on"),
-        PROJSURF_KEY(double, suitability.cells.tone_window, kMetres,
-                     "m, the square darkness and saturation are judged on"),
-        PROJSURF_KEY(double, suitability.cells.dark_relative, kShare,
-                     "darker than this share of the wall's median: dark"),
-        PROJSURF_KEY(double, suitability.cells.dark_min, kShare, "luminance share below which a surface is too dark"),
-        PROJSURF_KEY(double, suitability.cells.max_chroma, kShare,
-                     "mean (max - min channel) / 255 above this: saturated"),
-        PROJSURF_KEY(double, suitability.cells.max_contrast, from(0.0, 100.0), "luminance std / mean above this: textured"),
-        PROJSURF_KEY(double, suitability.cells.glare_level, above(0.0, 1.0),
-                     "a channel at this share of 255 is blown out"),
-        PROJSURF_KEY(double, suitability.cells.max_glare_share, kShare, "more blown-out samples in the window: glare"),
-        PROJSURF_KEY(double, suitability.cells.glare_wall_share, kShare,
-                     "no glare on a wall whose median luminance reaches this share of glare_level"),
-        PROJSURF_KEY(int, suitability.cells.row_step, from(1, 64),
-                     "every this many rows of the point grid are sampled"),
-        PROJSURF_KEY(int, suitability.cells.min_tone_samples, from(1, kMaxCount), "fewer: tone judged over the window"),
-        PROJSURF_KEY(int, suitability.cells.min_samples, from(1, kMaxCount),
-                     "fewer wall samples: colour decides nothing"),
-        PROJSURF_KEY(int, suitability.cells.trim_cells, from(0, 64), "textured and glare cells given back on a rim"),
-        PROJSURF_KEY(double, suitability.cells.max_hole, kArea,
-                     "m^2, fit areas enclosed by unfit ones up to this"),
-        PROJSURF_KEY(double, suitability.cells.min_unfit_area, kArea, "m^2, smaller unfit areas are fit"),
-        PROJSURF_KEY(double, suitability.cells.min_texture_width, kMetresOrZero, "m, narrower textured areas are fit"),
-        PROJSURF_KEY(double, suitability.prefer_exponent, from(0.0, 100.0),
-                     "k of prefer's rule: area x (1 - unfit share)^k"),
-    };
-}
-
-std::vector<ConfigKey> paperKeys() {
-    return {
-        PROJSURF_KEY(HullKind, paper.hull, kAny, "hull of the plane's inliers (paper 4.1 keeps concave)"),
-        PROJSURF_KEY(double, paper.voxel_leaf, from(0.001, 1.0), "m, voxel-grid side (paper 3.2.1)"),
-        PROJSURF_KEY(double, paper.ransac_distance, from(0.001, 1.0), "m, RANSAC inlier band (= voxel side)"),
-        PROJSURF_KEY(int, paper.ransac_iterations, from(1, 1e6), "RANSAC iterations (PCL SACSegmentation's default)"),
-        PROJSURF_KEY(double, paper.concave_alpha, kMetres, "m, alpha of the concave hull (2 voxels)"),
-        PROJSURF_KEY(double, paper.cell, from(0.002, 0.5), "m, raster cell of the free-space matrices (paper 3.2.2)"),
-        PROJSURF_KEY(double, paper.outlier_distance, kMetres,
-                     "m, |z - mean z| above this is an outlier (paper 3.2.3)"),
-        PROJSURF_KEY(int, paper.max_outliers, from(0, INT_MAX), "more outliers reject the surface (paper 4.3)"),
-        PROJSURF_KEY(int, paper.max_voxels, from(1, kMaxCount), "more voxels are not searched (memory, time)"),
-    };
-}
-
-#undef PROJSURF_KEY
-
-std::vector<ConfigKey> allKeys() {
-    std::vector<ConfigKey> all;
-    for (auto part : {topKeys, toleranceKeys, unorganizedKeys, planeKeys, wallKeys, objectKeys, freeSpaceKeys,
-                      suitabilityKeys, paperKeys}) {
-        std::vector<ConfigKey> keys = part();
-        all.insert(all.end(), keys.begin(), keys.end());
-    }
-    return all;
-}
 
 /// The shortest text that reads back as exactly `v`, with ".0" on whole numbers (a double).
 std::string exactText(double v) {
@@ -311,7 +49,7 @@ std::string lastWord(const std::string &key) { return key.substr(key.find_last_o
 }  // namespace
 
 const std::vector<ConfigKey> &detectorConfigKeys() {
-    static const std::vector<ConfigKey> keys = allKeys();
+    static const std::vector<ConfigKey> keys = declaredConfigKeys();
     return keys;
 }
 
@@ -522,15 +260,6 @@ void setConfigValue(DetectorConfig &c, const ConfigKey &key, const SettingText &
                    [&](ConfigField<Method> f) { f(c) = parseMethod(what, scalar(key, value, what)); },
                    [&](ConfigField<HullKind> f) { f(c) = parseHull(what, scalar(key, value, what)); },
                    [&](ConfigField<SuitabilityMode> f) { f(c) = parseSuitabilityMode(what, scalar(key, value, what)); },
-               },
-               key.access);
-}
-
-void copyConfigValue(const DetectorConfig &from, DetectorConfig &to, const ConfigKey &key) {
-    DetectorConfig &source = const_cast<DetectorConfig &>(from);  // read only, as in configValue
-    std::visit(Overloaded{
-                   [&](AspectField a) { a.field(to) = a.field(source); },
-                   [&](auto f) { f(to) = f(source); },
                },
                key.access);
 }

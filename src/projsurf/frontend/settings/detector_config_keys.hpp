@@ -1,8 +1,10 @@
 #pragma once
 // Every setting of DetectorConfig (detection/detector_config.hpp) under one dotted key that
-// spells the struct fields' path (`planes.regions.min_fill`), with its type, its range and one
-// line of documentation (unit and source, from the field's comment). The config file (`detect
-// --config`, ~config, config=) and `detect --print-config` go through this table only.
+// spells the struct fields' path (`planes.regions.min_fill`), with its type, its range and its
+// doc (unit and source), all taken from the field's line, where each setting is declared once
+// (the table is written from it at build time: frontend/settings/detector_config_table.hpp). The config
+// file (`detect --config`, ~config, config=), `detect --print-config` and the settings the
+// front ends share by name (frontend/settings/shared_settings.hpp) go through this table only.
 #include <limits>
 #include <string>
 #include <variant>
@@ -64,7 +66,5 @@ SettingText configValue(const DetectorConfig &config, const ConfigKey &key);
 /// Sets the key's field from `value`; a wrong type or a value out of range throws
 /// InputError(what, problem) and leaves `config` unchanged.
 void setConfigValue(DetectorConfig &config, const ConfigKey &key, const SettingText &value, const std::string &what);
-/// The key's field of `from` into `to`.
-void copyConfigValue(const DetectorConfig &from, DetectorConfig &to, const ConfigKey &key);
 
 }  // namespace projsurf::frontend
