@@ -9,10 +9,12 @@
 
 #include "argument_types.hpp"
 #include "projsurf/frontend/answer/detect_answer.hpp"
+#include "projsurf/frontend/inputs/registered_colour.hpp"
 #include "projsurf/frontend/settings/aspect.hpp"
 #include "projsurf/frontend/settings/depth_range_check.hpp"
 #include "projsurf/frontend/settings/detector_config_file.hpp"
-#include "projsurf/frontend/settings/gravity_sanity.hpp"
+#include "projsurf/frontend/settings/gravity_warnings.hpp"
+#include "projsurf/frontend/settings/ignored_settings.hpp"
 #include "projsurf/frontend/settings/method_settings.hpp"
 #include "projsurf/frontend/settings/method_words.hpp"
 #include "projsurf/frontend/settings/shared_settings.hpp"
@@ -122,7 +124,6 @@ DetectorOptions detectorOptions(const DetectorArguments &a) {
     if (!a.method.is_none()) o.config.method = frontend::parseMethod("method", wordArgument(a.method, "method"));
     if (!a.hull.is_none()) o.config.paper.hull = frontend::parseHull("hull", wordArgument(a.hull, "hull"));
     if (!a.seed.is_none()) frontend::setSharedSetting(o.config, "seed", settingText(a.seed, "seed"), "seed");
-    const std::string method = methodName(o.config.method);
     if (!a.suitability.is_none()) {
         o.config.suitability.mode =
             frontend::parseSuitabilityMode("suitability", wordArgument(a.suitability, "suitability"));
@@ -132,16 +133,13 @@ DetectorOptions detectorOptions(const DetectorArguments &a) {
     o.minimum.width = minimumFrom("min_width", a.min_width, defaults.width);
     o.minimum.area = minimumFrom("min_area", a.min_area, defaults.area);
     o.gravity = gravityFrom(a.gravity);
-    o.gravity_given = !a.gravity.is_none() && !o.gravity.from_floor;
     o.gravity_level_assumed = a.gravity.is_none();
     std::vector<std::string> given = a.settings ? applySettings(a.settings, o) : std::vector<std::string>{};
     if (!a.hull.is_none()) given.push_back("hull");
     if (!a.suitability.is_none()) given.push_back("suitability");
-    std::vector<std::string> warnings;
-    for (const std::string &ignored : frontend::settingsIgnoredBy(o.config.method))
-        if (std::find(given.begin(), given.end(), ignored) != given.end())
-            warnings.push_back(ignored + " is ignored by the " + method + " method");
-    warnAll(warnings);
+    warnAll(frontend::ignoredSettingWarnings(
+        o.config.method, [&](const std::string &s) { return std::find(given.begin(), given.end(), s) != given.end(); },
+        [](const std::string &s) { return s; }));
     return o;
 }
 
@@ -152,17 +150,12 @@ CheckedDetection detectChecked(SurfaceDetector &detector, const DetectorOptions 
         detector, cloud, options.gravity, options.minimum, "points", "min_width", "min_area");
     out.detection = answer.detection;
     out.gravity = answer.gravity.gravity;
-    if (options.gravity.from_floor && !answer.gravity.floor_found)
-        out.warnings.push_back("gravity='auto' found no floor; assuming a level camera");
-    else if (check_gravity && options.gravity_level_assumed)
-        if (const auto w = frontend::levelCameraWarning("gravity='auto'", cloud)) out.warnings.push_back(*w);
-    if (check_gravity && options.gravity_given)
-        for (const std::string &w : frontend::gravityWarnings("gravity", options.gravity.gravity, cloud))
-            out.warnings.push_back(w);
+    const frontend::GravityUsed used{options.gravity, options.gravity_level_assumed, answer.gravity};
+    out.warnings = frontend::gravityUsedWarnings({"gravity", "gravity='auto'"}, used, cloud, check_gravity);
     if (const auto w = frontend::depthRangeWarning(cloud, "points", false)) out.warnings.push_back(*w);
     if (options.suitability_given && options.config.suitability.mode != SuitabilityMode::Off && !cloud.hasColour() &&
         options.config.method == Method::Default)
-        out.warnings.push_back("suitability needs registered colour (colour=); the surface is judged by depth only");
+        out.warnings.push_back(frontend::suitabilityWithoutColourWarning("suitability", "colour="));
     return out;
 }
 

@@ -17,7 +17,6 @@ namespace projsurf::python {
 
 struct DetectorOptions {
     DetectorConfig config;
-    bool gravity_given = false;  ///< gravity= was a vector: checked against the cloud's floor (frontend/settings/gravity_sanity)
     bool gravity_level_assumed = false;  ///< no gravity= at all: a level camera, checked against the floor
     bool suitability_given = false;      ///< suitability= was given: warned about without registered colour
     frontend::GravityChoice gravity;  ///< the given one, the level camera's, or "auto" (from the floor of each cloud)
