@@ -24,11 +24,11 @@
 #include "projsurf/io/formats/cloud_io.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/ground_truth.hpp"
-#include "projsurf/sim/noise_field.hpp"
+#include "projsurf/sim/noise/noise_field.hpp"
 #include "projsurf/sim/scenes/scenarios_realistic.hpp"
 #include "projsurf/sim/scenes/wall_frame.hpp"
-#include "projsurf/sim/wall_residual_stats.hpp"
-#include "projsurf/sim/window_noise.hpp"
+#include "projsurf/sim/noise/wall_residual_stats.hpp"
+#include "projsurf/sim/noise/window_noise.hpp"
 #include "projsurf/types/point_grid.hpp"
 
 using namespace projsurf::eval;  // the evaluation under test

@@ -6,8 +6,8 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/sim/gaussian_table.hpp"
-#include "projsurf/sim/noise_field.hpp"
+#include "projsurf/sim/noise/gaussian_table.hpp"
+#include "projsurf/sim/noise/noise_field.hpp"
 
 namespace projsurf::sim {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <random>
 
-#include "projsurf/sim/gaussian_table.hpp"
-#include "projsurf/sim/noise_field.hpp"
+#include "projsurf/sim/noise/gaussian_table.hpp"
+#include "projsurf/sim/noise/noise_field.hpp"
 
 namespace projsurf::sim {
 

@@ -7,7 +7,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/sim/gaussian_table.hpp"
+#include "projsurf/sim/noise/gaussian_table.hpp"
 #include "projsurf/sim/ray_cast.hpp"
 
 namespace projsurf::sim {

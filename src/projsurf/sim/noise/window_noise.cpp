@@ -1,4 +1,4 @@
-#include "projsurf/sim/window_noise.hpp"
+#include "projsurf/sim/noise/window_noise.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>

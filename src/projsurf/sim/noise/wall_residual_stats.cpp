@@ -1,4 +1,4 @@
-#include "projsurf/sim/wall_residual_stats.hpp"
+#include "projsurf/sim/noise/wall_residual_stats.hpp"
 
 #include <algorithm>
 #include <cmath>

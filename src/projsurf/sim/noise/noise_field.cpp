@@ -1,4 +1,4 @@
-#include "projsurf/sim/noise_field.hpp"
+#include "projsurf/sim/noise/noise_field.hpp"
 
 #include <algorithm>
 #include <array>
@@ -6,7 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-#include "projsurf/sim/gaussian_table.hpp"
+#include "projsurf/sim/noise/gaussian_table.hpp"
 
 namespace projsurf::sim {
 
