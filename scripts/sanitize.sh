@@ -17,7 +17,7 @@ CC=clang CXX=clang++ cmake -S . -B "$tree" -DCMAKE_BUILD_TYPE=Sanitize \
   -DPROJSURF_BUILD_BENCH=OFF -DPROJSURF_BUILD_ROS=OFF -DPROJSURF_BUILD_PYTHON=OFF -DPROJSURF_INSTALL=OFF \
   -DPROJSURF_SHARED_LIBS=OFF \
   -DPROJSURF_BUILD_FUZZ=ON >/dev/null
-cmake --build "$tree" -j"$(nproc)" --target projsurf projsurf_tests
+cmake --build "$tree" -j"$(nproc)" --target projsurf projsurf_all_tests
 built=$(date +%s)
 
 reports="$PWD/$tree/sanitizer-reports"
