@@ -434,7 +434,9 @@ void ProjsurfNode::runContinuous() {
     // The frame's document as `detect --bag --steady` and Python's Tracker write it, then the node's own.
     nlohmann::json j = frontend::detectionDocument(det, detector_.config(), params_.projector, params_.explain);
     frontend::addContinuousFrame(j, o);
-    j["continuous"] = {{"showing", o.has_target && fb.problem.empty()},
+    // `continuous.event` repeats the top-level `event` for readers written before it moved up.
+    j["continuous"] = {{"event", j["event"]},
+                       {"showing", o.has_target && fb.problem.empty()},
                        {"stamp", header.stamp.toSec()},
                        {"frame_ms", std::round(frame_ms * 1000.0) / 1000.0}};
     if (colour_) {
