@@ -161,6 +161,13 @@ RealLabel readRealLabel(const std::string &path) {
         r.fail("'frame' must be the name of one folder of the real frames, not a path");
     if (root["note"]) l.note = r.text(root["note"], "note");
     l.split = oneOf(r, root, "split", splitSides());
+    // A label kept in a half's folder (labels/real/tune/, check/) says that half: a frame moved
+    // between halves is moved in both places.
+    const std::string folder = fs::path(path).parent_path().filename().string();
+    for (const std::string &side : splitSides())
+        if (folder == side && l.split != side)
+            r.fail((l.split.empty() ? "no 'split'" : "'split' is '" + l.split + "'") +
+                   " but the file is in the folder " + side + "/");
     if (root["scene"]) l.scene = r.text(root["scene"], "scene");
     l.sensor = oneOf(r, root, "sensor", sensorFamilies());
 
@@ -281,9 +288,18 @@ std::vector<std::string> listLabelFiles(const std::string &dir) {
     std::vector<std::string> out;
     std::error_code ec;
     if (!fs::is_directory(dir, ec)) return out;
+    // The folder itself and its sub-folders one level down (the repository keeps its halves in
+    // tune/ and check/); ordered by frame, wherever its file is.
+    const auto add = [&](const fs::path &folder) {
+        for (const auto &e : fs::directory_iterator(folder, ec))
+            if (e.is_regular_file(ec) && e.path().extension() == ".yaml") out.push_back(e.path().string());
+    };
+    add(dir);
     for (const auto &e : fs::directory_iterator(dir, ec))
-        if (e.is_regular_file(ec) && e.path().extension() == ".yaml") out.push_back(e.path().string());
-    std::sort(out.begin(), out.end());
+        if (e.is_directory(ec)) add(e.path());
+    std::sort(out.begin(), out.end(), [](const std::string &a, const std::string &b) {
+        return std::make_pair(fs::path(a).filename(), a) < std::make_pair(fs::path(b).filename(), b);
+    });
     return out;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Hand-made labels of a real RGB-D frame (labels/real/<frame>.yaml): the gravity and the
+// Hand-made labels of a real RGB-D frame (labels/real/<half>/<frame>.yaml): the gravity and the
 // virtual projector to test it with, the surfaces a projector could use and the obstacles on
 // them as polygons in depth-image pixels, and the reference best rectangle.
 #include <Eigen/Core>
@@ -89,7 +89,8 @@ const std::vector<std::string> &unsuitableReasons();
 RealLabel readRealLabel(const std::string &path);
 /// Writes a label file (atomically) that readRealLabel reads back unchanged.
 void writeRealLabel(const std::string &path, const RealLabel &label);
-/// The label files (*.yaml) of a directory, sorted; empty when it is not a directory.
+/// The label files (*.yaml) of a directory and of its sub-folders one level down (tune/, check/),
+/// sorted by file name; empty when it is not a directory.
 std::vector<std::string> listLabelFiles(const std::string &dir);
 
 }  // namespace projsurf::eval

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Writes what was drawn by hand for a frame (labels/drawn/<frame>.txt) into its label file
-(labels/real/<frame>.yaml), keeping the label's gravity and projector unless the drawing states
+"""Writes what was drawn by hand for a frame (labels/drawn/<half>/<frame>.txt) into its label file
+(labels/real/<half>/<frame>.yaml), keeping the label's gravity and projector unless the drawing states
 a gravity. The label tool then fits, refines and recomputes the best rectangle (remake.sh).
 
 Drawing lines:  N <note>

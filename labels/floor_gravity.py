@@ -14,7 +14,7 @@ cross product of their normals (walls are vertical), else there is no reference.
 The labelled surfaces' planes (fitted by the label tool over the drawn regions) are a check on
 the floor: a level floor meets each wall at 90 deg; the table prints the largest departure.
 
-usage: floor_gravity.py [--write] [REAL_DIR]   (from the repository root; labels/real/*.yaml)
+usage: floor_gravity.py [--write] [REAL_DIR]   (from the repository root; labels/real/*/*.yaml)
   --write  stores the result as gravity.reference {source, vector} in each label
 """
 import glob
@@ -185,7 +185,7 @@ def main():
     print('| frame | label source | reference source | floor points | reference vs label, deg | '
           'walls off 90 deg (reference), deg | walls off 90 deg (label), deg |')
     print('|---|---|---|---:|---:|---:|---:|')
-    for path in sorted(glob.glob('labels/real/*.yaml')):
+    for path in sorted(glob.glob('labels/real/*/*.yaml')):
         label = yaml.safe_load(open(path))
         frame = label['frame']
         stored = np.array(label['gravity']['vector'], float)

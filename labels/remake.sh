@@ -1,5 +1,5 @@
 #!/bin/sh
-# Re-makes every label from what was drawn (labels/drawn/) and the real frames: writes the
+# Re-makes every label from what was drawn (labels/drawn/tune/, check/) and the real frames: writes the
 # drawing into the label, then the label tool finds the no-reading holes, fits the surfaces,
 # shrinks the drawn obstacle boxes to the depth (except those the drawing's K line keeps as
 # drawn) and recomputes the best rectangle. Run from the repository root after building
@@ -9,9 +9,10 @@
 set -e
 REAL=${1:-../shared/data/real}
 TOOL=${TOOL:-build/tests/projsurf_label_tool}
-for drawn in labels/drawn/*.txt; do
+for drawn in labels/drawn/*/*.txt; do
     frame=$(basename "$drawn" .txt)
-    label=labels/real/$frame.yaml
+    half=$(basename "$(dirname "$drawn")")  # tune or check: the label goes to the same half
+    label=labels/real/$half/$frame.yaml
     dir=$REAL/$frame
     [ -d "$dir" ] || dir=data/real/$frame
     if [ ! -d "$dir" ]; then echo "remake: $frame: no frame in $REAL or data/real, skipped" >&2; continue; fi

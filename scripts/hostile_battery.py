@@ -754,7 +754,7 @@ def build_base(cli, base):
     # The labelled frame the eval-labels cases read: one that ships in data/, so that the cases
     # run on a plain clone (the labelled frames of ../shared/data/real are not redistributed).
     os.makedirs(B("labels"))
-    shutil.copy("labels/real/%s.yaml" % LABELLED_FRAME, B("labels", LABELLED_FRAME + ".yaml"))
+    shutil.copy("labels/real/check/%s.yaml" % LABELLED_FRAME, B("labels", LABELLED_FRAME + ".yaml"))
     return B
 
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Where `projsurf plan` puts the picture on the labelled real frames (issue 41's check).
 
-For every label in labels/real/*.yaml, runs `plan` on its frame as the planning test does
+For every label in labels/real/*/*.yaml, runs `plan` on its frame as the planning test does
 (--calib LABEL, the label's gravity) and scores the proposed picture by the detector's own
 rules (eval/real_scoring: valid = at least 95 % of it free on one labelled usable surface and
 on its plane; `projsurf_label_tool score`). Also, looser: whether each of its four corners
@@ -124,7 +124,7 @@ def main():
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     tally = {}
-    for path in sorted(glob.glob(os.path.join(ROOT, "labels/real/*.yaml"))):
+    for path in sorted(glob.glob(os.path.join(ROOT, "labels/real/*/*.yaml"))):
         label = yaml.safe_load(open(path))
         frame = label["frame"]
         split = label.get("split", "")

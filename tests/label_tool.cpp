@@ -1,4 +1,4 @@
-// projsurf_label_tool: helps make and refresh the real-frame labels (labels/real/*.yaml).
+// projsurf_label_tool: helps make and refresh the real-frame labels (labels/real/<half>/*.yaml).
 //   grid   <frame_dir> <out.png>             colour-mapped depth and colour with a 40 px grid
 //   init   <frame_dir> <label.yaml>          a label with the floor's gravity and the example projector
 //   update <frame_dir> <label.yaml> [--holes N] [--aim u,v] [--overlay out.png]

@@ -533,8 +533,8 @@ void addEvalCommand(CLI::App &app) {
                                  "Folder of real frames (sub-folders with depth.png + camera.yaml); default "
                                  "../shared/data/real of the working directory (said when missing); '' to skip");
     auto *labels = sub->add_option("--labels", o->labels_dir,
-                                   "Folder of real-frame label files (<frame>.yaml); default labels/real of the "
-                                   "repository, skipped when missing; '' to skip");
+                                   "Folder of real-frame label files (<frame>.yaml, in it or one sub-folder down); "
+                                   "default labels/real of the repository, skipped when missing; '' to skip");
     sub->add_flag("--no-progress", o->no_progress, "No progress bar on stderr");
     sub->add_flag("--projector-only", o->projector_only,
                   "Only the real-projector table (disc vs structured-light calibration on simulated lens-offset "

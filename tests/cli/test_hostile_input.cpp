@@ -654,7 +654,7 @@ TEST_F(Hostile, CalibrateFovInRadiansIsRefusedBeforeWriting) {
 
 TEST_F(Hostile, LabelFramesArePlainNamesAndPolygonsNearTheImage) {
     const std::string label =
-        test::slurp(std::string(PROJSURF_SOURCE_DIR) + "/labels/real/chimso_classroom_whiteboard.yaml");
+        test::slurp(std::string(PROJSURF_SOURCE_DIR) + "/labels/real/check/chimso_classroom_whiteboard.yaml");
     const std::string frame = "frame: chimso_classroom_whiteboard";
     ASSERT_NE(label.find(frame), std::string::npos);
     fs::create_directories(dir_ / "labels");

@@ -224,7 +224,7 @@ TEST(ColourLabelSuite, EvalDetectsWithColourAsTheCliDoes) {
     if (!fs::is_directory(real)) GTEST_SKIP() << real << " is not here (the real frames stay in ../shared)";
     const fs::path dir = test::freshDir("colour_labels", "cli_same");
     const std::string frame = "nyu_rgbdtut_cafe_counter";
-    const std::string label = std::string(PROJSURF_SOURCE_DIR) + "/labels/real/" + frame + ".yaml";
+    const std::string label = std::string(PROJSURF_SOURCE_DIR) + "/labels/real/check/" + frame + ".yaml";
     const LabelledFrame f = evaluateLabelledFrame(label, real, DetectorConfig{}, {});
     const ColourRun &c = f.colour;
     ASSERT_TRUE(c.judged);

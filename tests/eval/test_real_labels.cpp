@@ -258,6 +258,35 @@ std::map<std::string, Baseline> readBaseline(const std::string &path) {
 
 }  // namespace
 
+// The repository keeps each half's labels in its own folder (labels/real/tune/, check/): a label
+// is listed from the folder given or one sub-folder down, in frame order, and a label whose folder
+// names the other half (or no half) is refused.
+TEST(RealLabels, AHalfsFolderHoldsThatHalfOnly) {
+    const fs::path dir = test::freshDir("labels", "halves");
+    fs::create_directories(dir / "tune" / "deeper");
+    fs::create_directories(dir / "check");
+    const std::string tune = replaced(kGoodLabel, "note: a test label\n", "note: a test label\nsplit: tune\n");
+    const std::string a = writeLabel(dir / "tune", "a.yaml", tune);
+    const std::string b = writeLabel(dir / "check", "b.yaml", tune);
+    const std::string c = writeLabel(dir / "tune", "c.yaml", kGoodLabel);
+    const std::string d = writeLabel(dir, "d.yaml", tune);
+    writeLabel(dir / "tune" / "deeper", "e.yaml", tune);
+    writeLabel(dir / "check", "notes.txt", "not a label");
+    EXPECT_EQ(listLabelFiles(dir.string()), (std::vector<std::string>{a, b, c, d}));
+    EXPECT_EQ(readRealLabel(a).split, "tune");
+    EXPECT_EQ(readRealLabel(d).split, "tune");  // outside a half's folder, the key alone says it
+    for (const auto &[path, expected] : {std::pair{b, "'split' is 'tune' but the file is in the folder check/"},
+                                         std::pair{c, "no 'split' but the file is in the folder tune/"}}) {
+        try {
+            readRealLabel(path);
+            ADD_FAILURE() << path << " was read";
+        } catch (const InputError &e) {
+            EXPECT_NE(std::string(e.what()).find(path + ": " + expected), std::string::npos) << e.what();
+        }
+    }
+    fs::remove_all(dir);
+}
+
 // Every label is on one side of the split (labels/README.md, "The two halves"): the frames of one
 // scene on the same side, the halves about equal, each holding every sensor family of the set.
 TEST(RealLabelSplit, EveryLabelHasASideAndAScenesFramesStayTogether) {
@@ -406,8 +435,8 @@ TEST(RealLabelSuite, EvalDetectsAsTheCliDoes) {
     const std::string real = std::string(PROJSURF_SHARED_DIR) + "/data/real";
     if (!fs::is_directory(real)) GTEST_SKIP() << real << " is not here (the real frames stay in ../shared)";
     const fs::path dir = test::freshDir("labels", "cli_same");
-    for (const char *frame : {"chimso_classroom_whiteboard", "tum_o3d_fr3_office_partition"}) {
-        const std::string label = std::string(PROJSURF_SOURCE_DIR) + "/labels/real/" + frame + ".yaml";
+    for (const char *frame : {"chimso_classroom_whiteboard", "tum_o3d_fr3_office_partition"}) {  // both in check/
+        const std::string label = std::string(PROJSURF_SOURCE_DIR) + "/labels/real/check/" + frame + ".yaml";
         const LabelledFrame f = evaluateLabelledFrame(label, real, DetectorConfig{}, {});
         ASSERT_TRUE(f.detection.found) << frame;
         ASSERT_EQ(f.command.rfind("projsurf detect ", 0), 0u) << f.command;
