@@ -35,6 +35,7 @@
 #include "projsurf/io/yaml/yaml_files.hpp"
 #include "projsurf/keystone/keystone.hpp"
 #include "projsurf/people/beam_blanking.hpp"
+#include "projsurf/sim/scenes/scenarios.hpp"
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/lens_model_check.hpp"
 #include "tracker_class.hpp"
@@ -53,9 +54,11 @@ py::array depthArgument(const py::object &depth) {
     if (a.ndim() != 2 || a.dtype().kind() != 'u' || a.itemsize() != 2) {
         std::string shape;
         for (py::ssize_t i = 0; i < a.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(a.shape(i));
-        throw InputError("depth", "expected an (H, W) uint16 depth image (depth_scale units per metre, 0 = no "
-                                  "reading), got a (" + shape + (a.ndim() == 1 ? "," : "") + ") " +
-                                      py::str(py::handle(a.dtype())).cast<std::string>() + " array");
+        throw InputError("depth",
+                         "expected an (H, W) uint16 depth image (depth_scale units per metre, 0 = no "
+                         "reading), got a (" +
+                             shape + (a.ndim() == 1 ? "," : "") + ") " +
+                             py::str(py::handle(a.dtype())).cast<std::string>() + " array");
     }
     return a;
 }
@@ -71,6 +74,9 @@ std::string transposedDepthProblem(int rows, int cols, double cx, double cy) {
            std::to_string(cols) + " image: transposed? numpy images are (H, W), depth.T undoes it";
 }
 
+/// An angle in degrees to 1e-3 deg, as a calibration file states it (39.3, not 39.300000000000004).
+double wholeMilliDegrees(double radians) { return std::round(radians / kDeg * 1000.0) / 1000.0; }
+
 /// The contract's projector, from keyword arguments with the example calibration's defaults.
 Projector makeProjector(const py::object &resolution, const py::object &fov_deg, const py::object &origin,
                         const py::object &direction) {
@@ -80,14 +86,15 @@ Projector makeProjector(const py::object &resolution, const py::object &fov_deg,
     constexpr double kSide = limits::kMaxFramebufferSide;
     if (!(size.first >= 2 && size.second >= 2 && size.first <= kSide && size.second <= kSide &&
           size.first == std::floor(size.first) && size.second == std::floor(size.second)))
-        throw InputError("resolution", "must be two whole numbers between 2 and " + std::to_string(limits::kMaxFramebufferSide));
+        throw InputError("resolution",
+                         "must be two whole numbers between 2 and " + std::to_string(limits::kMaxFramebufferSide));
     p.width = static_cast<int>(size.first);
     p.height = static_cast<int>(size.second);
     if (static_cast<std::uint64_t>(p.width) * p.height > limits::kMaxFramebufferPixels)
         throw InputError("resolution", "exceeds the limit of " + std::to_string(limits::kMaxFramebufferPixels) +
                                            " framebuffer pixels (as a calibration file)");
-    if (!(fov.first > 0 && fov.first < 170 && fov.second > 0 && fov.second < 170))
-        throw InputError("fov_deg", "angles must be between 0 and 170 degrees");
+    if (!(fov.first > 0 && fov.first < kMaxLensFovDeg && fov.second > 0 && fov.second < kMaxLensFovDeg))
+        throw InputError("fov_deg", "angles must be between 0 and " + std::to_string(int(kMaxLensFovDeg)) + " degrees");
     p.fov_h = fov.first * kDeg;
     p.fov_v = fov.second * kDeg;
     p.origin = vectorArgument(origin, "origin");
@@ -172,6 +179,7 @@ void bindInputError(py::module_ &m) {
 
 /// Projector: the lens model, built from keywords or read from a calibration.
 void bindProjector(py::module_ &m) {
+    const Projector example = sim::exampleProjector();  // the keywords' defaults: the example calibration
     py::class_<Projector>(
         m, "Projector",
         "The projector's lens model (docs/interface.md). Projector(...) builds the contract's plain model:\n"
@@ -179,9 +187,10 @@ void bindProjector(py::module_ &m) {
         "read_calibration() may give the full model: intrinsics (fx, fy, cx, cy in framebuffer px; the\n"
         "principal point is then anywhere, on or beyond the framebuffer's edge for a lens offset), OpenCV\n"
         "distortion (k1, k2, p1, p2, k3) and a rotation of any roll; every function uses all of it.")
-        .def(py::init(&makeProjector), "resolution"_a = py::make_tuple(1280, 800),
-             "fov_deg"_a = py::make_tuple(39.3, 24.0), "origin"_a = py::make_tuple(0.0, 0.12, 0.0),
-             "direction"_a = py::make_tuple(0.0, -0.05, 1.0),
+        .def(py::init(&makeProjector), "resolution"_a = py::make_tuple(example.width, example.height),
+             "fov_deg"_a = py::make_tuple(wholeMilliDegrees(example.fov_h), wholeMilliDegrees(example.fov_v)),
+             "origin"_a = py::make_tuple(example.origin.x(), example.origin.y(), example.origin.z()),
+             "direction"_a = py::make_tuple(example.direction.x(), example.direction.y(), example.direction.z()),
              "resolution: (width, height) px; fov_deg: full (horizontal, vertical) field of view, deg; origin:\n"
              "lens centre, camera frame, m; direction: central axis (any length). Defaults: the example\n"
              "calibration (examples/calib/example_calib.yaml). Raises InputError.")

@@ -58,6 +58,9 @@ def test_read_calibration_gives_the_example_projector(projector):
     np.testing.assert_allclose(projector.direction, np.array([0.0, -0.05, 1.0]) / math.hypot(0.05, 1.0))
     # Keyword construction with the same values is the same projector.
     other = projsurf.Projector()
+    assert (other.width, other.height) == (projector.width, projector.height)
+    assert other.fov_deg == pytest.approx(projector.fov_deg, abs=1e-9)
+    np.testing.assert_allclose(other.origin, projector.origin)
     np.testing.assert_allclose(other.direction, projector.direction)
     assert projector.to_pixel([0.0, 0.0, -1.0]) is None  # behind the lens
     u, v = projector.to_pixel(projector.origin + 2.0 * projector.direction)
