@@ -243,6 +243,7 @@ TEST(ProjectorFootprint, CornerRaysMeetTheWallAndMissAPlaneBehindTheLens) {
     EXPECT_NEAR(f->uv[0].x(), -1.0, 1e-9);  // top-left: left of and above the centre
     EXPECT_NEAR(f->uv[0].y(), 0.6, 1e-9);
     EXPECT_TRUE(insideConvex(f->uv, {0.9, -0.5}));
+    EXPECT_NEAR((quadCentre(f->uv) - Eigen::Vector2d(0.0, 0.0)).norm(), 0.0, 1e-9);  // the rays are symmetric
     EXPECT_FALSE(insideConvex(f->uv, {1.1, 0.0}));
     EXPECT_FALSE(footprintOnPlane(makePlane({0, 0, 1}, 2.0), frame, Eigen::Vector3d::Zero(), rays).has_value());
 }

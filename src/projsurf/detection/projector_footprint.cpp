@@ -14,6 +14,12 @@ std::optional<Footprint> footprintOnPlane(const Plane &plane, const PlaneFrame &
     return f;
 }
 
+Eigen::Vector2d quadCentre(const std::array<Eigen::Vector2d, 4> &quad) {
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    for (const auto &w : quad) centre += 0.25 * w;
+    return centre;
+}
+
 bool insideConvex(const std::array<Eigen::Vector2d, 4> &quad, const Eigen::Vector2d &p) {
     int sign = 0;
     for (int i = 0; i < 4; ++i) {

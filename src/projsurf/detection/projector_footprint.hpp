@@ -20,6 +20,9 @@ struct Footprint {
 std::optional<Footprint> footprintOnPlane(const Plane &plane, const PlaneFrame &frame, const Eigen::Vector3d &origin,
                                           const std::array<Eigen::Vector3d, 4> &rays);
 
+/// The mean of the quadrilateral's four corners: where the rectangle search starts.
+Eigen::Vector2d quadCentre(const std::array<Eigen::Vector2d, 4> &quad);
+
 /// Whether p lies inside (or on) the convex quadrilateral `quad` (either orientation).
 bool insideConvex(const std::array<Eigen::Vector2d, 4> &quad, const Eigen::Vector2d &p);
 

@@ -91,7 +91,8 @@ std::optional<StanceFootprint> stanceFootprint(const PlanSurface &s, const Proje
               r0 = static_cast<int>(std::floor(std::clamp(a.y(), -big, big)));
     const int c1 = static_cast<int>(std::ceil(std::clamp(b.x(), -big, big))),
               r1 = static_cast<int>(std::ceil(std::clamp(b.y(), -big, big)));
-    out.cells = cv::Rect(c0, r0, std::max(0, c1 - c0), std::max(0, r1 - r0)) & cv::Rect(0, 0, s.raster.cols, s.raster.rows);
+    out.cells =
+        cv::Rect(c0, r0, std::max(0, c1 - c0), std::max(0, r1 - r0)) & cv::Rect(0, 0, s.raster.cols, s.raster.rows);
     if (out.cells.area() <= 0) return std::nullopt;
     // Bounds: the box, the footprint's area, the free cells in the box, the range disc.
     const double cell = s.raster.cell, aspect = limits.aspect;
@@ -106,10 +107,9 @@ std::optional<StanceFootprint> stanceFootprint(const PlanSurface &s, const Proje
     return out;
 }
 
-std::optional<Rectangle> pictureFromStance(const PlanSurface &s, const Projector &projector,
-                                           const StanceFootprint &fp, const Stance &stance,
-                                           const StanceLimits &limits, cv::Mat &mask, double min_area,
-                                           double min_width) {
+std::optional<Rectangle> pictureFromStance(const PlanSurface &s, const Projector &projector, const StanceFootprint &fp,
+                                           const Stance &stance, const StanceLimits &limits, cv::Mat &mask,
+                                           double min_area, double min_width) {
     RasterFrame sub = s.raster;
     sub.top_left = s.raster.toPlane({double(fp.cells.x), double(fp.cells.y)});
     sub.cols = fp.cells.width;
@@ -132,8 +132,7 @@ std::optional<Rectangle> pictureFromStance(const PlanSurface &s, const Projector
             if (dx * dx + dy * dy > left) row[c] = 0;
         }
     }
-    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-    for (const auto &w : fp.uv) centre += 0.25 * w;
+    const Eigen::Vector2d centre = quadCentre(fp.uv);
     const auto unshadowed = largestFreeRectangle(mask, sub, s.frame, limits.aspect, centre);
     if (!unshadowed || unshadowed->area() < min_area || unshadowed->width + 1e-9 < min_width) return std::nullopt;
     thread_local cv::Mat small;

@@ -9,6 +9,7 @@
 #include "projsurf/detection/paper/voxel_grid.hpp"
 #include "projsurf/detection/planes/vertical_planes.hpp"
 #include "projsurf/detection/planes/vertical_ransac.hpp"
+#include "projsurf/detection/projector_footprint.hpp"
 #include "projsurf/detection/rectangle_search.hpp"
 #include "projsurf/detection/stage_timer.hpp"
 
@@ -109,9 +110,7 @@ Detection detectPaper(const Cloud &cloud, const Projector &projector, const Dete
     rasteriseFreeSpace(uv, hull_edges, cfg.paper, c);
     time.lap("free_space");
 
-    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-    for (const auto &w : c.footprint.uv) centre += 0.25 * w;
-    const auto rect = largestFreeRectangle(c.free, c.raster, c.frame, aspect, centre);
+    const auto rect = largestFreeRectangle(c.free, c.raster, c.frame, aspect, quadCentre(c.footprint.uv));
     time.lap("rectangle");
     if (rect) c.rectangle = *rect;
     describeCandidate(c, det.debug);
