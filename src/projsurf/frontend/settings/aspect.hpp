@@ -4,7 +4,7 @@
 
 namespace projsurf::frontend {
 
-/// "W:H" or one number -> W / H, within (0.01, 100). Throws InputError(what, problem); a
+/// "W:H" or one number -> W / H, within [0.01, 100]. Throws InputError(what, problem); a
 /// ratio written with another separator ("16x9", "16/9") is told to be written W:H.
 double parseAspect(const std::string &what, const std::string &text);
 

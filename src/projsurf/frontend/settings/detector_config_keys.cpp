@@ -163,11 +163,17 @@ std::optional<long long> parseWhole(const std::string &text) {
     return v;
 }
 
-bool inRange(double v, const KeyRange &r) { return (r.lo_open ? v > r.lo : v >= r.lo) && v <= r.hi; }
+/// Within the range as its text states it: an end such as pi/2 is printed to 10 digits
+/// (1.570796327), and the printed number itself is taken.
+bool inRange(double v, const KeyRange &r) {
+    const auto printed = [](double end) { return std::abs(end) < 1e300 ? std::stod(numberText(end)) : end; };
+    const double lo = std::min(r.lo, printed(r.lo)), hi = std::max(r.hi, printed(r.hi));
+    return (r.lo_open ? v > lo : v >= lo) && v <= hi;
+}
 
 [[noreturn]] void refuse(const ConfigKey &key, const std::string &got, bool quoted, const std::string &what) {
-    throw InputError(what,
-                     "must be " + expectation(key) + ", got " + (quoted ? "the quoted word " : "") + "'" + shownText(got) + "'");
+    throw InputError(what, "must be " + expectation(key) + ", got " + (quoted ? "the quoted word " : "") + "'" +
+                               shownText(got) + "'");
 }
 
 /// The one item of a scalar value.
