@@ -1,6 +1,6 @@
 #include "bench_blanking.hpp"
 
-#include "eval/walk_in.hpp"
+#include "eval/demo/walk_in.hpp"
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/sim/depth_sensor.hpp"
 #include "projsurf/sim/scenes/scenarios.hpp"

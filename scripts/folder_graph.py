@@ -7,7 +7,11 @@
     the folders its files include (an include it does not link, or a link it does not use);
   - a folder's header includes a folder it links only PRIVATE;
   - a folder's public header (`detection/planes.hpp` beside `detection/planes/`) includes
-    another folder's headers, or a file of src/projsurf includes a public header.
+    another folder's headers, or a file of src/projsurf includes a public header;
+  - the same for the sub-folders of eval/ (A -> B when a file in eval/A includes "eval/B/..."):
+    a cycle, a library of projsurf_eval_folder() (eval/CMakeLists.txt) that does not link
+    exactly the sub-folders its files include, a header including one it links PRIVATE, or
+    a source directly in eval/ (in no sub-folder, so in no library).
 
   python3 scripts/folder_graph.py [SOURCE_DIR]       (--dot prints the graph for Graphviz)
 """
@@ -18,6 +22,8 @@ import sys
 INCLUDE = re.compile(r'^\s*#\s*include\s+"projsurf/(.+)/[^/]+\.hpp"', re.M)
 PUBLIC_INCLUDE = re.compile(r'^\s*#\s*include\s+"projsurf/(.+)\.hpp"', re.M)
 FOLDER_CALL = re.compile(r"^projsurf_folder\(([^)]*)\)", re.M)
+EVAL_INCLUDE = re.compile(r'^\s*#\s*include\s+"eval/(.+)/[^/]+\.hpp"', re.M)
+EVAL_FOLDER_CALL = re.compile(r"^projsurf_eval_folder\(([^)]*)\)", re.M)
 
 
 def is_public_header(path):
@@ -56,7 +62,7 @@ def public_header_problems(root, folders):
     return problems
 
 
-def includes_of(root, folder):
+def includes_of(root, folder, include=INCLUDE):
     """{included folder: (the first header including it or None, the first file)} for the files in `folder`."""
     found = {}
     path = os.path.join(root, folder)
@@ -65,7 +71,7 @@ def includes_of(root, folder):
             continue
         with open(os.path.join(path, name), encoding="utf-8") as f:
             text = f.read()
-        for target in INCLUDE.findall(text):
+        for target in include.findall(text):
             if target == folder:
                 continue
             header, first = found.get(target, (None, name))
@@ -73,11 +79,11 @@ def includes_of(root, folder):
     return found
 
 
-def declared_links(cmake_text, folders):
+def declared_links(cmake_text, folders, call_re=FOLDER_CALL, prefix="projsurf_"):
     """{folder: {linked folder: 'PUBLIC'|'PRIVATE'}} from the projsurf_folder() calls."""
-    by_target = {"projsurf_" + f.replace("/", "_"): f for f in folders}
+    by_target = {prefix + f.replace("/", "_"): f for f in folders}
     out = {}
-    for call in FOLDER_CALL.findall(cmake_text):
+    for call in call_re.findall(cmake_text):
         words = call.split()
         folder, scope, links = words[0], "PUBLIC", {}
         for w in words[1:]:
@@ -87,6 +93,49 @@ def declared_links(cmake_text, folders):
                 links[by_target[w]] = scope
         out[folder] = links
     return out
+
+
+def link_problems(links, uses, prefix="projsurf_", include_root="projsurf/"):
+    """Each library links exactly the folders its files include, PUBLIC when a header does."""
+    problems = []
+    for folder, linked in sorted(links.items()):
+        for g, (header, first) in sorted(uses.get(folder, {}).items()):
+            target = prefix + g.replace("/", "_")
+            if g not in linked:
+                problems.append(f"{folder}: {first} includes {include_root}{g}/ but its library does not link {target}")
+            elif header and linked[g] == "PRIVATE":
+                problems.append(f"{folder}: the header {header} includes {include_root}{g}/, but {target} is linked PRIVATE")
+        for g in sorted(set(linked) - set(uses.get(folder, {}))):
+            problems.append(f"{folder}: links {prefix}{g.replace('/', '_')} but includes nothing of {g}/")
+    return problems
+
+
+def check_eval(source):
+    """eval/'s sub-folders, one library each (projsurf_eval_folder() in eval/CMakeLists.txt):
+    (problems, (folders, edges, libraries))."""
+    root = os.path.join(source, "eval")
+    if not os.path.isdir(root):
+        return [], (0, 0, 0)
+    problems = [f"eval/{name} is in no sub-folder of eval/, so in no library"
+                for name in sorted(os.listdir(root)) if name.endswith((".cpp", ".hpp"))]
+    folders = sorted(d for d in os.listdir(root) if os.path.isdir(os.path.join(root, d)))
+    uses = {f: includes_of(root, f, EVAL_INCLUDE) for f in folders}
+    graph = {f: set(uses[f]) for f in folders}
+    for f in folders:
+        for g in sorted(graph[f]):
+            if g not in folders:
+                problems.append(f"eval/{f}: includes eval/{g}/, which is no sub-folder of eval/")
+    cycle = find_cycle(graph)
+    if cycle:
+        problems.append("cycle between eval/'s sub-folders: " + " -> ".join(cycle))
+    cmake = os.path.join(root, "CMakeLists.txt")
+    text = open(cmake, encoding="utf-8").read() if os.path.isfile(cmake) else ""
+    links = declared_links(text, folders, EVAL_FOLDER_CALL, "projsurf_eval_")
+    for f in folders:
+        if f not in links:
+            problems.append(f"eval/{f}: no projsurf_eval_folder({f} ...) in eval/CMakeLists.txt")
+    problems += ["eval/" + p for p in link_problems(links, uses, "projsurf_eval_", "eval/")]
+    return problems, (len(folders), sum(len(g) for g in graph.values()), len(links))
 
 
 def find_cycle(graph):
@@ -145,22 +194,17 @@ def main(argv):
             with open(os.path.join(dirpath, "CMakeLists.txt"), encoding="utf-8") as f:
                 cmake_text += f.read() + "\n"
     links = declared_links(cmake_text, folders)
-    for folder, linked in sorted(links.items()):
-        for g, (header, first) in sorted(uses.get(folder, {}).items()):
-            target = "projsurf_" + g.replace("/", "_")
-            if g not in linked:
-                problems.append(f"{folder}: {first} includes projsurf/{g}/ but its library does not link {target}")
-            elif header and linked[g] == "PRIVATE":
-                problems.append(f"{folder}: the header {header} includes projsurf/{g}/, but {target} is linked PRIVATE")
-        for g in sorted(set(linked) - set(uses.get(folder, {}))):
-            problems.append(f"{folder}: links projsurf_{g.replace('/', '_')} but includes nothing of {g}/")
+    problems += link_problems(links, uses)
+    eval_problems, eval_counts = check_eval(source)
+    problems += eval_problems
 
     for p in problems:
         print("folder_graph: " + p)
     if problems:
         return 1
     print(f"folder_graph: {len(folders)} folders, {sum(len(g) for g in graph.values())} edges, no cycle; "
-          f"{len(links)} folder libraries link exactly what they include")
+          f"{len(links)} folder libraries link exactly what they include; eval/: {eval_counts[0]} sub-folders, "
+          f"{eval_counts[1]} edges, no cycle, {eval_counts[2]} libraries link exactly the sub-folders they include")
     return 0
 
 

@@ -3,7 +3,7 @@
 
 For every label in labels/real/*/*.yaml, runs `plan` on its frame as the planning test does
 (--calib LABEL, the label's gravity) and scores the proposed picture by the detector's own
-rules (eval/real_scoring: valid = at least 95 % of it free on one labelled usable surface and
+rules (eval/real/real_scoring: valid = at least 95 % of it free on one labelled usable surface and
 on its plane; `projsurf_label_tool score`). Also, looser: whether each of its four corners
 projects into the depth image inside some usable surface's polygons and within --plane-tol m
 of its plane (a corner on a dresser in front of a labelled wall has the wall's pixel but not

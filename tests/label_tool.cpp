@@ -12,7 +12,7 @@
 //          colour section, the colour-aware best: the unsuitable polygons as further obstacles) and
 //          writes the label.
 //   score <frame_dir> <label.yaml> x,y,z x,y,z x,y,z x,y,z
-//          scores a rectangle (camera frame, corners TL TR BR BL) by eval/real_scoring's rules, the
+//          scores a rectangle (camera frame, corners TL TR BR BL) by eval/real/real_scoring's rules, the
 //          detector's: prints "valid 0|1 free F surface NAME why ..." (scripts/plan_labels.py)
 //   baseline <real_dir> <labels_dir> [margin]  prints the regression baseline (labels/baseline.yaml); a frame
 //          not in real_dir is looked for in data/real (run from the repository root):
@@ -29,11 +29,11 @@
 #include <string>
 
 #include "projsurf/detection/gravity.hpp"
-#include "eval/label_overlay.hpp"
-#include "eval/label_reference.hpp"
-#include "eval/labelled_eval.hpp"
-#include "eval/real_labels.hpp"
-#include "eval/real_scoring.hpp"
+#include "eval/real/label_overlay.hpp"
+#include "eval/real/label_reference.hpp"
+#include "eval/real/labelled_eval.hpp"
+#include "eval/real/real_labels.hpp"
+#include "eval/real/real_scoring.hpp"
 #include "projsurf/io/formats/cloud_io.hpp"
 #include "projsurf/io/yaml/yaml_files.hpp"
 #include "projsurf/sim/scenes/scenarios.hpp"
@@ -204,7 +204,8 @@ int main(int argc, char **argv) {
         if (std::string(argv[1]) == "baseline") {
             const double margin = argc > 4 ? std::stod(argv[4]) : 0.05;
             std::printf(
-                "# Regression floor of the labelled real-frame suite, checked by tests/eval/test_real_labels.cpp.\n"
+                "# Regression floor of the labelled real-frame suite, checked by "
+                "tests/eval/real/test_real_labels.cpp.\n"
                 "# Per frame: whether today's default detector is right (valid, or nothing found where the\n"
                 "# label has no usable surface) and its area ratio to the label's best minus %.2f\n"
                 "# (at most 0.90, the target: a valid answer may exceed the best, see labels/README.md).\n"

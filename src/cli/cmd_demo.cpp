@@ -10,11 +10,11 @@
 #include <stdexcept>
 
 #include "cli/commands.hpp"
-#include "eval/demo.hpp"
-#include "eval/lens_offset_demo.hpp"
-#include "eval/plan_demo.hpp"
-#include "eval/plot.hpp"
-#include "eval/walk_in.hpp"
+#include "eval/demo/demo.hpp"
+#include "eval/demo/lens_offset_demo.hpp"
+#include "eval/demo/plan_demo.hpp"
+#include "eval/demo/walk_in.hpp"
+#include "eval/plot/plot.hpp"
 #include "projsurf/frontend/render/overlay.hpp"
 #include "projsurf/io/files/errors.hpp"
 #include "projsurf/io/files/files.hpp"

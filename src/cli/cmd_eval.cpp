@@ -12,17 +12,17 @@
 #include <thread>
 
 #include "cli/commands.hpp"
-#include "eval/colour_suite.hpp"
-#include "eval/experiments.hpp"
-#include "eval/labelled_eval.hpp"
-#include "eval/plan_suite.hpp"
-#include "eval/procam_comparison.hpp"
-#include "eval/procam_reference.hpp"
-#include "eval/projector_eval.hpp"
-#include "eval/real_gallery.hpp"
-#include "eval/real_labels.hpp"
-#include "eval/realistic_suite.hpp"
-#include "eval/report.hpp"
+#include "eval/paper/experiments.hpp"
+#include "eval/procam/procam_comparison.hpp"
+#include "eval/procam/procam_reference.hpp"
+#include "eval/real/labelled_eval.hpp"
+#include "eval/real/real_gallery.hpp"
+#include "eval/real/real_labels.hpp"
+#include "eval/realistic/colour_suite.hpp"
+#include "eval/realistic/plan_suite.hpp"
+#include "eval/realistic/projector_eval.hpp"
+#include "eval/realistic/realistic_suite.hpp"
+#include "eval/report/report.hpp"
 #include "projsurf/frontend/inputs/chessboard_calibration.hpp"
 #include "projsurf/frontend/render/progress.hpp"
 #include "projsurf/io/files/errors.hpp"
@@ -198,7 +198,8 @@ void runRealisticTable(const EvalOptions &o) {
     writeSuiteTable(o, "realistic.md", eval::realisticSuiteMarkdown(realistic), eval::realisticSuiteSummary(realistic));
 }
 
-/// The plan suite alone (eval/plan_suite.hpp): DIR/plan.md and its summary line; --quick skips the reference search.
+/// The plan suite alone (eval/realistic/plan_suite.hpp): DIR/plan.md and its summary line; --quick skips the
+/// reference search.
 /// Issue 41's oblique wall through the suite's sensor model and each realistic sensor family.
 void runObliqueTable(const EvalOptions &o, eval::PlanSuiteOptions popt) {
     std::string md, summary;

@@ -16,7 +16,7 @@
 
 #include "cli/calibration_input.hpp"
 #include "cli/commands.hpp"
-#include "eval/truth_json.hpp"
+#include "eval/paper/truth_json.hpp"
 #include "projsurf/frontend/settings/aspect.hpp"
 #include "projsurf/io/files/errors.hpp"
 #include "projsurf/io/files/files.hpp"

@@ -9,7 +9,7 @@
 
 #include "cli_run.hpp"
 #include "projsurf/calibration/projected_picture.hpp"
-#include "eval/experiments.hpp"
+#include "eval/paper/experiments.hpp"
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/io/formats/detection_json.hpp"
 #include "projsurf/io/yaml/yaml_files.hpp"

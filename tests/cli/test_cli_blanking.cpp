@@ -9,7 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "cli_run.hpp"
-#include "eval/walk_in.hpp"
+#include "eval/demo/walk_in.hpp"
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/frontend/render/test_card.hpp"
 #include "projsurf/io/files/files.hpp"

@@ -5,7 +5,7 @@
 #include <random>
 
 #include <opencv2/imgproc.hpp>
-#include "eval/scoring.hpp"
+#include "eval/paper/scoring.hpp"
 #include "projsurf/detection/default/planar_regions.hpp"
 #include "projsurf/detection/gravity.hpp"
 #include "projsurf/detector/detector.hpp"

@@ -7,7 +7,7 @@
 
 #include "projsurf/keystone/keystone.hpp"
 #include "projsurf/people/beam_blanking.hpp"
-#include "eval/walk_in.hpp"
+#include "eval/demo/walk_in.hpp"
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/frontend/render/test_card.hpp"
 #include "projsurf/sim/depth_sensor.hpp"

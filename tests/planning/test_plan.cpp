@@ -1,5 +1,5 @@
 // Where to stand (contract "Where to stand"): the planned move, then the scene rendered from
-// the moved robot and detected again (eval/plan_suite.hpp); the picture found is at least 95 %
+// the moved robot and detected again (eval/realistic/plan_suite.hpp); the picture found is at least 95 %
 // of the predicted, and 1.5x today's wherever the reference search says the scene allows it.
 #include <gtest/gtest.h>
 
@@ -12,8 +12,8 @@
 
 #include "label_fixtures.hpp"
 #include "cli_run.hpp"
-#include "eval/plan_suite.hpp"
-#include "eval/real_labels.hpp"
+#include "eval/real/real_labels.hpp"
+#include "eval/realistic/plan_suite.hpp"
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/io/formats/cloud_io.hpp"
 #include "projsurf/io/yaml/yaml_files.hpp"

@@ -17,8 +17,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "eval/experiments.hpp"
-#include "eval/realistic_suite.hpp"
+#include "eval/paper/experiments.hpp"
+#include "eval/realistic/realistic_suite.hpp"
 #include "projsurf/detection/default/planar_regions.hpp"
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/io/formats/cloud_io.hpp"

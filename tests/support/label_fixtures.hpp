@@ -10,7 +10,7 @@
 
 #include "projsurf/types/camera.hpp"
 #include "projsurf/types/cloud.hpp"
-#include "eval/real_labels.hpp"
+#include "eval/real/real_labels.hpp"
 #include "projsurf/io/files/errors.hpp"
 
 using namespace projsurf::eval;  // the evaluation under test

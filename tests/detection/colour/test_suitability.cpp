@@ -12,7 +12,7 @@
 #include "projsurf/detection/default/observed_free_space.hpp"
 #include "projsurf/types/plane_frame.hpp"
 #include "projsurf/types/point_grid.hpp"
-#include "eval/colour_suite.hpp"
+#include "eval/realistic/colour_suite.hpp"
 #include "projsurf/detector/detector.hpp"
 #include "projsurf/io/formats/detection_json.hpp"
 #include "projsurf/io/yaml/yaml_files.hpp"

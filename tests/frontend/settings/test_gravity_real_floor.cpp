@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <string>
 
-#include "eval/real_labels.hpp"
+#include "eval/real/real_labels.hpp"
 #include "label_fixtures.hpp"
 #include "projsurf/frontend/settings/gravity_choice.hpp"
 #include "projsurf/io/formats/cloud_io.hpp"
