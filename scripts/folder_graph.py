@@ -11,7 +11,11 @@
   - the same for the sub-folders of eval/ (A -> B when a file in eval/A includes "eval/B/..."):
     a cycle, a library of projsurf_eval_folder() (eval/CMakeLists.txt) that does not link
     exactly the sub-folders its files include, a header including one it links PRIVATE, or
-    a source directly in eval/ (in no sub-folder, so in no library).
+    a source directly in eval/ (in no sub-folder, so in no library);
+  - a front end (src/cli, ros/src, python/src) includes a header of src/projsurf that is not
+    installed, i.e. that no public header reaches by its includes (cmake/projsurf_library.cmake,
+    projsurf_install_public_headers): an installed consumer could not do what that front end
+    does. (eval/ and the tests are not front ends.)
 
   python3 scripts/folder_graph.py [SOURCE_DIR]       (--dot prints the graph for Graphviz)
 """
@@ -21,6 +25,10 @@ import sys
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"projsurf/(.+)/[^/]+\.hpp"', re.M)
 PUBLIC_INCLUDE = re.compile(r'^\s*#\s*include\s+"projsurf/(.+)\.hpp"', re.M)
+# What projsurf_install_public_headers() follows: the same form, at the start of a line.
+INSTALLED_INCLUDE = re.compile(r'^#include "projsurf/([^"]+)"', re.M)
+ANY_INCLUDE = re.compile(r'^\s*#\s*include\s+"projsurf/([^"]+)"', re.M)
+FRONT_ENDS = ("src/cli", "ros/src", "python/src")
 FOLDER_CALL = re.compile(r"^projsurf_folder\(([^)]*)\)", re.M)
 EVAL_INCLUDE = re.compile(r'^\s*#\s*include\s+"eval/(.+)/[^/]+\.hpp"', re.M)
 EVAL_FOLDER_CALL = re.compile(r"^projsurf_eval_folder\(([^)]*)\)", re.M)
@@ -59,6 +67,42 @@ def public_header_problems(root, folders):
                 for inc in PUBLIC_INCLUDE.findall(h.read()):
                     if inc in publics:
                         problems.append(f"{os.path.relpath(path, root)} includes the public header projsurf/{inc}.hpp")
+    return problems
+
+
+def installed_headers(root):
+    """The headers projsurf_install_public_headers() installs: every folder's public header and
+    what it includes, transitively ('detection/detector_config.hpp', relative to src/projsurf)."""
+    todo, done = [], set()
+    for dirpath, _, files in os.walk(root):
+        for name in files:
+            if is_public_header(os.path.join(dirpath, name)):
+                todo.append(os.path.relpath(os.path.join(dirpath, name), root))
+    while todo:
+        header = todo.pop()
+        if header in done or not os.path.isfile(os.path.join(root, header)):
+            continue
+        done.add(header)
+        with open(os.path.join(root, header), encoding="utf-8") as h:
+            todo += INSTALLED_INCLUDE.findall(h.read())
+    return done
+
+
+def front_end_problems(source, root):
+    """A front end's include of a header of src/projsurf that is not installed."""
+    installed = installed_headers(root)
+    problems = []
+    for front_end in FRONT_ENDS:
+        for dirpath, _, files in sorted(os.walk(os.path.join(source, front_end))):
+            for name in sorted(files):
+                if not name.endswith((".cpp", ".hpp")):
+                    continue
+                path = os.path.join(dirpath, name)
+                with open(path, encoding="utf-8") as f:
+                    for header in ANY_INCLUDE.findall(f.read()):
+                        if header not in installed and os.path.isfile(os.path.join(root, header)):
+                            problems.append(f"{os.path.relpath(path, source)} includes projsurf/{header}, which no public "
+                                            "header includes (not installed: add it to its folder's public header)")
     return problems
 
 
@@ -184,6 +228,7 @@ def main(argv):
             if g not in folders:
                 problems.append(f"{f}: includes projsurf/{g}/, which is no folder of src/projsurf")
     problems += public_header_problems(root, folders)
+    problems += front_end_problems(source, root)
     cycle = find_cycle(graph)
     if cycle:
         problems.append("cycle between folders: " + " -> ".join(cycle))
@@ -203,8 +248,9 @@ def main(argv):
     if problems:
         return 1
     print(f"folder_graph: {len(folders)} folders, {sum(len(g) for g in graph.values())} edges, no cycle; "
-          f"{len(links)} folder libraries link exactly what they include; eval/: {eval_counts[0]} sub-folders, "
-          f"{eval_counts[1]} edges, no cycle, {eval_counts[2]} libraries link exactly the sub-folders they include")
+          f"{len(links)} folder libraries link exactly what they include; the front ends include installed "
+          f"headers only; eval/: {eval_counts[0]} sub-folders, {eval_counts[1]} edges, no cycle, "
+          f"{eval_counts[2]} libraries link exactly the sub-folders they include")
     return 0
 
 

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <map>
@@ -66,6 +67,18 @@ struct Inbox {
         std::lock_guard<std::mutex> lock(mutex);
         return by_stamp;
     }
+    /// For a failed wait: what did come ("2 messages, stamps 12.300 12.400; 1 publisher").
+    std::string received() {
+        std::lock_guard<std::mutex> lock(mutex);
+        std::string text = std::to_string(by_stamp.size()) + " messages on " + sub.getTopic();
+        if (!by_stamp.empty()) text += ", stamps";
+        char stamp[32];
+        for (const auto &[t, m] : by_stamp) {
+            std::snprintf(stamp, sizeof stamp, " %.3f", t.toSec());
+            text += stamp;
+        }
+        return text + "; " + std::to_string(sub.getNumPublishers()) + " publisher(s) connected";
+    }
 };
 
 inline std_msgs::Header header(const std::string &frame, const ros::Time &stamp) {
@@ -87,23 +100,39 @@ inline bool isBlack(const sensor_msgs::Image &img, int u, int v) {
     return p[0] == 0 && p[1] == 0 && p[2] == 0;
 }
 
+/// Calls `service` until the node has answered on the cloud of `stamp`, i.e. published its
+/// message of that stamp in `inbox`; `call` keeps the last answer. A successful answer alone
+/// does not say which cloud it was about: the node answers on the latest cloud it has, which
+/// may still be an earlier test's while this cloud is on its way (slow under load).
+template <typename Msg>
+bool detectUntilAnswered(const std::string &service, Inbox<Msg> &inbox, const ros::Time &stamp, std_srvs::Trigger &call,
+                         Msg &out, double seconds = 20.0) {
+    return waitFor(
+        [&] {
+            call = std_srvs::Trigger();
+            return ros::service::call(service, call) && inbox.waitStamp(stamp, 0.5, out);
+        },
+        seconds);
+}
+
 /// Publishes the simulated room (sim_wall.hpp, the camera at the origin) on `ns`/points and
-/// calls `ns`/projsurf/detect until an answer succeeds (bounded waits); `call` keeps the last.
+/// calls `ns`/projsurf/detect until it has answered on that cloud, with success (bounded
+/// waits); `call` keeps the last answer.
 inline void publishRoomAndDetect(ros::NodeHandle &nh, const std::string &ns, std_srvs::Trigger &call,
                                  ros::Publisher &pub) {
+    Inbox<geometry_msgs::PolygonStamped> rects;
+    rects.open(nh, ns + "/projsurf/rectangle");
     pub = nh.advertise<sensor_msgs::PointCloud2>(ns + "/points", 1, true);
     const std::string service = ns + "/projsurf/detect";
     ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(60.0))) << service << " never came up";
     ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0)) << "the node never subscribed to points";
+    const ros::Time stamp = ros::Time::now();
     pub.publish(ros_node::toPointCloud2(sim_test::renderScene(sim_test::cameraPose(0, 0, 0), {}),
-                                        header("camera_optical", ros::Time::now())));
-    ASSERT_TRUE(waitFor(
-        [&] {
-            call = std_srvs::Trigger();
-            return ros::service::call(service, call) && call.response.success;
-        },
-        20.0))
-        << call.response.message;
+                                        header("camera_optical", stamp)));
+    geometry_msgs::PolygonStamped rect;
+    ASSERT_TRUE(detectUntilAnswered(service, rects, stamp, call, rect))
+        << "no ~rectangle for the room's cloud; " << rects.received() << "; last answer: " << call.response.message;
+    ASSERT_TRUE(call.response.success) << call.response.message;
 }
 
 class NodeTest : public ::testing::Test {

@@ -4,6 +4,7 @@
 # directly), and the C++ test client. Every wait is bounded; everything started here is
 # stopped on exit, whatever happens.
 # usage: run_node_test.sh ROS_BUILD_DIR TEST_CLIENT PROJSURF_CLI
+# (PROJSURF_NODE_TEST_KEEP=DIR: on failure, everything written, ROS logs too, is copied there.)
 set -euo pipefail
 build=$1 client=$2
 tmp=$(mktemp -d /tmp/projsurf-ros-test.XXXXXX)
@@ -27,6 +28,11 @@ on_exit() {
     stop_all
     if [ $rc != 0 ]; then
         for f in "$tmp"/*.log; do echo "----- $f (tail)"; tail -n 30 "$f"; done
+        # The whole of it (the master's and every node's ROS logs too), to look into a flake.
+        if [ -n "${PROJSURF_NODE_TEST_KEEP:-}" ]; then
+            mkdir -p "$PROJSURF_NODE_TEST_KEEP" && cp -r "$tmp" "$PROJSURF_NODE_TEST_KEEP/" &&
+                echo "run_node_test: logs kept in $PROJSURF_NODE_TEST_KEEP/$(basename "$tmp")"
+        fi
     fi
     rm -rf "$tmp"
     exit $rc

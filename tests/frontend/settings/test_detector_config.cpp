@@ -147,6 +147,15 @@ TEST(DetectorConfigKeys, TheFrontEndsSharedSettingNamesHaveKeys) {
         EXPECT_EQ(sharedSettingKey(setting).key, configKeyOfSetting(setting)) << setting;
 }
 
+TEST(DetectorConfigKeys, TheSharedNumberSettingsComeFromTheTableInTheCliOrder) {
+    // Derived from configKeyOfSetting()'s table: the words (method, hull, suitability) and the
+    // aspect's W:H are not numbers. The order is the CLI's flags' and Python's keyword list's.
+    const std::vector<std::string> expected = {"max_tilt",     "seed", "voxel_leaf", "ransac_distance",
+                                               "max_outliers", "cell", "max_planes", "max_outlier_fraction"};
+    EXPECT_EQ(sharedNumberSettings(), expected);
+    for (const std::string &name : sharedSettingNames()) EXPECT_NE(configKeyOfSetting(name), "") << name;
+}
+
 TEST(DetectorConfigKeys, TheDeadRegionTiltIsNoKey) {
     // The default method sets planes.regions.max_tilt from max_tilt: a key would do nothing.
     EXPECT_EQ(findConfigKey("planes.regions.max_tilt"), nullptr);

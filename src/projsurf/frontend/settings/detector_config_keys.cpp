@@ -73,21 +73,31 @@ std::string nearestConfigKey(const std::string &unknown) {
     return same_word_count == 1 ? same_word : "";
 }
 
+namespace {
+/// The settings the front ends share by name, and their keys.
+constexpr std::pair<const char *, const char *> kShared[] = {
+    {"method", "method"},
+    {"aspect", "aspect"},
+    {"max_tilt", "max_tilt"},
+    {"seed", "seed"},
+    {"hull", "paper.hull"},
+    {"voxel_leaf", "paper.voxel_leaf"},
+    {"ransac_distance", "paper.ransac_distance"},
+    {"max_outliers", "paper.max_outliers"},
+    {"cell", "free_space.cell"},
+    {"max_planes", "planes.max_planes"},
+    {"max_outlier_fraction", "check.max_outlier_fraction"},
+    {"suitability", "suitability.mode"},
+};
+}  // namespace
+
+std::vector<std::string> sharedSettingNames() {
+    std::vector<std::string> names;
+    for (const auto &[name, key] : kShared) names.emplace_back(name);
+    return names;
+}
+
 std::string configKeyOfSetting(const std::string &setting) {
-    static const std::pair<const char *, const char *> kShared[] = {
-        {"method", "method"},
-        {"aspect", "aspect"},
-        {"max_tilt", "max_tilt"},
-        {"seed", "seed"},
-        {"hull", "paper.hull"},
-        {"voxel_leaf", "paper.voxel_leaf"},
-        {"ransac_distance", "paper.ransac_distance"},
-        {"max_outliers", "paper.max_outliers"},
-        {"cell", "free_space.cell"},
-        {"max_planes", "planes.max_planes"},
-        {"max_outlier_fraction", "check.max_outlier_fraction"},
-        {"suitability", "suitability.mode"},
-    };
     for (const auto &[name, key] : kShared)
         if (setting == name) return key;
     return "";

@@ -55,6 +55,8 @@ std::string nearestConfigKey(const std::string &unknown);
 /// max_planes=; frontend/settings/method_settings.hpp): "max_planes" -> "planes.max_planes"; "" for
 /// another name.
 std::string configKeyOfSetting(const std::string &setting);
+/// Every name configKeyOfSetting knows, in the CLI's order.
+std::vector<std::string> sharedSettingNames();
 
 /// "bool", "int", "unsigned", "double", "list of double", "word".
 const char *keyTypeName(KeyType type);

@@ -1,12 +1,24 @@
 #include "projsurf/frontend/settings/shared_settings.hpp"
 
 #include <stdexcept>
+#include <variant>
 
 namespace projsurf::frontend {
 
 const std::vector<std::string> &sharedNumberSettings() {
-    static const std::vector<std::string> names = {"max_tilt",     "seed", "voxel_leaf", "ransac_distance",
-                                                   "max_outliers", "cell", "max_planes", "max_outlier_fraction"};
+    // The shared names whose key holds a plain number, in the table's order (the aspect's "W:H"
+    // and the words aside): the one list is configKeyOfSetting()'s.
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> out;
+        for (const std::string &name : sharedSettingNames()) {
+            // By the field the key reaches: the aspect's key is a double too, but written "W:H".
+            const ConfigAccess &field = sharedSettingKey(name).access;
+            if (std::holds_alternative<ConfigField<double>>(field) || std::holds_alternative<ConfigField<int>>(field) ||
+                std::holds_alternative<ConfigField<unsigned>>(field))
+                out.push_back(name);
+        }
+        return out;
+    }();
     return names;
 }
 

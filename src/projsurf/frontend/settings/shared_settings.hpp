@@ -11,8 +11,10 @@
 
 namespace projsurf::frontend {
 
-/// max_tilt, seed, voxel_leaf, ransac_distance, max_outliers, cell, max_planes,
-/// max_outlier_fraction: in the CLI's order.
+/// The shared settings (sharedSettingNames(), configKeyOfSetting()'s table) whose value is a
+/// plain number (not the aspect's W:H), in the table's order, which is the order of the CLI's
+/// flags and of Python's list of keywords: max_tilt, seed, voxel_leaf, ransac_distance,
+/// max_outliers, cell, max_planes, max_outlier_fraction.
 const std::vector<std::string> &sharedNumberSettings();
 
 /// The table's key of one of them ("max_planes" -> planes.max_planes); throws std::logic_error
