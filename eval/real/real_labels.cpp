@@ -149,6 +149,20 @@ const std::vector<std::string> &sensorFamilies() {
     return families;
 }
 
+namespace {
+
+/// A label kept in a half's folder (labels/real/tune/, check/) says that half: a frame moved
+/// between halves is moved in both places.
+void checkHalfFolder(const Reader &r, const std::string &split) {
+    const std::string folder = fs::path(r.path).parent_path().filename().string();
+    for (const std::string &side : splitSides())
+        if (folder == side && split != side)
+            r.fail((split.empty() ? "no 'split'" : "'split' is '" + split + "'") + " but the file is in the folder " +
+                   side + "/");
+}
+
+}  // namespace
+
 RealLabel readRealLabel(const std::string &path) {
     // As every YAML file: bounded size and nesting, one document, no alias cycle, no key twice.
     const YAML::Node root = loadCheckedYaml(path, readSmallTextFile(path, limits::kMaxSettingsYamlBytes, "YAML"));
@@ -161,13 +175,7 @@ RealLabel readRealLabel(const std::string &path) {
         r.fail("'frame' must be the name of one folder of the real frames, not a path");
     if (root["note"]) l.note = r.text(root["note"], "note");
     l.split = oneOf(r, root, "split", splitSides());
-    // A label kept in a half's folder (labels/real/tune/, check/) says that half: a frame moved
-    // between halves is moved in both places.
-    const std::string folder = fs::path(path).parent_path().filename().string();
-    for (const std::string &side : splitSides())
-        if (folder == side && l.split != side)
-            r.fail((l.split.empty() ? "no 'split'" : "'split' is '" + l.split + "'") +
-                   " but the file is in the folder " + side + "/");
+    checkHalfFolder(r, l.split);
     if (root["scene"]) l.scene = r.text(root["scene"], "scene");
     l.sensor = oneOf(r, root, "sensor", sensorFamilies());
 

@@ -34,7 +34,8 @@ def main(argv):
         write(tree, "src/projsurf/things/hidden.hpp", "#pragma once\n")
         write(tree, "src/projsurf/things/shown.cpp", '#include "projsurf/things/hidden.hpp"\n')
         write(tree, "src/cli/main.cpp", '#include "projsurf/things/reached.hpp"\n')
-        write(tree, "eval/report.cpp", '#include "projsurf/things/hidden.hpp"\n')  # not a front end
+        write(tree, "eval/CMakeLists.txt", "projsurf_eval_folder(report)\n")
+        write(tree, "eval/report/report.cpp", '#include "projsurf/things/hidden.hpp"\n')  # not a front end
         write(tree, "tests/t.cpp", '#include "projsurf/things/hidden.hpp"\n')  # nor the tests
         rc, out = run(script, tree)
         if rc != 0:
