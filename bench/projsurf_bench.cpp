@@ -291,6 +291,62 @@ void printHeader(const Options &o, bool pinned) {
     std::cout << "\n";
 }
 
+/// The stages table of one pipeline's runs `m`: each stage's median, spread and share of the
+/// median total, the time outside the stages, and the total.
+void printStageTable(const std::string &name, const Measured &m) {
+    const Stats total = wallStats(m);
+    std::cout << "### Stages: " << name << "\n\n";
+    std::cout << "| stage | module | median ms | p10–p90 ms | share of median total |\n|---|---|---:|---:|---:|\n";
+    for (const auto &stage : m.stage_order) {
+        const Stats s = stageStats(m, stage);
+        const std::string module = moduleOf(stage);
+        std::cout << "| " << stage << " | " << (module.empty() ? "(alternative, not in total)" : module) << " | "
+                  << fmt(s.median) << " | " << spread(s) << " | "
+                  << (total.median > 0 && !module.empty() ? fmt(100.0 * s.median / total.median) + " %" : "-")
+                  << " |\n";
+    }
+    {  // time between and around the stages (result assembly, debug output, copies)
+        std::vector<double> rest;
+        for (const auto &r : m.runs) {
+            double sum = 0.0;
+            for (const auto &[key, ms] : r.stages)
+                if (!moduleOf(key).empty()) sum += ms;
+            rest.push_back(r.wall_ms - sum);
+        }
+        const Stats s = summarize(rest);
+        std::cout << "| (outside the stages) | | " << fmt(s.median) << " | " << spread(s) << " | "
+                  << (total.median > 0 ? fmt(100.0 * s.median / total.median) + " %" : "-") << " |\n";
+    }
+    std::cout << "| **total (wall clock)** | | **" << fmt(total.median) << "** | " << spread(total) << " | |\n\n";
+}
+
+/// The per-frame table: each frame's median times and outcomes of the three pipelines (`results`
+/// in the order default, paper mode, stock), and the plane angle between default and stock.
+void printPerFrameTable(const std::vector<BenchFrame> &frames, const std::vector<Measured> &results) {
+    std::cout << "### Per frame (median ms; outcome of the last repetition)\n\n";
+    std::cout << "| frame | valid points | default ms | default planes | paper-mode ms | stock ms | stock / default "
+                 "| default: area m² | paper mode: area m² | stock: area m² | plane angle default vs stock |\n"
+                 "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    auto outcome = [](const Outcome &o) {
+        if (o.found) return fmt(o.area);
+        return std::string("none (") + (o.reason.empty() ? "?" : o.reason) + ")";
+    };
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        const Outcome &a = results[0].outcomes[f], &b = results[2].outcomes[f];
+        std::string angle = "-";
+        if (a.normal.squaredNorm() > 0.25 && b.normal.squaredNorm() > 0.25 && a.found && b.found)
+            angle = fmt(std::acos(std::min(1.0, std::fabs(a.normal.normalized().dot(b.normal.normalized())))) * 180.0 /
+                        M_PI) +
+                    "°";
+        std::cout << "| " << frames[f].name << " | " << frames[f].finite << " | " << fmt(results[0].frame_median_ms[f])
+                  << " | " << a.planes << " | " << fmt(results[1].frame_median_ms[f]) << " | "
+                  << fmt(results[2].frame_median_ms[f]) << " | "
+                  << ratio(results[2].frame_median_ms[f], results[0].frame_median_ms[f]) << " | " << outcome(a) << " | "
+                  << outcome(results[1].outcomes[f]) << " | " << outcome(b) << " | " << angle << " |\n";
+    }
+    std::cout << "\n";
+}
+
 void reportFrameSet(const std::string &title, const std::vector<BenchFrame> &frames, const Options &o,
                     const Projector &projector) {
     std::vector<Pipeline> pipelines = {oursPipeline("projsurf default", projector, Method::Default),
@@ -338,56 +394,9 @@ void reportFrameSet(const std::string &title, const std::vector<BenchFrame> &fra
               << fmt(stock_total.median) << "** | " << spread(stock_total) << " | **"
               << ratio(stock_total.median, wallStats(ours).median) << "** |\n\n";
 
-    for (std::size_t i = 0; i < pipelines.size(); ++i) {
-        const Measured &m = results[i];
-        const Stats total = wallStats(m);
-        std::cout << "### Stages: " << pipelines[i].name << "\n\n";
-        std::cout << "| stage | module | median ms | p10–p90 ms | share of median total |\n|---|---|---:|---:|---:|\n";
-        for (const auto &stage : m.stage_order) {
-            const Stats s = stageStats(m, stage);
-            const std::string module = moduleOf(stage);
-            std::cout << "| " << stage << " | " << (module.empty() ? "(alternative, not in total)" : module) << " | "
-                      << fmt(s.median) << " | " << spread(s) << " | "
-                      << (total.median > 0 && !module.empty() ? fmt(100.0 * s.median / total.median) + " %" : "-")
-                      << " |\n";
-        }
-        {  // time between and around the stages (result assembly, debug output, copies)
-            std::vector<double> rest;
-            for (const auto &r : m.runs) {
-                double sum = 0.0;
-                for (const auto &[key, ms] : r.stages)
-                    if (!moduleOf(key).empty()) sum += ms;
-                rest.push_back(r.wall_ms - sum);
-            }
-            const Stats s = summarize(rest);
-            std::cout << "| (outside the stages) | | " << fmt(s.median) << " | " << spread(s) << " | "
-                      << (total.median > 0 ? fmt(100.0 * s.median / total.median) + " %" : "-") << " |\n";
-        }
-        std::cout << "| **total (wall clock)** | | **" << fmt(total.median) << "** | " << spread(total) << " | |\n\n";
-    }
+    for (std::size_t i = 0; i < pipelines.size(); ++i) printStageTable(pipelines[i].name, results[i]);
 
-    std::cout << "### Per frame (median ms; outcome of the last repetition)\n\n";
-    std::cout << "| frame | valid points | default ms | default planes | paper-mode ms | stock ms | stock / default "
-                 "| default: area m² | paper mode: area m² | stock: area m² | plane angle default vs stock |\n"
-                 "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
-    auto outcome = [](const Outcome &o) {
-        if (o.found) return fmt(o.area);
-        return std::string("none (") + (o.reason.empty() ? "?" : o.reason) + ")";
-    };
-    for (std::size_t f = 0; f < frames.size(); ++f) {
-        const Outcome &a = results[0].outcomes[f], &b = results[2].outcomes[f];
-        std::string angle = "-";
-        if (a.normal.squaredNorm() > 0.25 && b.normal.squaredNorm() > 0.25 && a.found && b.found)
-            angle = fmt(std::acos(std::min(1.0, std::fabs(a.normal.normalized().dot(b.normal.normalized())))) * 180.0 /
-                        M_PI) +
-                    "°";
-        std::cout << "| " << frames[f].name << " | " << frames[f].finite << " | " << fmt(results[0].frame_median_ms[f])
-                  << " | " << a.planes << " | " << fmt(results[1].frame_median_ms[f]) << " | "
-                  << fmt(results[2].frame_median_ms[f]) << " | "
-                  << ratio(results[2].frame_median_ms[f], results[0].frame_median_ms[f]) << " | " << outcome(a) << " | "
-                  << outcome(results[1].outcomes[f]) << " | " << outcome(b) << " | " << angle << " |\n";
-    }
-    std::cout << "\n";
+    printPerFrameTable(frames, results);
 }
 
 void reportKeystone(const Options &o, const Projector &projector) {
@@ -557,6 +566,21 @@ void reportScale(const std::vector<BenchFrame> &frames, const Options &o, const 
     std::cout << "| stock PCL | " << fmt(fb.a) << " | " << fmt(fb.b * 1e6) << " | " << fmt(fb.r2) << " |\n\n";
 }
 
+/// The real frames of o.data (the first o.max_frames of them when that is set); none, with a
+/// warning, when the folder is missing or unreadable and was not given with --data (which
+/// throws the InputError instead).
+std::vector<BenchFrame> realFramesOrNone(const Options &o, bool data_given) {
+    std::vector<BenchFrame> real;
+    try {
+        real = loadRealFrames(o.data);
+    } catch (const InputError &e) {
+        if (data_given) throw;
+        std::cerr << "projsurf_bench: warning: " << e.what() << "; using the simulator's scenes only\n";
+    }
+    if (o.max_frames > 0 && real.size() > static_cast<std::size_t>(o.max_frames)) real.resize(o.max_frames);
+    return real;
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -595,14 +619,7 @@ int main(int argc, char **argv) {
     if (o.cpu >= 0 && !pinned) std::cerr << "projsurf_bench: warning: could not pin to CPU " << o.cpu << "\n";
     try {
         // The real frames; without --data a missing default folder falls back to the simulator.
-        std::vector<BenchFrame> real;
-        try {
-            real = loadRealFrames(o.data);
-        } catch (const InputError &e) {
-            if (data_given) throw;
-            std::cerr << "projsurf_bench: warning: " << e.what() << "; using the simulator's scenes only\n";
-        }
-        if (o.max_frames > 0 && real.size() > static_cast<std::size_t>(o.max_frames)) real.resize(o.max_frames);
+        const std::vector<BenchFrame> real = realFramesOrNone(o, data_given);
         std::vector<BenchFrame> simulated;
         if (o.sim || real.empty()) {
             std::cerr << "projsurf_bench: rendering the simulator's paper scenes ...\n";

@@ -194,6 +194,138 @@ int scoreRectangle(int argc, char **argv) {
     return 0;
 }
 
+namespace {
+
+/// `baseline`: prints the regression floor of the labelled real-frame suite (argv as in the
+/// comment at the top).
+int writeBaseline(int argc, char **argv) {
+    const double margin = argc > 4 ? std::stod(argv[4]) : 0.05;
+    std::printf(
+        "# Regression floor of the labelled real-frame suite, checked by "
+        "tests/eval/real/test_real_labels.cpp.\n"
+        "# Per frame: whether today's default detector is right (valid, or nothing found where the\n"
+        "# label has no usable surface) and its area ratio to the label's best minus %.2f\n"
+        "# (at most 0.90, the target: a valid answer may exceed the best, see labels/README.md).\n"
+        "# Made by: build/tests/projsurf_label_tool baseline %s %s %.2f\n"
+        "# Raise it as the detector improves.\nframes:\n",
+        margin, argv[2], argv[3], margin);
+    for (const auto &path : listLabelFiles(argv[3])) {
+        // The frame is in real_dir, else in the repository's data/real (run from its root).
+        const std::string frame = readRealLabel(path).frame;
+        std::string parent = argv[2];
+        if (!fs::is_directory(fs::path(parent) / frame) && fs::is_directory(fs::path("data/real") / frame))
+            parent = "data/real";
+        const LabelledFrame f = evaluateLabelledFrame(path, parent, DetectorConfig{}, {});
+        std::printf("  %s: {right: %s, min_ratio: %.2f}  # ratio %.3f\n", f.name.c_str(),
+                    f.score.right ? "true" : "false",
+                    std::clamp(std::floor((f.score.ratio - margin) * 100) / 100, 0.0, 0.9), f.score.ratio);
+    }
+    return 0;
+}
+
+/// `grid`: the depth in colour above the colour picture, both with a pixel grid, into `file`.
+int writeGrid(const std::string &dir, const Cloud &cloud, const std::string &file) {
+    cv::Mat a = depthColour(cloud), b = background(dir, cloud);
+    const fs::path un = fs::path(dir) / "rgb_unregistered.png";
+    if (fs::exists(un)) b = cv::imread(un.string(), cv::IMREAD_COLOR);
+    cv::resize(b, b, a.size());
+    gridLines(a);
+    gridLines(b);
+    cv::Mat both;
+    cv::vconcat(a, b, both);
+    cv::imwrite(file, both);
+    return 0;
+}
+
+/// `init`: a new label for the frame in `dir`, gravity estimated from its floor when it can be.
+int initLabel(const std::string &dir, const Cloud &cloud, const std::string &file) {
+    RealLabel l;
+    l.frame = fs::path(dir).filename().string();
+    l.projector = sim::exampleProjector();
+    const auto g = estimateGravityFromFloor(cloud, Eigen::Vector3d(0, 1, 0));
+    l.gravity_source = g ? "auto" : "stated";
+    if (g) l.gravity = g->gravity;
+    std::printf("gravity %s: %.4f %.4f %.4f (%d floor points)\n", l.gravity_source.c_str(), l.gravity.x(),
+                l.gravity.y(), l.gravity.z(), g ? g->floor_points : 0);
+    writeRealLabel(file, l);
+    return 0;
+}
+
+/// `--aim u,v`: points the label's projector at the plane of the surface seen at pixel (u, v).
+void aimProjector(RealLabel &l, const Cloud &cloud, const CameraIntrinsics &cam, const char *pixel) {
+    double u = 0, v = 0;
+    if (std::sscanf(pixel, "%lf,%lf", &u, &v) != 2) throw std::runtime_error("--aim u,v");
+    int s = 0;
+    for (int k = 0; k < static_cast<int>(l.surfaces.size()); ++k)
+        for (const auto &r : l.surfaces[k].regions)
+            if (insidePolygon(r.pixels, {u, v})) s = k;
+    const SurfaceFit fit = fitLabelSurface(cloud, cam, l, s);
+    if (!fit.ok) throw std::runtime_error("--aim: surface has no plane");
+    const Eigen::Vector3d ray = cam.backProject(u, v, 1.0);
+    const auto hit = intersectRay(fit.plane, Eigen::Vector3d::Zero(), ray);
+    if (!hit) throw std::runtime_error("--aim: the pixel does not see the plane");
+    l.projector.direction = (*hit - l.projector.origin).normalized();
+}
+
+/// Prints each surface's plane (tilt, points, rms) and the label's best rectangles.
+void printLabelSummary(const RealLabel &l, const Cloud &cloud, const CameraIntrinsics &cam) {
+    for (const auto &s : l.surfaces) {
+        if (!s.has_plane) {
+            std::printf("surface %s: no plane\n", s.name.c_str());
+            continue;
+        }
+        const SurfaceFit f = fitLabelSurface(cloud, cam, l, static_cast<int>(&s - &l.surfaces[0]));
+        const double tilt = std::asin(std::min(1.0, std::abs(s.plane.normal.dot(l.gravity)))) * 180 / M_PI;
+        std::printf("surface %s: n %.3f %.3f %.3f d %.3f, tilt vs gravity %.1f deg, %d points, rms %.1f mm\n",
+                    s.name.c_str(), s.plane.normal.x(), s.plane.normal.y(), s.plane.normal.z(), s.plane.d, tilt,
+                    f.points, 1000 * f.rms);
+    }
+    if (l.best.found)
+        std::printf("best on %s: %.3f x %.3f m = %.4f m^2\n", l.best.surface.c_str(), l.best.width, l.best.height,
+                    l.best.area());
+    else
+        std::printf("best: none\n");
+    if (l.colour.judged && l.colour.best.found)
+        std::printf("colour best on %s: %.3f x %.3f m = %.4f m^2 (%zu unsuitable polygons)\n",
+                    l.colour.best.surface.c_str(), l.colour.best.width, l.colour.best.height, l.colour.best.area(),
+                    l.colour.unsuitable.size());
+    else if (l.colour.judged)
+        std::printf("colour best: none\n");
+}
+
+/// Distance of every reading to the planes of the surfaces (nearest): grey within 2 cm, yellow
+/// 2-4 cm, red > 4 cm in front, blue > 4 cm behind, black no reading; with the label drawn over
+/// it and a pixel grid, into `path`.
+void writeResidualImage(const std::string &path, const RealLabel &l, const Cloud &cloud, const CameraIntrinsics &cam) {
+    cv::Mat img(cloud.height, cloud.width, CV_8UC3, cv::Scalar(0, 0, 0));
+    for (int v = 0; v < cloud.height; ++v)
+        for (int u = 0; u < cloud.width; ++u) {
+            const Point &p = cloud.points[static_cast<std::size_t>(v) * cloud.width + u];
+            if (!isFinite(p)) continue;
+            double r = 1e9;
+            for (const auto &s : l.surfaces)
+                if (s.has_plane) {
+                    const double d = s.plane.signedDistance(p.cast<double>());
+                    if (std::abs(d) < std::abs(r)) r = d;
+                }
+            cv::Vec3b c(90, 90, 90);
+            if (std::abs(r) < 0.02)
+                c = cv::Vec3b(200, 200, 200);
+            else if (std::abs(r) < 0.04)
+                c = cv::Vec3b(0, 220, 255);
+            else if (r > 0 && r < 0.5)
+                c = cv::Vec3b(0, 0, 255);
+            else if (r < 0 && r > -0.5)
+                c = cv::Vec3b(255, 80, 0);
+            img.at<cv::Vec3b>(v, u) = c;
+        }
+    cv::Mat over = renderLabelOverlay(img, l, cam, nullptr, 0.0);
+    gridLines(over);
+    cv::imwrite(path, over);
+}
+
+}  // namespace
+
 int main(int argc, char **argv) {
     if (argc < 4) {
         std::fprintf(stderr, "usage: see the comment at the top of tests/label_tool.cpp\n");
@@ -201,61 +333,16 @@ int main(int argc, char **argv) {
     }
     try {
         if (std::string(argv[1]) == "score") return scoreRectangle(argc, argv);
-        if (std::string(argv[1]) == "baseline") {
-            const double margin = argc > 4 ? std::stod(argv[4]) : 0.05;
-            std::printf(
-                "# Regression floor of the labelled real-frame suite, checked by "
-                "tests/eval/real/test_real_labels.cpp.\n"
-                "# Per frame: whether today's default detector is right (valid, or nothing found where the\n"
-                "# label has no usable surface) and its area ratio to the label's best minus %.2f\n"
-                "# (at most 0.90, the target: a valid answer may exceed the best, see labels/README.md).\n"
-                "# Made by: build/tests/projsurf_label_tool baseline %s %s %.2f\n"
-                "# Raise it as the detector improves.\nframes:\n",
-                margin, argv[2], argv[3], margin);
-            for (const auto &path : listLabelFiles(argv[3])) {
-                // The frame is in real_dir, else in the repository's data/real (run from its root).
-                const std::string frame = readRealLabel(path).frame;
-                std::string parent = argv[2];
-                if (!fs::is_directory(fs::path(parent) / frame) && fs::is_directory(fs::path("data/real") / frame))
-                    parent = "data/real";
-                const LabelledFrame f = evaluateLabelledFrame(path, parent, DetectorConfig{}, {});
-                std::printf("  %s: {right: %s, min_ratio: %.2f}  # ratio %.3f\n", f.name.c_str(),
-                            f.score.right ? "true" : "false",
-                            std::clamp(std::floor((f.score.ratio - margin) * 100) / 100, 0.0, 0.9), f.score.ratio);
-            }
-            return 0;
-        }
+        if (std::string(argv[1]) == "baseline") return writeBaseline(argc, argv);
         const std::string cmd = argv[1], file = argv[3];
         std::string dir = argv[2];
         while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
         const std::string cam_yaml = (fs::path(dir) / "camera.yaml").string();
         const CameraIntrinsics cam = readCamera(cam_yaml);
         const Cloud cloud = readDepthCloud((fs::path(dir) / "depth.png").string(), cam_yaml);
-        if (cmd == "grid") {
-            cv::Mat a = depthColour(cloud), b = background(dir, cloud);
-            const fs::path un = fs::path(dir) / "rgb_unregistered.png";
-            if (fs::exists(un)) b = cv::imread(un.string(), cv::IMREAD_COLOR);
-            cv::resize(b, b, a.size());
-            gridLines(a);
-            gridLines(b);
-            cv::Mat both;
-            cv::vconcat(a, b, both);
-            cv::imwrite(file, both);
-            return 0;
-        }
-        RealLabel l;
-        if (cmd == "init") {
-            l.frame = fs::path(dir).filename().string();
-            l.projector = sim::exampleProjector();
-            const auto g = estimateGravityFromFloor(cloud, Eigen::Vector3d(0, 1, 0));
-            l.gravity_source = g ? "auto" : "stated";
-            if (g) l.gravity = g->gravity;
-            std::printf("gravity %s: %.4f %.4f %.4f (%d floor points)\n", l.gravity_source.c_str(), l.gravity.x(),
-                        l.gravity.y(), l.gravity.z(), g ? g->floor_points : 0);
-            writeRealLabel(file, l);
-            return 0;
-        }
-        l = readRealLabel(file);
+        if (cmd == "grid") return writeGrid(dir, cloud, file);
+        if (cmd == "init") return initLabel(dir, cloud, file);
+        RealLabel l = readRealLabel(file);
         std::string overlay, residual, refine;
         bool do_refine = false;
         for (int i = 4; i < argc; ++i) {
@@ -269,20 +356,9 @@ int main(int argc, char **argv) {
             else if (a == "--refine" && i + 1 < argc) {
                 refine = argv[++i];
                 do_refine = true;
-            } else if (a == "--aim" && i + 1 < argc) {
-                double u = 0, v = 0;
-                if (std::sscanf(argv[++i], "%lf,%lf", &u, &v) != 2) throw std::runtime_error("--aim u,v");
-                int s = 0;
-                for (int k = 0; k < static_cast<int>(l.surfaces.size()); ++k)
-                    for (const auto &r : l.surfaces[k].regions)
-                        if (insidePolygon(r.pixels, {u, v})) s = k;
-                const SurfaceFit fit = fitLabelSurface(cloud, cam, l, s);
-                if (!fit.ok) throw std::runtime_error("--aim: surface has no plane");
-                const Eigen::Vector3d ray = cam.backProject(u, v, 1.0);
-                const auto hit = intersectRay(fit.plane, Eigen::Vector3d::Zero(), ray);
-                if (!hit) throw std::runtime_error("--aim: the pixel does not see the plane");
-                l.projector.direction = (*hit - l.projector.origin).normalized();
-            } else
+            } else if (a == "--aim" && i + 1 < argc)
+                aimProjector(l, cloud, cam, argv[++i]);
+            else
                 throw std::runtime_error("unknown option " + a);
         }
         l.best = referenceBest(cloud, cam, l);
@@ -291,58 +367,9 @@ int main(int argc, char **argv) {
             l.best = referenceBest(cloud, cam, l);
         }
         if (l.colour.judged) l.colour.best = colourReferenceBest(cam, l);
-        for (const auto &s : l.surfaces) {
-            if (!s.has_plane) {
-                std::printf("surface %s: no plane\n", s.name.c_str());
-                continue;
-            }
-            const SurfaceFit f = fitLabelSurface(cloud, cam, l, static_cast<int>(&s - &l.surfaces[0]));
-            const double tilt = std::asin(std::min(1.0, std::abs(s.plane.normal.dot(l.gravity)))) * 180 / M_PI;
-            std::printf("surface %s: n %.3f %.3f %.3f d %.3f, tilt vs gravity %.1f deg, %d points, rms %.1f mm\n",
-                        s.name.c_str(), s.plane.normal.x(), s.plane.normal.y(), s.plane.normal.z(), s.plane.d, tilt,
-                        f.points, 1000 * f.rms);
-        }
-        if (l.best.found)
-            std::printf("best on %s: %.3f x %.3f m = %.4f m^2\n", l.best.surface.c_str(), l.best.width, l.best.height,
-                        l.best.area());
-        else
-            std::printf("best: none\n");
-        if (l.colour.judged && l.colour.best.found)
-            std::printf("colour best on %s: %.3f x %.3f m = %.4f m^2 (%zu unsuitable polygons)\n",
-                        l.colour.best.surface.c_str(), l.colour.best.width, l.colour.best.height,
-                        l.colour.best.area(), l.colour.unsuitable.size());
-        else if (l.colour.judged)
-            std::printf("colour best: none\n");
+        printLabelSummary(l, cloud, cam);
         writeRealLabel(file, l);
-        if (!residual.empty()) {
-            // Distance of every reading to the planes of the surfaces (nearest): grey within
-            // 2 cm, yellow 2-4 cm, red > 4 cm in front, blue > 4 cm behind, black no reading.
-            cv::Mat img(cloud.height, cloud.width, CV_8UC3, cv::Scalar(0, 0, 0));
-            for (int v = 0; v < cloud.height; ++v)
-                for (int u = 0; u < cloud.width; ++u) {
-                    const Point &p = cloud.points[static_cast<std::size_t>(v) * cloud.width + u];
-                    if (!isFinite(p)) continue;
-                    double r = 1e9;
-                    for (const auto &s : l.surfaces)
-                        if (s.has_plane) {
-                            const double d = s.plane.signedDistance(p.cast<double>());
-                            if (std::abs(d) < std::abs(r)) r = d;
-                        }
-                    cv::Vec3b c(90, 90, 90);
-                    if (std::abs(r) < 0.02)
-                        c = cv::Vec3b(200, 200, 200);
-                    else if (std::abs(r) < 0.04)
-                        c = cv::Vec3b(0, 220, 255);
-                    else if (r > 0 && r < 0.5)
-                        c = cv::Vec3b(0, 0, 255);
-                    else if (r < 0 && r > -0.5)
-                        c = cv::Vec3b(255, 80, 0);
-                    img.at<cv::Vec3b>(v, u) = c;
-                }
-            cv::Mat over = renderLabelOverlay(img, l, cam, nullptr, 0.0);
-            gridLines(over);
-            cv::imwrite(residual, over);
-        }
+        if (!residual.empty()) writeResidualImage(residual, l, cloud, cam);
         if (!overlay.empty()) {
             cv::Mat img = renderLabelOverlay(background(dir, cloud), l, cam, nullptr);
             cv::imwrite(overlay, img);

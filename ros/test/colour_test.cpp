@@ -158,6 +158,27 @@ protected:
     std::vector<std::string> warnings_;
 };
 
+/// When the colour node's ~result `jc` carries a suitability (mode avoid, with its albedo,
+/// texture and unsuitable share), counts it in `with_suitability` and keeps the worst
+/// unsuitable share in `worst_unfit`.
+void countSuitability(const nlohmann::json &jc, int &with_suitability, double &worst_unfit) {
+    if (!jc.contains("suitability")) return;
+    ++with_suitability;
+    EXPECT_EQ(jc["suitability"].at("mode").get<std::string>(), "avoid");
+    for (const char *key : {"mean_albedo", "texture", "unsuitable_share"})
+        EXPECT_TRUE(jc["suitability"].contains(key)) << key;
+    worst_unfit = std::max(worst_unfit, jc["suitability"].at("unsuitable_share").get<double>());
+}
+
+/// The unfit cells are shown in RViz (marker 5 in the last ~markers), as the CLI's overlay shows
+/// them.
+void expectUnfitCellMarker(std::mutex &mutex, const visualization_msgs::MarkerArray &last_markers) {
+    std::lock_guard<std::mutex> lock(mutex);
+    bool unfit_marker = false;
+    for (const auto &m : last_markers.markers) unfit_marker |= m.id == 5 && m.points.size() >= 20;
+    EXPECT_TRUE(unfit_marker) << "no unfit-cell marker";
+}
+
 TEST_F(ColourNodeTest, RegisteredColourKeepsThePictureOffAFramedPictureOnTheWall) {
     visualization_msgs::MarkerArray last_markers;
     std::mutex mutex;
@@ -197,13 +218,7 @@ TEST_F(ColourNodeTest, RegisteredColourKeepsThePictureOffAFramedPictureOnTheWall
         EXPECT_TRUE(jc.at("shown").is_object() && jc.at("event").is_string()) << jc.dump();
         EXPECT_EQ(jc.at("continuous").at("event"), jc.at("event")) << "kept where readers found it before";
         EXPECT_FALSE(jp.contains("suitability")) << "today's node has no colour";
-        if (jc.contains("suitability")) {
-            ++with_suitability;
-            EXPECT_EQ(jc["suitability"].at("mode").get<std::string>(), "avoid");
-            for (const char *key : {"mean_albedo", "texture", "unsuitable_share"})
-                EXPECT_TRUE(jc["suitability"].contains(key)) << key;
-            worst_unfit = std::max(worst_unfit, jc["suitability"].at("unsuitable_share").get<double>());
-        }
+        countSuitability(jc, with_suitability, worst_unfit);
         share_colour.push_back(shareOnPicture(jc.at("rectangle"), pose, scene));
         share_plain.push_back(shareOnPicture(jp.at("rectangle"), pose, scene));
         area_colour.push_back(jc.at("rectangle").at("area_m2").get<double>());
@@ -220,13 +235,7 @@ TEST_F(ColourNodeTest, RegisteredColourKeepsThePictureOffAFramedPictureOnTheWall
         EXPECT_GE(share_plain[i], 0.10) << "frame " << i << ": the scene should put the picture in the way";
         EXPECT_GT(area_colour[i], 0.25) << "frame " << i << ": a usable rectangle on the clean wall";
     }
-    {
-        // The unfit cells are shown in RViz (marker 5), as the CLI's overlay shows them.
-        std::lock_guard<std::mutex> lock(mutex);
-        bool unfit_marker = false;
-        for (const auto &m : last_markers.markers) unfit_marker |= m.id == 5 && m.points.size() >= 20;
-        EXPECT_TRUE(unfit_marker) << "no unfit-cell marker";
-    }
+    expectUnfitCellMarker(mutex, last_markers);
     // ~detect (on the latest frame) says what the rectangle lies on.
     std_srvs::Trigger call;
     ASSERT_TRUE(ros::service::call(colour_.ns + "/projsurf/detect", call));
@@ -299,6 +308,22 @@ TEST_F(ColourNodeTest, ColourNotRegisteredToTheDepthIsNotUsed) {
     EXPECT_EQ(warnings({"not registered", "not used"}), 1);
 }
 
+/// The 16-bit depth image `raw` in metres (`cam`'s depth_scale), as a cloud of z only (NaN where
+/// there is no reading).
+Cloud depthInMetres(const cv::Mat &raw, const CameraIntrinsics &cam) {
+    Cloud cloud;
+    cloud.width = raw.cols;
+    cloud.height = raw.rows;
+    cloud.points.resize(static_cast<std::size_t>(raw.total()));
+    for (int v = 0; v < raw.rows; ++v)
+        for (int u = 0; u < raw.cols; ++u) {
+            const std::uint16_t d = raw.at<std::uint16_t>(v, u);
+            const float z = d > 0 ? static_cast<float>(d / cam.depth_scale) : std::numeric_limits<float>::quiet_NaN();
+            cloud.points[static_cast<std::size_t>(v) * raw.cols + u] = Point(0.0f, 0.0f, z);
+        }
+    return cloud;
+}
+
 // The node's latency on a real 640x480 frame (depth, its registered rgb.png, camera.yaml) when
 // PROJSURF_REAL_FRAME names its folder (the frames stay in shared/data/real/): the same frame
 // to /colour and /plain, again and again; prints the medians. Skipped without it.
@@ -311,16 +336,7 @@ TEST_F(ColourNodeTest, RealFrameLatency) {
     ASSERT_EQ(raw.type(), CV_16UC1) << dir;
     ASSERT_EQ(bgr.size(), raw.size()) << dir;
     // 32FC1 metres: any depth_scale.
-    Cloud cloud;
-    cloud.width = raw.cols;
-    cloud.height = raw.rows;
-    cloud.points.resize(static_cast<std::size_t>(raw.total()));
-    for (int v = 0; v < raw.rows; ++v)
-        for (int u = 0; u < raw.cols; ++u) {
-            const std::uint16_t d = raw.at<std::uint16_t>(v, u);
-            const float z = d > 0 ? static_cast<float>(d / cam.depth_scale) : std::numeric_limits<float>::quiet_NaN();
-            cloud.points[static_cast<std::size_t>(v) * raw.cols + u] = Point(0.0f, 0.0f, z);
-        }
+    const Cloud cloud = depthInMetres(raw, cam);
     const int rounds = std::stoi(env("PROJSURF_REAL_ROUNDS", "20"));
     std::vector<double> ms_colour, ms_plain, det_colour, det_plain, attach_ms;
     std::string registration, why_not;

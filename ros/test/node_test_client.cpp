@@ -43,52 +43,50 @@ using namespace projsurf::node_test;
 
 namespace {
 
-// ------------------------------------------------------------------------------------------
-// On demand: the paper's start signal (section 5), answered with the outcome.
-
-TEST_F(NodeTest, DetectServiceFindsTheWallAndPublishesRectangleAndFramebuffer) {
-    const std::string ns = env("PROJSURF_ONESHOT_NS", "/oneshot");
-    Inbox<geometry_msgs::PolygonStamped> rects;
-    Inbox<sensor_msgs::Image> fbs;
-    rects.open(*nh_, ns + "/projsurf/rectangle");
-    fbs.open(*nh_, ns + "/projsurf/framebuffer");
+/// The node's ~result strings and ~markers arrays, as they come.
+struct ResultsAndMarkers {
     std::mutex mutex;
     std::vector<std::string> results;
     std::vector<visualization_msgs::MarkerArray> markers;
-    ros::Subscriber rsub =
-        nh_->subscribe<std_msgs::String>(ns + "/projsurf/result", 10, [&](const std_msgs::StringConstPtr &m) {
+    ros::Subscriber rsub, msub;
+
+    void open(ros::NodeHandle &nh, const std::string &ns) {
+        rsub = nh.subscribe<std_msgs::String>(ns + "/projsurf/result", 10, [this](const std_msgs::StringConstPtr &m) {
             std::lock_guard<std::mutex> lock(mutex);
             results.push_back(m->data);
         });
-    ros::Subscriber msub = nh_->subscribe<visualization_msgs::MarkerArray>(
-        ns + "/projsurf/markers", 10, [&](const visualization_msgs::MarkerArrayConstPtr &m) {
-            std::lock_guard<std::mutex> lock(mutex);
-            markers.push_back(*m);
-        });
-    ros::Publisher pub = nh_->advertise<sensor_msgs::PointCloud2>(ns + "/points", 1, true);
-    const std::string service = ns + "/projsurf/detect";
-    ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(60.0))) << service << " never came up";
-    ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0)) << "the node never subscribed to points";
+        msub = nh.subscribe<visualization_msgs::MarkerArray>(ns + "/projsurf/markers", 10,
+                                                             [this](const visualization_msgs::MarkerArrayConstPtr &m) {
+                                                                 std::lock_guard<std::mutex> lock(mutex);
+                                                                 markers.push_back(*m);
+                                                             });
+    }
 
-    // Before any cloud: a clear answer, not a crash.
+    /// Whether a markers array came after the first `shown` with the cells in a person's shadow
+    /// drawn (marker 5, at least 100 orange cells).
+    bool hasShadowMarkerAfter(std::size_t shown) {
+        std::lock_guard<std::mutex> again(mutex);
+        if (markers.size() <= shown) return false;
+        for (const auto &m : markers.back().markers)
+            if (m.id == 5 && std::count_if(m.colors.begin(), m.colors.end(), [](const std_msgs::ColorRGBA &col) {
+                                 return col.r > 0.9f && col.g > 0.4f && col.g < 0.6f && col.b < 0.1f;
+                             }) >= 100)
+                return true;
+        return false;
+    }
+};
+
+/// Before any cloud, ~detect (`service`) gives a clear answer, not a crash.
+void expectNoCloudYetAnswer(const std::string &service) {
     std_srvs::Trigger early;
     ASSERT_TRUE(ros::service::call(service, early));
     EXPECT_FALSE(early.response.success);
     EXPECT_NE(early.response.message.find("no cloud"), std::string::npos) << early.response.message;
+}
 
-    const ros::Time stamp = ros::Time::now();
-    pub.publish(ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", stamp)));
-    // The service answers on the latest cloud; call it until it has answered on this one.
-    std_srvs::Trigger call;
-    geometry_msgs::PolygonStamped rect;
-    ASSERT_TRUE(detectUntilAnswered(service, rects, stamp, call, rect))
-        << "no ~rectangle for the cloud; " << rects.received() << "; last answer: " << call.response.message;
-    ASSERT_TRUE(call.response.success) << call.response.message;
-    EXPECT_FALSE(call.response.message.empty());
-    EXPECT_EQ(rect.header.frame_id, "camera_optical");
-    ASSERT_EQ(rect.polygon.points.size(), 4u);
-    const auto c = corners(rect);
-    // On the front wall, 2 m straight ahead (the camera looks at it square on).
+/// The rectangle `c` is on the front wall, 2 m straight ahead (the camera looks at it square
+/// on), of the framebuffer's aspect, using most of the projector's footprint, and upright.
+void expectUprightOnTheFrontWall(const std::array<Eigen::Vector3d, 4> &c) {
     for (const auto &p : c) EXPECT_NEAR(p.z(), 2.0, 0.03);
     const double width = (c[1] - c[0]).norm(), height = (c[3] - c[0]).norm();
     EXPECT_NEAR(width / height, 1280.0 / 800.0, 0.02) << "default aspect is the framebuffer's";
@@ -97,18 +95,12 @@ TEST_F(NodeTest, DetectServiceFindsTheWallAndPublishesRectangleAndFramebuffer) {
     EXPECT_GT((c[3] - c[0]).normalized().dot(Eigen::Vector3d(0, 1, 0)), std::cos(0.02));
     EXPECT_LT(c[0].x(), c[1].x());
     EXPECT_LT(c[0].y(), c[3].y());
+}
 
-    sensor_msgs::Image fb;
-    // Published with the rectangle; should it not come (once, under load, it did not within 20 s,
-    // the cause not found), ~detect is called again on the same cloud, which publishes it again,
-    // and what did come is said.
-    ASSERT_TRUE(fbs.waitStamp(stamp, 5.0, fb) || detectUntilAnswered(service, fbs, stamp, call, fb))
-        << "no ~framebuffer for the cloud; " << fbs.received() << "; " << rects.received();
-    EXPECT_EQ(fb.encoding, "bgr8");
-    ASSERT_EQ(fb.width, 1280u);
-    ASSERT_EQ(fb.height, 800u);
-    // The picture fills exactly the rectangle's pixels in the framebuffer: just inside each
-    // corner it is lit, just outside (where that is still in the framebuffer) it is black.
+/// The picture fills exactly the rectangle's pixels in the 1280x800 framebuffer `fb`: just
+/// inside each corner it is lit, just outside (where that is still in the framebuffer) it is
+/// black. Fatal failure when a corner does not project into the framebuffer.
+void expectPictureFillsTheRectangle(const sensor_msgs::Image &fb, const std::array<Eigen::Vector3d, 4> &c) {
     const Projector proj = testProjector();
     Eigen::Vector2d centre = Eigen::Vector2d::Zero();
     std::array<Eigen::Vector2d, 4> px;
@@ -133,27 +125,77 @@ TEST_F(NodeTest, DetectServiceFindsTheWallAndPublishesRectangleAndFramebuffer) {
         }
     }
     EXPECT_GE(outside_checked, 1) << "the projector's keystone leaves black framebuffer corners";
+}
 
-    // ~result is the contract's JSON for the same rectangle; ~markers show it.
+/// ~result is the contract's JSON for the rectangle `c` and the latest ~markers show it (marker
+/// 3, closed); `shown` is set to the number of markers arrays seen. Fatal failure when neither
+/// came within 10 s.
+void expectResultAndRectangleMarker(ResultsAndMarkers &out, const std::array<Eigen::Vector3d, 4> &c,
+                                    std::size_t &shown) {
     ASSERT_TRUE(waitFor(
         [&] {
-            std::lock_guard<std::mutex> lock(mutex);
-            return !results.empty() && !markers.empty();
+            std::lock_guard<std::mutex> lock(out.mutex);
+            return !out.results.empty() && !out.markers.empty();
         },
         10.0));
+    std::lock_guard<std::mutex> lock(out.mutex);
+    const auto j = nlohmann::json::parse(out.results.back());
+    EXPECT_TRUE(j.at("found").get<bool>());
+    for (int i = 0; i < 4; ++i)
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR(j.at("rectangle").at("corners").at(i).at(k).get<double>(), c[i][k], 1e-4);
+    bool has_rect_marker = false;
+    for (const auto &m : out.markers.back().markers) has_rect_marker |= m.id == 3 && m.points.size() == 5;
+    EXPECT_TRUE(has_rect_marker);
+    shown = out.markers.size();
+}
+
+// ------------------------------------------------------------------------------------------
+// On demand: the paper's start signal (section 5), answered with the outcome.
+
+TEST_F(NodeTest, DetectServiceFindsTheWallAndPublishesRectangleAndFramebuffer) {
+    const std::string ns = env("PROJSURF_ONESHOT_NS", "/oneshot");
+    Inbox<geometry_msgs::PolygonStamped> rects;
+    Inbox<sensor_msgs::Image> fbs;
+    rects.open(*nh_, ns + "/projsurf/rectangle");
+    fbs.open(*nh_, ns + "/projsurf/framebuffer");
+    ResultsAndMarkers out;
+    out.open(*nh_, ns);
+    ros::Publisher pub = nh_->advertise<sensor_msgs::PointCloud2>(ns + "/points", 1, true);
+    const std::string service = ns + "/projsurf/detect";
+    ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(60.0))) << service << " never came up";
+    ASSERT_TRUE(waitFor([&] { return pub.getNumSubscribers() > 0; }, 30.0)) << "the node never subscribed to points";
+
+    ASSERT_NO_FATAL_FAILURE(expectNoCloudYetAnswer(service));
+
+    const ros::Time stamp = ros::Time::now();
+    pub.publish(ros_node::toPointCloud2(renderScene(cameraPose(0, 0, 0), {}), header("camera_optical", stamp)));
+    // The service answers on the latest cloud; call it until it has answered on this one.
+    std_srvs::Trigger call;
+    geometry_msgs::PolygonStamped rect;
+    ASSERT_TRUE(detectUntilAnswered(service, rects, stamp, call, rect))
+        << "no ~rectangle for the cloud; " << rects.received() << "; last answer: " << call.response.message;
+    ASSERT_TRUE(call.response.success) << call.response.message;
+    EXPECT_FALSE(call.response.message.empty());
+    EXPECT_EQ(rect.header.frame_id, "camera_optical");
+    ASSERT_EQ(rect.polygon.points.size(), 4u);
+    const auto c = corners(rect);
+    expectUprightOnTheFrontWall(c);
+
+    sensor_msgs::Image fb;
+    // Published with the rectangle; should it not come (once, under load, it did not within 20 s,
+    // the cause not found), ~detect is called again on the same cloud, which publishes it again,
+    // and what did come is said.
+    ASSERT_TRUE(fbs.waitStamp(stamp, 5.0, fb) || detectUntilAnswered(service, fbs, stamp, call, fb))
+        << "no ~framebuffer for the cloud; " << fbs.received() << "; " << rects.received();
+    EXPECT_EQ(fb.encoding, "bgr8");
+    ASSERT_EQ(fb.width, 1280u);
+    ASSERT_EQ(fb.height, 800u);
+    ASSERT_NO_FATAL_FAILURE(expectPictureFillsTheRectangle(fb, c));
+
+    // ~result is the contract's JSON for the same rectangle; ~markers show it.
     std::size_t shown = 0;
-    {
-        std::lock_guard<std::mutex> lock(mutex);
-        const auto j = nlohmann::json::parse(results.back());
-        EXPECT_TRUE(j.at("found").get<bool>());
-        for (int i = 0; i < 4; ++i)
-            for (int k = 0; k < 3; ++k)
-                EXPECT_NEAR(j.at("rectangle").at("corners").at(i).at(k).get<double>(), c[i][k], 1e-4);
-        bool has_rect_marker = false;
-        for (const auto &m : markers.back().markers) has_rect_marker |= m.id == 3 && m.points.size() == 5;
-        EXPECT_TRUE(has_rect_marker);
-        shown = markers.size();
-    }
+    ASSERT_NO_FATAL_FAILURE(expectResultAndRectangleMarker(out, c, shown));
 
     // A person at one side of the beam: the picture stays on the wall, and the cells in their
     // shadow there are drawn (marker 5, orange), as the CLI's overlay draws them.
@@ -168,14 +210,7 @@ TEST_F(NodeTest, DetectServiceFindsTheWallAndPublishesRectangleAndFramebuffer) {
             call = std_srvs::Trigger();
             if (!ros::service::call(service, call)) return false;
             last = call.response.message;
-            std::lock_guard<std::mutex> again(mutex);
-            if (markers.size() <= shown) return false;
-            for (const auto &m : markers.back().markers)
-                if (m.id == 5 && std::count_if(m.colors.begin(), m.colors.end(), [](const std_msgs::ColorRGBA &col) {
-                                     return col.r > 0.9f && col.g > 0.4f && col.g < 0.6f && col.b < 0.1f;
-                                 }) >= 100)
-                    return true;
-            return false;
+            return out.hasShadowMarkerAfter(shown);
         },
         20.0))
         << "no marker of the cells in the person's shadow; last answer: " << last;
@@ -263,6 +298,36 @@ TEST_F(NodeTest, DetectServiceSaysWhenTheLatestCloudWasRejected) {
     EXPECT_TRUE(call.response.success) << call.response.message;
 }
 
+/// The picture: plain green, 640x400 (the framebuffer's aspect, so it fills the rectangle).
+sensor_msgs::Image plainGreenPicture() {
+    sensor_msgs::Image picture;
+    picture.header = header("", ros::Time::now());
+    picture.width = 640;
+    picture.height = 400;
+    picture.encoding = "rgb8";
+    picture.step = 640 * 3;
+    picture.data.assign(picture.step * picture.height, 0);
+    for (std::size_t i = 1; i < picture.data.size(); i += 3) picture.data[i] = 255;  // G of RGB
+    return picture;
+}
+
+/// The 320x240 `cloud`'s z as a 16-bit depth image in mm (0 where there is no reading).
+sensor_msgs::Image depthImageMm(const Cloud &cloud, const std_msgs::Header &h) {
+    sensor_msgs::Image depth;
+    depth.header = h;
+    depth.width = 320;
+    depth.height = 240;
+    depth.encoding = "16UC1";
+    depth.step = 320 * 2;
+    depth.data.assign(depth.step * depth.height, 0);
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+        const float z = cloud.points[i].z();
+        const std::uint16_t mm = std::isfinite(z) ? static_cast<std::uint16_t>(std::lround(z * 1000.0f)) : 0;
+        std::memcpy(&depth.data[2 * i], &mm, 2);
+    }
+    return depth;
+}
+
 TEST_F(NodeTest, DepthImageInputAndThePictureFromTheImageTopic) {
     const std::string ns = env("PROJSURF_ONESHOT_NS", "/oneshot");
     Inbox<sensor_msgs::Image> fbs;
@@ -281,16 +346,7 @@ TEST_F(NodeTest, DepthImageInputAndThePictureFromTheImageTopic) {
         },
         30.0));
 
-    // The picture: plain green, 640x400 (the framebuffer's aspect, so it fills the rectangle).
-    sensor_msgs::Image picture;
-    picture.header = header("", ros::Time::now());
-    picture.width = 640;
-    picture.height = 400;
-    picture.encoding = "rgb8";
-    picture.step = 640 * 3;
-    picture.data.assign(picture.step * picture.height, 0);
-    for (std::size_t i = 1; i < picture.data.size(); i += 3) picture.data[i] = 255;  // G of RGB
-    picture_pub.publish(picture);
+    picture_pub.publish(plainGreenPicture());
 
     // The same wall as a 16-bit depth image (mm) with its camera_info.
     const Cloud cloud = renderScene(cameraPose(0, 0, 0), {});
@@ -300,18 +356,7 @@ TEST_F(NodeTest, DepthImageInputAndThePictureFromTheImageTopic) {
     info.width = 320;
     info.height = 240;
     info.K = {262.5, 0.0, 159.5, 0.0, 262.5, 119.5, 0.0, 0.0, 1.0};
-    sensor_msgs::Image depth;
-    depth.header = info.header;
-    depth.width = 320;
-    depth.height = 240;
-    depth.encoding = "16UC1";
-    depth.step = 320 * 2;
-    depth.data.assign(depth.step * depth.height, 0);
-    for (std::size_t i = 0; i < cloud.size(); ++i) {
-        const float z = cloud.points[i].z();
-        const std::uint16_t mm = std::isfinite(z) ? static_cast<std::uint16_t>(std::lround(z * 1000.0f)) : 0;
-        std::memcpy(&depth.data[2 * i], &mm, 2);
-    }
+    const sensor_msgs::Image depth = depthImageMm(cloud, info.header);
     // Its camera_info, then one of a later stamp that does not fit this image (another
     // resolution): the node pairs the depth image with the camera_info of its own stamp.
     info_pub.publish(info);
@@ -352,6 +397,69 @@ TEST_F(NodeTest, DepthImageInputAndThePictureFromTheImageTopic) {
 // ------------------------------------------------------------------------------------------
 // Continuous mode: a robot drives along the wall; the picture must stay put on it.
 
+/// The transform odom -> camera_optical_moving of the camera at `pose`, stamped `stamp`.
+geometry_msgs::TransformStamped odomToMovingCamera(const Eigen::Isometry3d &pose, const ros::Time &stamp) {
+    geometry_msgs::TransformStamped t;
+    t.header = header("odom", stamp);
+    t.child_frame_id = "camera_optical_moving";
+    t.transform.translation.x = pose.translation().x();
+    t.transform.translation.y = pose.translation().y();
+    t.transform.translation.z = pose.translation().z();
+    const Eigen::Quaterniond q(pose.linear());
+    t.transform.rotation.w = q.w();
+    t.transform.rotation.x = q.x();
+    t.transform.rotation.y = q.y();
+    t.transform.rotation.z = q.z();
+    return t;
+}
+
+/// What continuous mode showed, in odom: the shown corners per phase, and the centre of the
+/// detector's own rectangle in phase 1.
+struct ShownInOdom {
+    std::vector<std::array<Eigen::Vector3d, 4>> world1, world2;  // shown corners in odom, per phase
+    std::vector<Eigen::Vector3d> raw_center1;                    // the detector's own rectangle, phase 1
+};
+
+/// The ~rectangle `got` and ~result `results` (by stamp) of each frame sent at `poses`, moved
+/// into odom; frames before `phase1` are phase 1.
+ShownInOdom shownInOdom(const std::map<ros::Time, Eigen::Isometry3d> &poses,
+                        const std::map<ros::Time, geometry_msgs::PolygonStamped> &got, std::mutex &mutex,
+                        const std::map<double, nlohmann::json> &results, int phase1) {
+    ShownInOdom shown;
+    int k = 0;
+    for (const auto &[stamp, pose] : poses) {
+        const auto it = got.find(stamp);
+        if (it != got.end()) {
+            auto c = corners(it->second);
+            for (auto &p : c) p = pose * p;
+            (k < phase1 ? shown.world1 : shown.world2).push_back(c);
+        }
+        std::lock_guard<std::mutex> lock(mutex);
+        const auto r = results.find(stamp.toSec());
+        if (k < phase1 && r != results.end() && r->second.at("found").get<bool>()) {
+            Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+            for (int i = 0; i < 4; ++i)
+                for (int d = 0; d < 3; ++d) centre[d] += 0.25 * r->second["rectangle"]["corners"][i][d].get<double>();
+            shown.raw_center1.push_back(pose * centre);
+        }
+        ++k;
+    }
+    return shown;
+}
+
+/// Prints the median and worst continuous frame time of the ~result messages received.
+void printContinuousFrameTimes(std::mutex &mutex, const std::map<double, nlohmann::json> &results) {
+    std::vector<double> ms;
+    std::lock_guard<std::mutex> lock(mutex);
+    for (const auto &[stamp, j] : results) ms.push_back(j.at("continuous").at("frame_ms").get<double>());
+    std::sort(ms.begin(), ms.end());
+    if (!ms.empty())
+        std::printf(
+            "[ measured ] continuous frame (320x240 cloud: detect + steady + 1280x800 warp): median %.1f ms, max "
+            "%.1f ms over %zu frames\n",
+            ms[ms.size() / 2], ms.back(), ms.size());
+}
+
 TEST_F(NodeTest, ContinuousModeKeepsThePicturePutOnTheWallWhileTheRobotMoves) {
     const std::string ns = env("PROJSURF_MOVING_NS", "/moving");
     Inbox<geometry_msgs::PolygonStamped> rects;
@@ -382,18 +490,7 @@ TEST_F(NodeTest, ContinuousModeKeepsThePicturePutOnTheWallWhileTheRobotMoves) {
         const Eigen::Isometry3d pose = cameraPose(0.05 * s1, 0.06 * s1 + 0.6 * s2, (1.0 * M_PI / 180.0) * s1);
         const ros::Time stamp = ros::Time::now();
         poses[stamp] = pose;
-        geometry_msgs::TransformStamped t;
-        t.header = header("odom", stamp);
-        t.child_frame_id = "camera_optical_moving";
-        t.transform.translation.x = pose.translation().x();
-        t.transform.translation.y = pose.translation().y();
-        t.transform.translation.z = pose.translation().z();
-        const Eigen::Quaterniond q(pose.linear());
-        t.transform.rotation.w = q.w();
-        t.transform.rotation.x = q.x();
-        t.transform.rotation.y = q.y();
-        t.transform.rotation.z = q.z();
-        tf.sendTransform(t);
+        tf.sendTransform(odomToMovingCamera(pose, stamp));
         ros::WallDuration(0.02).sleep();
         SceneOptions scene;
         scene.seed = 100 + k;
@@ -404,27 +501,9 @@ TEST_F(NodeTest, ContinuousModeKeepsThePicturePutOnTheWallWhileTheRobotMoves) {
     }
     EXPECT_LE(missing, 2) << "frames the node did not answer";
 
-    const auto got = rects.snapshot();
-    std::vector<std::array<Eigen::Vector3d, 4>> world1, world2;  // shown corners in odom, per phase
-    std::vector<Eigen::Vector3d> raw_center1;                    // the detector's own rectangle, phase 1
-    int k = 0;
-    for (const auto &[stamp, pose] : poses) {
-        const auto it = got.find(stamp);
-        if (it != got.end()) {
-            auto c = corners(it->second);
-            for (auto &p : c) p = pose * p;
-            (k < phase1 ? world1 : world2).push_back(c);
-        }
-        std::lock_guard<std::mutex> lock(mutex);
-        const auto r = results.find(stamp.toSec());
-        if (k < phase1 && r != results.end() && r->second.at("found").get<bool>()) {
-            Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-            for (int i = 0; i < 4; ++i)
-                for (int d = 0; d < 3; ++d) centre[d] += 0.25 * r->second["rectangle"]["corners"][i][d].get<double>();
-            raw_center1.push_back(pose * centre);
-        }
-        ++k;
-    }
+    const ShownInOdom shown = shownInOdom(poses, rects.snapshot(), mutex, results, phase1);
+    const auto &world1 = shown.world1, &world2 = shown.world2;
+    const auto &raw_center1 = shown.raw_center1;
     ASSERT_GE(world1.size(), static_cast<std::size_t>(phase1 - 2));
     ASSERT_GE(world2.size(), static_cast<std::size_t>(frames - phase1 - 2));
 
@@ -456,22 +535,42 @@ TEST_F(NodeTest, ContinuousModeKeepsThePicturePutOnTheWallWhileTheRobotMoves) {
     for (std::size_t i = 1; i < world2.size(); ++i)
         if ((world2[i][0] - world2[i - 1][0]).norm() > tolerance) ++jumps;
     EXPECT_LE(jumps, 10) << "the picture should move in steps when it must, not follow every frame";
-    {
-        std::vector<double> ms;
-        std::lock_guard<std::mutex> lock(mutex);
-        for (const auto &[stamp, j] : results) ms.push_back(j.at("continuous").at("frame_ms").get<double>());
-        std::sort(ms.begin(), ms.end());
-        if (!ms.empty())
-            std::printf(
-                "[ measured ] continuous frame (320x240 cloud: detect + steady + 1280x800 warp): median %.1f ms, max "
-                "%.1f ms over %zu frames\n",
-                ms[ms.size() / 2], ms.back(), ms.size());
-    }
+    printContinuousFrameTimes(mutex, results);
     std::printf("[ measured ] phase 2: centre moved %.3f m along the wall in %d jumps over %zu frames\n",
                 last.y() - first.y(), jumps, world2.size());
 }
 
 // Continuous mode, robot standing still: a person walks into the beam (contract "Blanking").
+
+/// Sampled framebuffer pixels (every second one) on and clear of a person in the beam.
+struct BlankingCounts {
+    long lit_on_person = 0, on_person = 0, lit_elsewhere = 0, elsewhere = 0;
+};
+
+/// Counts, in `n`, the framebuffer pixels whose ray meets the person of `scene` (which should
+/// be black in `fb`) and those 10 cm (at the person's distance, more on the wall) clear of
+/// them (which should be lit as they were: not set in the ~blanked `mask`).
+void countBlanking(const SceneOptions &scene, const Eigen::Isometry3d &pose, const Projector &projector,
+                   const sensor_msgs::Image &fb, const sensor_msgs::Image &mask, BlankingCounts &n) {
+    for (int v = 0; v < 800; v += 2) {
+        for (int u = 0; u < 1280; u += 2) {
+            const Eigen::Vector3d dir = pose.linear() * projector.ray(Eigen::Vector2d(u, v));
+            const Eigen::Vector3d origin = pose * projector.origin;
+            if (hitsPerson(scene, origin, dir)) {
+                ++n.on_person;
+                if (!isBlack(fb, u, v)) ++n.lit_on_person;
+            } else {
+                // 10 cm (at the person's distance, more on the wall) clear of them.
+                const double t = (scene.person_x - origin.x()) / dir.x();
+                const Eigen::Vector3d p = origin + t * dir;
+                if (std::abs(p.y() - scene.person_y) > 0.32) {
+                    ++n.elsewhere;
+                    if (mask.data[static_cast<std::size_t>(v) * mask.step + u] == 0) ++n.lit_elsewhere;
+                }
+            }
+        }
+    }
+}
 
 TEST_F(NodeTest, ContinuousModeBlanksAPersonWalkingIntoTheBeam) {
     const std::string ns = env("PROJSURF_STILL_NS", "/still");
@@ -501,7 +600,7 @@ TEST_F(NodeTest, ContinuousModeBlanksAPersonWalkingIntoTheBeam) {
     const Eigen::Isometry3d pose = cameraPose(0.0, 0.0, 0.0);
     std::vector<double> latency_ms;
     int checked = 0, missing = 0;
-    long lit_on_person = 0, on_person = 0, lit_elsewhere = 0, elsewhere = 0;
+    BlankingCounts n;
     for (int k = 0; k < frames; ++k) {
         SceneOptions scene;
         scene.seed = 300 + k;
@@ -530,32 +629,13 @@ TEST_F(NodeTest, ContinuousModeBlanksAPersonWalkingIntoTheBeam) {
         ASSERT_EQ(mask.height, 800u);
         if (!scene.person) continue;
         ++checked;
-        // Every framebuffer pixel whose ray meets the person is black; far from them the
-        // picture is lit as it was.
-        for (int v = 0; v < 800; v += 2) {
-            for (int u = 0; u < 1280; u += 2) {
-                const Eigen::Vector3d dir = pose.linear() * projector.ray(Eigen::Vector2d(u, v));
-                const Eigen::Vector3d origin = pose * projector.origin;
-                if (hitsPerson(scene, origin, dir)) {
-                    ++on_person;
-                    if (!isBlack(fb, u, v)) ++lit_on_person;
-                } else {
-                    // 10 cm (at the person's distance, more on the wall) clear of them.
-                    const double t = (scene.person_x - origin.x()) / dir.x();
-                    const Eigen::Vector3d p = origin + t * dir;
-                    if (std::abs(p.y() - scene.person_y) > 0.32) {
-                        ++elsewhere;
-                        if (mask.data[static_cast<std::size_t>(v) * mask.step + u] == 0) ++lit_elsewhere;
-                    }
-                }
-            }
-        }
+        countBlanking(scene, pose, projector, fb, mask, n);
     }
     EXPECT_LE(missing, 2);
     EXPECT_GE(checked, frames - walk_from - 2);
-    EXPECT_GT(on_person, 1000) << "the person never stood in the beam";
-    EXPECT_EQ(lit_on_person, 0);
-    EXPECT_GE(static_cast<double>(lit_elsewhere), 0.95 * elsewhere);
+    EXPECT_GT(n.on_person, 1000) << "the person never stood in the beam";
+    EXPECT_EQ(n.lit_on_person, 0);
+    EXPECT_GE(static_cast<double>(n.lit_elsewhere), 0.95 * n.elsewhere);
     {
         std::lock_guard<std::mutex> lock(mutex);
         EXPECT_NEAR(focus, 2.0, 0.1) << "~focus_distance: the wall is 2 m ahead";
@@ -565,7 +645,7 @@ TEST_F(NodeTest, ContinuousModeBlanksAPersonWalkingIntoTheBeam) {
     std::printf(
         "[ measured ] blanking: %ld of %ld sampled pixels on the person lit, %.2f %% of the rest unblanked; "
         "cloud published -> ~blanked received: median %.1f ms, max %.1f ms over %zu frames\n",
-        lit_on_person, on_person, elsewhere > 0 ? 100.0 * lit_elsewhere / elsewhere : 100.0,
+        n.lit_on_person, n.on_person, n.elsewhere > 0 ? 100.0 * n.lit_elsewhere / n.elsewhere : 100.0,
         latency_ms[latency_ms.size() / 2], latency_ms.back(), latency_ms.size());
 }
 

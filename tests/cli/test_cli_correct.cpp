@@ -50,6 +50,73 @@ int leftovers(const fs::path &dir) {
 
 }  // namespace
 
+namespace {
+
+/// `calibrate` refuses, with one line naming the problem and no output file: a capture without
+/// a disc, depth missing at the disc, too few captures, all at one distance, missing files, bad
+/// flags. `caps` are the good captures of the synthetic walls, in `good`.
+void checkCalibrateRefusals(const fs::path &dir, const fs::path &good, const std::vector<CaptureImages> &caps,
+                            std::mt19937 &rng) {
+    const Projector truth = rig::trueProjector();
+    const CameraIntrinsics cam;
+    const auto walls = rig::calibrationWalls();
+    auto refuse = [&](const std::string &args, const std::string &needle) {
+        const std::string target = (dir / "refused.yaml").string();
+        const CliRun rr = cli("calibrate " + args + " --out " + target, dir);
+        EXPECT_EQ(rr.status, 2) << args << "\n" << rr.err;
+        EXPECT_NE(rr.err.find(needle), std::string::npos) << "expected '" << needle << "' in: " << rr.err;
+        EXPECT_EQ(std::count(rr.err.begin(), rr.err.end(), '\n'), 1) << rr.err;
+        EXPECT_FALSE(fs::exists(target));
+    };
+    // A capture without a disc: named.
+    const fs::path nodisc = dir / "nodisc";
+    fs::create_directories(nodisc);
+    auto bad = caps;
+    rig::CaptureOptions none;
+    none.no_disc = true;
+    bad[3] = rig::renderCapture(truth, walls[3], cam, rng, none);
+    writeCaptures(nodisc, bad);
+    refuse("--captures " + nodisc.string(), "capture_3_rgb.png: no projected disc found");
+    // Depth missing at the disc: the depth file is named.
+    const fs::path nodepth = dir / "nodepth";
+    fs::create_directories(nodepth);
+    bad = caps;
+    rig::CaptureOptions holes;
+    holes.drop_disc_depth = true;
+    bad[1] = rig::renderCapture(truth, walls[1], cam, rng, holes);
+    writeCaptures(nodepth, bad);
+    refuse("--captures " + nodepth.string(), "capture_1_depth.png: depth missing at the disc");
+    // Too few captures.
+    const fs::path few = dir / "few";
+    fs::create_directories(few);
+    writeCaptures(few, std::vector<CaptureImages>(caps.begin(), caps.begin() + 2));
+    refuse("--captures " + few.string(), "need at least 3");
+    // All at one distance.
+    const fs::path flat = dir / "flat";
+    fs::create_directories(flat);
+    std::vector<CaptureImages> same;
+    for (double a : {0.0, 4.0, -4.0}) same.push_back(rig::renderCapture(truth, rig::wall(2.0, a), cam, rng));
+    writeCaptures(flat, same);
+    refuse("--captures " + flat.string(), "take them at different distances");
+    // Missing camera.yaml, a missing depth file, a gap in the numbering, bad flags.
+    fs::remove(few / "camera.yaml");
+    refuse("--captures " + few.string(), "camera.yaml: no such file");
+    const fs::path gap = dir / "gap";
+    fs::create_directories(gap);
+    writeCaptures(gap, caps);
+    fs::remove(gap / "capture_2_depth.png");
+    refuse("--captures " + gap.string(), "capture_2_depth.png: no such file");
+    fs::remove(gap / "capture_2_rgb.png");
+    refuse("--captures " + gap.string(), "capture_2_rgb.png: missing");
+    refuse("--captures " + (dir / "nowhere").string(), "not a directory");
+    refuse("--captures " + good.string() + " --fov-deg 39.3", "--fov-deg");
+    refuse("--captures " + good.string() + " --resolution 12.5,800", "--resolution");
+    cv::imwrite((nodisc / "capture_0_depth.png").string(), cv::Mat(480, 640, CV_8UC1, cv::Scalar(9)));
+    refuse("--captures " + nodisc.string(), "capture_0_depth.png: expected a 16-bit");
+}
+
+}  // namespace
+
 TEST(CliCalibrate, SyntheticCapturesToYamlAndRefusals) {
     const fs::path dir = freshDir("calibrate");
     const Projector truth = rig::trueProjector();
@@ -104,59 +171,7 @@ TEST(CliCalibrate, SyntheticCapturesToYamlAndRefusals) {
     EXPECT_NE(r.err.find("capture_2_rgb.png: 2 bright blobs"), std::string::npos) << r.err;
     EXPECT_LT(angleBetweenDeg(readCalibration((dir / "calib3.yaml").string()).direction, truth.direction), 0.5);
 
-    auto refuse = [&](const std::string &args, const std::string &needle) {
-        const std::string target = (dir / "refused.yaml").string();
-        const CliRun rr = cli("calibrate " + args + " --out " + target, dir);
-        EXPECT_EQ(rr.status, 2) << args << "\n" << rr.err;
-        EXPECT_NE(rr.err.find(needle), std::string::npos) << "expected '" << needle << "' in: " << rr.err;
-        EXPECT_EQ(std::count(rr.err.begin(), rr.err.end(), '\n'), 1) << rr.err;
-        EXPECT_FALSE(fs::exists(target));
-    };
-    // A capture without a disc: named.
-    const fs::path nodisc = dir / "nodisc";
-    fs::create_directories(nodisc);
-    auto bad = caps;
-    rig::CaptureOptions none;
-    none.no_disc = true;
-    bad[3] = rig::renderCapture(truth, walls[3], cam, rng, none);
-    writeCaptures(nodisc, bad);
-    refuse("--captures " + nodisc.string(), "capture_3_rgb.png: no projected disc found");
-    // Depth missing at the disc: the depth file is named.
-    const fs::path nodepth = dir / "nodepth";
-    fs::create_directories(nodepth);
-    bad = caps;
-    rig::CaptureOptions holes;
-    holes.drop_disc_depth = true;
-    bad[1] = rig::renderCapture(truth, walls[1], cam, rng, holes);
-    writeCaptures(nodepth, bad);
-    refuse("--captures " + nodepth.string(), "capture_1_depth.png: depth missing at the disc");
-    // Too few captures.
-    const fs::path few = dir / "few";
-    fs::create_directories(few);
-    writeCaptures(few, std::vector<CaptureImages>(caps.begin(), caps.begin() + 2));
-    refuse("--captures " + few.string(), "need at least 3");
-    // All at one distance.
-    const fs::path flat = dir / "flat";
-    fs::create_directories(flat);
-    std::vector<CaptureImages> same;
-    for (double a : {0.0, 4.0, -4.0}) same.push_back(rig::renderCapture(truth, rig::wall(2.0, a), cam, rng));
-    writeCaptures(flat, same);
-    refuse("--captures " + flat.string(), "take them at different distances");
-    // Missing camera.yaml, a missing depth file, a gap in the numbering, bad flags.
-    fs::remove(few / "camera.yaml");
-    refuse("--captures " + few.string(), "camera.yaml: no such file");
-    const fs::path gap = dir / "gap";
-    fs::create_directories(gap);
-    writeCaptures(gap, caps);
-    fs::remove(gap / "capture_2_depth.png");
-    refuse("--captures " + gap.string(), "capture_2_depth.png: no such file");
-    fs::remove(gap / "capture_2_rgb.png");
-    refuse("--captures " + gap.string(), "capture_2_rgb.png: missing");
-    refuse("--captures " + (dir / "nowhere").string(), "not a directory");
-    refuse("--captures " + good.string() + " --fov-deg 39.3", "--fov-deg");
-    refuse("--captures " + good.string() + " --resolution 12.5,800", "--resolution");
-    cv::imwrite((nodisc / "capture_0_depth.png").string(), cv::Mat(480, 640, CV_8UC1, cv::Scalar(9)));
-    refuse("--captures " + nodisc.string(), "capture_0_depth.png: expected a 16-bit");
+    checkCalibrateRefusals(dir, good, caps, rng);
     if (!HasFailure()) fs::remove_all(dir);
 }
 
@@ -237,6 +252,23 @@ TEST(CliCorrect, PictureToFramebufferJsonAndBadInputs) {
     if (!HasFailure()) fs::remove_all(dir);
 }
 
+namespace {
+
+/// Writes a 12-frame 320x240 MJPG video of a bright bar moving across a quadrant picture; false
+/// when this OpenCV cannot write one.
+bool writeMovingBarVideo(const std::string &path) {
+    cv::VideoWriter w(path, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 10.0, cv::Size(320, 240));
+    if (!w.isOpened()) return false;
+    for (int f = 0; f < 12; ++f) {
+        cv::Mat pic = quadrantPicture(320, 240);
+        pic(cv::Rect(20 * f, 0, 20, 240)).setTo(cv::Scalar(255, 255, 255));
+        w.write(pic);
+    }
+    return true;
+}
+
+}  // namespace
+
 TEST(CliCorrect, VideoAndImageSequenceFrameByFrame) {
     const fs::path dir = freshDir("correct_video");
     const Projector truth = rig::trueProjector();
@@ -245,15 +277,7 @@ TEST(CliCorrect, VideoAndImageSequenceFrameByFrame) {
     writeDetection(dir / "det.json", rig::rectangleInWorkspace(truth, wall), wall);
     // An input video: 12 frames, 320x240, a bright bar moving across a quadrant picture.
     const std::string in = (dir / "in.avi").string();
-    {
-        cv::VideoWriter w(in, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 10.0, cv::Size(320, 240));
-        ASSERT_TRUE(w.isOpened()) << "this OpenCV cannot write MJPG .avi";
-        for (int f = 0; f < 12; ++f) {
-            cv::Mat pic = quadrantPicture(320, 240);
-            pic(cv::Rect(20 * f, 0, 20, 240)).setTo(cv::Scalar(255, 255, 255));
-            w.write(pic);
-        }
-    }
+    ASSERT_TRUE(writeMovingBarVideo(in)) << "this OpenCV cannot write MJPG .avi";
     const std::string base =
         "correct --calib " + (dir / "calib.yaml").string() + " --detection " + (dir / "det.json").string();
     CliRun r =
@@ -364,6 +388,48 @@ cv::Mat readXwd(const std::string &path) {
 
 bool onPath(const std::string &tool) { return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0; }
 
+/// The first X display number from 91 on with neither a socket nor a lock file.
+int freeDisplayNumber() {
+    int n = 0;
+    for (n = 91; n < 200; ++n)
+        if (!fs::exists("/tmp/.X11-unix/X" + std::to_string(n)) && !fs::exists("/tmp/.X" + std::to_string(n) + "-lock"))
+            break;
+    return n;
+}
+
+/// Starts Xvfb on `display` with screen 0 at 640x480 and screen 1 at 1280x800, its output to
+/// /dev/null; directly (not through a shell) so that it can be stopped and reaped by its pid,
+/// set in `pid`. Returns posix_spawnp's result (0 when started).
+int spawnTwoScreenXvfb(const std::string &display, pid_t &pid) {
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+    std::vector<std::string> args = {"Xvfb",    display, "-screen",     "0",         "640x480x24",
+                                     "-screen", "1",     "1280x800x24", "-nolisten", "tcp"};
+    std::vector<char *> argv;
+    for (auto &a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const int spawned = posix_spawnp(&pid, "Xvfb", &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    return spawned;
+}
+
+/// Stops a child process when it goes out of scope: SIGTERM, up to 5 s to exit, then SIGKILL;
+/// reaped either way.
+struct StopOnExit {
+    pid_t pid;
+    ~StopOnExit() {
+        ::kill(pid, SIGTERM);
+        for (int i = 0; i < 50 && ::waitpid(pid, nullptr, WNOHANG) == 0; ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        if (::waitpid(pid, nullptr, WNOHANG) == 0) {
+            ::kill(pid, SIGKILL);
+            ::waitpid(pid, nullptr, 0);
+        }
+    }
+};
+
 }  // namespace
 
 TEST(CliShow, FramebufferFullScreenUnderXvfb) {
@@ -378,40 +444,14 @@ TEST(CliShow, FramebufferFullScreenUnderXvfb) {
     fb(cv::Rect(1220, 740, 60, 60)).setTo(cv::Scalar(255, 255, 255));
     cv::imwrite((dir / "fb.png").string(), fb);
 
-    // A free display number.
-    int n = 0;
-    for (n = 91; n < 200; ++n)
-        if (!fs::exists("/tmp/.X11-unix/X" + std::to_string(n)) && !fs::exists("/tmp/.X" + std::to_string(n) + "-lock"))
-            break;
+    const int n = freeDisplayNumber();
     const std::string display = ":" + std::to_string(n);
-    // Started directly (not through a shell) so that it can be stopped and reaped by its pid.
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
     // Two screens, as on a robot whose projector is a second output: the picture must go to
     // screen 1 (the framebuffer's size) and leave screen 0 alone.
-    std::vector<std::string> args = {"Xvfb",    display, "-screen",     "0",         "640x480x24",
-                                     "-screen", "1",     "1280x800x24", "-nolisten", "tcp"};
-    std::vector<char *> argv;
-    for (auto &a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
     pid_t xvfb = 0;
-    const int spawned = posix_spawnp(&xvfb, "Xvfb", &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
+    const int spawned = spawnTwoScreenXvfb(display, xvfb);
     ASSERT_EQ(spawned, 0) << "cannot start Xvfb";
-    struct Killer {
-        pid_t pid;
-        ~Killer() {
-            ::kill(pid, SIGTERM);
-            for (int i = 0; i < 50 && ::waitpid(pid, nullptr, WNOHANG) == 0; ++i)
-                std::this_thread::sleep_for(std::chrono::milliseconds(100));
-            if (::waitpid(pid, nullptr, WNOHANG) == 0) {
-                ::kill(pid, SIGKILL);
-                ::waitpid(pid, nullptr, 0);
-            }
-        }
-    } killer{xvfb};
+    const StopOnExit killer{xvfb};
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
     while (!fs::exists("/tmp/.X11-unix/X" + std::to_string(n)) && std::chrono::steady_clock::now() < deadline)
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
