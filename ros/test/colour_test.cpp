@@ -44,23 +44,6 @@ sensor_msgs::CameraInfo cameraInfo(const std_msgs::Header &h) {
     return info;
 }
 
-/// The cloud as a 16UC1 depth image (mm, 0 = no reading).
-sensor_msgs::Image depthImage(const Cloud &cloud, const std_msgs::Header &h) {
-    sensor_msgs::Image depth;
-    depth.header = h;
-    depth.width = cloud.width;
-    depth.height = cloud.height;
-    depth.encoding = "16UC1";
-    depth.step = depth.width * 2;
-    depth.data.assign(depth.step * depth.height, 0);
-    for (std::size_t i = 0; i < cloud.size(); ++i) {
-        const float z = cloud.points[i].z();
-        const std::uint16_t mm = std::isfinite(z) ? static_cast<std::uint16_t>(std::lround(z * 1000.0f)) : 0;
-        std::memcpy(&depth.data[2 * i], &mm, 2);
-    }
-    return depth;
-}
-
 /// Share of the rectangle (odom y-z box of its corners, camera at `pose`) on the picture.
 double shareOnPicture(const nlohmann::json &rect, const Eigen::Isometry3d &pose, const SceneOptions &s) {
     double y0 = 1e9, y1 = -1e9, z0 = 1e9, z1 = -1e9;

@@ -311,23 +311,6 @@ sensor_msgs::Image plainGreenPicture() {
     return picture;
 }
 
-/// The 320x240 `cloud`'s z as a 16-bit depth image in mm (0 where there is no reading).
-sensor_msgs::Image depthImageMm(const Cloud &cloud, const std_msgs::Header &h) {
-    sensor_msgs::Image depth;
-    depth.header = h;
-    depth.width = 320;
-    depth.height = 240;
-    depth.encoding = "16UC1";
-    depth.step = 320 * 2;
-    depth.data.assign(depth.step * depth.height, 0);
-    for (std::size_t i = 0; i < cloud.size(); ++i) {
-        const float z = cloud.points[i].z();
-        const std::uint16_t mm = std::isfinite(z) ? static_cast<std::uint16_t>(std::lround(z * 1000.0f)) : 0;
-        std::memcpy(&depth.data[2 * i], &mm, 2);
-    }
-    return depth;
-}
-
 TEST_F(NodeTest, DepthImageInputAndThePictureFromTheImageTopic) {
     const std::string ns = env("PROJSURF_ONESHOT_NS", "/oneshot");
     Inbox<sensor_msgs::Image> fbs;
@@ -356,7 +339,7 @@ TEST_F(NodeTest, DepthImageInputAndThePictureFromTheImageTopic) {
     info.width = 320;
     info.height = 240;
     info.K = {262.5, 0.0, 159.5, 0.0, 262.5, 119.5, 0.0, 0.0, 1.0};
-    const sensor_msgs::Image depth = depthImageMm(cloud, info.header);
+    const sensor_msgs::Image depth = depthImage(cloud, info.header);
     // Its camera_info, then one of a later stamp that does not fit this image (another
     // resolution): the node pairs the depth image with the camera_info of its own stamp.
     info_pub.publish(info);

@@ -10,8 +10,11 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <memory>
@@ -93,6 +96,23 @@ inline std::array<Eigen::Vector3d, 4> corners(const geometry_msgs::PolygonStampe
     for (int i = 0; i < 4; ++i)
         c[i] = Eigen::Vector3d(p.polygon.points[i].x, p.polygon.points[i].y, p.polygon.points[i].z);
     return c;
+}
+
+/// The cloud as a 16UC1 depth image (mm, 0 = no reading).
+inline sensor_msgs::Image depthImage(const Cloud &cloud, const std_msgs::Header &h) {
+    sensor_msgs::Image depth;
+    depth.header = h;
+    depth.width = cloud.width;
+    depth.height = cloud.height;
+    depth.encoding = "16UC1";
+    depth.step = depth.width * 2;
+    depth.data.assign(depth.step * depth.height, 0);
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+        const float z = cloud.points[i].z();
+        const std::uint16_t mm = std::isfinite(z) ? static_cast<std::uint16_t>(std::lround(z * 1000.0f)) : 0;
+        std::memcpy(&depth.data[2 * i], &mm, 2);
+    }
+    return depth;
 }
 
 inline bool isBlack(const sensor_msgs::Image &img, int u, int v) {
