@@ -205,6 +205,7 @@ void ProjsurfNode::takeCloud(Cloud cloud, const std_msgs::Header &header, const 
     depth_stream_ = stream;
     cloud_ = std::move(cloud);
     cloud_header_ = header;
+    if (topic != cloud_topic_) range_checked_ = false;
     cloud_topic_ = topic;
     have_cloud_ = true;
     rejected_.clear();
@@ -276,8 +277,10 @@ frontend::GravityDetection ProjsurfNode::detectLatest() {
     for (const std::string &w : frontend::gravityUsedWarnings(kGravityWords, used, cloud_, check_floor))
         warnThrottled(warnings_, w);
     floor_checked_ = floor_checked_ || check_floor;
-    if (const auto w = frontend::depthRangeWarning(cloud_, cloud_topic_, false))
-        warnThrottled(warnings_, *w, "depth range");
+    if (!range_checked_)
+        if (const auto w = frontend::depthRangeWarning(cloud_, cloud_topic_, false))
+            warnThrottled(warnings_, *w, "depth range");
+    range_checked_ = true;
     return answer;
 }
 

@@ -95,10 +95,12 @@ private:
     Cloud cloud_;  ///< latest cloud
     std_msgs::Header cloud_header_;
     bool have_cloud_ = false;
-    std::string rejected_;  ///< why the latest cloud was rejected; empty when it was used
-    std::string cloud_topic_;  ///< the topic of the latest cloud (or depth image), named in warnings about it
+    std::string rejected_;        ///< why the latest cloud was rejected; empty when it was used
+    std::string cloud_topic_;     ///< the topic of the latest cloud (or depth image), named in warnings about it
     bool floor_checked_ = false;  ///< the gravity was checked against the floor (once: the mount does not change)
-    WarningThrottle warnings_;    ///< the warnings about the clouds' gravity and depth range
+    bool range_checked_ =
+        false;                  ///< the depth range of cloud_topic_ was checked (once a topic: its units do not change)
+    WarningThrottle warnings_;  ///< the warnings about the clouds' gravity and depth range
     /// camera_info by stamp: each depth image is paired with the one of its own stamp.
     frontend::StampedBuffer<sensor_msgs::CameraInfoConstPtr> camera_infos_;
     sensor_msgs::ImageConstPtr pending_depth_;       ///< a depth image whose camera_info has not come yet
