@@ -31,7 +31,7 @@ double parseAspect(const std::string &what, const std::string &text) {
         const auto w = number(text.substr(0, colon)), h = number(text.substr(colon + 1));
         if (w && h && *h != 0.0) a = *w / *h;
     }
-    if (a >= 0.01 && a <= 100.0) return a;  // the range the key table states
+    if (a >= kMinAspect && a <= kMaxAspect) return a;
     std::string hint;
     for (const char sep : {'x', 'X', '/', '*', ','})
         if (const auto at = text.find(sep); at != std::string::npos && colon == std::string::npos &&

@@ -130,6 +130,11 @@ std::string numberText(double v) {
     return text;
 }
 
+/// What parseAspect takes besides 0: "a ratio or \"W:H\" within 0.01 to 100".
+std::string aspectRatios() {
+    return "a ratio or \"W:H\" within " + numberText(kMinAspect) + " to " + numberText(kMaxAspect);
+}
+
 std::string numericRange(const KeyRange &r) {
     if (r.hi >= kInf) return (r.lo_open ? "> " : ">= ") + numberText(r.lo);
     if (r.lo_open) return "> " + numberText(r.lo) + " and <= " + numberText(r.hi);
@@ -149,8 +154,7 @@ std::string expectation(const ConfigKey &key) {
     case KeyType::Word: return "one word, " + keyRangeText(key);
     case KeyType::Double: break;
     }
-    if (std::holds_alternative<AspectField>(key.access))
-        return "0 (the framebuffer's), or a ratio or \"W:H\" within 0.01 to 100";
+    if (std::holds_alternative<AspectField>(key.access)) return "0 (the framebuffer's), or " + aspectRatios();
     return "a number " + std::string(key.range.hi >= kInf || key.range.lo_open ? "" : "from ") +
            numericRange(key.range);
 }
@@ -225,7 +229,7 @@ std::string keyRangeText(const ConfigKey &key) {
                           [](ConfigField<Method>) -> std::string { return "default | paper"; },
                           [](ConfigField<HullKind>) -> std::string { return "concave | convex"; },
                           [](ConfigField<SuitabilityMode>) -> std::string { return "off | avoid | prefer"; },
-                          [](AspectField) -> std::string { return "0, or a ratio or \"W:H\" within 0.01 to 100"; },
+                          [](AspectField) -> std::string { return "0, or " + aspectRatios(); },
                           [&](ConfigField<std::vector<double>>) {
                               return "1 to " + std::to_string(kMaxListItems) + " numbers, each " +
                                      numericRange(key.range);
