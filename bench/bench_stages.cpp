@@ -148,7 +148,7 @@ const std::vector<BenchFrame> &colourFrames() {
         for (const auto &f : frames()) {
             const std::string path = g_data_dir + "/" + f.name + "/rgb.png";
             const cv::Mat bgr = std::filesystem::exists(path) ? cv::imread(path, cv::IMREAD_COLOR) : cv::Mat();
-            if (bgr.empty() || !checkColourRegistration(f.cloud, bgr).registered) continue;
+            if (bgr.empty() || !checkColourRegistration(f.cloud, bgr, RegistrationOptions{}).registered) continue;
             BenchFrame c = f;
             if (attachColour(c.cloud, bgr)) kept.push_back(std::move(c));
         }

@@ -57,7 +57,7 @@ ColourRun runWithColour(const LabelledFrame &f, const std::string &dir, const Ca
         c.colour_note = "no registered rgb.png";
     } else {
         const cv::Mat colour = readImage(rgb, cv::IMREAD_COLOR);
-        const RegistrationResult r = checkColourRegistration(cloud, colour);
+        const RegistrationResult r = checkColourRegistration(cloud, colour, config.suitability.registration);
         if (r.checked && !r.registered)
             c.colour_note = "not registered to the depth (" + r.summary() + ")";
         else if (!attachColour(cloud, colour))

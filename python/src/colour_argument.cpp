@@ -8,10 +8,11 @@ namespace py = pybind11;
 
 namespace projsurf::python {
 
-std::vector<std::string> attachColourArgument(Cloud &cloud, const py::object &colour) {
+std::vector<std::string> attachColourArgument(Cloud &cloud, const py::object &colour,
+                                              const RegistrationOptions &options) {
     py::object keep;
     const cv::Mat bgr = matFromArray(arrayArgument(colour, "colour"), "colour", keep);
-    return frontend::attachRegisteredColour(cloud, bgr, "colour").warnings;
+    return frontend::attachRegisteredColour(cloud, bgr, "colour", options).warnings;
 }
 
 cv::Mat overlayBackground(const Cloud &cloud, const py::object &colour, py::object &keep) {

@@ -8,13 +8,15 @@
 #include <string>
 #include <vector>
 
+#include "projsurf/detection/detector_config.hpp"
 #include "projsurf/types/cloud.hpp"
 
 namespace projsurf::python {
 
 /// Colour into the cloud; its warnings come back for the caller to issue as UserWarnings.
-/// Throws InputError for another type or size.
-std::vector<std::string> attachColourArgument(Cloud &cloud, const pybind11::object &colour);
+/// Throws InputError for another type or size. `options`: the config's suitability.registration.
+std::vector<std::string> attachColourArgument(Cloud &cloud, const pybind11::object &colour,
+                                              const RegistrationOptions &options);
 
 /// The colour as the overlay's background when the cloud took it (else empty); `keep` holds
 /// a packed copy when the array's rows were not.

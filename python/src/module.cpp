@@ -136,7 +136,7 @@ public:
         if (!py::isinstance<py::bool_>(overlay)) throw InputError("overlay", "must be True or False");
         Cloud cloud = cloudFromPoints(points);
         std::vector<std::string> warnings;
-        if (!colour.is_none()) warnings = attachColourArgument(cloud, colour);
+        if (!colour.is_none()) warnings = attachColourArgument(cloud, colour, options_.config.suitability.registration);
         Detection det;
         {
             py::gil_scoped_release unlocked;

@@ -37,7 +37,7 @@ void addPlanFunction(py::module_ &m) {
                                                              min_width, min_area, py::none(), config, py::dict()});
             Cloud cloud = cloudFromPoints(points);
             std::vector<std::string> warnings;
-            if (!colour.is_none()) warnings = attachColourArgument(cloud, colour);
+            if (!colour.is_none()) warnings = attachColourArgument(cloud, colour, options.config.suitability.registration);
             py::object keep;
             const cv::Mat background = want_overlay ? overlayBackground(cloud, colour, keep) : cv::Mat();
             PlanOptions plan;

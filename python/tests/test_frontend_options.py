@@ -122,6 +122,33 @@ def test_colour_is_checked_by_the_clis_policy(projector, tmp_path):
         projsurf.detect(points, projector, colour=np.ascontiguousarray(rgb[::2, ::2]))
 
 
+def test_the_registration_check_takes_its_keys_from_the_settings_file(projector, tmp_path):
+    points, rgb = frame()
+    flipped = np.ascontiguousarray(rgb[::-1, ::-1])  # another view: refused with the defaults (above)
+    flipped_png = str(tmp_path / "flipped.png")
+    projsurf.write_image(flipped_png, flipped)
+    # Offset 0 need not beat any shift: the same colour is taken, by Python and by the CLI.
+    lax = tmp_path / "lax.yaml"
+    lax.write_text("suitability:\n  registration:\n    min_zero_over_median: 0\n    min_zero_over_best: 0\n")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        det = projsurf.detect(points, projector, colour=flipped, config=str(lax), gravity="auto")
+    assert det["suitability"]["mode"] == "avoid"
+    cli = run_cli("detect", "--depth", os.path.join(FRAME, "depth.png"), "--camera", os.path.join(FRAME, "camera.yaml"),
+                  "--rgb", flipped_png, "--calib", EXAMPLE_CALIB, "--config", str(lax), "--gravity", "auto")
+    assert cli.returncode == 0 and "registered" not in cli.stderr, cli.stderr
+    assert json.loads(cli.stdout)["suitability"]["mode"] == "avoid"
+    # More depth edges needed than the frame has: the check cannot tell, the colour goes as given.
+    strict = tmp_path / "strict.yaml"
+    strict.write_text("suitability.registration.min_edge_pixels: 16777216\n")
+    with pytest.warns(UserWarning, match=r"^colour: cannot check that the colour is registered to the depth \("):
+        det = projsurf.detect(points, projector, colour=flipped, config=str(strict), gravity="auto")
+    assert "suitability" in det
+    cli = run_cli("detect", "--depth", os.path.join(FRAME, "depth.png"), "--camera", os.path.join(FRAME, "camera.yaml"),
+                  "--rgb", flipped_png, "--calib", EXAMPLE_CALIB, "--config", str(strict), "--gravity", "auto")
+    assert f"projsurf: warning: {flipped_png}: cannot check that the colour is registered" in cli.stderr
+
+
 def test_the_clis_input_warnings_are_user_warnings(projector, tmp_path):
     # An "up" vector (a raw accelerometer reading) given as gravity: the floor contradicts it.
     cloud = wall_and_floor_cloud()

@@ -33,7 +33,7 @@ RegistrationResult ColourInput::verdictFor(const std::string &key, const Cloud &
     // Once per stream; again only while the check cannot tell (a flat wall has no depth edges).
     const ros::WallTime now = ros::WallTime::now();
     if (key != checked_stream_ || (!verdict_.checked && (now - last_check_).toSec() >= kRecheckPeriodS)) {
-        verdict_ = checkColourRegistration(cloud, bgr);
+        verdict_ = checkColourRegistration(cloud, bgr, options_);
         check_ms_ = (ros::WallTime::now() - now).toSec() * 1e3;
         checked_stream_ = key;
         last_check_ = now;

@@ -27,8 +27,9 @@ constexpr double kRecheckPeriodS = 2.0;
 
 class ColourInput {
 public:
-    /// `topic`: the colour topic's resolved name, for messages.
-    explicit ColourInput(std::string topic) : topic_(std::move(topic)) {}
+    /// `topic`: the colour topic's resolved name, for messages; `options`: the config's
+    /// suitability.registration.
+    ColourInput(std::string topic, const RegistrationOptions &options) : topic_(std::move(topic)), options_(options) {}
 
     void add(const sensor_msgs::ImageConstPtr &msg) { images_.add(msg->header.stamp.toSec(), msg); }
     /// The colour image of this stamp, else nullptr.
@@ -57,6 +58,7 @@ private:
     RegistrationResult verdictFor(const std::string &key, const Cloud &cloud, const cv::Mat &bgr);
 
     std::string topic_;
+    RegistrationOptions options_;
     /// The latest few (a sixth of a second at 30 Hz: colour and depth of one instant arrive
     /// within a frame or two of each other; full-size images are large).
     frontend::StampedBuffer<sensor_msgs::ImageConstPtr> images_{5};

@@ -72,7 +72,7 @@ ProjsurfNode::ProjsurfNode(ros::NodeHandle nh, ros::NodeHandle pnh, NodeParams p
     } else if (params_.use_colour) {
         // A couple queued: the colour image of a depth image's stamp may come just after it.
         colour_sub_ = nh_.subscribe("rgb/image_rect_color", 2, &ProjsurfNode::onColour, this);
-        colour_ = std::make_unique<ColourInput>(colour_sub_.getTopic());
+        colour_ = std::make_unique<ColourInput>(colour_sub_.getTopic(), params_.detector.suitability.registration);
         ROS_INFO("projsurf_node: colour from %s (suitability %s)", colour_sub_.getTopic().c_str(),
                  suitabilityModeName(params_.detector.suitability.mode));
     } else if (params_.suitability_given && params_.detector.suitability.mode != SuitabilityMode::Off) {

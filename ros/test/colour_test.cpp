@@ -392,7 +392,7 @@ sensor_msgs::ImageConstPtr colourAt(const cv::Mat &bgr, double stamp, const std:
 }
 
 TEST(ColourInput, PairsByStampWithinHalfAFrame) {
-    ros_node::ColourInput in("/rgb");
+    ros_node::ColourInput in("/rgb", RegistrationOptions{});
     const cv::Mat bgr(240, 320, CV_8UC3, cv::Scalar::all(200));
     in.add(colourAt(bgr, 10.0));
     in.add(colourAt(bgr, 10.033));
@@ -410,6 +410,31 @@ TEST(ColourInput, PairsByStampWithinHalfAFrame) {
     EXPECT_NEAR(offset, 0.067, 1e-6);
 }
 
+// The node's ~config reaches the check: the shifted colour that the defaults refuse is taken
+// when offset 0 need not beat any shift (suitability.registration.*).
+TEST(ColourInput, JudgesByTheConfigsRegistrationKeys) {
+    const Eigen::Isometry3d pose = cameraPose(0.0, 0.0, 0.0);
+    SceneOptions scene;
+    scene.picture = true;
+    scene.person = true;
+    scene.person_y = -0.5;
+    const Cloud cloud = renderScene(pose, scene);
+    const cv::Mat bgr = renderColour(pose, scene);
+    cv::Mat shifted(bgr.size(), bgr.type(), cv::Scalar::all(0));
+    bgr(cv::Rect(0, 0, bgr.cols - 12, bgr.rows)).copyTo(shifted(cv::Rect(12, 0, bgr.cols - 12, bgr.rows)));
+    Cloud refused = cloud;
+    EXPECT_NE(ros_node::ColourInput("/rgb", RegistrationOptions{}).attach(refused, *colourAt(shifted, 1.0), "d"), "");
+    EXPECT_FALSE(refused.hasColour());
+    RegistrationOptions lax;
+    lax.min_zero_over_median = 0.0;
+    lax.min_zero_over_best = 0.0;
+    Cloud taken = cloud;
+    ros_node::ColourInput in("/rgb", lax);
+    EXPECT_EQ(in.attach(taken, *colourAt(shifted, 1.0), "d"), "");
+    EXPECT_TRUE(taken.hasColour());
+    EXPECT_EQ(in.registration(), "registered");
+}
+
 TEST(ColourInput, ChecksTheRegistrationOncePerStream) {
     const Eigen::Isometry3d pose = cameraPose(0.0, 0.0, 0.0);
     SceneOptions scene;
@@ -420,7 +445,7 @@ TEST(ColourInput, ChecksTheRegistrationOncePerStream) {
     const cv::Mat bgr = renderColour(pose, scene);
     cv::Mat shifted(bgr.size(), bgr.type(), cv::Scalar::all(0));
     bgr(cv::Rect(0, 0, bgr.cols - 12, bgr.rows)).copyTo(shifted(cv::Rect(12, 0, bgr.cols - 12, bgr.rows)));
-    ros_node::ColourInput in("/rgb");
+    ros_node::ColourInput in("/rgb", RegistrationOptions{});
 
     Cloud c1 = cloud;
     EXPECT_EQ(in.attach(c1, *colourAt(bgr, 1.0), "depth A"), "");

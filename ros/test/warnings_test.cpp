@@ -42,14 +42,14 @@ TEST(NodeWarnings, ColourOfAnotherSizeIsTheClisErrorAsAWarningAndTheFrameGoesOnW
     std::string cli;
     try {
         Cloud c = cloud;
-        frontend::attachRegisteredColour(c, big, "/cam/rgb/image_rect_color");
+        frontend::attachRegisteredColour(c, big, "/cam/rgb/image_rect_color", RegistrationOptions{});
     } catch (const InputError &e) {
         cli = e.what();
     }
     EXPECT_EQ(cli, "/cam/rgb/image_rect_color: colour image is 640x480, the cloud is " + std::to_string(cloud.width) +
                        "x" + std::to_string(cloud.height));
     // ... the node says in the same words, and detects the frame without colour.
-    ros_node::ColourInput in("/cam/rgb/image_rect_color");
+    ros_node::ColourInput in("/cam/rgb/image_rect_color", RegistrationOptions{});
     Cloud c = cloud;
     const auto msg = boost::make_shared<sensor_msgs::Image>(ros_node::toImageMsg(big, header("rgb", ros::Time(1.0))));
     EXPECT_EQ(in.attach(c, *msg, "depth A"), cli);

@@ -166,14 +166,14 @@ frontend::MinimumSize minimumSize(const DetectOptions &o, Method method) {
 }
 
 /// One frame to detect on: the cloud (of --cloud, or of --depth through --camera's camera)
-/// and --rgb's colour where it is registered to it.
+/// and --rgb's colour where it is registered to it (judged by `registration`).
 struct DetectInput {
     std::unique_ptr<CameraIntrinsics> camera;  ///< with --depth only
     Cloud cloud;
     cv::Mat color;  ///< empty without --rgb, or when its colour was not used
 };
 
-DetectInput readDetectInput(const DetectOptions &o) {
+DetectInput readDetectInput(const DetectOptions &o, const RegistrationOptions &registration) {
     DetectInput in;
     if (!o.cloud.empty()) {
         in.cloud = readCloud(o.cloud);
@@ -183,7 +183,7 @@ DetectInput readDetectInput(const DetectOptions &o) {
         for (const std::string &w : camera_warnings) std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
         in.cloud = readDepthCloud(o.depth, o.camera);
     }
-    if (!o.rgb.empty()) in.color = attachColourFile(in.cloud, o.rgb);
+    if (!o.rgb.empty()) in.color = attachColourFile(in.cloud, o.rgb, registration);
     return in;
 }
 
@@ -238,7 +238,7 @@ void run(const DetectOptions &o, const CLI::App &sub) {
     const Projector projector = detectionProjector(o.calib);
     const frontend::MinimumSize minimum = minimumSize(o, cfg.method);
     if (!o.bag.empty()) return runBag(o, cfg, projector, gravity_choice, minimum);
-    const DetectInput in = readDetectInput(o);
+    const DetectInput in = readDetectInput(o, cfg.suitability.registration);
     warnIfSuitabilityHasNoColour(o, in.cloud, cfg.method);
     SurfaceDetector detector(projector, cfg);
     const frontend::GravityDetection answer =

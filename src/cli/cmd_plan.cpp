@@ -52,7 +52,7 @@ void run(const PlanCliOptions &o) {
     if (!o.depth.empty()) camera = std::make_unique<CameraIntrinsics>(readCamera(o.camera));
     Cloud cloud = o.cloud.empty() ? readDepthCloud(o.depth, o.camera) : readCloud(o.cloud);
     // As detect --rgb: the colour judges today's surface and is the overlay's background.
-    const cv::Mat colour = o.rgb.empty() ? cv::Mat() : attachColourFile(cloud, o.rgb);
+    const cv::Mat colour = o.rgb.empty() ? cv::Mat() : attachColourFile(cloud, o.rgb, cfg.suitability.registration);
     // Today's answer is detect's, by the same call.
     SurfaceDetector detector(projector, cfg);
     const frontend::GravityDetection answer = frontend::detectWithGravity(

@@ -8,9 +8,9 @@
 
 namespace projsurf::cli {
 
-cv::Mat attachColourFile(Cloud &cloud, const std::string &path) {
+cv::Mat attachColourFile(Cloud &cloud, const std::string &path, const RegistrationOptions &options) {
     cv::Mat colour = readImage(path, cv::IMREAD_UNCHANGED);
-    const frontend::ColourAttachment attached = frontend::attachRegisteredColour(cloud, colour, path);
+    const frontend::ColourAttachment attached = frontend::attachRegisteredColour(cloud, colour, path, options);
     for (const std::string &w : attached.warnings) std::fprintf(stderr, "projsurf: warning: %s\n", w.c_str());
     if (!attached.used) colour.release();
     return colour;

@@ -297,12 +297,33 @@ struct SuitabilityOptions {
                                       ///< docs/tuning.md)
 };
 
+/// Whether colour given with a cloud is pixel-registered to it, before the colour is used
+/// (detection/colour/colour_registration.hpp; the rows of docs/tuning.md).
+struct RegistrationOptions {
+    int max_shift_px = 20;     ///< [1, 64] px, shifts tried in x and y (unregistered pairs are 10-20 px off; docs/tuning.md)
+    double depth_jump = 0.04;  ///< [0, 10] m, a depth edge: the depth changes by more than this ...
+    double depth_jump_share = 0.03;  ///< [0, 1] ... and by more than this share of the depth, across 2 px
+    double jump_over_slope =
+        3.0;  ///< [0, 100] ... and is this many times steeper than the surface beside it (a grazing floor is no edge)
+    int min_edge_pixels = 150;  ///< [1, 2^24] fewer depth-edge pixels: the check cannot tell (docs/tuning.md)
+    double min_prominence =
+        1.05;  ///< [1, 100] the best score must exceed the median over all shifts by this factor, else it cannot tell
+    int local_window_px =
+        41;  ///< [1, 1001] px, colour edges are taken relative to their mean over this window (texture does not win)
+    double min_zero_over_median =
+        1.25;  ///< [0, 100] registered: the score at offset 0 over the median shift's (docs/tuning.md)
+    double min_zero_over_best = 0.7;  ///< [0, 1] ... and at least this share of the best shift's (a shift along one edge
+                                      ///< direction keeps the other's edges; docs/tuning.md)
+    int max_samples = 6000;           ///< [1, 2^24] depth-edge pixels used at most (evenly spread), for speed
+};
+
 /// Default method, stage 4 (`suitability`): the surface's suitability from its colour, only when
 /// the cloud carries colour (without colour it is off whatever the mode).
 struct SuitabilityConfig {
     SuitabilityMode mode = SuitabilityMode::Avoid;  ///< with registered colour: ignore it, avoid unfit cells, or prefer
                                                     ///< a cleaner wall (docs/suitability.md)
     SuitabilityOptions cells;
+    RegistrationOptions registration;  ///< whether the colour given with a cloud is registered to it, else not used
     double prefer_exponent = 2.0;  ///< [0, 100] k of prefer's rule (a 10 % unfit rectangle counts 81 % of its area)
 };
 

@@ -216,26 +216,26 @@ TEST(ColourRegistration, RegisteredTrueShiftedFalse) {
         colour(b).setTo(cv::Scalar(60, 90, 120));
     }
     const Cloud cloud = depthToCloud(depth, kCam);
-    const RegistrationResult same = checkColourRegistration(cloud, colour);
+    const RegistrationResult same = checkColourRegistration(cloud, colour, RegistrationOptions{});
     EXPECT_TRUE(same.checked);
     EXPECT_TRUE(same.registered) << same.summary();
     for (const cv::Point shift : {cv::Point(12, 0), cv::Point(-8, 10), cv::Point(0, 15)}) {
         cv::Mat moved;
         const cv::Mat m = (cv::Mat_<double>(2, 3) << 1, 0, shift.x, 0, 1, shift.y);
         cv::warpAffine(colour, moved, m, colour.size(), cv::INTER_NEAREST, cv::BORDER_REPLICATE);
-        const RegistrationResult r = checkColourRegistration(cloud, moved);
+        const RegistrationResult r = checkColourRegistration(cloud, moved, RegistrationOptions{});
         EXPECT_TRUE(r.checked) << shift;
         EXPECT_FALSE(r.registered) << shift << ": " << r.summary();
         EXPECT_EQ(r.best_dx, shift.x);
         EXPECT_EQ(r.best_dy, shift.y);
     }
     // No depth edges: it cannot tell.
-    EXPECT_FALSE(checkColourRegistration(wallCloud(2.0), colour).checked);
+    EXPECT_FALSE(checkColourRegistration(wallCloud(2.0), colour, RegistrationOptions{}).checked);
     // Another size: not checked, and no colour attached.
     Cloud small = wallCloud(2.0);
     cv::Mat half;
     cv::resize(colour, half, {320, 240});
-    EXPECT_FALSE(checkColourRegistration(small, half).checked);
+    EXPECT_FALSE(checkColourRegistration(small, half, RegistrationOptions{}).checked);
     EXPECT_FALSE(attachColour(small, half));
     EXPECT_FALSE(small.hasColour());
 }
@@ -277,7 +277,7 @@ TEST(Suitability, DetectorAvoidsThePicturesAndReportsIt) {
     EXPECT_FALSE(plain.suitability.used);  // no colour: judged by depth only
     EXPECT_FALSE(detectionToJson(plain, cfg).contains("suitability"));
 
-    ASSERT_TRUE(checkColourRegistration(f.frame.cloud, f.rgb).registered);
+    ASSERT_TRUE(checkColourRegistration(f.frame.cloud, f.rgb, RegistrationOptions{}).registered);
     ASSERT_TRUE(attachColour(f.frame.cloud, f.rgb));
     const Detection avoid = detectSurface(f.frame.cloud, projector, cfg, f.scene.scenario.gravity);
     ASSERT_TRUE(avoid.found);

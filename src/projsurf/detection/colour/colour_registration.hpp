@@ -7,27 +7,10 @@
 #include <opencv2/core.hpp>
 #include <string>
 
+#include "projsurf/detection/detector_config.hpp"
 #include "projsurf/types/cloud.hpp"
 
 namespace projsurf {
-
-struct RegistrationOptions {
-    int max_shift_px = 20;     ///< px, shifts tried in x and y (unregistered pairs are 10-20 px off; docs/tuning.md)
-    double depth_jump = 0.04;  ///< m, a depth edge: the depth changes by more than this ...
-    double depth_jump_share = 0.03;  ///< ... and by more than this share of the depth, across 2 px
-    double jump_over_slope =
-        3.0;  ///< ... and is this many times steeper than the surface beside it (a grazing floor is no edge)
-    int min_edge_pixels = 150;  ///< fewer depth-edge pixels: the check cannot tell (measured, docs/tuning.md)
-    double min_prominence =
-        1.05;  ///< the best score must exceed the median over all shifts by this factor, else it cannot tell
-    int local_window_px =
-        41;  ///< px, colour edges are taken relative to their mean over this window (texture does not win)
-    double min_zero_over_median = 1.25;  ///< registered: the score at offset 0 over the median shift's (measured,
-                                         ///< docs/tuning.md)
-    double min_zero_over_best = 0.7;     ///< ... and at least this share of the best shift's (a shift along one edge
-                                         ///< direction keeps the other's edges; measured, docs/tuning.md)
-    int max_samples = 6000;              ///< depth-edge pixels used at most (evenly spread), for speed
-};
 
 struct RegistrationResult {
     bool checked = false;          ///< false: too few depth edges (or no texture) to tell
@@ -44,9 +27,10 @@ struct RegistrationResult {
 };
 
 /// `bgr`: CV_8UC3 of the cloud's size; `cloud` organized. Not checked (checked = false) when
-/// the sizes differ or the cloud is not organized.
+/// the sizes differ or the cloud is not organized. `options`: the config's
+/// suitability.registration.
 RegistrationResult checkColourRegistration(const Cloud &cloud, const cv::Mat &bgr,
-                                           const RegistrationOptions &options = {});
+                                           const RegistrationOptions &options);
 
 /// Puts `bgr` (CV_8UC3, the organized cloud's size) into cloud.colours, pixel by pixel; false
 /// (and nothing changed) when the sizes or the type do not fit.

@@ -4,9 +4,11 @@
 
 namespace projsurf::frontend {
 
-ColourAttachment attachRegisteredColour(Cloud &cloud, const cv::Mat &bgr, const std::string &source) {
-    return attachRegisteredColour(cloud, bgr, source,
-                                  [](const Cloud &c, const cv::Mat &m) { return checkColourRegistration(c, m); });
+ColourAttachment attachRegisteredColour(Cloud &cloud, const cv::Mat &bgr, const std::string &source,
+                                        const RegistrationOptions &options) {
+    return attachRegisteredColour(cloud, bgr, source, [&options](const Cloud &c, const cv::Mat &m) {
+        return checkColourRegistration(c, m, options);
+    });
 }
 
 ColourAttachment attachRegisteredColour(Cloud &cloud, const cv::Mat &bgr, const std::string &source,

@@ -25,8 +25,10 @@ struct ColourAttachment {
 using RegistrationCheck = std::function<RegistrationResult(const Cloud &cloud, const cv::Mat &bgr)>;
 
 /// Puts `bgr` into `cloud` when the policy above allows it. Throws InputError(source, problem)
-/// for colour of the wrong type or size; `source` names the colour (a file, "colour", a topic).
-ColourAttachment attachRegisteredColour(Cloud &cloud, const cv::Mat &bgr, const std::string &source);
+/// for colour of the wrong type or size; `source` names the colour (a file, "colour", a topic);
+/// `options`: the config's suitability.registration.
+ColourAttachment attachRegisteredColour(Cloud &cloud, const cv::Mat &bgr, const std::string &source,
+                                        const RegistrationOptions &options);
 /// The same, the registration judged by `check`.
 ColourAttachment attachRegisteredColour(Cloud &cloud, const cv::Mat &bgr, const std::string &source,
                                         const RegistrationCheck &check);
