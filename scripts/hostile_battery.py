@@ -11,7 +11,7 @@ usage: hostile_battery.py PROJSURF [--work DIR] [--python-dir DIR] [--only REGEX
   PROJSURF: the CLI binary (build/projsurf, or build-sanitize/projsurf under ASan+UBSan);
   --python-dir: the folder holding the built module (build/python) for the Python cases.
 Prints one line per failed case and a summary; exit 1 when any case fails."""
-import argparse, json, math, os, re, shutil, signal, stat, struct, subprocess, sys, time, zlib
+import argparse, json, math, os, re, shutil, signal, stat, struct, subprocess, sys, tarfile, time, zlib
 
 TIMEOUT_S = 30
 RSS_LIMIT_KIB = [2 * 1024 * 1024]  # --rss-limit-mib
@@ -747,8 +747,10 @@ def build_base(cli, base):
     write(B("small.pcd"), pcd_ascii(wall_points()))
     shutil.copy("config/detector.yaml", B("detector.yaml"))
     # Chessboard captures (two poses of the real excerpt) and a procam folder.
+    with tarfile.open("tests/data/procam_excerpt/capture_1.tar") as tar:
+        tar.extractall(B("excerpt"))
     for k in (1, 2):
-        shutil.copytree("tests/data/procam_excerpt/capture_1", B("chess", "capture_%d" % k), copy_function=os.link)
+        shutil.copytree(B("excerpt", "capture_1"), B("chess", "capture_%d" % k), copy_function=os.link)
     shutil.copytree(B("chess"), B("procam"), copy_function=os.link)
     write(B("procam", "calibration_result.xml"), PROCAM_XML)
     # The labelled frame the eval-labels cases read: one that ships in data/, so that the cases

@@ -166,13 +166,13 @@ TEST(ChessboardLocalHomography, OnlyTheWellLitPixelsCarryTheCorner) {
     EXPECT_GT(std::abs(pulled[0].projector.x - want.x), 0.5);
 }
 
-// Real captures (tests/data/procam_excerpt: a 160 x 160 crop of procam-calibration's pose 1,
+// Real captures (tests/data/procam_excerpt/capture_1.tar: a 160 x 160 crop of procam-calibration's pose 1,
 // MIT): the black squares decode only from their 3 x 3 means, and what decodes lies on the
 // board's plane: one camera-to-projector homography (fitted to the pixels decoded alone) within
 // a Gray-code misread's smallest error (a wrong resolved bit above the open ones: 16 px or more
 // here), closer for the pixels decoded alone, which resolve more bits.
 TEST(ChessboardGrayCode, RealCapturesDecodeTheDarkSquaresOnTheBoardsPlane) {
-    const fs::path dir = fs::path(PROJSURF_SOURCE_DIR) / "tests/data/procam_excerpt/capture_1";
+    const fs::path dir = PROJSURF_PROCAM_EXCERPT_DIR;  // tests/data/procam_excerpt/capture_1.tar, unpacked
     std::vector<cv::Mat> captures;
     for (int i = 0; i < 42; ++i) {
         char name[32];

@@ -298,7 +298,7 @@ TEST_F(Hostile3, ProcamXmlWithZeroOrNonFiniteNumbersIsRefused) {
     // The real excerpt's pose, three times, beside a published XML that eval must not divide by.
     fs::create_directories(dir_ / "procam");
     for (int k = 0; k < 3; ++k)
-        fs::create_directory_symlink(fs::path(PROJSURF_SOURCE_DIR) / "tests/data/procam_excerpt/capture_1",
+        fs::create_directory_symlink(PROJSURF_PROCAM_EXCERPT_DIR,
                                      dir_ / "procam" / ("capture_" + std::to_string(k)));
     auto xml = [](const std::string &fx, const std::string &t) {
         return "<?xml version=\"1.0\"?>\n<opencv_storage>\n"
