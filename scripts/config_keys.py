@@ -78,7 +78,7 @@ def parse_structs(paths):
                 if "(" in code.split("=")[0] or not code.endswith(";"):
                     continue  # a member function
                 f = FIELD.match(code[:-1].strip())
-                if not f:
+                if not f or "," in re.sub(r"\([^()]*\)|\{[^{}]*\}", "", f.group("default") or ""):
                     raise DeclarationError(f"{path}:{line}: not a field of the fixed form: {code}")
                 fields.append((f.group("type"), f.group("name"), " ".join(doc).strip(), f"{path}:{line}"))
             structs[m.group(1)] = fields

@@ -10,8 +10,9 @@
 // (frontend/settings/detector_config_keys.hpp: the YAML file, `detect --print-config`, the CLI's,
 // node's and Python's shared settings) is written from these lines at build time by
 // scripts/config_keys.py, and docs/interface.md's table is checked against it. A new setting
-// is its field line here and its row there. A field whose doc starts with "not a key:" is
-// filled in by a stage, not set by users.
+// is its field line here and its row there (config/detector.yaml, every key at its default, is
+// then rewritten by `projsurf detect --print-config`; a test compares). A field whose doc starts
+// with "not a key:" is filled in by a stage, not set by users.
 #include <vector>
 
 #include "projsurf/types/depth_tolerance.hpp"

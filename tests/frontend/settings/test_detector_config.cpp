@@ -112,7 +112,9 @@ std::string refusal(const fs::path &dir, const std::string &text) {
 
 TEST(DetectorConfigKeys, EveryKeyIsUniqueDocumentedAndReachesItsOwnField) {
     const std::vector<ConfigKey> &keys = detectorConfigKeys();
-    EXPECT_EQ(keys.size(), 135u);  // every setting field of DetectorConfig and the structs it nests
+    // Every field of DetectorConfig and the structs it nests is a key or says "not a key:":
+    // scripts/config_keys.py stops the build on any other field, so no count is kept here.
+    ASSERT_FALSE(keys.empty());
     std::set<std::string> names;
     for (const ConfigKey &k : keys) {
         EXPECT_TRUE(names.insert(k.key).second) << k.key << " twice";
