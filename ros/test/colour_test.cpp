@@ -410,41 +410,46 @@ TEST(ColourInput, PairsByStampWithinHalfAFrame) {
     EXPECT_NEAR(offset, 0.067, 1e-6);
 }
 
-// The node's ~config reaches the check: the shifted colour that the defaults refuse is taken
-// when offset 0 need not beat any shift (suitability.registration.*).
-TEST(ColourInput, JudgesByTheConfigsRegistrationKeys) {
+/// A person beside the picture (depth edges: the check can tell), its colour and the colour
+/// moved 12 px right.
+struct PersonBesideThePicture {
+    Cloud cloud;
+    cv::Mat bgr, shifted;
+};
+
+PersonBesideThePicture personBesideThePicture() {
     const Eigen::Isometry3d pose = cameraPose(0.0, 0.0, 0.0);
     SceneOptions scene;
     scene.picture = true;
     scene.person = true;
     scene.person_y = -0.5;
-    const Cloud cloud = renderScene(pose, scene);
-    const cv::Mat bgr = renderColour(pose, scene);
-    cv::Mat shifted(bgr.size(), bgr.type(), cv::Scalar::all(0));
-    bgr(cv::Rect(0, 0, bgr.cols - 12, bgr.rows)).copyTo(shifted(cv::Rect(12, 0, bgr.cols - 12, bgr.rows)));
-    Cloud refused = cloud;
-    EXPECT_NE(ros_node::ColourInput("/rgb", RegistrationOptions{}).attach(refused, *colourAt(shifted, 1.0), "d"), "");
+    PersonBesideThePicture f{renderScene(pose, scene), renderColour(pose, scene), cv::Mat()};
+    f.shifted = cv::Mat(f.bgr.size(), f.bgr.type(), cv::Scalar::all(0));
+    f.bgr(cv::Rect(0, 0, f.bgr.cols - 12, f.bgr.rows)).copyTo(f.shifted(cv::Rect(12, 0, f.bgr.cols - 12, f.bgr.rows)));
+    return f;
+}
+
+// The node's ~config reaches the check: the shifted colour that the defaults refuse is taken
+// when offset 0 need not beat any shift (suitability.registration.*).
+TEST(ColourInput, JudgesByTheConfigsRegistrationKeys) {
+    const PersonBesideThePicture f = personBesideThePicture();
+    Cloud refused = f.cloud;
+    EXPECT_NE(ros_node::ColourInput("/rgb", RegistrationOptions{}).attach(refused, *colourAt(f.shifted, 1.0), "d"), "");
     EXPECT_FALSE(refused.hasColour());
     RegistrationOptions lax;
     lax.min_zero_over_median = 0.0;
     lax.min_zero_over_best = 0.0;
-    Cloud taken = cloud;
+    Cloud taken = f.cloud;
     ros_node::ColourInput in("/rgb", lax);
-    EXPECT_EQ(in.attach(taken, *colourAt(shifted, 1.0), "d"), "");
+    EXPECT_EQ(in.attach(taken, *colourAt(f.shifted, 1.0), "d"), "");
     EXPECT_TRUE(taken.hasColour());
     EXPECT_EQ(in.registration(), "registered");
 }
 
 TEST(ColourInput, ChecksTheRegistrationOncePerStream) {
-    const Eigen::Isometry3d pose = cameraPose(0.0, 0.0, 0.0);
-    SceneOptions scene;
-    scene.picture = true;
-    scene.person = true;  // depth edges: the check can tell
-    scene.person_y = -0.5;
-    const Cloud cloud = renderScene(pose, scene);
-    const cv::Mat bgr = renderColour(pose, scene);
-    cv::Mat shifted(bgr.size(), bgr.type(), cv::Scalar::all(0));
-    bgr(cv::Rect(0, 0, bgr.cols - 12, bgr.rows)).copyTo(shifted(cv::Rect(12, 0, bgr.cols - 12, bgr.rows)));
+    const PersonBesideThePicture f = personBesideThePicture();
+    const Cloud &cloud = f.cloud;
+    const cv::Mat &bgr = f.bgr, &shifted = f.shifted;
     ros_node::ColourInput in("/rgb", RegistrationOptions{});
 
     Cloud c1 = cloud;
