@@ -28,9 +28,9 @@ struct RegistrationResult {
 
 /// `bgr`: CV_8UC3 of the cloud's size; `cloud` organized. Not checked (checked = false) when
 /// the sizes differ or the cloud is not organized. `options`: the config's
-/// suitability.registration.
+/// suitability.registration (the front ends pass it; a library caller may keep the defaults).
 RegistrationResult checkColourRegistration(const Cloud &cloud, const cv::Mat &bgr,
-                                           const RegistrationOptions &options);
+                                           const RegistrationOptions &options = {});
 
 /// Puts `bgr` (CV_8UC3, the organized cloud's size) into cloud.colours, pixel by pixel; false
 /// (and nothing changed) when the sizes or the type do not fit.
