@@ -16,7 +16,7 @@ PACKAGES=(
   clang libclang-rt-14-dev libbz2-dev
 )
 # ROS 1 (Debian's packages) for the node in ros/; see ros/README.md.
-ROS_PACKAGES=(libroscpp-dev libstd-msgs-dev libstd-srvs-dev libsensor-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libtf2-ros-dev librosbag-storage-dev python3-rosmaster python3-roslaunch
+ROS_PACKAGES=(libroscpp-dev libstd-msgs-dev libstd-srvs-dev libsensor-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev libtf2-ros-dev libtf2-eigen-dev librosbag-storage-dev python3-rosmaster python3-roslaunch
   python3-rostopic   # `rostopic echo /projsurf/result` and friends (ros/README.md)
   python3-rosservice)  # `rosservice call /projsurf/detect` (README, ros/README.md)
 

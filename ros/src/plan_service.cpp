@@ -1,6 +1,7 @@
 #include "plan_service.hpp"
 
 #include <geometry_msgs/PoseStamped.h>
+#include <tf2_eigen/tf2_eigen.h>
 #include <visualization_msgs/Marker.h>
 
 #include "projsurf/frontend/answer/plan_json.hpp"
@@ -32,14 +33,7 @@ NodePlanner::Answer NodePlanner::plan(const Cloud &cloud, const Eigen::Vector3d 
     geometry_msgs::PoseStamped p;
     p.header.frame_id = frame;
     p.header.stamp = stamp;
-    p.pose.position.x = pose.translation().x();
-    p.pose.position.y = pose.translation().y();
-    p.pose.position.z = pose.translation().z();
-    const Eigen::Quaterniond q(pose.linear());
-    p.pose.orientation.w = q.w();
-    p.pose.orientation.x = q.x();
-    p.pose.orientation.y = q.y();
-    p.pose.orientation.z = q.z();
+    p.pose = tf2::toMsg(pose);
     pose_pub_.publish(p);
 
     visualization_msgs::Marker m;

@@ -14,6 +14,7 @@
 #include <std_msgs/Float32.h>
 #include <std_msgs/String.h>
 #include <std_srvs/Trigger.h>
+#include <tf2_eigen/tf2_eigen.h>
 #include <tf2_ros/transform_broadcaster.h>
 #include <visualization_msgs/MarkerArray.h>
 
@@ -382,17 +383,9 @@ TEST_F(NodeTest, DepthImageInputAndThePictureFromTheImageTopic) {
 
 /// The transform odom -> camera_optical_moving of the camera at `pose`, stamped `stamp`.
 geometry_msgs::TransformStamped odomToMovingCamera(const Eigen::Isometry3d &pose, const ros::Time &stamp) {
-    geometry_msgs::TransformStamped t;
+    geometry_msgs::TransformStamped t = tf2::eigenToTransform(pose);
     t.header = header("odom", stamp);
     t.child_frame_id = "camera_optical_moving";
-    t.transform.translation.x = pose.translation().x();
-    t.transform.translation.y = pose.translation().y();
-    t.transform.translation.z = pose.translation().z();
-    const Eigen::Quaterniond q(pose.linear());
-    t.transform.rotation.w = q.w();
-    t.transform.rotation.x = q.x();
-    t.transform.rotation.y = q.y();
-    t.transform.rotation.z = q.z();
     return t;
 }
 
@@ -686,11 +679,8 @@ TEST_F(NodeTest, PlanServiceMovesTheRobotToABiggerPicture) {
         pose = poses.back();
     }
     EXPECT_EQ(pose.header.frame_id, "camera_optical");
-    Eigen::Isometry3d moved = Eigen::Isometry3d::Identity();  // the moved camera, today's camera frame
-    moved.translation() = Eigen::Vector3d(pose.pose.position.x, pose.pose.position.y, pose.pose.position.z);
-    moved.linear() = Eigen::Quaterniond(pose.pose.orientation.w, pose.pose.orientation.x, pose.pose.orientation.y,
-                                        pose.pose.orientation.z)
-                         .toRotationMatrix();
+    Eigen::Isometry3d moved;  // the moved camera, today's camera frame
+    tf2::fromMsg(pose.pose, moved);
     EXPECT_LE(moved.translation().norm(), 2.0 + 1e-6);
 
     // Go there and look again.
