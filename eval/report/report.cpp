@@ -378,6 +378,16 @@ cv::Mat timingPlot(const std::vector<Trial> &T) {
     return drawLineChart(c);
 }
 
+/// A success row of Table 1 or 2 at angle `a`: published | the paper method by its criterion,
+/// ground truth and with slack | the default method by ground truth.
+HeadlineRow successRow(const std::vector<Trial> &T, const std::string &label, const char *scenario, const char *table,
+                       const char *variant, double a) {
+    const PaperSuccessRow *row = findPaperRow(table, variant, a);
+    const Summary paper = sumFor(T, scenario, "paper-concave", a, kNaN);
+    return {label, row ? pct(row->average_success_pct) : "–", pct(paper.paperRatePct()), pct(paper.truthRatePct()),
+            pct(paper.slackRatePct()), pct(sumFor(T, scenario, "default", a, kNaN).truthRatePct())};
+}
+
 }  // namespace
 
 std::vector<std::pair<std::string, cv::Mat>> evalPlots(const EvalResults &res) {
@@ -394,24 +404,12 @@ std::vector<std::pair<std::string, cv::Mat>> evalPlots(const EvalResults &res) {
 std::vector<HeadlineRow> evalHeadline(const EvalResults &res) {
     const auto &T = res.trials;
     std::vector<HeadlineRow> rows;
-    for (double a : anglesOf(T, "wall")) {
-        const auto *row = findPaperRow("1", "concave", a);
-        rows.push_back({"Table 1, plain wall, " + angleLabel(a) + ", concave hull: success (%)",
-                        row ? pct(row->average_success_pct) : "–",
-                        pct(sumFor(T, "wall", "paper-concave", a, kNaN).paperRatePct()),
-                        pct(sumFor(T, "wall", "paper-concave", a, kNaN).truthRatePct()),
-                        pct(sumFor(T, "wall", "paper-concave", a, kNaN).slackRatePct()),
-                        pct(sumFor(T, "wall", "default", a, kNaN).truthRatePct())});
-    }
-    for (double a : anglesOf(T, "closet")) {
-        const auto *row = findPaperRow("2", "cluttered", a);
-        rows.push_back({"Table 2, cluttered (closet), " + angleLabel(a) + ": success (%)",
-                        row ? pct(row->average_success_pct) : "–",
-                        pct(sumFor(T, "closet", "paper-concave", a, kNaN).paperRatePct()),
-                        pct(sumFor(T, "closet", "paper-concave", a, kNaN).truthRatePct()),
-                        pct(sumFor(T, "closet", "paper-concave", a, kNaN).slackRatePct()),
-                        pct(sumFor(T, "closet", "default", a, kNaN).truthRatePct())});
-    }
+    for (double a : anglesOf(T, "wall"))
+        rows.push_back(successRow(T, "Table 1, plain wall, " + angleLabel(a) + ", concave hull: success (%)", "wall",
+                                  "1", "concave", a));
+    for (double a : anglesOf(T, "closet"))
+        rows.push_back(successRow(T, "Table 2, cluttered (closet), " + angleLabel(a) + ": success (%)", "closet", "2",
+                                  "cluttered", a));
     {
         // Fig 15: the surface check's decisions, judged by ground truth.
         int pn = 0, pc = 0, dn = 0, dc = 0;
